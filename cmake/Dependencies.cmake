@@ -1,0 +1,29 @@
+# Every dependency comes from Debian's packages (scripts/setup.sh installs them).
+find_package(Eigen3 3.3 REQUIRED NO_MODULE)
+find_package(Threads REQUIRED)
+find_package(yaml-cpp REQUIRED)
+find_package(fmt REQUIRED)
+find_package(TBB REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(Ceres REQUIRED)
+
+# GeographicLib ships its Find module outside CMake's default search path on Debian.
+list(APPEND CMAKE_MODULE_PATH /usr/share/cmake/geographiclib)
+find_package(GeographicLib REQUIRED)
+
+# Debian's PCL pulls in VTK, whose config needs MPI's C component found first.
+find_package(MPI COMPONENTS C QUIET)
+find_package(PCL REQUIRED COMPONENTS common io kdtree search registration filters sample_consensus surface)
+# PCL stays at the edges: one interface target that the few adapting files link privately.
+add_library(sextant_pcl INTERFACE)
+target_include_directories(sextant_pcl SYSTEM INTERFACE ${PCL_INCLUDE_DIRS})
+target_link_libraries(sextant_pcl INTERFACE ${PCL_LIBRARIES})
+target_compile_definitions(sextant_pcl INTERFACE ${PCL_DEFINITIONS})
+
+if(SEXTANT_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+  include(GoogleTest)
+endif()
+if(SEXTANT_BUILD_BENCHMARKS)
+  find_package(benchmark REQUIRED)
+endif()

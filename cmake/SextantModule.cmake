@@ -1,0 +1,30 @@
+# sextant_add_module(<name> SOURCES ... PUBLIC_DEPS ... PRIVATE_DEPS ...)
+# Creates the shared library sextant_<name> with alias Sextant::<name>; headers live in
+# <name>/include/sextant/<name>/.
+function(sextant_add_module name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
+  set(target sextant_${name})
+  add_library(${target} ${ARG_SOURCES})
+  add_library(Sextant::${name} ALIAS ${target})
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${name} OUTPUT_NAME sextant_${name})
+  target_include_directories(${target} PUBLIC
+    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  target_link_libraries(${target} PUBLIC ${ARG_PUBLIC_DEPS} PRIVATE sextant_options ${ARG_PRIVATE_DEPS})
+  install(TARGETS ${target} EXPORT SextantTargets
+          LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  install(DIRECTORY include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+endfunction()
+
+# sextant_add_test(<name> SOURCES ... DEPS ...): one GoogleTest executable per module.
+function(sextant_add_test name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main sextant_options)
+  target_compile_definitions(${name} PRIVATE
+    SEXTANT_DATA_DIR="${PROJECT_SOURCE_DIR}/data"
+    SEXTANT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 300)
+endfunction()

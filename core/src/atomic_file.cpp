@@ -1,0 +1,71 @@
+#include "sextant/core/atomic_file.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "sextant/core/error.hpp"
+
+namespace sextant {
+namespace {
+
+std::filesystem::path temporary_beside(const std::filesystem::path& path) {
+  static std::atomic<unsigned> counter{0};
+  return path.parent_path() / ("." + path.filename().string() + ".tmp." + std::to_string(::getpid()) + "." +
+                               std::to_string(counter++));
+}
+
+void fsync_path(const std::filesystem::path& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY);
+  if (fd >= 0) {
+    ::fsync(fd);
+    ::close(fd);
+  }
+}
+
+}  // namespace
+
+void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& writer) {
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  const auto tmp = temporary_beside(path);
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError(tmp.string(), "", "cannot open for writing: " + std::string(std::strerror(errno)));
+    writer(out);
+    out.flush();
+    if (!out) {
+      std::filesystem::remove(tmp);
+      throw InputError(path.string(), "", "write failed");
+    }
+  }
+  fsync_path(tmp);
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::filesystem::remove(tmp);
+    throw InputError(path.string(), "", "cannot rename temporary file into place: " + ec.message());
+  }
+  if (path.has_parent_path()) fsync_path(path.parent_path());
+}
+
+void write_file_atomically(const std::filesystem::path& path, const std::string& content) {
+  write_file_atomically(path, [&content](std::ostream& out) { out << content; });
+}
+
+void append_line_durably(const std::filesystem::path& path, const std::string& line) {
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+  if (fd < 0) throw InputError(path.string(), "", "cannot open for appending: " + std::string(std::strerror(errno)));
+  const std::string text = line + "\n";
+  const ssize_t written = ::write(fd, text.data(), text.size());
+  ::fsync(fd);
+  ::close(fd);
+  if (written != static_cast<ssize_t>(text.size())) throw InputError(path.string(), "", "short append");
+}
+
+}  // namespace sextant

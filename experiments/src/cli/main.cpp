@@ -1,0 +1,27 @@
+// The `sextant` command line: one subcommand per file under cli/.
+#include <iostream>
+
+#include "commands.hpp"
+
+namespace sextant::cli {
+
+int guarded(const std::function<int()>& body) {
+  try {
+    return body();
+  } catch (const std::exception& e) {
+    std::cerr << "sextant: error: " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace sextant::cli
+
+int main(int argc, char** argv) {
+  CLI::App app{"Sextant: reproduces the experiments of a 2012 thesis on 3D LiDAR SLAM"};
+  app.set_version_flag("--version", "sextant 0.1.0");
+  app.require_subcommand(1);
+  int exit_code = 0;
+  (void)exit_code;
+  CLI11_PARSE(app, argc, argv);
+  return exit_code;
+}

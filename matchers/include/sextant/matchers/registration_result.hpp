@@ -1,0 +1,52 @@
+#pragma once
+// What every matcher returns (DESIGN.md, "Module contracts"). A diverged registration is a
+// result with converged = false and a reason, never an exception.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "sextant/core/pose.hpp"
+
+namespace sextant {
+
+enum class Termination {
+  kConverged,          ///< ‖Δξ‖ < ε in the last layer
+  kMaxIterations,      ///< iteration cap reached
+  kTooFewCorrespondences,  ///< fewer matched points than the problem needs
+  kNonFiniteInput,     ///< NaN/Inf in the initial guess or the data
+  kEmptyInput,         ///< empty reference or input cloud
+  kSolverFailure,      ///< linear solve or line search failed
+  kDiverged,           ///< the estimate left the plausible region
+};
+
+std::string to_string(Termination why);
+
+/// One optimiser iteration, for convergence plots (E1).
+struct IterationTrace {
+  int iteration = 0;
+  int layer = 0;           ///< ML-NDT layer (0 when the matcher has none)
+  double score = 0.0;      ///< objective after the step
+  double step_norm = 0.0;  ///< ‖Δξ‖
+  Vector6d xi = Vector6d::Zero();  ///< [tx ty tz α β γ] after the step, eq. (3.12)
+  std::size_t matched_points = 0;
+};
+
+struct RegistrationResult {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();  ///< maps input points into the reference frame
+  bool converged = false;
+  Termination why = Termination::kMaxIterations;
+  int iterations = 0;
+  Matrix6d H = Matrix6d::Zero();  ///< Hessian of the score at the solution; R = H⁻¹, eq. (3.50)
+  double score = 0.0;
+  std::vector<IterationTrace> trace;
+  std::size_t matched_points = 0;
+  std::size_t input_points = 0;  ///< points offered to the matcher after sampling
+  double seconds = 0.0;
+
+  /// One line: "converged after 12 iterations (converged), score …, 1234 matched, 0.012 s".
+  std::string summary() const;
+};
+
+}  // namespace sextant

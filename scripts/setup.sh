@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Installs the Debian packages Sextant needs (only the missing ones, non-interactively, with sudo
+# when not root, `apt-get update` at most once), then configures and builds Release into build/.
+# Usage: scripts/setup.sh [extra cmake -D options...]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(build-essential cmake pkg-config git
+          libeigen3-dev libceres-dev libpcl-dev libgeographiclib-dev libyaml-cpp-dev libtbb-dev
+          libcli11-dev libfmt-dev libbenchmark-dev libgtest-dev libopenmpi-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+jobs=$(nproc 2>/dev/null || echo 2)
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "$@"
+cmake --build build -j"$jobs"

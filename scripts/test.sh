@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Setup + build + the whole test suite (the README's second command; CI runs it).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh -DSEXTANT_WERROR=ON "$@"
+jobs=$(nproc 2>/dev/null || echo 2)
+cd build
+ctest --output-on-failure -j"$jobs"

@@ -1,0 +1,94 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sextant/core/pose.hpp"
+
+namespace sextant {
+namespace {
+
+// eq. (3.8) written out element by element (with Ry's last row [−sβ 0 cβ]).
+Eigen::Matrix3d thesis_rotation(double a, double b, double g) {
+  Eigen::Matrix3d Rx, Ry, Rz;
+  Rx << 1, 0, 0, 0, std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a);
+  Ry << std::cos(b), 0, std::sin(b), 0, 1, 0, -std::sin(b), 0, std::cos(b);
+  Rz << std::cos(g), -std::sin(g), 0, std::sin(g), std::cos(g), 0, 0, 0, 1;
+  return Rx * Ry * Rz;
+}
+
+// 3DTK's EulerToMatrix4, column-major, as quoted in data/README.md.
+Eigen::Matrix4d threedtk_euler_to_matrix4(const Eigen::Vector3d& t, const Eigen::Vector3d& angles) {
+  const double sx = std::sin(angles[0]), cx = std::cos(angles[0]);
+  const double sy = std::sin(angles[1]), cy = std::cos(angles[1]);
+  const double sz = std::sin(angles[2]), cz = std::cos(angles[2]);
+  const double m[16] = {cy * cz, sx * sy * cz + cx * sz, -cx * sy * cz + sx * sz, 0,
+                        -cy * sz, -sx * sy * sz + cx * cz, cx * sy * sz + sx * cz, 0,
+                        sy, -sx * cy, cx * cy, 0,
+                        t.x(), t.y(), t.z(), 1};
+  return Eigen::Map<const Eigen::Matrix4d>(m);  // Eigen's default storage is column-major
+}
+
+TEST(Pose, RotationMatchesEquation38) {
+  for (double a : {-2.0, -0.3, 0.0, 0.7}) {
+    for (double b : {-1.2, 0.0, 0.4}) {
+      for (double g : {-3.0, 0.1, 2.5}) {
+        EXPECT_TRUE(rotation_from_euler(a, b, g).isApprox(thesis_rotation(a, b, g), 1e-12));
+      }
+    }
+  }
+}
+
+TEST(Pose, MatchesThreeDtkEulerToMatrix4) {
+  const Pose6 pose{1.0, -2.0, 3.0, 0.3, -0.5, 1.1};
+  const Eigen::Matrix4d expected =
+      threedtk_euler_to_matrix4({pose.x, pose.y, pose.z}, {pose.alpha, pose.beta, pose.gamma});
+  EXPECT_TRUE(to_isometry(pose).matrix().isApprox(expected, 1e-12));
+}
+
+TEST(Pose, EulerRoundTrip) {
+  for (double a : {-3.0, -0.3, 0.0, 1.4}) {
+    for (double b : {-1.5, -0.2, 0.0, 1.1}) {
+      for (double g : {-2.9, 0.0, 0.6, 3.1}) {
+        const Pose6 pose{0.5, 1.5, -2.5, a, b, g};
+        const Pose6 back = to_pose6(to_isometry(pose));
+        EXPECT_NEAR(back.alpha, a, 1e-9);
+        EXPECT_NEAR(back.beta, b, 1e-9);
+        EXPECT_NEAR(back.gamma, g, 1e-9);
+        EXPECT_NEAR(back.x, 0.5, 1e-12);
+      }
+    }
+  }
+}
+
+TEST(Pose, GimbalLockKeepsTheRotation) {
+  const Eigen::Matrix3d R = rotation_from_euler(0.4, M_PI / 2, 0.3);
+  const Eigen::Vector3d angles = euler_from_rotation(R);
+  EXPECT_TRUE(rotation_from_euler(angles[0], angles[1], angles[2]).isApprox(R, 1e-9));
+}
+
+TEST(Pose, ComposeInverseRelative) {
+  const Eigen::Isometry3d a = to_isometry({1, 2, 3, 0.1, 0.2, 0.3});
+  const Eigen::Isometry3d b = to_isometry({-4, 0.5, 1, -0.4, 0.1, 2.0});
+  EXPECT_TRUE((compose(a, inverse(a))).matrix().isApprox(Eigen::Matrix4d::Identity(), 1e-12));
+  EXPECT_TRUE(compose(a, relative(a, b)).matrix().isApprox(b.matrix(), 1e-12));
+  EXPECT_NEAR(rotation_angle(relative(a, a)), 0.0, 1e-7);
+  EXPECT_NEAR(translation_norm(to_isometry({3, 4, 0, 0, 0, 0})), 5.0, 1e-12);
+}
+
+TEST(Pose, WrapAngle) {
+  EXPECT_NEAR(wrap_angle(3 * M_PI), M_PI, 1e-12);
+  EXPECT_NEAR(wrap_angle(-M_PI), M_PI, 1e-12);
+  EXPECT_NEAR(wrap_angle(2 * M_PI + 0.25), 0.25, 1e-12);
+  EXPECT_NEAR(wrap_angle(-0.25), -0.25, 1e-12);
+}
+
+TEST(Pose, NonFiniteIsDetected) {
+  Pose6 pose;
+  EXPECT_TRUE(is_finite(pose));
+  pose.beta = std::nan("");
+  EXPECT_FALSE(is_finite(pose));
+  EXPECT_FALSE(is_finite(to_isometry(pose)));
+}
+
+}  // namespace
+}  // namespace sextant
