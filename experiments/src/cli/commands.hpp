@@ -1,10 +1,17 @@
 #pragma once
-// Each `sextant` subcommand lives in its own file and adds itself to the app here.
+// Each `sextant` subcommand lives in its own file cli/cmd_<name>.cpp and registers itself with
+// one add_<name>_command(app, exit_code) function declared here and called from main.cpp.
+// The subcommand's callback sets exit_code = guarded([&] { ... return 0; }).
+#include <functional>
+
 #include <CLI/CLI.hpp>
 
 namespace sextant::cli {
 
-/// Runs a subcommand body: an exception becomes a message on stderr and exit code 1.
+/// Runs a subcommand body: an exception becomes "sextant: error: <message>" on stderr and exit code 1.
 int guarded(const std::function<int()>& body);
+
+// One line per subcommand (keep sorted).
+void add_version_command(CLI::App& app, int& exit_code);
 
 }  // namespace sextant::cli

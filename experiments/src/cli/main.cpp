@@ -17,11 +17,12 @@ int guarded(const std::function<int()>& body) {
 }  // namespace sextant::cli
 
 int main(int argc, char** argv) {
+  using namespace sextant::cli;
   CLI::App app{"Sextant: reproduces the experiments of a 2012 thesis on 3D LiDAR SLAM"};
-  app.set_version_flag("--version", "sextant 0.1.0");
   app.require_subcommand(1);
   int exit_code = 0;
-  (void)exit_code;
+  // One line per subcommand (keep sorted).
+  add_version_command(app, exit_code);
   CLI11_PARSE(app, argc, argv);
   return exit_code;
 }
