@@ -1,0 +1,42 @@
+#pragma once
+// The one interface every scan matcher implements (ours and PCL's peers), selectable by name:
+//
+//   auto matcher = make_matcher("mlndt", settings_node, "exp.yaml");   // YAML → settings
+//   matcher->set_reference(reference);                                  // grids, trees
+//   RegistrationResult r = matcher->align(sampled_input, initial_guess);
+//
+// `align` maps input points into the reference frame: p_ref ≈ r.T · p_input. The input is what
+// gets matched (already sampled, see sampler.hpp).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <yaml-cpp/yaml.h>
+
+#include "sextant/core/point_cloud.hpp"
+#include "sextant/core/registry.hpp"
+#include "sextant/matchers/registration_result.hpp"
+
+namespace sextant {
+
+class Matcher {
+ public:
+  virtual ~Matcher() = default;
+  virtual std::string name() const = 0;
+  /// Builds the reference model (cell grids, layer pyramid, k-d tree). Call before align().
+  virtual void set_reference(const PointCloud& reference) = 0;
+  /// Aligns `input` to the reference from `initial`; never throws for bad data (status in result).
+  virtual RegistrationResult align(const PointCloud& input, const Eigen::Isometry3d& initial) = 0;
+};
+
+/// Factory signature: (settings node — may be null for defaults, file name for error messages).
+using MatcherRegistry = Registry<Matcher, const YAML::Node&, const std::string&>;
+
+/// All matchers, filled with the built-ins on first use.
+MatcherRegistry& matcher_registry();
+
+std::unique_ptr<Matcher> make_matcher(const std::string& name, const YAML::Node& settings = YAML::Node(),
+                                      const std::string& file = "<settings>");
+
+}  // namespace sextant

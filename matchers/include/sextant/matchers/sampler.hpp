@@ -1,0 +1,32 @@
+#pragma once
+// Input-scan point selection (§2.2.3, §5.1.2.2): all, regular, random, gbs, fbs. A sampler picks
+// indices of the input cloud; every random choice draws from the Rng passed in.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "sextant/core/point_cloud.hpp"
+#include "sextant/core/registry.hpp"
+#include "sextant/core/rng.hpp"
+
+namespace sextant {
+
+class Sampler {
+ public:
+  virtual ~Sampler() = default;
+  virtual std::string name() const = 0;
+  /// Indices of the selected points, ascending.
+  virtual std::vector<std::size_t> select(const PointCloud& input, Rng& rng) const = 0;
+};
+
+using SamplerRegistry = Registry<Sampler, const YAML::Node&, const std::string&>;
+
+/// All samplers, filled with the built-ins on first use.
+SamplerRegistry& sampler_registry();
+
+std::unique_ptr<Sampler> make_sampler(const std::string& name, const YAML::Node& settings = YAML::Node(),
+                                      const std::string& file = "<settings>");
+
+}  // namespace sextant
