@@ -21,6 +21,15 @@ class Sampler {
   virtual std::vector<std::size_t> select(const PointCloud& input, Rng& rng) const = 0;
 };
 
+/// The selected indices and the share of the input they represent.
+struct SampleResult {
+  std::vector<std::size_t> indices;
+  double kept_fraction = 0.0;  ///< indices.size() / input.size(); 0 for an empty input
+};
+
+/// Runs `sampler` and reports the kept fraction.
+SampleResult sample_points(const Sampler& sampler, const PointCloud& input, Rng& rng);
+
 using SamplerRegistry = Registry<Sampler, const YAML::Node&, const std::string&>;
 
 /// All samplers, filled with the built-ins on first use.

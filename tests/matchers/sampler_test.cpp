@@ -1,0 +1,63 @@
+#include <gtest/gtest.h>
+
+#include "sextant/core/error.hpp"
+#include "sextant/matchers/samplers.hpp"
+
+namespace sextant {
+namespace {
+
+PointCloud line_cloud(std::size_t n, float spacing) {
+  PointCloud cloud;
+  for (std::size_t i = 0; i < n; ++i) cloud.push_back({spacing * static_cast<float>(i) + 0.05f, 0.5f, 0.5f});
+  return cloud;
+}
+
+TEST(Sampler, AllKeepsEverything) {
+  Rng rng(1);
+  const SampleResult r = sample_points(*make_sampler("all"), line_cloud(17, 0.1f), rng);
+  EXPECT_EQ(r.indices.size(), 17u);
+  EXPECT_DOUBLE_EQ(r.kept_fraction, 1.0);
+}
+
+TEST(Sampler, RegularTakesEveryKth) {
+  Rng rng(1);
+  const SampleResult r =
+      sample_points(*make_sampler("regular", YAML::Load("{step: 4}")), line_cloud(10, 0.1f), rng);
+  EXPECT_EQ(r.indices, (std::vector<std::size_t>{0, 4, 8}));
+  EXPECT_DOUBLE_EQ(r.kept_fraction, 0.3);
+}
+
+TEST(Sampler, RandomIsSeededSortedAndUnique) {
+  const auto sampler = make_sampler("random", YAML::Load("{fraction: 0.25}"));
+  Rng a(7), b(7);
+  const auto ra = sampler->select(line_cloud(400, 0.1f), a);
+  const auto rb = sampler->select(line_cloud(400, 0.1f), b);
+  EXPECT_EQ(ra, rb);
+  ASSERT_EQ(ra.size(), 100u);
+  for (std::size_t i = 1; i < ra.size(); ++i) EXPECT_LT(ra[i - 1], ra[i]);
+}
+
+TEST(Sampler, GridKeepsAtMostFivePerCellAndDropsSparseCells) {
+  // 10 cells of 1 m along x: cell c holds c+1 points (1..10 points).
+  PointCloud cloud;
+  for (int c = 0; c < 10; ++c)
+    for (int j = 0; j <= c; ++j) cloud.push_back({c + 0.05f + 0.09f * j, 0.5f, 0.5f});
+  Rng rng(3);
+  const SampleResult r = sample_points(*make_sampler("gbs"), cloud, rng);
+  // cells with 1, 2 points: dropped; 3, 4, 5: all; 6..10: five each.
+  EXPECT_EQ(r.indices.size(), 3u + 4u + 5u + 5u * 5u);
+  std::vector<int> per_cell(10, 0);
+  for (std::size_t i : r.indices) ++per_cell[static_cast<int>(cloud[i].x())];
+  EXPECT_EQ(per_cell, (std::vector<int>{0, 0, 3, 4, 5, 5, 5, 5, 5, 5}));
+  EXPECT_NEAR(r.kept_fraction, 37.0 / 55.0, 1e-12);
+}
+
+TEST(Sampler, BadSettingsNameTheKey) {
+  EXPECT_THROW(make_sampler("gbs", YAML::Load("{cell_size: -1}")), InputError);
+  EXPECT_THROW(make_sampler("gbs", YAML::Load("{cel_size: 1}")), InputError);
+  EXPECT_THROW(make_sampler("random", YAML::Load("{fraction: 2}")), InputError);
+  EXPECT_THROW(make_sampler("nope"), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace sextant
