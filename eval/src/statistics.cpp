@@ -5,26 +5,46 @@
 
 namespace sextant {
 
+namespace {
+
+std::vector<double> finite_only(const std::vector<double>& values) {
+  std::vector<double> out;
+  out.reserve(values.size());
+  for (double v : values)
+    if (std::isfinite(v)) out.push_back(v);
+  return out;
+}
+
+}  // namespace
+
 SampleStats summarize(const std::vector<double>& values) {
+  std::vector<double> v = finite_only(values);
   SampleStats s;
-  s.count = values.size();
-  if (values.empty()) return s;
+  s.count = v.size();
+  if (v.empty()) return s;
   double sum = 0.0, sum_sq = 0.0;
-  for (double v : values) {
-    sum += v;
-    sum_sq += v * v;
+  for (double x : v) {
+    sum += x;
+    sum_sq += x * x;
   }
-  s.mean = sum / values.size();
-  s.rms = std::sqrt(sum_sq / values.size());
-  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
-  s.min = *lo;
-  s.max = *hi;
-  if (values.size() > 1) {
+  const double n = static_cast<double>(v.size());
+  s.mean = sum / n;
+  s.rms = std::sqrt(sum_sq / n);
+  if (v.size() > 1) {
     double ss = 0.0;
-    for (double v : values) ss += (v - s.mean) * (v - s.mean);
-    s.std = std::sqrt(ss / (values.size() - 1));
+    for (double x : v) ss += (x - s.mean) * (x - s.mean);
+    s.std = std::sqrt(ss / (n - 1.0));
   }
+  std::sort(v.begin(), v.end());
+  s.min = v.front();
+  s.max = v.back();
+  const std::size_t mid = v.size() / 2;
+  s.median = v.size() % 2 == 1 ? v[mid] : 0.5 * (v[mid - 1] + v[mid]);
   return s;
+}
+
+double rms(const std::vector<double>& values) {
+  return summarize(values).rms;
 }
 
 }  // namespace sextant

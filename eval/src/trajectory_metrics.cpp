@@ -1,0 +1,289 @@
+#include "sextant/eval/trajectory_metrics.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include "sextant/core/pose.hpp"
+
+namespace sextant {
+
+namespace {
+
+MetricStatus failure(const std::string& message) {
+  return {false, message};
+}
+
+bool all_finite(const PoseList& poses) {
+  for (const Eigen::Isometry3d& T : poses)
+    if (!is_finite(T)) return false;
+  return true;
+}
+
+/// Common checks: same length, at least `min_poses`, finite.
+MetricStatus check_pair(const PoseList& estimate, const PoseList& reference, std::size_t min_poses) {
+  if (estimate.size() != reference.size())
+    return failure("estimate has " + std::to_string(estimate.size()) + " poses, reference " +
+                   std::to_string(reference.size()));
+  if (estimate.size() < min_poses) return failure("needs at least " + std::to_string(min_poses) + " poses");
+  if (!all_finite(estimate)) return failure("estimate has non-finite poses");
+  if (!all_finite(reference)) return failure("reference has non-finite poses");
+  return {};
+}
+
+/// E = (ref_i⁻¹ ref_j)⁻¹ (est_i⁻¹ est_j), the relative error used by RPE and KITTI.
+Eigen::Isometry3d relative_error(const PoseList& estimate, const PoseList& reference, std::size_t i,
+                                 std::size_t j) {
+  return relative(relative(reference[i], reference[j]), relative(estimate[i], estimate[j]));
+}
+
+}  // namespace
+
+PoseList poses_of(const Trajectory& trajectory) {
+  PoseList poses;
+  poses.reserve(trajectory.size());
+  for (const StampedPose& p : trajectory) poses.push_back(p.pose);
+  return poses;
+}
+
+std::vector<double> path_distances(const PoseList& poses) {
+  std::vector<double> d(poses.size(), 0.0);
+  for (std::size_t i = 1; i < poses.size(); ++i)
+    d[i] = d[i - 1] + (poses[i].translation() - poses[i - 1].translation()).norm();
+  return d;
+}
+
+WulfResult wulf_metric(const PoseList& estimate, const PoseList& reference) {
+  WulfResult r;
+  r.status = check_pair(estimate, reference, 1);
+  if (!r.status.ok) return r;
+  for (std::size_t i = 0; i < estimate.size(); ++i) {
+    // eq. (6.2)
+    r.position_errors.push_back((estimate[i].translation() - reference[i].translation()).norm());
+    // eq. (6.3), angle differences wrapped so that 359° vs 1° counts as 2°
+    const Pose6 a = to_pose6(estimate[i]), b = to_pose6(reference[i]);
+    const Eigen::Vector3d d(wrap_angle(a.alpha - b.alpha), wrap_angle(a.beta - b.beta),
+                            wrap_angle(a.gamma - b.gamma));
+    r.orientation_errors.push_back(d.norm());
+  }
+  r.position_rms = rms(r.position_errors);  // eq. (6.1)
+  r.orientation_rms = rms(r.orientation_errors);
+  return r;
+}
+
+std::vector<PoseRelation> consecutive_relations(std::size_t pose_count) {
+  std::vector<PoseRelation> relations;
+  for (std::size_t i = 0; i + 1 < pose_count; ++i) relations.push_back({i, i + 1, false, {}});
+  return relations;
+}
+
+KummerleResult kummerle_metric(const PoseList& estimate, const PoseList& reference,
+                               const std::vector<PoseRelation>& relations) {
+  KummerleResult r;
+  if (relations.empty()) {
+    r.status = failure("no relations");
+    return r;
+  }
+  if (!all_finite(estimate)) {
+    r.status = failure("estimate has non-finite poses");
+    return r;
+  }
+  for (const PoseRelation& rel : relations) {
+    if (rel.i >= estimate.size() || rel.j >= estimate.size()) {
+      r.status = failure("relation (" + std::to_string(rel.i) + ", " + std::to_string(rel.j) +
+                         ") outside the estimate's " + std::to_string(estimate.size()) + " poses");
+      return r;
+    }
+    if (!rel.has_reference_motion && (rel.i >= reference.size() || rel.j >= reference.size())) {
+      r.status = failure("relation (" + std::to_string(rel.i) + ", " + std::to_string(rel.j) +
+                         ") has no reference motion and lies outside the reference's poses");
+      return r;
+    }
+    const Eigen::Isometry3d reference_motion =
+        rel.has_reference_motion ? rel.reference_motion : relative(reference[rel.i], reference[rel.j]);
+    if (!is_finite(reference_motion)) {
+      r.status = failure("non-finite reference motion");
+      return r;
+    }
+    const Eigen::Isometry3d motion = relative(estimate[rel.i], estimate[rel.j]);  // δ_ij = x_j ⊖ x_i
+    const Eigen::Isometry3d error = relative(reference_motion, motion);           // δ_ij ⊖ δ*_ij
+    r.translation_errors.push_back(translation_norm(error));
+    r.rotation_errors.push_back(rotation_angle(error));
+  }
+  // eq. (6.6), trans and rot evaluated individually
+  r.translation_rms = rms(r.translation_errors);
+  r.rotation_rms = rms(r.rotation_errors);
+  return r;
+}
+
+KummerleResult kummerle_metric(const PoseList& estimate, const PoseList& reference) {
+  KummerleResult r;
+  r.status = check_pair(estimate, reference, 2);
+  if (!r.status.ok) return r;
+  return kummerle_metric(estimate, reference, consecutive_relations(estimate.size()));
+}
+
+AteResult absolute_trajectory_error(const PoseList& estimate, const PoseList& reference,
+                                    Alignment alignment) {
+  AteResult r;
+  r.status = check_pair(estimate, reference, alignment == Alignment::none ? 1 : 2);
+  if (!r.status.ok) return r;
+  if (alignment != Alignment::none) {
+    std::vector<Eigen::Vector3d> src, dst;
+    for (std::size_t i = 0; i < estimate.size(); ++i) {
+      src.push_back(estimate[i].translation());
+      dst.push_back(reference[i].translation());
+    }
+    r.alignment = umeyama_alignment(src, dst, alignment == Alignment::sim3);
+    if (!r.alignment.ok) {
+      r.status = failure("alignment failed (coincident positions)");
+      return r;
+    }
+  }
+  std::vector<double> rotation_errors;
+  for (std::size_t i = 0; i < estimate.size(); ++i) {
+    const Eigen::Vector3d p = r.alignment.apply(estimate[i].translation());
+    r.translation_errors.push_back((reference[i].translation() - p).norm());
+    Eigen::Isometry3d rot_error = Eigen::Isometry3d::Identity();
+    rot_error.linear() = reference[i].linear().transpose() * r.alignment.rotation * estimate[i].linear();
+    rotation_errors.push_back(rotation_angle(rot_error));
+  }
+  r.translation = summarize(r.translation_errors);
+  r.rotation = summarize(rotation_errors);
+  return r;
+}
+
+bool RpeSettings::valid(std::string* why) const {
+  auto fail = [why](const std::string& m) {
+    if (why) *why = m;
+    return false;
+  };
+  if (!(delta > 0.0) || !std::isfinite(delta)) return fail("delta must be > 0");
+  if (unit == Unit::frames && std::floor(delta) != delta) return fail("delta in frames must be an integer");
+  if (!(tolerance >= 0.0)) return fail("tolerance must be >= 0");
+  return true;
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> rpe_pairs(const PoseList& reference,
+                                                           const RpeSettings& settings) {
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  const std::size_t n = reference.size();
+  if (n < 2 || !settings.valid(nullptr)) return pairs;
+  if (settings.unit == RpeSettings::Unit::frames) {
+    const auto step = static_cast<std::size_t>(settings.delta);
+    if (settings.all_pairs) {
+      for (std::size_t i = 0; i + step < n; ++i) pairs.emplace_back(i, i + step);
+    } else {
+      for (std::size_t i = 0; i + step < n; i += step) pairs.emplace_back(i, i + step);
+    }
+    return pairs;
+  }
+  const std::vector<double> distance = path_distances(reference);
+  if (settings.all_pairs) {
+    // evo: from every pose, the later pose whose path distance is closest to delta, within tolerance.
+    for (std::size_t i = 0; i + 1 < n; ++i) {
+      std::size_t best = i + 1;
+      for (std::size_t j = i + 1; j < n; ++j)
+        if (std::abs(distance[j] - distance[i] - settings.delta) <
+            std::abs(distance[best] - distance[i] - settings.delta))
+          best = j;
+      if (std::abs(distance[best] - distance[i] - settings.delta) <= settings.tolerance)
+        pairs.emplace_back(i, best);
+    }
+    return pairs;
+  }
+  // evo: mark a pose each time the path since the last mark reaches delta; pair consecutive marks.
+  std::vector<std::size_t> marks;
+  double path = 0.0;
+  for (std::size_t i = 1; i < n; ++i) {
+    path += distance[i] - distance[i - 1];
+    if (path >= settings.delta) {
+      marks.push_back(i);
+      path = 0.0;
+    }
+  }
+  for (std::size_t k = 0; k + 1 < marks.size(); ++k) pairs.emplace_back(marks[k], marks[k + 1]);
+  return pairs;
+}
+
+RpeResult relative_pose_error(const PoseList& estimate, const PoseList& reference,
+                              const RpeSettings& settings) {
+  RpeResult r;
+  std::string why;
+  if (!settings.valid(&why)) {
+    r.status = failure(why);
+    return r;
+  }
+  r.status = check_pair(estimate, reference, 2);
+  if (!r.status.ok) return r;
+  r.pairs = rpe_pairs(reference, settings);
+  if (r.pairs.empty()) {
+    r.status = failure("no pose pairs for this delta");
+    return r;
+  }
+  for (const auto& [i, j] : r.pairs) {
+    const Eigen::Isometry3d E = relative_error(estimate, reference, i, j);
+    r.translation_errors.push_back(translation_norm(E));
+    r.rotation_errors.push_back(rotation_angle(E));
+  }
+  r.translation = summarize(r.translation_errors);
+  r.rotation = summarize(r.rotation_errors);
+  return r;
+}
+
+bool KittiDriftSettings::valid(std::string* why) const {
+  auto fail = [why](const std::string& m) {
+    if (why) *why = m;
+    return false;
+  };
+  if (segment_lengths.empty()) return fail("segment_lengths must not be empty");
+  for (double l : segment_lengths)
+    if (!(l > 0.0) || !std::isfinite(l)) return fail("segment lengths must be > 0");
+  if (step == 0) return fail("step must be >= 1");
+  return true;
+}
+
+KittiDriftResult kitti_drift(const PoseList& estimate, const PoseList& reference,
+                             const KittiDriftSettings& settings) {
+  KittiDriftResult r;
+  std::string why;
+  if (!settings.valid(&why)) {
+    r.status = failure(why);
+    return r;
+  }
+  r.status = check_pair(estimate, reference, 2);
+  if (!r.status.ok) return r;
+  const std::vector<double> distance = path_distances(reference);
+  double sum_t = 0.0, sum_r = 0.0;
+  for (double length : settings.segment_lengths) {
+    KittiSegmentDrift seg;
+    seg.length = length;
+    for (std::size_t first = 0; first < reference.size(); first += settings.step) {
+      // KITTI devkit lastFrameFromSegmentLength: first frame with dist > dist[first] + len.
+      std::size_t last = first;
+      while (last < reference.size() && !(distance[last] > distance[first] + length)) ++last;
+      if (last >= reference.size()) break;  // distances only grow: later starts fail too
+      const Eigen::Isometry3d E = relative_error(estimate, reference, first, last);
+      const double t = translation_norm(E) / length, a = rotation_angle(E) / length;
+      seg.translation += t;
+      seg.rotation += a;
+      ++seg.segments;
+      sum_t += t;
+      sum_r += a;
+    }
+    r.segments += seg.segments;
+    if (seg.segments > 0) {
+      seg.translation /= static_cast<double>(seg.segments);
+      seg.rotation /= static_cast<double>(seg.segments);
+    }
+    r.per_length.push_back(seg);
+  }
+  if (r.segments == 0) {
+    r.status = failure("trajectory shorter than the shortest segment length");
+    return r;
+  }
+  r.translation = sum_t / static_cast<double>(r.segments);
+  r.rotation = sum_r / static_cast<double>(r.segments);
+  return r;
+}
+
+}  // namespace sextant
