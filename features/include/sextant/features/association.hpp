@@ -1,0 +1,62 @@
+#pragma once
+// Semantic data association of planar landmarks (§4.2.5): the merging tests (C_o, C_t, C_p)
+// with their own thresholds between observed landmarks (already transformed to the world by
+// the predicted pose) and map landmarks. Candidates come from a spatial hash on centroids, so
+// the cost is linear in the number of observed landmarks and their nearby map landmarks.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "sextant/features/landmark.hpp"
+#include "sextant/features/merging.hpp"
+
+namespace sextant {
+
+struct AssociationSettings {
+  MergeThresholds thresholds{20.0, 1.0, 15.0, 1e-4};  ///< relaxed t_o [deg], t_t [m], t_p [1]
+  double search_radius = 30.0;  ///< map landmarks with centroids farther than this are not candidates [m]
+  bool valid(std::string* why) const;
+};
+
+/// Keys: `search_radius` and the threshold keys of read_merge_thresholds at the same level.
+AssociationSettings read_association_settings(const YAML::Node& node, const std::string& file);
+
+struct LandmarkMatch {
+  std::size_t observed = 0;  ///< index into the observed landmarks
+  std::size_t map = 0;       ///< index into the map landmarks
+  MergeCriteria criteria;    ///< C_o, C_t, C_p, d_c of the pair
+};
+
+struct AssociationResult {
+  std::vector<LandmarkMatch> matches;      ///< one-to-one, by observed index
+  std::vector<std::size_t> new_landmarks;  ///< observed indices without a match
+  std::size_t candidates_tested = 0;       ///< pairs evaluated
+};
+
+/// Spatial hash of map-landmark centroids (cell = search radius, 27-cell query).
+class LandmarkIndex {
+ public:
+  LandmarkIndex(const std::vector<PlaneLandmark>& map, double cell_size);
+  /// Indices of landmarks whose centroid lies within `radius` (≤ cell size) of `point`, ascending.
+  void query(const Eigen::Vector3d& point, double radius, std::vector<std::size_t>* out) const;
+
+ private:
+  double cell_size_;
+  std::vector<Eigen::Vector3d> centroids_;
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells_;
+};
+
+/// Each observed landmark is matched to the passing map landmark of smallest C_p; conflicts
+/// (two observations on one map landmark) go to the smaller C_p, the other becomes new.
+AssociationResult associate_landmarks(const std::vector<PlaneLandmark>& observed_in_world,
+                                      const std::vector<PlaneLandmark>& map,
+                                      const AssociationSettings& settings);
+AssociationResult associate_landmarks(const std::vector<PlaneLandmark>& observed_in_world,
+                                      const std::vector<PlaneLandmark>& map, const LandmarkIndex& index,
+                                      const AssociationSettings& settings);
+
+}  // namespace sextant
