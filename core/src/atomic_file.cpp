@@ -30,27 +30,38 @@ void fsync_path(const std::filesystem::path& path) {
 
 }  // namespace
 
-void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& writer) {
+void write_file_atomically_via_path(
+    const std::filesystem::path& path,
+    const std::function<void(const std::filesystem::path& temporary)>& writer) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
   const auto tmp = temporary_beside(path);
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(tmp.string(), "", "cannot open for writing: " + std::string(std::strerror(errno)));
-    writer(out);
-    out.flush();
-    if (!out) {
-      std::filesystem::remove(tmp);
-      throw InputError(path.string(), "", "write failed");
-    }
+  try {
+    writer(tmp);
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw;
   }
   fsync_path(tmp);
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
   if (ec) {
-    std::filesystem::remove(tmp);
+    std::filesystem::remove(tmp, ec);
     throw InputError(path.string(), "", "cannot rename temporary file into place: " + ec.message());
   }
   if (path.has_parent_path()) fsync_path(path.parent_path());
+}
+
+void write_file_atomically(const std::filesystem::path& path,
+                           const std::function<void(std::ostream&)>& writer) {
+  write_file_atomically_via_path(path, [&](const std::filesystem::path& tmp) {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out)
+      throw InputError(tmp.string(), "", "cannot open for writing: " + std::string(std::strerror(errno)));
+    writer(out);
+    out.flush();
+    if (!out) throw InputError(path.string(), "", "write failed");
+  });
 }
 
 void write_file_atomically(const std::filesystem::path& path, const std::string& content) {
@@ -60,7 +71,8 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
 void append_line_durably(const std::filesystem::path& path, const std::string& line) {
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
   const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-  if (fd < 0) throw InputError(path.string(), "", "cannot open for appending: " + std::string(std::strerror(errno)));
+  if (fd < 0)
+    throw InputError(path.string(), "", "cannot open for appending: " + std::string(std::strerror(errno)));
   const std::string text = line + "\n";
   const ssize_t written = ::write(fd, text.data(), text.size());
   ::fsync(fd);

@@ -17,7 +17,11 @@ InputError::InputError(std::string file, std::string where, std::string problem)
       where_(std::move(where)),
       problem_(std::move(problem)) {}
 
-std::string at_line(long line) { return "line " + std::to_string(line); }
-std::string at_byte(long long offset) { return "byte " + std::to_string(offset); }
+std::string at_line(long line) {
+  return "line " + std::to_string(line);
+}
+std::string at_byte(long long offset) {
+  return "byte " + std::to_string(offset);
+}
 
 }  // namespace sextant

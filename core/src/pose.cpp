@@ -11,7 +11,9 @@ Vector6d Pose6::vector() const {
   return xi;
 }
 
-Pose6 Pose6::from_vector(const Vector6d& xi) { return {xi[0], xi[1], xi[2], xi[3], xi[4], xi[5]}; }
+Pose6 Pose6::from_vector(const Vector6d& xi) {
+  return {xi[0], xi[1], xi[2], xi[3], xi[4], xi[5]};
+}
 
 double wrap_angle(double angle) {
   double wrapped = std::remainder(angle, 2.0 * M_PI);  // in [−π, π]
@@ -50,7 +52,9 @@ Pose6 to_pose6(const Eigen::Isometry3d& T) {
   return {t.x(), t.y(), t.z(), angles[0], angles[1], angles[2]};
 }
 
-Eigen::Isometry3d compose(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) { return a * b; }
+Eigen::Isometry3d compose(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+  return a * b;
+}
 
 Eigen::Isometry3d inverse(const Eigen::Isometry3d& T) {
   Eigen::Isometry3d inv = Eigen::Isometry3d::Identity();
@@ -59,17 +63,25 @@ Eigen::Isometry3d inverse(const Eigen::Isometry3d& T) {
   return inv;
 }
 
-Eigen::Isometry3d relative(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) { return inverse(a) * b; }
+Eigen::Isometry3d relative(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+  return inverse(a) * b;
+}
 
 double rotation_angle(const Eigen::Isometry3d& T) {
   const double cos_angle = std::clamp((T.linear().trace() - 1.0) / 2.0, -1.0, 1.0);
   return std::acos(cos_angle);
 }
 
-double translation_norm(const Eigen::Isometry3d& T) { return T.translation().norm(); }
+double translation_norm(const Eigen::Isometry3d& T) {
+  return T.translation().norm();
+}
 
-bool is_finite(const Eigen::Isometry3d& T) { return T.matrix().allFinite(); }
+bool is_finite(const Eigen::Isometry3d& T) {
+  return T.matrix().allFinite();
+}
 
-bool is_finite(const Pose6& pose) { return pose.vector().allFinite(); }
+bool is_finite(const Pose6& pose) {
+  return pose.vector().allFinite();
+}
 
 }  // namespace sextant

@@ -18,7 +18,8 @@ YAML::Node load_yaml_file(const std::string& path) {
   }
 }
 
-SettingsReader::SettingsReader(const YAML::Node& node, std::string file) : node_(node), file_(std::move(file)) {
+SettingsReader::SettingsReader(const YAML::Node& node, std::string file)
+    : node_(node), file_(std::move(file)) {
   if (node_.IsDefined() && !node_.IsNull() && !node_.IsMap()) {
     throw InputError(file_, at_line(yaml_line(node_)), "expected a map of settings");
   }
@@ -52,7 +53,8 @@ void SettingsReader::fail(const std::string& key, const std::string& problem) co
       if (entry.first.as<std::string>() == key) line = yaml_line(entry.first);
     }
   }
-  const std::string prefix = key.empty() || problem.find(key) != std::string::npos ? "" : "key '" + key + "': ";
+  const std::string prefix =
+      key.empty() || problem.find(key) != std::string::npos ? "" : "key '" + key + "': ";
   throw InputError(file_, line > 0 ? at_line(line) : "", prefix + problem);
 }
 

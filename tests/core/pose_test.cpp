@@ -21,10 +21,22 @@ Eigen::Matrix4d threedtk_euler_to_matrix4(const Eigen::Vector3d& t, const Eigen:
   const double sx = std::sin(angles[0]), cx = std::cos(angles[0]);
   const double sy = std::sin(angles[1]), cy = std::cos(angles[1]);
   const double sz = std::sin(angles[2]), cz = std::cos(angles[2]);
-  const double m[16] = {cy * cz, sx * sy * cz + cx * sz, -cx * sy * cz + sx * sz, 0,
-                        -cy * sz, -sx * sy * sz + cx * cz, cx * sy * sz + sx * cz, 0,
-                        sy, -sx * cy, cx * cy, 0,
-                        t.x(), t.y(), t.z(), 1};
+  const double m[16] = {cy * cz,
+                        sx * sy * cz + cx * sz,
+                        -cx * sy * cz + sx * sz,
+                        0,
+                        -cy * sz,
+                        -sx * sy * sz + cx * cz,
+                        cx * sy * sz + sx * cz,
+                        0,
+                        sy,
+                        -sx * cy,
+                        cx * cy,
+                        0,
+                        t.x(),
+                        t.y(),
+                        t.z(),
+                        1};
   return Eigen::Map<const Eigen::Matrix4d>(m);  // Eigen's default storage is column-major
 }
 

@@ -12,7 +12,7 @@ using Vector6d = Eigen::Matrix<double, 6, 1>;
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
 struct Pose6 {
-  double x = 0, y = 0, z = 0;           ///< translation [m]
+  double x = 0, y = 0, z = 0;             ///< translation [m]
   double alpha = 0, beta = 0, gamma = 0;  ///< Euler angles about x, y, z [rad], eq. (3.8)
 
   /// ξ = [tx ty tz α β γ]ᵀ, eq. (3.12).

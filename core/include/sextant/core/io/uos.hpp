@@ -20,9 +20,21 @@ Eigen::Vector3d internal_to_uos(const Eigen::Vector3d& p_m);
 /// A uos pose matrix (cm, left-handed) ↔ the same pose in the internal frame.
 Eigen::Isometry3d uos_pose_to_internal(const Eigen::Matrix4d& T_uos);
 Eigen::Matrix4d internal_pose_to_uos(const Eigen::Isometry3d& T);
+/// The uos pose matrix of a `.pose` file: rotation Rx(θx)·Ry(θy)·Rz(θz) (eq. 3.8, 3DTK's
+/// EulerToMatrix4) and translation t [cm], both in the uos frame.
+Eigen::Matrix4d uos_euler_to_matrix(const Eigen::Vector3d& t_cm, const Eigen::Vector3d& theta_rad);
 
-/// Reads a `.3d` file: skips up to a few header lines, drops and counts "no return" (3276 cm)
-/// and non-finite points; malformed numbers are an InputError with the line.
+/// Points at or beyond this range from the scanner origin are the "no return" sentinel
+/// (the SICK's 32.76 m maximum; in the hannover1 samples every such point lies at 3275–3277 cm).
+constexpr double kUosNoReturnRangeCm = 3275.0;
+bool is_uos_no_return(const Eigen::Vector3d& p_uos_cm);
+/// Type code written as the 17th number of each `.frames` line (3DTK reads and ignores it here).
+constexpr int kUosFrameTypeCode = 0;
+
+/// Reads a `.3d` file: skips header lines (lines among the first two, before any point, that are
+/// not ≥ 3 numbers, e.g. "360 x 225"), drops and counts "no return" (range ≥ 3275 cm) and
+/// non-finite points; malformed numbers are an InputError with the line. A 4th column, when
+/// every line has one, is read as intensity. report->points_read counts every point line.
 PointCloud read_uos_scan(const std::filesystem::path& file, ScanLoadReport* report = nullptr);
 void write_uos_scan(const std::filesystem::path& file, const PointCloud& cloud);
 

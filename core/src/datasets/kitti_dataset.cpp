@@ -1,0 +1,109 @@
+// A KITTI odometry sequence folder.
+#include <stdexcept>
+
+#include "scan_files.hpp"
+#include "sextant/core/dataset.hpp"
+#include "sextant/core/error.hpp"
+#include "sextant/core/io/cloud_io.hpp"
+#include "sextant/core/io/kitti.hpp"
+
+namespace sextant {
+namespace {
+
+std::vector<detail::NumberedFile> velodyne_files(const std::filesystem::path& velodyne) {
+  auto files = detail::numbered_files(velodyne, "", ".xyz32.bin");
+  if (files.empty()) files = detail::numbered_files(velodyne, "", ".bin");
+  return files;
+}
+
+class KittiDataset final : public Dataset {
+ public:
+  explicit KittiDataset(const std::filesystem::path& folder) {
+    scans_ = velodyne_files(folder / "velodyne");
+    if (scans_.empty()) {
+      throw InputError((folder / "velodyne").string(), "",
+                       "no NNNNNN.bin files (not a KITTI sequence folder)");
+    }
+    meta_.name = detail::folder_name(folder);
+    meta_.format = "kitti";
+    meta_.path = folder;
+    meta_.scan_count = scans_.size();
+    read_poses(folder);
+    const auto times_file = folder / "times.txt";
+    if (std::filesystem::exists(times_file)) {
+      times_ = read_kitti_times(times_file);
+      check_count(times_file, times_.size(), "times");
+    }
+    meta_.has_ground_truth = !ground_truth_.empty();
+  }
+
+  const DatasetMetadata& metadata() const override { return meta_; }
+  PointCloud scan(std::size_t i, ScanLoadReport* report) const override {
+    return read_cloud(scans_.at(i).path, report);
+  }
+  std::optional<Eigen::Isometry3d> odometry(std::size_t i) const override {
+    check_index(i);
+    return std::nullopt;
+  }
+  std::optional<Eigen::Isometry3d> ground_truth(std::size_t i) const override {
+    check_index(i);
+    if (ground_truth_.empty()) return std::nullopt;
+    return ground_truth_[i];
+  }
+  std::optional<double> stamp(std::size_t i) const override {
+    check_index(i);
+    if (times_.empty()) return std::nullopt;
+    return times_[i];
+  }
+  std::filesystem::path scan_file(std::size_t i) const override { return scans_.at(i).path; }
+
+ private:
+  void read_poses(const std::filesystem::path& folder) {
+    std::filesystem::path poses_file = folder / "poses.txt";
+    if (!std::filesystem::exists(poses_file)) {
+      poses_file = folder / ".." / ".." / "poses" / (meta_.name + ".txt");  // the benchmark's layout
+      if (!std::filesystem::exists(poses_file)) return;
+    }
+    const auto calib_file = folder / "calib.txt";
+    if (!std::filesystem::exists(calib_file)) {
+      throw InputError(
+          calib_file.string(), "",
+          "missing: needed to turn " + poses_file.string() + " (camera 0) into Velodyne-frame poses");
+    }
+    const auto camera_poses = read_kitti_poses(poses_file);
+    check_count(poses_file, camera_poses.size(), "poses");
+    ground_truth_ = kitti_velodyne_poses(camera_poses, read_kitti_calib_tr(calib_file));
+  }
+
+  void check_count(const std::filesystem::path& file, std::size_t count, const std::string& what) const {
+    if (count != scans_.size()) {
+      throw InputError(
+          file.string(), "",
+          std::to_string(count) + " " + what + " for " + std::to_string(scans_.size()) + " scans");
+    }
+  }
+  void check_index(std::size_t i) const {
+    if (i >= scans_.size()) throw std::out_of_range("scan index " + std::to_string(i) + " out of range");
+  }
+
+  DatasetMetadata meta_;
+  std::vector<detail::NumberedFile> scans_;
+  std::vector<Eigen::Isometry3d> ground_truth_;
+  std::vector<double> times_;
+};
+
+}  // namespace
+
+std::unique_ptr<Dataset> open_kitti_dataset(const std::filesystem::path& folder) {
+  return std::make_unique<KittiDataset>(folder);
+}
+
+std::unique_ptr<Dataset> open_dataset(const std::filesystem::path& folder) {
+  if (!std::filesystem::is_directory(folder)) throw InputError(folder.string(), "", "not a folder");
+  if (std::filesystem::is_directory(folder / "velodyne")) return open_kitti_dataset(folder);
+  if (!detail::numbered_files(folder, "scan", ".3d").empty()) return open_uos_dataset(folder);
+  throw InputError(folder.string(), "",
+                   "unknown dataset layout: expected scanNNN.3d files (uos) or a velodyne/ folder (KITTI)");
+}
+
+}  // namespace sextant

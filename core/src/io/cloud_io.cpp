@@ -1,0 +1,117 @@
+// read_cloud / write_cloud: dispatch by file extension.
+#include "sextant/core/io/cloud_io.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+#include "formats.hpp"
+#include "sextant/core/error.hpp"
+#include "sextant/core/io/kitti.hpp"
+#include "sextant/core/io/uos.hpp"
+
+namespace sextant {
+namespace {
+
+enum class Kind { uos, kitti_bin, xyz32, pcd, ply, csv, xyz, txt };
+
+struct Entry {
+  Kind kind;
+  CloudFormat format;
+};
+
+// Longest extensions first, so ".xyz32.bin" wins over ".bin".
+const std::vector<Entry>& entries() {
+  static const std::vector<Entry> table = {
+      {Kind::xyz32,
+       {".xyz32.bin", "KITTI velodyne x y z float32 (12 bytes/point)",
+        "metres, x forward, y left, z up (as internal)"}},
+      {Kind::kitti_bin,
+       {".bin", "KITTI velodyne x y z intensity float32 (16 bytes/point)",
+        "metres, x forward, y left, z up (as internal)"}},
+      {Kind::uos,
+       {".3d", "uos (3DTK) ASCII x y z",
+        "centimetres, left-handed, y up, z forward; converted to internal metres, z up"}},
+      {Kind::pcd, {".pcd", "PCL PCD", "as stored (assumed internal: metres, right-handed, z up)"}},
+      {Kind::ply, {".ply", "PLY", "as stored (assumed internal: metres, right-handed, z up)"}},
+      {Kind::csv,
+       {".csv", "CSV x,y,z[,intensity]", "as stored (assumed internal: metres, right-handed, z up)"}},
+      {Kind::xyz,
+       {".xyz", "ASCII x y z [intensity]", "as stored (assumed internal: metres, right-handed, z up)"}},
+      {Kind::txt,
+       {".txt", "ASCII x y z [intensity]", "as stored (assumed internal: metres, right-handed, z up)"}},
+  };
+  return table;
+}
+
+bool ends_with(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+const Entry& entry_for(const std::filesystem::path& file) {
+  std::string name = file.filename().string();
+  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
+  for (const Entry& e : entries()) {
+    if (ends_with(name, e.format.extension)) return e;
+  }
+  std::string known;
+  for (const Entry& e : entries()) known += " " + e.format.extension;
+  throw InputError(file.string(), "",
+                   "unknown point-cloud extension '" + file.extension().string() + "' (known:" + known + ")");
+}
+
+PointCloud read_by_kind(Kind kind, const std::filesystem::path& file, ScanLoadReport* report) {
+  switch (kind) {
+    case Kind::uos: return read_uos_scan(file, report);
+    case Kind::kitti_bin: return read_kitti_velodyne(file, report);
+    case Kind::xyz32: return read_xyz32(file, report);
+    case Kind::pcd: return detail::read_pcd(file, report);
+    case Kind::ply: return detail::read_ply(file, report);
+    case Kind::csv:
+    case Kind::xyz:
+    case Kind::txt: return detail::read_point_list(file, report);
+  }
+  return {};
+}
+
+}  // namespace
+
+CloudFormat cloud_format(const std::filesystem::path& file) {
+  return entry_for(file).format;
+}
+
+std::vector<CloudFormat> cloud_formats() {
+  std::vector<CloudFormat> out;
+  for (const Entry& e : entries()) out.push_back(e.format);
+  return out;
+}
+
+PointCloud read_cloud(const std::filesystem::path& file, ScanLoadReport* report) {
+  const Entry& e = entry_for(file);
+  ScanLoadReport local;
+  PointCloud cloud = read_by_kind(e.kind, file, &local);
+  if (report) *report = local;
+  if (cloud.empty()) {
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(file, ec);
+    throw InputError(file.string(), at_byte(ec ? 0 : static_cast<long long>(size)),
+                     "no points (" + std::to_string(local.points_read) + " read, " +
+                         std::to_string(local.non_finite_dropped) + " non-finite and " +
+                         std::to_string(local.no_return_dropped) + " no-return dropped)");
+  }
+  return cloud;
+}
+
+void write_cloud(const std::filesystem::path& file, const PointCloud& cloud) {
+  switch (entry_for(file).kind) {
+    case Kind::uos: return write_uos_scan(file, cloud);
+    case Kind::kitti_bin: return write_kitti_velodyne(file, cloud);
+    case Kind::xyz32: return write_xyz32(file, cloud);
+    case Kind::pcd: return detail::write_pcd(file, cloud);
+    case Kind::ply: return detail::write_ply(file, cloud);
+    case Kind::csv: return detail::write_point_list(file, cloud, true);
+    case Kind::xyz:
+    case Kind::txt: return detail::write_point_list(file, cloud, false);
+  }
+}
+
+}  // namespace sextant

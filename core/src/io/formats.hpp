@@ -1,0 +1,23 @@
+#pragma once
+// Private: the per-format readers and writers behind read_cloud / write_cloud.
+#include <filesystem>
+
+#include "sextant/core/dataset.hpp"
+#include "sextant/core/point_cloud.hpp"
+
+namespace sextant::detail {
+
+/// Text point lists: x y z [intensity] separated by commas or whitespace; a first line that is not
+/// numbers (e.g. "x,y,z") is a header.
+PointCloud read_point_list(const std::filesystem::path& file, ScanLoadReport* report);
+/// `with_header_and_commas`: CSV ("x,y,z[,intensity]" header, comma-separated); otherwise spaces.
+void write_point_list(const std::filesystem::path& file, const PointCloud& cloud,
+                      bool with_header_and_commas);
+
+/// PCD and PLY through PCL io (the only file that includes PCL headers in core).
+PointCloud read_pcd(const std::filesystem::path& file, ScanLoadReport* report);
+void write_pcd(const std::filesystem::path& file, const PointCloud& cloud);
+PointCloud read_ply(const std::filesystem::path& file, ScanLoadReport* report);
+void write_ply(const std::filesystem::path& file, const PointCloud& cloud);
+
+}  // namespace sextant::detail

@@ -1,0 +1,120 @@
+#include <gtest/gtest.h>
+
+#include "sextant/core/io/cloud_io.hpp"
+#include "test_util.hpp"
+
+namespace sextant {
+namespace {
+
+using test::data_dir;
+using test::expect_input_error;
+using test::TempDir;
+using test::write_text;
+
+PointCloud sample_cloud(bool with_intensity) {
+  PointCloud cloud;
+  for (int i = 0; i < 5; ++i) {
+    const Eigen::Vector3f p(0.5f * i, -1.25f + i, 3.0f - 0.75f * i);
+    if (with_intensity) {
+      cloud.push_back(p, 0.1f * i);
+    } else {
+      cloud.push_back(p);
+    }
+  }
+  return cloud;
+}
+
+void expect_same(const PointCloud& a, const PointCloud& b, float tolerance) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_LE((a[i] - b[i]).norm(), tolerance) << i;
+}
+
+class CloudRoundTrip : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(CloudRoundTrip, WriteThenReadGivesTheSameCloud) {
+  TempDir dir;
+  const std::string name = std::string("cloud") + GetParam();
+  for (bool with_intensity : {false, true}) {
+    const PointCloud cloud = sample_cloud(with_intensity);
+    write_cloud(dir / name, cloud);
+    const PointCloud back = read_cloud(dir / name);
+    expect_same(cloud, back, 1e-5f);
+    const bool keeps_intensity = name.find("xyz32") == std::string::npos;
+    if (with_intensity && keeps_intensity) {
+      ASSERT_TRUE(back.has_intensity()) << name;
+      for (std::size_t i = 0; i < cloud.size(); ++i)
+        EXPECT_NEAR(back.intensity()[i], cloud.intensity()[i], 1e-6f);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryFormat, CloudRoundTrip,
+                         ::testing::Values(".3d", ".bin", ".xyz32.bin", ".pcd", ".ply", ".csv", ".xyz",
+                                           ".txt"));
+
+TEST(CloudIo, EmptyCloudIsWrittenButReadingItIsAnError) {
+  TempDir dir;
+  for (const char* ext : {".3d", ".bin", ".pcd", ".csv"}) {
+    const auto file = dir / (std::string("empty") + ext);
+    write_cloud(file, PointCloud());
+    EXPECT_TRUE(std::filesystem::exists(file)) << ext;
+    try {
+      read_cloud(file);
+      ADD_FAILURE() << ext;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), file.string());
+      EXPECT_NE(e.problem().find("no points"), std::string::npos) << e.what();
+      EXPECT_EQ(e.where().rfind("byte ", 0), 0u) << e.what();
+    }
+  }
+}
+
+TEST(CloudIo, UnknownExtension) {
+  TempDir dir;
+  write_text(dir / "a.las", "x");
+  expect_input_error([&] { read_cloud(dir / "a.las"); }, dir / "a.las", "",
+                     "unknown point-cloud extension '.las'");
+  expect_input_error([&] { write_cloud(dir / "b.foo", PointCloud()); }, dir / "b.foo", "", "unknown");
+}
+
+TEST(CloudIo, MissingFile) {
+  TempDir dir;
+  expect_input_error([&] { read_cloud(dir / "none.pcd"); }, dir / "none.pcd", "", "cannot open");
+  expect_input_error([&] { read_cloud(dir / "none.3d"); }, dir / "none.3d", "", "cannot open");
+}
+
+TEST(CloudIo, CsvHeaderNonFiniteAndMalformed) {
+  TempDir dir;
+  write_text(dir / "a.csv", "x,y,z\n1,2,3\nnan,2,3\n4,5,6\n");
+  ScanLoadReport report;
+  EXPECT_EQ(read_cloud(dir / "a.csv", &report).size(), 2u);
+  EXPECT_EQ(report.non_finite_dropped, 1u);
+  EXPECT_EQ(report.header_lines_skipped, 1u);
+  write_text(dir / "b.csv", "1,2,3\n4,5,6\n7,8,1.2.3\n");
+  expect_input_error([&] { read_cloud(dir / "b.csv"); }, dir / "b.csv", "line 3", "'1.2.3'");
+}
+
+TEST(CloudIo, AllNonFiniteIsAnError) {
+  TempDir dir;
+  write_text(dir / "n.xyz", "nan 1 2\ninf 1 2\n");
+  expect_input_error([&] { read_cloud(dir / "n.xyz"); }, dir / "n.xyz", "byte 16", "2 non-finite");
+}
+
+TEST(CloudIo, SharedPcdSamples) {
+  const PointCloud room = read_cloud(data_dir() / "pcl_room_scan" / "room_scan1.pcd");  // binary_compressed
+  EXPECT_EQ(room.size(), 112586u);
+  const PointCloud velodyne = read_cloud(data_dir() / "velodyne_pair" / "fast_gicp_251370668.pcd");
+  EXPECT_EQ(velodyne.size(), 69088u);
+  EXPECT_TRUE(velodyne.has_intensity());
+}
+
+TEST(CloudIo, TruncatedPcd) {
+  TempDir dir;
+  write_text(dir / "t.pcd",
+             "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 10\nHEIGHT 1\n"
+             "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 10\nDATA binary\nabc");
+  expect_input_error([&] { read_cloud(dir / "t.pcd"); }, dir / "t.pcd", "", "PCL could not read");
+}
+
+}  // namespace
+}  // namespace sextant
