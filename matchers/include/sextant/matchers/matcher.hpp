@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Geometry>
 #include <yaml-cpp/yaml.h>
+#include <Eigen/Geometry>
 
 #include "sextant/core/point_cloud.hpp"
 #include "sextant/core/registry.hpp"

@@ -12,13 +12,13 @@
 namespace sextant {
 
 enum class Termination {
-  kConverged,          ///< ‖Δξ‖ < ε in the last layer
-  kMaxIterations,      ///< iteration cap reached
+  kConverged,              ///< ‖Δξ‖ < ε in the last layer
+  kMaxIterations,          ///< iteration cap reached
   kTooFewCorrespondences,  ///< fewer matched points than the problem needs
-  kNonFiniteInput,     ///< NaN/Inf in the initial guess or the data
-  kEmptyInput,         ///< empty reference or input cloud
-  kSolverFailure,      ///< linear solve or line search failed
-  kDiverged,           ///< the estimate left the plausible region
+  kNonFiniteInput,         ///< NaN/Inf in the initial guess or the data
+  kEmptyInput,             ///< empty reference or input cloud
+  kSolverFailure,          ///< linear solve or line search failed
+  kDiverged,               ///< the estimate left the plausible region
 };
 
 std::string to_string(Termination why);
@@ -26,9 +26,9 @@ std::string to_string(Termination why);
 /// One optimiser iteration, for convergence plots (E1).
 struct IterationTrace {
   int iteration = 0;
-  int layer = 0;           ///< ML-NDT layer (0 when the matcher has none)
-  double score = 0.0;      ///< objective after the step
-  double step_norm = 0.0;  ///< ‖Δξ‖
+  int layer = 0;                   ///< ML-NDT layer (0 when the matcher has none)
+  double score = 0.0;              ///< objective after the step
+  double step_norm = 0.0;          ///< ‖Δξ‖
   Vector6d xi = Vector6d::Zero();  ///< [tx ty tz α β γ] after the step, eq. (3.12)
   std::size_t matched_points = 0;
 };

@@ -1,0 +1,109 @@
+#pragma once
+// A dense grid of normal distributions (NDT cells, eqs. 3.2–3.3) and the ML-NDT layer pyramid
+// (Table 3.1, §3.2). Cells are found by a dense index floor((p − origin) / edge), no hashing;
+// the Gaussians (mean and C⁻¹) are stored contiguously for the score kernels.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "sextant/core/point_cloud.hpp"
+
+namespace sextant {
+
+struct CellStatsSettings {
+  std::size_t min_points = 5;      ///< a cell gets a Gaussian with at least this many points (Table 3.1: > 4)
+  double max_eigen_ratio = 100.0;  ///< eigenvalues below λmax / ratio are raised to it (text after eq. 3.11)
+  bool valid(std::string* why) const;
+};
+
+/// One cell's normal distribution in the hot-loop layout: mean and the upper triangle of C⁻¹.
+struct CellGaussian {
+  float mean[3];
+  float inv_cov[6];  ///< xx xy xz yy yz zz of C⁻¹
+};
+
+class NdtGrid {
+ public:
+  NdtGrid() = default;
+
+  /// Cubic cells of edge `cell_edge` [m]; `dims` cells per axis starting at `origin`.
+  /// Reference points outside the box are ignored. A grid of more than `max_cells` cells is
+  /// refused (empty grid, too_large() true) rather than exhausting memory.
+  static NdtGrid build(const PointCloud& reference, const Eigen::Vector3d& origin, double cell_edge,
+                       const Eigen::Vector3i& dims, const CellStatsSettings& settings = {},
+                       std::size_t max_cells = std::size_t{1} << 27);
+  /// Cells of edge `cell_edge` over the reference's bounding box, ceil(extent / edge) per axis.
+  static NdtGrid build_over_bounds(const PointCloud& reference, double cell_edge,
+                                   const CellStatsSettings& settings = {});
+
+  bool empty() const { return gaussians_.empty(); }
+  bool too_large() const { return too_large_; }
+  double cell_edge() const { return cell_edge_; }
+  const Eigen::Vector3d& origin() const { return origin_; }
+  const Eigen::Vector3i& dims() const { return dims_; }
+  std::size_t cell_count() const { return index_.size(); }
+  std::size_t gaussian_count() const { return gaussians_.size(); }
+
+  /// Index of the Gaussian of the cell containing p, or −1 (outside, or too few points).
+  int lookup(float x, float y, float z) const {
+    const float fx = (x - ox_) * inv_edge_, fy = (y - oy_) * inv_edge_, fz = (z - oz_) * inv_edge_;
+    if (!(fx >= 0.f && fy >= 0.f && fz >= 0.f && fx < fdx_ && fy < fdy_ && fz < fdz_)) return -1;
+    return index_[cell_index(static_cast<int>(fx), static_cast<int>(fy), static_cast<int>(fz))];
+  }
+  /// Gaussian index of cell (ix, iy, iz), or −1 when outside or empty.
+  int at(int ix, int iy, int iz) const {
+    if (ix < 0 || iy < 0 || iz < 0 || ix >= dims_.x() || iy >= dims_.y() || iz >= dims_.z()) return -1;
+    return index_[cell_index(ix, iy, iz)];
+  }
+  const CellGaussian& gaussian(int g) const { return gaussians_[static_cast<std::size_t>(g)]; }
+  const std::vector<CellGaussian>& gaussians() const { return gaussians_; }
+  /// Inflated covariance C' of Gaussian g (double precision, for tests and reports).
+  const Eigen::Matrix3d& covariance(int g) const { return covariances_[static_cast<std::size_t>(g)]; }
+  /// Upper-triangular Lᵀ with C⁻¹ = L·Lᵀ (the Ceres residual Lᵀe).
+  const Eigen::Matrix3f& sqrt_information(int g) const { return sqrt_info_[static_cast<std::size_t>(g)]; }
+  /// Index of the cell holding Gaussian g along each axis.
+  Eigen::Vector3i cell_of(int g) const;
+
+ private:
+  std::size_t cell_index(int ix, int iy, int iz) const {
+    return (static_cast<std::size_t>(iz) * static_cast<std::size_t>(dims_.y()) +
+            static_cast<std::size_t>(iy)) *
+               static_cast<std::size_t>(dims_.x()) +
+           static_cast<std::size_t>(ix);
+  }
+
+  Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3i dims_ = Eigen::Vector3i::Zero();
+  double cell_edge_ = 0.0;
+  float ox_ = 0.f, oy_ = 0.f, oz_ = 0.f, inv_edge_ = 0.f, fdx_ = 0.f, fdy_ = 0.f, fdz_ = 0.f;
+  bool too_large_ = false;
+  std::vector<std::int32_t> index_;  ///< cell → Gaussian index or −1
+  std::vector<CellGaussian> gaussians_;
+  std::vector<Eigen::Matrix3d> covariances_;
+  std::vector<Eigen::Matrix3f> sqrt_info_;
+  std::vector<std::int32_t> cell_of_gaussian_;
+};
+
+/// Geometry of ML-NDT layer i (§3.2): the bounding box is split into qⁱ cubes of equal volume,
+/// edge k = (V / qⁱ)^(1/3), and ceil(extent / k) cells per axis. Axes of (near) zero extent are
+/// left out of the volume (a planar cloud uses areas and square roots).
+struct LayerGeometry {
+  double cell_edge = 0.0;                          ///< k [m]
+  Eigen::Vector3i dims = Eigen::Vector3i::Zero();  ///< cells per axis
+};
+LayerGeometry layer_geometry(const Bounds& bounds, int q, int layer);
+
+struct LayerPyramidSettings {
+  int division = 8;  ///< q: layer i splits the bounding volume into qⁱ cells
+  int layers = 4;    ///< n: layers 1..n
+  CellStatsSettings cells;
+  bool valid(std::string* why) const;
+};
+
+/// Layers 1..n of Table 3.1 ("splitting" and "generative" processes); element 0 is layer 1.
+std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const LayerPyramidSettings& settings);
+
+}  // namespace sextant

@@ -1,0 +1,189 @@
+// Dense NDT cell grids (eqs. 3.2–3.3 with the covariance inflation after eq. 3.11) and the
+// ML-NDT layer pyramid of Table 3.1.
+#include "sextant/matchers/ndt_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Eigenvalues>
+
+namespace sextant {
+
+namespace {
+
+/// Running sums of one occupied cell, relative to the grid origin (double precision).
+struct CellSums {
+  std::int32_t cell = 0;
+  std::int32_t count = 0;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d sum_sq = Eigen::Matrix3d::Zero();
+};
+
+/// Mean (eq. 3.2), covariance (eq. 3.3) with eigenvalues raised to λmax / ratio; false when the
+/// cell has no spread at all.
+bool cell_gaussian(const CellSums& s, const Eigen::Vector3d& origin, double max_ratio, CellGaussian& out,
+                   Eigen::Matrix3d& covariance, Eigen::Matrix3f& sqrt_info) {
+  const double n = s.count;
+  const Eigen::Vector3d mean = s.sum / n;
+  Eigen::Matrix3d C = (s.sum_sq - n * mean * mean.transpose()) / (n - 1.0);
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+  eig.computeDirect(C);
+  Eigen::Vector3d l = eig.eigenvalues();  // ascending
+  const double floor_value = l(2) / max_ratio;
+  if (!(l(2) > 0.0) || !std::isfinite(l(2))) return false;
+  for (int j = 0; j < 2; ++j) l(j) = std::max(l(j), floor_value);  // C' = V Λ' Vᵀ
+  const Eigen::Matrix3d& V = eig.eigenvectors();
+  covariance = V * l.asDiagonal() * V.transpose();
+  const Eigen::Matrix3d inv = V * l.cwiseInverse().asDiagonal() * V.transpose();
+  const Eigen::Vector3d m = mean + origin;
+  for (int i = 0; i < 3; ++i) out.mean[i] = static_cast<float>(m(i));
+  const double upper[6] = {inv(0, 0), inv(0, 1), inv(0, 2), inv(1, 1), inv(1, 2), inv(2, 2)};
+  for (int i = 0; i < 6; ++i) out.inv_cov[i] = static_cast<float>(upper[i]);
+  // C⁻¹ = L Lᵀ with L = V Λ'^(-1/2): any square root serves the residual Lᵀe; use the
+  // triangular one from a Cholesky factorisation for a compact upper-triangular Lᵀ.
+  const Eigen::Matrix3d L = Eigen::LLT<Eigen::Matrix3d>(inv).matrixL();
+  sqrt_info = L.transpose().cast<float>();
+  return true;
+}
+
+}  // namespace
+
+bool CellStatsSettings::valid(std::string* why) const {
+  const char* problem = nullptr;
+  if (min_points < 4)
+    problem = "min_points must be at least 4 (a 3D covariance needs more than 3 points)";
+  else if (!(max_eigen_ratio >= 1.0))
+    problem = "max_eigen_ratio must be at least 1";
+  if (problem && why) *why = problem;
+  return problem == nullptr;
+}
+
+NdtGrid NdtGrid::build(const PointCloud& reference, const Eigen::Vector3d& origin, double cell_edge,
+                       const Eigen::Vector3i& dims, const CellStatsSettings& settings,
+                       std::size_t max_cells) {
+  NdtGrid grid;
+  grid.origin_ = origin;
+  grid.cell_edge_ = cell_edge;
+  if (!(cell_edge > 0.0) || !std::isfinite(cell_edge) || (dims.array() < 1).any() || !origin.allFinite())
+    return grid;
+  const double cells = static_cast<double>(dims.x()) * dims.y() * dims.z();
+  if (cells > static_cast<double>(max_cells)) {
+    grid.too_large_ = true;
+    return grid;
+  }
+  grid.dims_ = dims;
+  grid.ox_ = static_cast<float>(origin.x());
+  grid.oy_ = static_cast<float>(origin.y());
+  grid.oz_ = static_cast<float>(origin.z());
+  grid.inv_edge_ = static_cast<float>(1.0 / cell_edge);
+  grid.fdx_ = static_cast<float>(dims.x());
+  grid.fdy_ = static_cast<float>(dims.y());
+  grid.fdz_ = static_cast<float>(dims.z());
+  grid.index_.assign(static_cast<std::size_t>(cells), -1);
+
+  // Splitting process: one pass, sums per occupied cell in order of first appearance.
+  std::vector<CellSums> sums;
+  const double inv_edge = 1.0 / cell_edge;
+  for (const Eigen::Vector3f& pf : reference.points()) {
+    const Eigen::Vector3d p = pf.cast<double>() - origin;
+    const Eigen::Vector3d f = p * inv_edge;
+    if (!f.allFinite() || (f.array() < 0.0).any()) continue;
+    // Points on the far face of the box belong to the last cell (the box is closed).
+    Eigen::Vector3i c;
+    bool inside = true;
+    for (int a = 0; a < 3; ++a) {
+      if (f(a) > dims(a) + 1e-9) inside = false;
+      c(a) = std::min(static_cast<int>(f(a)), dims(a) - 1);
+    }
+    if (!inside) continue;
+    std::int32_t& slot = grid.index_[grid.cell_index(c.x(), c.y(), c.z())];
+    if (slot < 0) {
+      slot = static_cast<std::int32_t>(sums.size());
+      CellSums fresh;
+      fresh.cell = static_cast<std::int32_t>(grid.cell_index(c.x(), c.y(), c.z()));
+      sums.push_back(fresh);
+    }
+    CellSums& s = sums[static_cast<std::size_t>(slot)];
+    ++s.count;
+    s.sum += p;
+    s.sum_sq.noalias() += p * p.transpose();
+  }
+
+  // Generative process: a Gaussian for every cell with enough points.
+  for (const CellSums& s : sums) {
+    std::int32_t& slot = grid.index_[static_cast<std::size_t>(s.cell)];
+    slot = -1;
+    if (static_cast<std::size_t>(s.count) < settings.min_points) continue;
+    CellGaussian g{};
+    Eigen::Matrix3d covariance;
+    Eigen::Matrix3f sqrt_info;
+    if (!cell_gaussian(s, origin, settings.max_eigen_ratio, g, covariance, sqrt_info)) continue;
+    slot = static_cast<std::int32_t>(grid.gaussians_.size());
+    grid.gaussians_.push_back(g);
+    grid.covariances_.push_back(covariance);
+    grid.sqrt_info_.push_back(sqrt_info);
+    grid.cell_of_gaussian_.push_back(s.cell);
+  }
+  return grid;
+}
+
+NdtGrid NdtGrid::build_over_bounds(const PointCloud& reference, double cell_edge,
+                                   const CellStatsSettings& settings) {
+  const Bounds b = reference.bounds();
+  Eigen::Vector3i dims;
+  for (int a = 0; a < 3; ++a)
+    dims(a) = std::max(1, static_cast<int>(std::ceil(static_cast<double>(b.extent()(a)) / cell_edge)));
+  if (!(cell_edge > 0.0) || !std::isfinite(cell_edge)) dims.setZero();
+  return build(reference, b.min.cast<double>(), cell_edge, dims, settings);
+}
+
+Eigen::Vector3i NdtGrid::cell_of(int g) const {
+  const auto cell = static_cast<std::size_t>(cell_of_gaussian_[static_cast<std::size_t>(g)]);
+  const auto nx = static_cast<std::size_t>(dims_.x()), ny = static_cast<std::size_t>(dims_.y());
+  return {static_cast<int>(cell % nx), static_cast<int>((cell / nx) % ny),
+          static_cast<int>(cell / (nx * ny))};
+}
+
+LayerGeometry layer_geometry(const Bounds& bounds, int q, int layer) {
+  LayerGeometry geometry;
+  const Eigen::Vector3d extent = bounds.extent().cast<double>();
+  const double largest = extent.maxCoeff();
+  if (!(largest > 0.0) || !std::isfinite(largest) || q < 1 || layer < 0) return geometry;
+  double volume = 1.0;
+  int used_axes = 0;
+  for (int a = 0; a < 3; ++a) {
+    if (extent(a) > 1e-6 * largest) {
+      volume *= extent(a);
+      ++used_axes;
+    }
+  }
+  const double cells = std::pow(static_cast<double>(q), layer);
+  geometry.cell_edge = std::pow(volume / cells, 1.0 / used_axes);  // k = (V / qⁱ)^(1/3)
+  for (int a = 0; a < 3; ++a)
+    geometry.dims(a) = std::max(1, static_cast<int>(std::ceil(extent(a) / geometry.cell_edge - 1e-9)));
+  return geometry;
+}
+
+bool LayerPyramidSettings::valid(std::string* why) const {
+  const char* problem = nullptr;
+  if (division < 2)
+    problem = "division (q) must be at least 2";
+  else if (layers < 1 || layers > 8)
+    problem = "layers (n) must lie in [1, 8]";
+  if (problem && why) *why = problem;
+  if (problem) return false;
+  return cells.valid(why);
+}
+
+std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const LayerPyramidSettings& settings) {
+  std::vector<NdtGrid> layers;
+  const Bounds bounds = reference.bounds();
+  for (int i = 1; i <= settings.layers; ++i) {
+    const LayerGeometry g = layer_geometry(bounds, settings.division, i);
+    layers.push_back(
+        NdtGrid::build(reference, bounds.min.cast<double>(), g.cell_edge, g.dims, settings.cells));
+  }
+  return layers;
+}
+
+}  // namespace sextant

@@ -1,0 +1,106 @@
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+
+#include "sextant/matchers/ndt_grid.hpp"
+#include "test_clouds.hpp"
+
+namespace sextant {
+namespace {
+
+TEST(LayerGeometry, ThesisWorkedExample) {
+  // §3.2: a 100 × 100 × 20 m cloud, layer 2 with q = 8 → k = 3125^(1/3) = 14.62 m, 7 × 7 × 2 cells.
+  Bounds b;
+  b.min = {-50, -50, 0};
+  b.max = {50, 50, 20};
+  const LayerGeometry g = layer_geometry(b, 8, 2);
+  EXPECT_NEAR(g.cell_edge, 14.62, 0.005);
+  EXPECT_EQ(g.dims, Eigen::Vector3i(7, 7, 2));
+  EXPECT_EQ(g.dims.prod(), 98);
+}
+
+TEST(LayerGeometry, FlatCloudUsesArea) {
+  Bounds b;
+  b.min = {0, 0, 0};
+  b.max = {40, 40, 0};
+  const LayerGeometry g = layer_geometry(b, 4, 1);
+  EXPECT_NEAR(g.cell_edge, 20.0, 1e-9);
+  EXPECT_EQ(g.dims, Eigen::Vector3i(2, 2, 1));
+}
+
+TEST(NdtGrid, MeanCovarianceAndLookup) {
+  Rng rng(5);
+  PointCloud cloud;
+  std::vector<Eigen::Vector3d> in_cell;
+  for (int i = 0; i < 200; ++i) {
+    const Eigen::Vector3f p(1.5f + 0.3f * static_cast<float>(rng.normal()) * 0.5f,
+                            0.5f + 0.1f * static_cast<float>(rng.uniform()),
+                            0.5f + 0.2f * static_cast<float>(rng.uniform()));
+    cloud.push_back(p);
+  }
+  for (int i = 0; i < 3; ++i) cloud.push_back({0.5f, 2.5f, 0.5f});  // too few for a Gaussian
+  const NdtGrid grid = NdtGrid::build(cloud, Eigen::Vector3d::Zero(), 1.0, {3, 3, 1});
+  ASSERT_EQ(grid.gaussian_count(), 1u);
+  const int g = grid.lookup(1.5f, 0.5f, 0.5f);
+  ASSERT_EQ(g, 0);
+  EXPECT_EQ(grid.lookup(0.5f, 2.5f, 0.5f), -1);
+  EXPECT_EQ(grid.lookup(-0.1f, 0.5f, 0.5f), -1);
+  EXPECT_EQ(grid.lookup(std::nanf(""), 0.5f, 0.5f), -1);
+  EXPECT_EQ(grid.cell_of(g), Eigen::Vector3i(1, 0, 0));
+  // Reference statistics, eqs. (3.2)–(3.3), over the points inside cell (1, 0, 0).
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  int n = 0;
+  for (const auto& p : cloud.points())
+    if (p.x() >= 1 && p.x() < 2 && p.y() < 1) mean += p.cast<double>(), ++n;
+  mean /= n;
+  Eigen::Matrix3d C = Eigen::Matrix3d::Zero();
+  for (const auto& p : cloud.points())
+    if (p.x() >= 1 && p.x() < 2 && p.y() < 1)
+      C += (p.cast<double>() - mean) * (p.cast<double>() - mean).transpose();
+  C /= (n - 1);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(grid.gaussian(g).mean[i], mean(i), 1e-5);
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(C);
+  const Eigen::Vector3d l = eig.eigenvalues();
+  if (l(2) / l(0) <= 100.0) {
+    EXPECT_LT((grid.covariance(g) - C).norm(), 1e-9 * C.norm() + 1e-12);
+  }
+}
+
+TEST(NdtGrid, CoplanarCellIsInflatedToRatio100) {
+  PointCloud cloud;
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j) cloud.push_back({0.05f + 0.09f * i, 0.05f + 0.09f * j, 0.5f});
+  const NdtGrid grid = NdtGrid::build(cloud, Eigen::Vector3d::Zero(), 1.0, {1, 1, 1});
+  ASSERT_EQ(grid.gaussian_count(), 1u);
+  const Eigen::Vector3d l = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(grid.covariance(0)).eigenvalues();
+  EXPECT_NEAR(l(0), l(2) / 100.0, 1e-12);
+  EXPECT_TRUE(std::isfinite(grid.gaussian(0).inv_cov[5]));
+  const Eigen::Matrix3f Lt = grid.sqrt_information(0);
+  const Eigen::Matrix3d inv = grid.covariance(0).inverse();
+  EXPECT_LT(((Lt.transpose() * Lt).cast<double>() - inv).norm() / inv.norm(), 1e-5);
+}
+
+TEST(NdtGrid, PyramidLayerSizesGrowByQ) {
+  Rng rng(2);
+  const PointCloud cloud = test::yard(rng);
+  const auto layers = build_layer_pyramid(cloud, LayerPyramidSettings{});
+  ASSERT_EQ(layers.size(), 4u);
+  for (std::size_t i = 1; i < layers.size(); ++i) {
+    EXPECT_NEAR(layers[i - 1].cell_edge() / layers[i].cell_edge(), 2.0, 1e-9);  // q = 8 → edge halves
+    EXPECT_GT(layers[i].gaussian_count(), layers[i - 1].gaussian_count());
+  }
+}
+
+TEST(NdtGrid, EmptyAndDegenerateInputGiveEmptyGrids) {
+  EXPECT_TRUE(NdtGrid::build_over_bounds(PointCloud(), 1.0).empty());
+  PointCloud collinear;
+  for (int i = 0; i < 50; ++i) collinear.push_back({0.1f * i, 0, 0});
+  const NdtGrid grid = NdtGrid::build_over_bounds(collinear, 1.0);
+  for (std::size_t g = 0; g < grid.gaussian_count(); ++g)
+    EXPECT_TRUE(grid.covariance(static_cast<int>(g)).allFinite());
+  EXPECT_TRUE(NdtGrid::build_over_bounds(collinear, -1.0).empty());
+  EXPECT_TRUE(NdtGrid::build(collinear, Eigen::Vector3d::Zero(), 1e-4, {100000, 100000, 100000}).too_large());
+}
+
+}  // namespace
+}  // namespace sextant
