@@ -1,0 +1,141 @@
+#include "sextant/eval/html_report.hpp"
+
+#include <array>
+#include <sstream>
+
+#include "sextant/core/atomic_file.hpp"
+
+namespace sextant {
+
+namespace {
+
+const char* kStyle =
+    R"(body{font-family:DejaVu Sans,Arial,sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;color:#222}
+h1{margin-bottom:.2em}h2{border-bottom:1px solid #ccc;padding-bottom:.2em;margin-top:2em}
+table.sx-table{border-collapse:collapse;margin:1em 0;font-size:.9em}
+table.sx-table caption{caption-side:top;text-align:left;font-weight:bold;padding-bottom:.3em}
+table.sx-table th,table.sx-table td{padding:.25em .6em;border-bottom:1px solid #ddd}
+table.sx-table thead th{border-bottom:2px solid #444}
+td.num{text-align:right;font-variant-numeric:tabular-nums}
+p.sx-note{font-size:.85em;color:#555}
+figure{margin:1em 0}figure img{max-width:100%;border:1px solid #eee}figcaption{font-size:.9em;color:#444}
+ul.claims{list-style:none;padding-left:0}ul.claims li{margin:.4em 0;padding:.4em .6em;border-left:4px solid #999;background:#fafafa}
+.verdict{font-weight:bold;padding:0 .4em;border-radius:3px;color:#fff}
+.v-holds{background:#2a7d2a}.v-does-not-hold{background:#b22222}.v-not-comparable{background:#777}
+li.c-holds{border-left-color:#2a7d2a}li.c-does-not-hold{border-left-color:#b22222}
+.evidence{display:block;font-size:.88em;color:#444;margin-top:.2em}
+dl.provenance{display:grid;grid-template-columns:max-content auto;gap:.2em 1em;font-size:.9em}
+dl.provenance dt{font-weight:bold}dl.provenance dd{margin:0;font-family:monospace;white-space:pre-wrap}
+)";
+
+std::string verdict_class(Verdict v) {
+  switch (v) {
+    case Verdict::holds: return "holds";
+    case Verdict::does_not_hold: return "does-not-hold";
+    case Verdict::not_comparable: return "not-comparable";
+  }
+  return "not-comparable";
+}
+
+std::string render_claim(const Claim& c) {
+  std::ostringstream out;
+  out << "<li class=\"c-" << verdict_class(c.verdict) << "\"><span class=\"verdict v-"
+      << verdict_class(c.verdict) << "\">" << escape_html(to_string(c.verdict)) << "</span> "
+      << escape_html(c.statement);
+  if (!c.evidence.empty()) out << "<span class=\"evidence\">" << escape_html(c.evidence) << "</span>";
+  out << "</li>\n";
+  return out.str();
+}
+
+}  // namespace
+
+std::string to_string(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::holds: return "holds";
+    case Verdict::does_not_hold: return "does not hold";
+    case Verdict::not_comparable: return "not comparable";
+  }
+  return "not comparable";
+}
+
+HtmlSection& HtmlSection::add_paragraph(const std::string& text) {
+  blocks_.push_back("<p>" + escape_html(text) + "</p>\n");
+  return *this;
+}
+
+HtmlSection& HtmlSection::add_html(const std::string& html) {
+  blocks_.push_back(html + "\n");
+  return *this;
+}
+
+HtmlSection& HtmlSection::add_table(const Table& table) {
+  blocks_.push_back(render_html(table));
+  return *this;
+}
+
+HtmlSection& HtmlSection::add_figure(const std::string& src, const std::string& caption) {
+  figures_.push_back(src);
+  blocks_.push_back("<figure><img src=\"" + escape_html(src) + "\" alt=\"" + escape_html(caption) +
+                    "\"><figcaption>" + escape_html(caption) + "</figcaption></figure>\n");
+  return *this;
+}
+
+HtmlSection& HtmlSection::add_claim(const Claim& claim) {
+  claims_.push_back(claim);
+  return *this;
+}
+
+std::string HtmlSection::render() const {
+  std::ostringstream out;
+  out << "<section id=\"" << escape_html(id_) << "\">\n<h2>" << escape_html(title_) << "</h2>\n";
+  for (const std::string& b : blocks_) out << b;
+  if (!claims_.empty()) {
+    out << "<h3>Claims of the thesis</h3>\n<ul class=\"claims\">\n";
+    for (const Claim& c : claims_) out << render_claim(c);
+    out << "</ul>\n";
+  }
+  out << "</section>\n";
+  return out.str();
+}
+
+HtmlSection& HtmlReport::add_section(const std::string& id, const std::string& title) {
+  sections.emplace_back(id, title);
+  return sections.back();
+}
+
+std::string HtmlReport::render() const {
+  std::array<std::size_t, 3> counts{};
+  for (const HtmlSection& s : sections)
+    for (const Claim& c : s.claims()) ++counts[static_cast<std::size_t>(c.verdict)];
+  std::ostringstream out;
+  out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>"
+      << escape_html(title) << "</title>\n<style>\n"
+      << kStyle << "</style>\n</head>\n<body>\n<h1>" << escape_html(title) << "</h1>\n";
+  if (!subtitle.empty()) out << "<p>" << escape_html(subtitle) << "</p>\n";
+  if (counts[0] + counts[1] + counts[2] > 0)
+    out << "<p class=\"summary\">Claims: <span class=\"verdict v-holds\">" << counts[0]
+        << " hold</span> <span class=\"verdict v-does-not-hold\">" << counts[1]
+        << " do not hold</span> <span class=\"verdict v-not-comparable\">" << counts[2]
+        << " not comparable</span></p>\n";
+  if (!sections.empty()) {
+    out << "<nav><ul>\n";
+    for (const HtmlSection& s : sections)
+      out << "<li><a href=\"#" << escape_html(s.id()) << "\">" << escape_html(s.title()) << "</a></li>\n";
+    out << "</ul></nav>\n";
+  }
+  for (const HtmlSection& s : sections) out << s.render();
+  if (!provenance.empty()) {
+    out << "<section id=\"provenance\">\n<h2>Provenance</h2>\n<dl class=\"provenance\">\n";
+    for (const auto& [key, value] : provenance)
+      out << "<dt>" << escape_html(key) << "</dt><dd>" << escape_html(value) << "</dd>\n";
+    out << "</dl>\n</section>\n";
+  }
+  out << "</body>\n</html>\n";
+  return out.str();
+}
+
+void HtmlReport::write(const std::filesystem::path& path) const {
+  write_file_atomically(path, render());
+}
+
+}  // namespace sextant

@@ -1,0 +1,100 @@
+#include "svg_document.hpp"
+
+#include <cmath>
+#include <locale>
+
+namespace sextant::svg {
+
+std::string num(double v) {
+  std::ostringstream out;
+  out.imbue(std::locale::classic());
+  out.precision(6);
+  out << v;
+  return out.str();
+}
+
+std::string tick_label(double v) {
+  return num(std::abs(v) < 1e-12 ? 0.0 : v);
+}
+
+std::string escape(const std::string& s) {
+  std::string out;
+  for (char ch : s) {
+    switch (ch) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += ch;
+    }
+  }
+  return out;
+}
+
+Document::Document(int width, int height) : width_(width), height_(height) {
+  body_.imbue(std::locale::classic());
+}
+
+void Document::rect(double x, double y, double w, double h, const std::string& fill,
+                    const std::string& stroke, double stroke_width) {
+  body_ << "<rect x=\"" << num(x) << "\" y=\"" << num(y) << "\" width=\"" << num(w) << "\" height=\""
+        << num(h) << "\" fill=\"" << escape(fill) << "\"";
+  if (stroke != "none")
+    body_ << " stroke=\"" << escape(stroke) << "\" stroke-width=\"" << num(stroke_width) << "\"";
+  body_ << "/>\n";
+}
+
+void Document::line(double x1, double y1, double x2, double y2, const std::string& stroke, double width,
+                    const std::string& dash) {
+  body_ << "<line x1=\"" << num(x1) << "\" y1=\"" << num(y1) << "\" x2=\"" << num(x2) << "\" y2=\"" << num(y2)
+        << "\" stroke=\"" << escape(stroke) << "\" stroke-width=\"" << num(width) << "\"";
+  if (!dash.empty()) body_ << " stroke-dasharray=\"" << escape(dash) << "\"";
+  body_ << "/>\n";
+}
+
+void Document::polyline(const std::vector<double>& xs, const std::vector<double>& ys,
+                        const std::string& stroke, double width, bool closed) {
+  if (xs.empty()) return;
+  body_ << (closed ? "<polygon" : "<polyline") << " fill=\"none\" stroke=\"" << escape(stroke)
+        << "\" stroke-width=\"" << num(width) << "\" stroke-linejoin=\"round\" points=\"";
+  for (std::size_t i = 0; i < xs.size() && i < ys.size(); ++i)
+    body_ << (i ? " " : "") << num(xs[i]) << "," << num(ys[i]);
+  body_ << "\"/>\n";
+}
+
+void Document::circle(double cx, double cy, double r, const std::string& fill) {
+  body_ << "<circle cx=\"" << num(cx) << "\" cy=\"" << num(cy) << "\" r=\"" << num(r) << "\" fill=\""
+        << escape(fill) << "\"/>\n";
+}
+
+void Document::text(double x, double y, const std::string& content, double size, const std::string& anchor,
+                    double rotate, const std::string& fill) {
+  body_ << "<text x=\"" << num(x) << "\" y=\"" << num(y) << "\" font-size=\"" << num(size)
+        << "\" text-anchor=\"" << anchor << "\" fill=\"" << escape(fill) << "\"";
+  if (rotate != 0.0)
+    body_ << " transform=\"rotate(" << num(rotate) << " " << num(x) << " " << num(y) << ")\"";
+  body_ << ">" << escape(content) << "</text>\n";
+}
+
+void Document::raw(const std::string& markup) {
+  body_ << markup;
+}
+
+std::string Document::finish() const {
+  std::ostringstream out;
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width_ << "\" height=\"" << height_
+      << "\" viewBox=\"0 0 " << width_ << " " << height_
+      << "\" font-family=\"DejaVu Sans, Arial, sans-serif\">\n"
+      << "<rect x=\"0\" y=\"0\" width=\"" << width_ << "\" height=\"" << height_ << "\" fill=\"white\"/>\n"
+      << body_.str() << "</svg>\n";
+  return out.str();
+}
+
+const std::string& palette(std::size_t index) {
+  static const std::vector<std::string> colors{"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
+                                               "#8c564b", "#e377c2", "#17becf", "#7f7f7f", "#bcbd22"};
+  return colors[index % colors.size()];
+}
+
+}  // namespace sextant::svg

@@ -1,0 +1,43 @@
+#pragma once
+// Private helper of the eval module: builds an SVG document element by element, escaping text
+// and formatting numbers with the classic locale so the output is well-formed XML.
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace sextant::svg {
+
+/// Number → short text (up to 6 significant digits, no exponent for ordinary magnitudes).
+std::string num(double v);
+/// Tick label text: like num() but values within 1e-12 of zero print as "0".
+std::string tick_label(double v);
+/// XML-escapes text content and attribute values.
+std::string escape(const std::string& s);
+
+class Document {
+ public:
+  Document(int width, int height);
+
+  void rect(double x, double y, double w, double h, const std::string& fill,
+            const std::string& stroke = "none", double stroke_width = 1.0);
+  void line(double x1, double y1, double x2, double y2, const std::string& stroke, double width = 1.0,
+            const std::string& dash = "");
+  void polyline(const std::vector<double>& xs, const std::vector<double>& ys, const std::string& stroke,
+                double width = 1.5, bool closed = false);
+  void circle(double cx, double cy, double r, const std::string& fill);
+  /// anchor: "start", "middle" or "end"; rotate in degrees about (x, y).
+  void text(double x, double y, const std::string& content, double size = 12,
+            const std::string& anchor = "start", double rotate = 0.0, const std::string& fill = "#222");
+  /// Raw element markup (must be well-formed).
+  void raw(const std::string& markup);
+  std::string finish() const;
+
+ private:
+  std::ostringstream body_;
+  int width_, height_;
+};
+
+/// The series palette.
+const std::string& palette(std::size_t index);
+
+}  // namespace sextant::svg
