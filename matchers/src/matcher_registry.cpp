@@ -1,4 +1,5 @@
 // The matcher registry: one line per built-in matcher (others insert their own lines).
+#include "sextant/matchers/icp.hpp"
 #include "sextant/matchers/matcher.hpp"
 
 namespace sextant {
@@ -7,6 +8,8 @@ namespace {
 
 MatcherRegistry make_builtin_matchers() {
   MatcherRegistry registry("matcher");
+  registry.add("icp_p2l", "point-to-plane ICP (PCA normals, k-d tree)", make_icp_p2l_matcher);
+  registry.add("icp_p2p", "point-to-point ICP (closed-form SVD, k-d tree)", make_icp_p2p_matcher);
   return registry;
 }
 
