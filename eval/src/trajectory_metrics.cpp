@@ -237,7 +237,7 @@ bool KittiDriftSettings::valid(std::string* why) const {
   };
   if (segment_lengths.empty()) return fail("segment_lengths must not be empty");
   for (double l : segment_lengths)
-    if (!(l > 0.0) || !std::isfinite(l)) return fail("segment lengths must be > 0");
+    if (!(l > 0.0) || !std::isfinite(l)) return fail("segment_lengths must all be > 0");
   if (step == 0) return fail("step must be >= 1");
   return true;
 }
