@@ -4,6 +4,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "sextant/core/io/uos.hpp"
+
 namespace sextant {
 
 namespace {
@@ -11,15 +13,6 @@ namespace {
 constexpr double kCmPerMetre = 100.0;
 constexpr double kDegPerRad = 180.0 / M_PI;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-// Rows: x_uos = −y, y_uos = z, z_uos = x (DESIGN.md, data/README.md).
-Eigen::Matrix3d uos_axis_map() {
-  Eigen::Matrix3d M;
-  M << 0, -1, 0,  //
-      0, 0, 1,    //
-      1, 0, 0;
-  return M;
-}
 
 RegistrationError non_finite_error() {
   RegistrationError e;
@@ -37,16 +30,15 @@ const std::array<std::string, 6>& parameter_names() {
   return names;
 }
 
+// The axis map lives in core's uos I/O (which works in cm); keep metres here.
 Eigen::Isometry3d to_uos_axes(const Eigen::Isometry3d& T) {
-  const Eigen::Matrix3d M = uos_axis_map();
-  Eigen::Isometry3d out = Eigen::Isometry3d::Identity();
-  out.linear() = M * T.linear() * M.transpose();
-  out.translation() = M * T.translation();
-  return out;
+  Eigen::Matrix4d M = internal_pose_to_uos(T);
+  M.topRightCorner<3, 1>() /= kCmPerMetre;
+  return Eigen::Isometry3d(M);
 }
 
 Eigen::Vector3d to_uos_axes(const Eigen::Vector3d& v) {
-  return uos_axis_map() * v;
+  return internal_to_uos(v) / kCmPerMetre;
 }
 
 RegistrationError registration_error(const Eigen::Isometry3d& estimate, const Eigen::Isometry3d& ground_truth,

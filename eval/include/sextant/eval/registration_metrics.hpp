@@ -37,10 +37,10 @@ const std::array<std::string, 6>& parameter_names();
 RegistrationError registration_error(const Eigen::Isometry3d& estimate, const Eigen::Isometry3d& ground_truth,
                                      AxisConvention axes = AxisConvention::internal);
 
-/// A rigid transform expressed in the uos frame: M · T · Mᵀ with M the axis map above (rows
-/// x_uos = −y, y_uos = z, z_uos = x). Units stay metres. Because M is a reflection, a positive yaw
-/// about our z becomes a negative β_uos (the heading about y_uos) — exactly what a uos `.pose`
-/// file written by core's uos writer would hold.
+/// A rigid transform expressed in the uos axes (core's internal_pose_to_uos, kept in metres):
+/// M · T · Mᵀ with M's rows x_uos = −y, y_uos = z, z_uos = x. Because M is a reflection, a positive
+/// yaw about our z becomes a negative β_uos (the heading about y_uos) — exactly what a uos `.pose`
+/// file written by core's uos writer holds.
 Eigen::Isometry3d to_uos_axes(const Eigen::Isometry3d& T);
 /// Maps a point/vector of ours to uos axes (same units): (−y, z, x).
 Eigen::Vector3d to_uos_axes(const Eigen::Vector3d& v);
