@@ -1,5 +1,6 @@
 #include "sextant/eval/trajectory_metrics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -179,15 +180,17 @@ std::vector<std::pair<std::size_t, std::size_t>> rpe_pairs(const PoseList& refer
   }
   const std::vector<double> distance = path_distances(reference);
   if (settings.all_pairs) {
-    // evo: from every pose, the later pose whose path distance is closest to delta, within tolerance.
+    // evo: from every pose, the later pose whose path distance is closest to delta (the first
+    // such pose on ties), within tolerance. Distances never decrease, so search by bisection.
     for (std::size_t i = 0; i + 1 < n; ++i) {
-      std::size_t best = i + 1;
-      for (std::size_t j = i + 1; j < n; ++j)
-        if (std::abs(distance[j] - distance[i] - settings.delta) <
-            std::abs(distance[best] - distance[i] - settings.delta))
-          best = j;
-      if (std::abs(distance[best] - distance[i] - settings.delta) <= settings.tolerance)
-        pairs.emplace_back(i, best);
+      const double target = distance[i] + settings.delta;
+      const auto begin = distance.begin() + static_cast<std::ptrdiff_t>(i + 1);
+      const auto above = std::lower_bound(begin, distance.end(), target);
+      auto best = above;
+      if (above != begin && (above == distance.end() || target - *(above - 1) <= *above - target))
+        best = std::lower_bound(begin, above, *(above - 1));  // first pose at that distance
+      if (std::abs(*best - target) <= settings.tolerance)
+        pairs.emplace_back(i, static_cast<std::size_t>(best - distance.begin()));
     }
     return pairs;
   }
@@ -259,9 +262,10 @@ KittiDriftResult kitti_drift(const PoseList& estimate, const PoseList& reference
     seg.length = length;
     for (std::size_t first = 0; first < reference.size(); first += settings.step) {
       // KITTI devkit lastFrameFromSegmentLength: first frame with dist > dist[first] + len.
-      std::size_t last = first;
-      while (last < reference.size() && !(distance[last] > distance[first] + length)) ++last;
-      if (last >= reference.size()) break;  // distances only grow: later starts fail too
+      const auto it = std::upper_bound(distance.begin() + static_cast<std::ptrdiff_t>(first), distance.end(),
+                                       distance[first] + length);
+      if (it == distance.end()) break;  // distances only grow: later starts fail too
+      const auto last = static_cast<std::size_t>(it - distance.begin());
       const Eigen::Isometry3d E = relative_error(estimate, reference, first, last);
       const double t = translation_norm(E) / length, a = rotation_angle(E) / length;
       seg.translation += t;

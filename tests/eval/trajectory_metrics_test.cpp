@@ -219,3 +219,41 @@ TEST(TrajectoryMetrics, NonFiniteAndEmptyInputAreStatusNotCrash) {
 
 }  // namespace
 }  // namespace sextant
+
+namespace sextant {
+namespace {
+
+// Brute force of evo's all-pairs path selection (argmin of |path − delta|, first on ties).
+std::vector<std::pair<std::size_t, std::size_t>> brute_force_pairs(const PoseList& poses, double delta,
+                                                                   double tol) {
+  const std::vector<double> d = path_distances(poses);
+  std::vector<std::pair<std::size_t, std::size_t>> pairs;
+  for (std::size_t i = 0; i + 1 < d.size(); ++i) {
+    std::size_t best = i + 1;
+    for (std::size_t j = i + 1; j < d.size(); ++j)
+      if (std::abs(d[j] - d[i] - delta) < std::abs(d[best] - d[i] - delta)) best = j;
+    if (std::abs(d[best] - d[i] - delta) <= tol) pairs.emplace_back(i, best);
+  }
+  return pairs;
+}
+
+TEST(Rpe, AllPairsByPathMatchesBruteForceOnStopAndGo) {
+  Rng rng(3);
+  PoseList poses;
+  double x = 0.0;
+  for (int i = 0; i < 300; ++i) {
+    if (rng.uniform() < 0.4) x += rng.uniform(0.0, 1.5);  // stops repeat the distance
+    poses.push_back(at(x, 0.0));
+  }
+  RpeSettings s;
+  s.unit = RpeSettings::Unit::meters;
+  s.all_pairs = true;
+  for (double delta : {0.5, 3.0, 10.0}) {
+    s.delta = delta;
+    s.tolerance = 0.3;
+    EXPECT_EQ(rpe_pairs(poses, s), brute_force_pairs(poses, delta, 0.3)) << delta;
+  }
+}
+
+}  // namespace
+}  // namespace sextant
