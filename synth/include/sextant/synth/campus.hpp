@@ -1,0 +1,59 @@
+#pragma once
+// The built-in synthetic campus (DESIGN.md): world, 6D ground truth, 2D odometry, GNSS, and
+// scans generated on demand per index — scan(i) draws from its own Rng derived from (seed, i),
+// so generating the scans in any order or on any number of threads gives identical bytes.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "sextant/core/dataset.hpp"
+#include "sextant/synth/gnss.hpp"
+#include "sextant/synth/sensor.hpp"
+#include "sextant/synth/settings.hpp"
+#include "sextant/synth/world.hpp"
+
+namespace sextant::synth {
+
+class Campus {
+ public:
+  CampusSettings settings;
+  std::uint64_t seed = 0;
+  std::shared_ptr<const World> world;
+  std::vector<Eigen::Isometry3d> ground_truth;  ///< world ← sensor, 6D
+  std::vector<Eigen::Isometry3d> odometry;      ///< world ← sensor, dead-reckoned 2D (z = roll = pitch = 0)
+  std::vector<double> stamps;                   ///< [s]
+  std::vector<GnssRecord> gnss;
+
+  std::size_t size() const { return ground_truth.size(); }
+  /// Scan i (sensor frame) with per-point provenance. Throws std::out_of_range past the end.
+  SimulatedScan scan(std::size_t i) const;
+};
+
+/// Generates everything except the scans (those come from Campus::scan). Throws
+/// std::invalid_argument when the settings are not valid.
+Campus generate_campus(const CampusSettings& settings, std::uint64_t seed);
+
+/// All scans, in parallel (TBB); identical for any thread count.
+std::vector<SimulatedScan> generate_all_scans(const Campus& campus);
+
+/// The campus through core's Dataset interface, in memory (scans generated on demand).
+class CampusDataset : public Dataset {
+ public:
+  explicit CampusDataset(Campus campus);
+
+  const DatasetMetadata& metadata() const override { return metadata_; }
+  PointCloud scan(std::size_t i, ScanLoadReport* report = nullptr) const override;
+  std::optional<Eigen::Isometry3d> odometry(std::size_t i) const override;
+  std::optional<Eigen::Isometry3d> ground_truth(std::size_t i) const override;
+
+  const Campus& campus() const { return campus_; }
+
+ private:
+  Campus campus_;
+  DatasetMetadata metadata_;
+};
+
+}  // namespace sextant::synth

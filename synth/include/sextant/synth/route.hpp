@@ -1,0 +1,34 @@
+#pragma once
+// The campus trajectory: a route of straight legs and rounded corners along the roads of the
+// 2×2 blocks, four loops that come back to early places (near 15 %, 50 %, 70–75 % and the
+// end), one turn on the spot of `sharp_turn_deg` between scans 3 and 4, and a ground-following
+// 6D pose (z, roll and pitch from the terrain) at each stop-and-go scan position.
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "sextant/core/rng.hpp"
+#include "sextant/synth/settings.hpp"
+#include "sextant/synth/world.hpp"
+
+namespace sextant::synth {
+
+/// A planar position with its heading (travel direction, counter-clockwise from +x) [m, rad].
+struct RoutePoint {
+  Eigen::Vector2d position = Eigen::Vector2d::Zero();
+  double heading = 0.0;
+};
+
+/// Length of the approach leg before the sharp turn for `scans` poses [m]; the world keeps
+/// the west border clear of it.
+double start_leg_length(const WorldSettings& world, const TrajectorySettings& trajectory);
+
+/// `trajectory.scans` stop-and-go positions, equally spaced along the route.
+std::vector<RoutePoint> sample_route(const WorldSettings& world, const TrajectorySettings& trajectory,
+                                     Rng& rng);
+
+/// World ← sensor pose standing on the ground at a route point (z, roll, pitch follow the terrain).
+Eigen::Isometry3d ground_following_pose(const World& world, const TrajectorySettings& trajectory,
+                                        const RoutePoint& point);
+
+}  // namespace sextant::synth
