@@ -1,9 +1,8 @@
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "sextant/eval/html_report.hpp"
 #include "sextant/eval/plots.hpp"
