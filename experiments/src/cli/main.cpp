@@ -22,6 +22,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   int exit_code = 0;
   // One line per subcommand (keep sorted).
+  add_convert_command(app, exit_code);
+  add_info_command(app, exit_code);
   add_version_command(app, exit_code);
   CLI11_PARSE(app, argc, argv);
   return exit_code;
