@@ -1,0 +1,162 @@
+// Matcher kernels (issue 4, "Performance"): one Mahalanobis score + gradient + Hessian
+// evaluation over 20,000 points on a layer with 10⁴–10⁵ cells (target ≤ 30 ns per point on one
+// core), the same for the Gaussian (P2D-NDT) score, the layer-pyramid build per 100k reference
+// points, the GBS sampler, and one whole ML-NDT registration.
+//   build-*/bench/bench_matchers --benchmark_counters_tabular=true
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+#include "sextant/core/rng.hpp"
+#include "sextant/matchers/mlndt_matcher.hpp"
+#include "sextant/matchers/ndt_score.hpp"
+#include "sextant/matchers/samplers.hpp"
+
+namespace sextant {
+namespace {
+
+/// A deterministic outdoor-like scene of about `n` points over a 120 × 120 m area: sloped
+/// ground and box buildings with noisy walls.
+PointCloud scene(std::size_t n, std::uint64_t seed) {
+  Rng rng(seed);
+  PointCloud cloud;
+  cloud.reserve(n);
+  struct Box {
+    float x0, y0, x1, y1, h;
+  };
+  std::vector<Box> boxes;
+  for (int i = 0; i < 40; ++i) {
+    const auto x = static_cast<float>(rng.uniform(-55, 45)), y = static_cast<float>(rng.uniform(-55, 45));
+    boxes.push_back({x, y, x + static_cast<float>(rng.uniform(3, 12)),
+                     y + static_cast<float>(rng.uniform(3, 12)), static_cast<float>(rng.uniform(2, 15))});
+  }
+  while (cloud.size() < n) {
+    if (rng.uniform() < 0.4) {
+      const auto x = static_cast<float>(rng.uniform(-60, 60)), y = static_cast<float>(rng.uniform(-60, 60));
+      cloud.push_back({x, y, 0.02f * x + 0.03f * static_cast<float>(rng.normal())});
+      continue;
+    }
+    const Box& b = boxes[rng.index(boxes.size())];
+    const auto s = static_cast<float>(rng.uniform()), z = static_cast<float>(rng.uniform(0, b.h));
+    const auto noise = 0.02f * static_cast<float>(rng.normal());
+    switch (rng.index(4)) {
+      case 0: cloud.push_back({b.x0 + s * (b.x1 - b.x0), b.y0 + noise, z}); break;
+      case 1: cloud.push_back({b.x0 + s * (b.x1 - b.x0), b.y1 + noise, z}); break;
+      case 2: cloud.push_back({b.x0 + noise, b.y0 + s * (b.y1 - b.y0), z}); break;
+      default: cloud.push_back({b.x1 + noise, b.y0 + s * (b.y1 - b.y0), z}); break;
+    }
+  }
+  return cloud;
+}
+
+struct KernelFixture {
+  NdtGrid grid;
+  PointCloud input;
+  Vector6d xi;
+  KernelFixture() {
+    const PointCloud reference = scene(100000, 1);
+    // Layer 5 of q = 8 over this box: about 3·10⁴ cells (the issue's 10⁴–10⁵).
+    const LayerGeometry g = layer_geometry(reference.bounds(), 8, 5);
+    grid = NdtGrid::build(reference, reference.bounds().min.cast<double>(), g.cell_edge, g.dims);
+    const PointCloud scan = scene(20000, 2);
+    input = scan;
+    xi << 0.3, -0.2, 0.05, 0.01, -0.01, 0.05;
+  }
+};
+
+const KernelFixture& kernel_fixture() {
+  static const KernelFixture f;
+  return f;
+}
+
+void report_per_point(benchmark::State& state, std::size_t points) {
+  state.counters["ns_per_point"] =
+      benchmark::Counter(static_cast<double>(points * state.iterations()) * 1e-9,
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void BM_MahalanobisKernel(benchmark::State& state) {
+  const KernelFixture& f = kernel_fixture();
+  const auto mode = static_cast<Derivatives>(state.range(0));
+  std::size_t matched = 0;
+  for (auto _ : state) {
+    const ScoreEvaluation e = mahalanobis_score(f.grid, f.input, f.xi, mode);
+    benchmark::DoNotOptimize(e.hessian(5, 5));
+    matched = e.matched;
+  }
+  report_per_point(state, f.input.size());
+  state.counters["cells"] = static_cast<double>(f.grid.cell_count());
+  state.counters["matched"] = static_cast<double>(matched);
+}
+BENCHMARK(BM_MahalanobisKernel)
+    ->Arg(static_cast<int>(Derivatives::kScore))
+    ->Arg(static_cast<int>(Derivatives::kHessian))
+    ->Unit(benchmark::kMicrosecond);
+
+void BM_GaussianKernel(benchmark::State& state) {
+  const KernelFixture& f = kernel_fixture();
+  const GaussianScoreParams p = GaussianScoreParams::from_outlier_ratio(0.55, f.grid.cell_edge());
+  const bool trilinear = state.range(0) != 0;
+  for (auto _ : state) {
+    const ScoreEvaluation e = gaussian_score(f.grid, f.input, f.xi, p, trilinear, Derivatives::kHessian);
+    benchmark::DoNotOptimize(e.hessian(5, 5));
+  }
+  report_per_point(state, f.input.size());
+}
+BENCHMARK(BM_GaussianKernel)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+void BM_LayerPyramidBuild(benchmark::State& state) {
+  const PointCloud reference = scene(static_cast<std::size_t>(state.range(0)), 3);
+  for (auto _ : state) {
+    const auto layers = build_layer_pyramid(reference, LayerPyramidSettings{});
+    benchmark::DoNotOptimize(layers.back().gaussian_count());
+  }
+  report_per_point(state, reference.size());
+}
+BENCHMARK(BM_LayerPyramidBuild)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+void BM_GridSampler(benchmark::State& state) {
+  const PointCloud input = scene(static_cast<std::size_t>(state.range(0)), 4);
+  const GridSampler sampler;
+  std::size_t kept = 0;
+  for (auto _ : state) {
+    Rng rng(5);
+    kept = sampler.select(input, rng).size();
+    benchmark::DoNotOptimize(kept);
+  }
+  report_per_point(state, input.size());
+  state.counters["kept"] = static_cast<double>(kept);
+}
+BENCHMARK(BM_GridSampler)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+void BM_MlndtRegistration(benchmark::State& state) {
+  const PointCloud reference = scene(100000, 6);
+  Rng rng(7);
+  const PointCloud scan = scene(100000, 8);
+  const PointCloud input = scan.subset(GridSampler().select(scan, rng));
+  const Eigen::Isometry3d truth = to_isometry(Pose6{1.0, -0.5, 0.0, 0.0, 0.0, 0.05});
+  const PointCloud moved = input.transformed(truth.inverse());
+  MlndtSettings settings;
+  SolverKind solver = static_cast<SolverKind>(state.range(0));
+  settings.optimizer.solver = solver;
+  MlndtMatcher matcher(settings);
+  matcher.set_reference(reference);
+  double error = 0.0;
+  for (auto _ : state) {
+    const RegistrationResult r = matcher.align(moved, Eigen::Isometry3d::Identity());
+    error = translation_norm(truth.inverse() * r.T);
+    benchmark::DoNotOptimize(error);
+  }
+  state.counters["input_points"] = static_cast<double>(moved.size());
+  state.counters["error_cm"] = 100.0 * error;
+}
+BENCHMARK(BM_MlndtRegistration)
+    ->Arg(static_cast<int>(SolverKind::kNewton))
+    ->Arg(static_cast<int>(SolverKind::kLevenbergMarquardt))
+    ->Arg(static_cast<int>(SolverKind::kCeres))
+    ->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace sextant
+
+BENCHMARK_MAIN();

@@ -1,0 +1,27 @@
+#pragma once
+// Which of the six pose parameters ξ = [tx ty tz α β γ] (eq. 3.12) a matcher may change, e.g.
+// `dof: [x, y, yaw]` for the thesis' 2D simulation. Inactive parameters keep their initial value.
+#include <array>
+#include <string>
+#include <vector>
+
+namespace sextant {
+
+class SettingsReader;
+
+struct DofMask {
+  std::array<bool, 6> active{{true, true, true, true, true, true}};
+
+  int count() const;
+  bool all() const { return count() == 6; }
+  /// Names: x, y, z, roll (alpha), pitch (beta), yaw (gamma). False with `why` on an unknown name.
+  static bool from_names(const std::vector<std::string>& names, DofMask& mask, std::string* why);
+  /// "[x, y, yaw]".
+  std::string to_string() const;
+  bool valid(std::string* why) const;
+};
+
+/// Reads the optional key `key` (a list of names) into `mask`; InputError on bad names.
+void read_dof_mask(SettingsReader& in, const std::string& key, DofMask& mask);
+
+}  // namespace sextant

@@ -1,0 +1,26 @@
+#pragma once
+// One registration of a pair, sampler + matcher, for the experiment runner and `sextant match`:
+//
+//   Rng rng(seed);
+//   const PairMatch m = match_pair(*make_matcher("mlndt"), *make_sampler("gbs"), ref, in, guess, rng);
+//   m.result.T;  m.kept_fraction;  m.reference_seconds;
+#include "sextant/core/point_cloud.hpp"
+#include "sextant/core/rng.hpp"
+#include "sextant/matchers/matcher.hpp"
+#include "sextant/matchers/sampler.hpp"
+
+namespace sextant {
+
+struct PairMatch {
+  RegistrationResult result;       ///< input_points = sampled points offered to the matcher
+  double kept_fraction = 0.0;      ///< sampled / all input points
+  double reference_seconds = 0.0;  ///< time to build the reference model (grids, trees)
+  double sampling_seconds = 0.0;   ///< time to sample the input
+};
+
+/// Samples `input`, builds the reference model of `matcher` from `reference` and aligns the
+/// sample from `initial` (p_ref ≈ T·p_input). Never throws for bad data.
+PairMatch match_pair(Matcher& matcher, const Sampler& sampler, const PointCloud& reference,
+                     const PointCloud& input, const Eigen::Isometry3d& initial, Rng& rng);
+
+}  // namespace sextant

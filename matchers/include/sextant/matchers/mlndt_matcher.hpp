@@ -1,0 +1,47 @@
+#pragma once
+// Multi-Layered NDT (§3.2, Table 3.1): a layer pyramid over the reference's bounding box,
+// Mahalanobis score (eq. 3.11), start layer s, three iterations per layer, then the last layer
+// until ‖Δξ‖ < ε. YAML keys: division, layers, start_layer, solver (newton | lm | ceres),
+// iterations_per_layer, max_iterations, unmatched_penalty, epsilon, line_search, min_points, max_eigen_ratio,
+// dof.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sextant/matchers/matcher.hpp"
+#include "sextant/matchers/ndt_grid.hpp"
+#include "sextant/matchers/optimizer.hpp"
+
+namespace sextant {
+
+struct MlndtSettings {
+  LayerPyramidSettings pyramid;  ///< q = 8, n = 4, cells with > 4 points, eigenvalue ratio 100
+  int start_layer = 2;           ///< s: the first layer used [1, n] (§5: 2 without initial guess)
+  /// Score charged for an input point outside every Gaussian, so that a step cannot lower the
+  /// score by pushing points out of the cells (the thesis leaves this open) [Mahalanobis units]
+  double unmatched_penalty = 50.0;
+  OptimizerSettings optimizer;  ///< solver, iterations per layer (3), cap, ε, DOF mask
+  MlndtSettings();
+  bool valid(std::string* why) const;
+};
+
+MlndtSettings read_mlndt_settings(const YAML::Node& node, const std::string& file);
+
+class MlndtMatcher final : public Matcher {
+ public:
+  explicit MlndtMatcher(MlndtSettings settings = {});
+  std::string name() const override { return "mlndt"; }
+  void set_reference(const PointCloud& reference) override;
+  RegistrationResult align(const PointCloud& input, const Eigen::Isometry3d& initial) override;
+
+  const std::vector<NdtGrid>& layers() const { return layers_; }
+  const MlndtSettings& settings() const { return settings_; }
+
+ private:
+  MlndtSettings settings_;
+  std::vector<NdtGrid> layers_;
+};
+
+std::unique_ptr<Matcher> create_mlndt_matcher(const YAML::Node& settings, const std::string& file);
+
+}  // namespace sextant

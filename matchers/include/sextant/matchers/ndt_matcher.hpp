@@ -1,0 +1,45 @@
+#pragma once
+// Classic 3D P2D-NDT (eqs. 3.1–3.6): one fixed grid, Magnusson's Gaussian score with the
+// outlier-mixture constants, Newton with a backtracking line search; optional trilinear
+// interpolation over the 8 neighbouring cells. YAML keys: cell_size, volume_divisions,
+// outlier_ratio, trilinear, max_iterations, epsilon, line_search, min_points, max_eigen_ratio, dof.
+#include <memory>
+#include <string>
+
+#include "sextant/matchers/matcher.hpp"
+#include "sextant/matchers/ndt_grid.hpp"
+#include "sextant/matchers/optimizer.hpp"
+
+namespace sextant {
+
+struct NdtSettings {
+  double cell_size = 0.0;       ///< cell edge [m]; 0 → from volume_divisions
+  int volume_divisions = 64;    ///< cell volume = bounding volume / this (64 = ML-NDT layer 2) [count]
+  double outlier_ratio = 0.55;  ///< Magnusson's p_outlier in (0, 1)
+  bool trilinear = false;       ///< score against the 8 surrounding cells
+  CellStatsSettings cells;
+  OptimizerSettings optimizer;  ///< Newton with line search, cap 35, ε = 1e-4
+  NdtSettings();
+  bool valid(std::string* why) const;
+};
+
+NdtSettings read_ndt_settings(const YAML::Node& node, const std::string& file);
+
+class NdtMatcher final : public Matcher {
+ public:
+  explicit NdtMatcher(NdtSettings settings = {});
+  std::string name() const override { return "ndt"; }
+  void set_reference(const PointCloud& reference) override;
+  RegistrationResult align(const PointCloud& input, const Eigen::Isometry3d& initial) override;
+
+  const NdtGrid& grid() const { return grid_; }
+
+ private:
+  NdtSettings settings_;
+  NdtGrid grid_;
+  GaussianScoreParams params_;
+};
+
+std::unique_ptr<Matcher> create_ndt_matcher(const YAML::Node& settings, const std::string& file);
+
+}  // namespace sextant

@@ -1,0 +1,53 @@
+#pragma once
+// The one optimiser loop shared by NDT and ML-NDT (DESIGN.md, "Matchers share one optimiser
+// loop"). An objective has one or more stages (ML-NDT layers s..n, or NDT's single grid); each
+// stage but the last runs a fixed number of iterations (Table 3.1: three), the last runs until
+// ‖Δξ‖ < ε or the iteration cap. Solvers: Newton (eq. 3.16, H + γI when H is not positive
+// definite, optional backtracking line search), Levenberg–Marquardt (eq. 3.21) and Ceres' LM.
+#include <cstddef>
+#include <string>
+
+#include "sextant/matchers/dof_mask.hpp"
+#include "sextant/matchers/ndt_score.hpp"
+#include "sextant/matchers/registration_result.hpp"
+
+namespace sextant {
+
+enum class SolverKind { kNewton, kLevenbergMarquardt, kCeres };
+
+/// "newton", "lm", "ceres"; false for other names.
+bool solver_from_name(const std::string& name, SolverKind& kind);
+std::string to_string(SolverKind kind);
+
+struct OptimizerSettings {
+  SolverKind solver = SolverKind::kNewton;
+  int iterations_per_stage = 3;  ///< iterations in every stage but the last (Table 3.1) [count]
+  int max_iterations = 100;      ///< cap on all iterations [count]
+  double epsilon = 1e-4;     ///< stop in the last stage when ‖Δξ‖ < ε [m and rad mixed, as eq. 3.12]
+  bool line_search = false;  ///< Newton: backtracking (Armijo) line search on the score
+  std::size_t min_matched = 6;  ///< fewer matched points → too_few_correspondences [count]
+  DofMask dof;
+  bool valid(std::string* why) const;
+};
+
+/// What the loop optimises. Scores are minimised.
+class StagedObjective {
+ public:
+  virtual ~StagedObjective() = default;
+  virtual int stages() const = 0;
+  /// Label for traces (the ML-NDT layer number).
+  virtual int stage_label(int stage) const = 0;
+  virtual ScoreEvaluation evaluate(int stage, const Vector6d& xi, Derivatives derivatives) const = 0;
+  /// Ceres and LM need a least-squares form Σ‖Lᵀe‖²: the Mahalanobis grid of the stage, or null.
+  virtual const NdtGrid* mahalanobis_grid(int stage) const = 0;
+  /// Score of an input point without a Gaussian (included in evaluate()'s score).
+  virtual double unmatched_penalty() const { return 0.0; }
+  virtual const PointCloud& input() const = 0;
+};
+
+/// Runs the stages from `initial`; never throws for bad data (status in the result). Fills T,
+/// converged, why, iterations, score, H (exact Hessian at the solution), trace and matched_points.
+RegistrationResult optimize(const StagedObjective& objective, const Eigen::Isometry3d& initial,
+                            const OptimizerSettings& settings);
+
+}  // namespace sextant

@@ -1,0 +1,64 @@
+#include "sextant/matchers/dof_mask.hpp"
+
+#include "sextant/core/settings_reader.hpp"
+
+namespace sextant {
+
+namespace {
+
+int parameter_index(const std::string& name) {
+  static const char* const kNames[6][2] = {{"x", "tx"},       {"y", "ty"},       {"z", "tz"},
+                                           {"roll", "alpha"}, {"pitch", "beta"}, {"yaw", "gamma"}};
+  for (int i = 0; i < 6; ++i)
+    if (name == kNames[i][0] || name == kNames[i][1]) return i;
+  return -1;
+}
+
+}  // namespace
+
+int DofMask::count() const {
+  int n = 0;
+  for (bool a : active) n += a ? 1 : 0;
+  return n;
+}
+
+bool DofMask::from_names(const std::vector<std::string>& names, DofMask& mask, std::string* why) {
+  DofMask out;
+  out.active.fill(false);
+  for (const std::string& name : names) {
+    const int i = parameter_index(name);
+    if (i < 0) {
+      if (why) *why = "unknown degree of freedom '" + name + "' (known: x y z roll pitch yaw)";
+      return false;
+    }
+    out.active[static_cast<std::size_t>(i)] = true;
+  }
+  mask = out;
+  return mask.valid(why);
+}
+
+std::string DofMask::to_string() const {
+  static const char* const kNames[6] = {"x", "y", "z", "roll", "pitch", "yaw"};
+  std::string out = "[";
+  for (int i = 0; i < 6; ++i) {
+    if (!active[static_cast<std::size_t>(i)]) continue;
+    if (out.size() > 1) out += ", ";
+    out += kNames[i];
+  }
+  return out + "]";
+}
+
+bool DofMask::valid(std::string* why) const {
+  if (count() > 0) return true;
+  if (why) *why = "at least one degree of freedom must be free";
+  return false;
+}
+
+void read_dof_mask(SettingsReader& in, const std::string& key, DofMask& mask) {
+  std::vector<std::string> names;
+  if (!in.read(key, names)) return;
+  std::string why;
+  if (!DofMask::from_names(names, mask, &why)) in.fail(key, why);
+}
+
+}  // namespace sextant

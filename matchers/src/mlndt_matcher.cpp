@@ -1,0 +1,98 @@
+#include "sextant/matchers/mlndt_matcher.hpp"
+
+#include "sextant/core/settings_reader.hpp"
+
+namespace sextant {
+
+namespace {
+
+/// Layers s..n of the pyramid as the optimiser's stages.
+class LayerObjective final : public StagedObjective {
+ public:
+  LayerObjective(const std::vector<NdtGrid>& layers, int start_layer, double unmatched_penalty,
+                 const PointCloud& input)
+      : layers_(layers), first_(start_layer - 1), penalty_(unmatched_penalty), input_(input) {}
+  int stages() const override { return static_cast<int>(layers_.size()) - first_; }
+  int stage_label(int stage) const override { return first_ + stage + 1; }
+  ScoreEvaluation evaluate(int stage, const Vector6d& xi, Derivatives d) const override {
+    ScoreEvaluation e = mahalanobis_score(grid(stage), input_, xi, d);  // eqs. (3.11), (3.17), (3.18)
+    e.score += penalty_ * static_cast<double>(input_.size() - e.matched);
+    return e;
+  }
+  double unmatched_penalty() const override { return penalty_; }
+  const NdtGrid* mahalanobis_grid(int stage) const override { return &grid(stage); }
+  const PointCloud& input() const override { return input_; }
+
+ private:
+  const NdtGrid& grid(int stage) const { return layers_[static_cast<std::size_t>(first_ + stage)]; }
+  const std::vector<NdtGrid>& layers_;
+  int first_;
+  double penalty_;
+  const PointCloud& input_;
+};
+
+}  // namespace
+
+MlndtSettings::MlndtSettings() {
+  optimizer.iterations_per_stage = 3;
+  optimizer.max_iterations = 50;
+  optimizer.epsilon = 1e-4;
+}
+
+bool MlndtSettings::valid(std::string* why) const {
+  if (!pyramid.valid(why) || !optimizer.valid(why)) return false;
+  const char* problem = nullptr;
+  if (start_layer < 1 || start_layer > pyramid.layers)
+    problem = "start_layer must lie in [1, layers]";
+  else if (!(unmatched_penalty >= 0.0))
+    problem = "unmatched_penalty must be ≥ 0";
+  if (problem && why) *why = problem;
+  return problem == nullptr;
+}
+
+MlndtSettings read_mlndt_settings(const YAML::Node& node, const std::string& file) {
+  SettingsReader in(node, file);
+  MlndtSettings s;
+  in.read("division", s.pyramid.division);
+  in.read("layers", s.pyramid.layers);
+  in.read("start_layer", s.start_layer);
+  in.read("unmatched_penalty", s.unmatched_penalty);
+  in.read("min_points", s.pyramid.cells.min_points);
+  in.read("max_eigen_ratio", s.pyramid.cells.max_eigen_ratio);
+  std::string solver;
+  if (in.read("solver", solver) && !solver_from_name(solver, s.optimizer.solver))
+    in.fail("solver", "unknown solver '" + solver + "' (known: newton lm ceres)");
+  in.read("iterations_per_layer", s.optimizer.iterations_per_stage);
+  in.read("max_iterations", s.optimizer.max_iterations);
+  in.read("epsilon", s.optimizer.epsilon);
+  in.read("line_search", s.optimizer.line_search);
+  read_dof_mask(in, "dof", s.optimizer.dof);
+  in.finish();
+  std::string why;
+  if (!s.valid(&why)) in.fail("", why);
+  return s;
+}
+
+MlndtMatcher::MlndtMatcher(MlndtSettings settings) : settings_(std::move(settings)) {}
+
+void MlndtMatcher::set_reference(const PointCloud& reference) {
+  layers_ = build_layer_pyramid(reference, settings_.pyramid);  // splitting and generative processes
+}
+
+RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Isometry3d& initial) {
+  if (layers_.empty() || layers_.back().empty()) {
+    RegistrationResult r;
+    r.input_points = input.size();
+    r.why = Termination::kEmptyInput;
+    if (is_finite(initial)) r.T = initial;
+    return r;
+  }
+  const LayerObjective objective(layers_, settings_.start_layer, settings_.unmatched_penalty, input);
+  return optimize(objective, initial, settings_.optimizer);
+}
+
+std::unique_ptr<Matcher> create_mlndt_matcher(const YAML::Node& settings, const std::string& file) {
+  return std::make_unique<MlndtMatcher>(read_mlndt_settings(settings, file));
+}
+
+}  // namespace sextant

@@ -1,0 +1,101 @@
+#include "sextant/matchers/ndt_matcher.hpp"
+
+#include <cmath>
+
+#include "sextant/core/settings_reader.hpp"
+
+namespace sextant {
+
+namespace {
+
+class GaussianObjective final : public StagedObjective {
+ public:
+  GaussianObjective(const NdtGrid& grid, const GaussianScoreParams& params, bool trilinear,
+                    const PointCloud& input)
+      : grid_(grid), params_(params), trilinear_(trilinear), input_(input) {}
+  int stages() const override { return 1; }
+  int stage_label(int /*stage*/) const override { return 0; }
+  ScoreEvaluation evaluate(int /*stage*/, const Vector6d& xi, Derivatives d) const override {
+    return gaussian_score(grid_, input_, xi, params_, trilinear_, d);  // eq. (3.6)
+  }
+  const NdtGrid* mahalanobis_grid(int /*stage*/) const override { return nullptr; }
+  const PointCloud& input() const override { return input_; }
+
+ private:
+  const NdtGrid& grid_;
+  const GaussianScoreParams& params_;
+  bool trilinear_;
+  const PointCloud& input_;
+};
+
+}  // namespace
+
+NdtSettings::NdtSettings() {
+  optimizer.iterations_per_stage = 1;
+  optimizer.max_iterations = 35;
+  optimizer.line_search = true;
+}
+
+bool NdtSettings::valid(std::string* why) const {
+  const char* problem = nullptr;
+  if (!(cell_size >= 0.0) || !std::isfinite(cell_size))
+    problem = "cell_size must be ≥ 0 metres (0: from the volume)";
+  else if (volume_divisions < 1)
+    problem = "volume_divisions must be at least 1";
+  else if (!(outlier_ratio > 0.0 && outlier_ratio < 1.0))
+    problem = "outlier_ratio must lie in (0, 1)";
+  else if (optimizer.solver == SolverKind::kCeres)
+    problem = "ndt supports the solvers newton and lm";
+  if (problem && why) *why = problem;
+  if (problem) return false;
+  return cells.valid(why) && optimizer.valid(why);
+}
+
+NdtSettings read_ndt_settings(const YAML::Node& node, const std::string& file) {
+  SettingsReader in(node, file);
+  NdtSettings s;
+  in.read("cell_size", s.cell_size);
+  in.read("volume_divisions", s.volume_divisions);
+  in.read("outlier_ratio", s.outlier_ratio);
+  in.read("trilinear", s.trilinear);
+  in.read("min_points", s.cells.min_points);
+  in.read("max_eigen_ratio", s.cells.max_eigen_ratio);
+  std::string solver;
+  if (in.read("solver", solver) && !solver_from_name(solver, s.optimizer.solver))
+    in.fail("solver", "unknown solver '" + solver + "' (known: newton lm)");
+  in.read("max_iterations", s.optimizer.max_iterations);
+  in.read("epsilon", s.optimizer.epsilon);
+  in.read("line_search", s.optimizer.line_search);
+  read_dof_mask(in, "dof", s.optimizer.dof);
+  in.finish();
+  std::string why;
+  if (!s.valid(&why)) in.fail("", why);
+  return s;
+}
+
+NdtMatcher::NdtMatcher(NdtSettings settings) : settings_(std::move(settings)) {}
+
+void NdtMatcher::set_reference(const PointCloud& reference) {
+  double edge = settings_.cell_size;
+  if (edge <= 0.0) edge = layer_geometry(reference.bounds(), settings_.volume_divisions, 1).cell_edge;
+  grid_ = NdtGrid::build_over_bounds(reference, edge, settings_.cells);
+  params_ = GaussianScoreParams::from_outlier_ratio(settings_.outlier_ratio, edge);
+}
+
+RegistrationResult NdtMatcher::align(const PointCloud& input, const Eigen::Isometry3d& initial) {
+  if (grid_.empty()) {
+    RegistrationResult r;
+    r.input_points = input.size();
+    r.why = Termination::kEmptyInput;
+    if (is_finite(initial)) r.T = initial;
+    return r;
+  }
+  const GaussianObjective objective(grid_, params_, settings_.trilinear, input);
+  return optimize(objective, initial, settings_.optimizer);
+}
+
+std::unique_ptr<Matcher> create_ndt_matcher(const YAML::Node& settings, const std::string& file) {
+  return std::make_unique<NdtMatcher>(read_ndt_settings(settings, file));
+}
+
+}  // namespace sextant

@@ -1,0 +1,266 @@
+// The shared optimiser loop (Table 3.1's registration process) with Newton, LM and Ceres steps.
+#include "sextant/matchers/optimizer.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+
+#include "ceres_stage.hpp"
+
+namespace sextant {
+
+namespace {
+
+constexpr int kMaxLmTries = 12;
+
+/// The rows/columns of the active parameters.
+struct Masked {
+  std::vector<int> index;
+  explicit Masked(const DofMask& dof) {
+    for (int i = 0; i < 6; ++i)
+      if (dof.active[static_cast<std::size_t>(i)]) index.push_back(i);
+  }
+  Eigen::MatrixXd matrix(const Matrix6d& M) const {
+    Eigen::MatrixXd out(index.size(), index.size());
+    for (std::size_t i = 0; i < index.size(); ++i)
+      for (std::size_t j = 0; j < index.size(); ++j) out(i, j) = M(index[i], index[j]);
+    return out;
+  }
+  Eigen::VectorXd vector(const Vector6d& v) const {
+    Eigen::VectorXd out(index.size());
+    for (std::size_t i = 0; i < index.size(); ++i) out(i) = v(index[i]);
+    return out;
+  }
+  Vector6d expand(const Eigen::VectorXd& v) const {
+    Vector6d out = Vector6d::Zero();
+    for (std::size_t i = 0; i < index.size(); ++i) out(index[i]) = v(static_cast<Eigen::Index>(i));
+    return out;
+  }
+};
+
+/// Solves (H + γI)·Δ = −g with γ = 0 when H is safely positive definite (eq. 3.16 and the text
+/// after eq. 3.18); false when no finite step exists.
+bool newton_step(const Eigen::MatrixXd& H, const Eigen::VectorXd& g, Eigen::VectorXd& step) {
+  if (!H.allFinite() || !g.allFinite()) return false;
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(H);
+  const Eigen::VectorXd l = eig.eigenvalues();
+  const double largest = l.cwiseAbs().maxCoeff();
+  if (!(largest > 0.0)) return false;
+  const double wanted = 1e-6 * largest;  // "safely" positive definite
+  const double gamma = l.minCoeff() < wanted ? wanted - l.minCoeff() + 1e-3 * largest : 0.0;
+  const Eigen::MatrixXd damped = H + gamma * Eigen::MatrixXd::Identity(H.rows(), H.cols());
+  step = -damped.ldlt().solve(g);
+  return step.allFinite();
+}
+
+Eigen::Isometry3d to_transform(const Vector6d& xi) {
+  return to_isometry(Pose6::from_vector(xi));
+}
+
+class Loop {
+ public:
+  Loop(const StagedObjective& objective, const OptimizerSettings& settings)
+      : objective_(objective), settings_(settings), mask_(settings.dof) {}
+
+  RegistrationResult run(const Eigen::Isometry3d& initial) {
+    const auto start = std::chrono::steady_clock::now();
+    result_.input_points = objective_.input().size();
+    if (is_finite(initial)) result_.T = initial;
+    if (!is_finite(initial)) {
+      finish(Termination::kNonFiniteInput);
+    } else if (objective_.input().empty() || objective_.stages() == 0) {
+      finish(Termination::kEmptyInput);
+    } else {
+      xi_ = to_pose6(initial).vector();
+      run_stages();
+    }
+    result_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result_;
+  }
+
+ private:
+  void run_stages() {
+    const int stages = objective_.stages();
+    for (int stage = 0; stage < stages; ++stage) {
+      const bool last = stage == stages - 1;
+      const int budget =
+          last ? settings_.max_iterations - iterations_
+               : std::min(settings_.iterations_per_stage, settings_.max_iterations - iterations_);
+      bool done = false;
+      if (settings_.solver == SolverKind::kCeres)
+        done = ceres_stage(stage, budget, last);
+      else
+        done = own_stage(stage, budget, last);
+      if (done) return;
+    }
+    finish(Termination::kMaxIterations);
+  }
+
+  /// Newton or LM iterations on one stage; true when the registration has ended.
+  bool own_stage(int stage, int budget, bool last) {
+    double lambda = -1.0;  // LM damping, reset per stage (the matrix scale changes with the layer)
+    for (int k = 0; k < budget; ++k) {
+      const ScoreEvaluation at = objective_.evaluate(stage, xi_, Derivatives::kHessian);
+      if (at.matched < settings_.min_matched) return finish(Termination::kTooFewCorrespondences, stage);
+      const Eigen::VectorXd g = mask_.vector(at.gradient);
+      Eigen::VectorXd step;
+      double score = at.score;
+      if (settings_.solver == SolverKind::kNewton) {
+        if (!newton_step(mask_.matrix(at.hessian), g, step))
+          return finish(Termination::kSolverFailure, stage);
+        Vector6d full = mask_.expand(step);
+        if (settings_.line_search)
+          full = backtrack(stage, at, full, score);
+        else
+          score = objective_.evaluate(stage, xi_ + full, Derivatives::kScore).score;
+        xi_ += full;
+        step = mask_.vector(full);
+      } else {
+        // eq. (3.21) on Σ‖Lᵀe‖² (the same minimum as eq. 3.11): Δ = −(JᵀJ + λI)⁻¹·Jᵀr, with
+        // JᵀJ = ½·gauss_newton and Jᵀr = ½·gradient. λ₀ = 10⁻³·mean(diag JᵀJ), ÷10 on success, ×10 otherwise.
+        const Eigen::MatrixXd JtJ =
+            0.5 * mask_.matrix(objective_.mahalanobis_grid(stage) ? at.gauss_newton : at.hessian);
+        if (lambda < 0) lambda = 1e-3 * JtJ.diagonal().mean();
+        bool accepted = false;
+        for (int attempt = 0; attempt < kMaxLmTries && !accepted; ++attempt) {
+          const Eigen::MatrixXd damped = JtJ + lambda * Eigen::MatrixXd::Identity(JtJ.rows(), JtJ.cols());
+          step = -damped.ldlt().solve(0.5 * g);
+          if (!step.allFinite()) return finish(Termination::kSolverFailure, stage);
+          const ScoreEvaluation trial =
+              objective_.evaluate(stage, xi_ + mask_.expand(step), Derivatives::kScore);
+          if (trial.matched >= settings_.min_matched && trial.score < at.score) {
+            accepted = true;
+            score = trial.score;
+            lambda /= 10.0;
+          } else {
+            lambda *= 10.0;
+          }
+        }
+        if (!accepted) step.setZero();  // no decrease at any damping: a minimum of this stage
+        xi_ += mask_.expand(step);
+      }
+      if (!xi_.allFinite()) return finish(Termination::kDiverged, stage);
+      record(stage, score, step.norm(), at.matched);
+      if (last && step.norm() < settings_.epsilon) return finish(Termination::kConverged, stage);
+    }
+    return false;
+  }
+
+  /// Armijo backtracking along a Newton direction; returns the accepted step.
+  Vector6d backtrack(int stage, const ScoreEvaluation& at, const Vector6d& direction, double& score) const {
+    const double slope = at.gradient.dot(direction);
+    double t = 1.0;
+    for (int i = 0; i < 20; ++i, t *= 0.5) {
+      const ScoreEvaluation trial = objective_.evaluate(stage, xi_ + t * direction, Derivatives::kScore);
+      if (trial.matched >= settings_.min_matched &&
+          trial.score <= at.score + 1e-4 * t * std::min(slope, 0.0)) {
+        score = trial.score;
+        return t * direction;
+      }
+    }
+    score = at.score;
+    return Vector6d::Zero();
+  }
+
+  bool ceres_stage(int stage, int budget, bool last) {
+    const NdtGrid* grid = objective_.mahalanobis_grid(stage);
+    if (!grid) return finish(Termination::kSolverFailure, stage);
+    const ScoreEvaluation at = objective_.evaluate(stage, xi_, Derivatives::kScore);
+    if (at.matched < settings_.min_matched) return finish(Termination::kTooFewCorrespondences, stage);
+    const CeresStageOutcome out = solve_stage_with_ceres(
+        *grid, objective_.input(), xi_, budget, settings_.epsilon, objective_.unmatched_penalty(),
+        settings_.dof, objective_.stage_label(stage), iterations_);
+    if (!out.xi.allFinite()) return finish(Termination::kDiverged, stage);
+    xi_ = out.xi;
+    iterations_ += out.iterations;
+    result_.trace.insert(result_.trace.end(), out.trace.begin(), out.trace.end());
+    if (!last) return false;
+    if (out.failed) return finish(Termination::kSolverFailure, stage);
+    return finish(out.converged ? Termination::kConverged : Termination::kMaxIterations, stage);
+  }
+
+  void record(int stage, double score, double step_norm, std::size_t matched) {
+    ++iterations_;
+    IterationTrace row;
+    row.iteration = iterations_;
+    row.layer = objective_.stage_label(stage);
+    row.score = score;
+    row.step_norm = step_norm;
+    row.xi = xi_;
+    row.matched_points = matched;
+    result_.trace.push_back(row);
+  }
+
+  /// Fills the result; returns true (the registration has ended).
+  bool finish(Termination why, int stage = -1) {
+    result_.why = why;
+    result_.iterations = iterations_;
+    result_.converged = why == Termination::kConverged;
+    if (stage >= 0 && xi_.allFinite()) {
+      const ScoreEvaluation at = objective_.evaluate(stage, xi_, Derivatives::kHessian);
+      result_.T = to_transform(xi_);
+      result_.H = at.hessian;
+      result_.score = at.score;
+      result_.matched_points = at.matched;
+      if (result_.converged && at.matched < settings_.min_matched) {
+        result_.converged = false;
+        result_.why = Termination::kTooFewCorrespondences;
+      }
+    }
+    if (!is_finite(result_.T)) result_.T = Eigen::Isometry3d::Identity();
+    return true;
+  }
+
+  const StagedObjective& objective_;
+  const OptimizerSettings& settings_;
+  Masked mask_;
+  Vector6d xi_ = Vector6d::Zero();
+  int iterations_ = 0;
+  RegistrationResult result_;
+};
+
+}  // namespace
+
+bool solver_from_name(const std::string& name, SolverKind& kind) {
+  if (name == "newton")
+    kind = SolverKind::kNewton;
+  else if (name == "lm")
+    kind = SolverKind::kLevenbergMarquardt;
+  else if (name == "ceres")
+    kind = SolverKind::kCeres;
+  else
+    return false;
+  return true;
+}
+
+std::string to_string(SolverKind kind) {
+  switch (kind) {
+    case SolverKind::kNewton: return "newton";
+    case SolverKind::kLevenbergMarquardt: return "lm";
+    case SolverKind::kCeres: return "ceres";
+  }
+  return "unknown";
+}
+
+bool OptimizerSettings::valid(std::string* why) const {
+  const char* problem = nullptr;
+  if (iterations_per_stage < 1)
+    problem = "iterations per layer must be at least 1";
+  else if (max_iterations < 1)
+    problem = "max_iterations must be at least 1";
+  else if (!(epsilon > 0.0))
+    problem = "epsilon must be positive";
+  if (problem && why) *why = problem;
+  if (problem) return false;
+  return dof.valid(why);
+}
+
+RegistrationResult optimize(const StagedObjective& objective, const Eigen::Isometry3d& initial,
+                            const OptimizerSettings& settings) {
+  return Loop(objective, settings).run(initial);
+}
+
+}  // namespace sextant
