@@ -1,5 +1,6 @@
 // The matcher registry: one line per built-in matcher (others insert their own lines).
 #include "sextant/matchers/icp.hpp"
+#include "sextant/matchers/pcl_peers.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/ndt_matcher.hpp"
@@ -12,6 +13,9 @@ MatcherRegistry make_builtin_matchers() {
   MatcherRegistry registry("matcher");
   registry.add("icp_p2l", "point-to-plane ICP (PCA normals, k-d tree)", make_icp_p2l_matcher);
   registry.add("icp_p2p", "point-to-point ICP (closed-form SVD, k-d tree)", make_icp_p2p_matcher);
+  registry.add("pcl_gicp", "PCL GeneralizedIterativeClosestPoint (peer)", make_pcl_gicp_matcher);
+  registry.add("pcl_icp", "PCL IterativeClosestPoint (peer)", make_pcl_icp_matcher);
+  registry.add("pcl_ndt", "PCL NormalDistributionsTransform (peer)", make_pcl_ndt_matcher);
   registry.add("mlndt", "Multi-Layered NDT, Mahalanobis score (Table 3.1)", create_mlndt_matcher);
   registry.add("ndt", "classic P2D-NDT, Gaussian score, fixed grid", create_ndt_matcher);
   return registry;
