@@ -96,7 +96,7 @@ class Loop {
         done = own_stage(stage, budget, last);
       if (done) return;
     }
-    finish(Termination::kMaxIterations);
+    finish(Termination::kMaxIterations, stages - 1);
   }
 
   /// Newton or LM iterations on one stage; true when the registration has ended.
