@@ -1,4 +1,5 @@
 // The matcher registry: one line per built-in matcher (others insert their own lines).
+#include "sextant/matchers/feature_based_sampler.hpp"
 #include "sextant/matchers/icp.hpp"
 #include "sextant/matchers/pcl_peers.hpp"
 #include "sextant/matchers/matcher.hpp"
@@ -11,6 +12,8 @@ namespace {
 
 MatcherRegistry make_builtin_matchers() {
   MatcherRegistry registry("matcher");
+  registry.add("fbmlndt", "ML-NDT on the plane inliers of the input scan (FbML-NDT, Table 3.2)",
+               create_fbmlndt_matcher);
   registry.add("icp_p2l", "point-to-plane ICP (PCA normals, k-d tree)", make_icp_p2l_matcher);
   registry.add("icp_p2p", "point-to-point ICP (closed-form SVD, k-d tree)", make_icp_p2p_matcher);
   registry.add("pcl_gicp", "PCL GeneralizedIterativeClosestPoint (peer)", make_pcl_gicp_matcher);

@@ -1,4 +1,5 @@
 // The sampler registry: one line per built-in sampler (others insert their own lines).
+#include "sextant/matchers/feature_based_sampler.hpp"
 #include "sextant/matchers/samplers.hpp"
 
 namespace sextant {
@@ -8,6 +9,8 @@ namespace {
 SamplerRegistry make_builtin_samplers() {
   SamplerRegistry registry("sampler");
   registry.add("all", "every input point", create_all_sampler);
+  registry.add("fbs", "feature-based sampling: plane inliers of per-cell RANSAC (Table 3.2)",
+               create_feature_based_sampler);
   registry.add("gbs", "grid-based sampling: at most max_per_cell random points per cell",
                create_grid_sampler);
   registry.add("random", "uniform random subset of a fraction of the points", create_random_sampler);
