@@ -1,0 +1,97 @@
+#pragma once
+// One interface for every SLAM filter (EKF, UKF, CKF, RSPKF, SEIF/EIF), generic over a SlamModel:
+//
+//   auto filter = make_filter("ukf", model, settings_node, "exp.yaml");
+//   filter->initialize(x0, P0);                     // x0 = [pose; landmarks…]
+//   filter->predict(u, Q);                          // Q: covariance of the control u
+//   filter->update(zs, R, associations);            // zs[i] observes landmark associations[i]
+//   filter->augment(z, R);                          // appends a new landmark
+//
+// A numerical failure (not positive definite, failed Cholesky, singular innovation) is the
+// step's status and is counted in summary(); it never throws and never crashes.
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+#include <Eigen/Core>
+
+#include "sextant/core/registry.hpp"
+#include "sextant/filters/slam_model.hpp"
+
+namespace sextant {
+
+enum class StepStatus {
+  kOk,
+  kNotPositiveDefinite,  ///< the covariance after the step is not positive definite
+  kCholeskyFailed,       ///< a square root (Cholesky) of a covariance failed before the step
+  kSingularInnovation,   ///< the innovation covariance could not be inverted
+  kInvalidInput,         ///< wrong sizes, NaN/Inf, unknown landmark index; the state is unchanged
+};
+
+std::string to_string(StepStatus status);
+
+struct StepResult {
+  StepStatus status = StepStatus::kOk;
+  double seconds = 0.0;  ///< wall time of the step
+  bool ok() const { return status == StepStatus::kOk; }
+};
+
+/// Counts over a filter's life (or a run): every step's status.
+struct FilterSummary {
+  std::size_t steps = 0;
+  std::size_t not_positive_definite = 0;
+  std::size_t cholesky_failures = 0;
+  std::size_t singular_innovations = 0;
+  std::size_t invalid_inputs = 0;
+  void add(StepStatus status);
+  std::size_t failures() const {
+    return not_positive_definite + cholesky_failures + singular_innovations + invalid_inputs;
+  }
+};
+
+class Filter {
+ public:
+  virtual ~Filter() = default;
+  virtual std::string name() const = 0;
+  virtual const SlamModel& model() const = 0;
+
+  /// Sets the state (its size fixes the number of landmarks) and its covariance.
+  virtual StepResult initialize(const Eigen::VectorXd& x0, const Eigen::MatrixXd& P0) = 0;
+  /// Motion update with control u and its noise covariance Q (control_dim × control_dim).
+  virtual StepResult predict(const Eigen::VectorXd& u, const Eigen::MatrixXd& Q) = 0;
+  /// Measurement update: zs[i] observes landmark associations[i] (0-based); R is the noise of
+  /// one observation (observation_dim × observation_dim).
+  virtual StepResult update(const std::vector<Eigen::VectorXd>& zs, const Eigen::MatrixXd& R,
+                            const std::vector<int>& associations) = 0;
+  /// Appends the landmark observed as z (noise R); it gets index num_landmarks() − 1.
+  virtual StepResult augment(const Eigen::VectorXd& z, const Eigen::MatrixXd& R) = 0;
+
+  /// Current mean [pose; landmarks] (SEIF: its recovered, possibly approximate, mean).
+  virtual Eigen::VectorXd mean() const = 0;
+  /// Current covariance (SEIF/EIF: the inverse of the information matrix, O(n³), for inspection).
+  virtual Eigen::MatrixXd covariance() const = 0;
+  virtual int num_landmarks() const = 0;
+
+  Eigen::VectorXd pose() const { return mean().head(model().pose_dim()); }
+  const FilterSummary& summary() const { return summary_; }
+
+ protected:
+  /// Records a finished step in the summary and returns it.
+  StepResult record(StepStatus status, double seconds);
+  FilterSummary summary_;
+};
+
+/// Factory signature: (model, settings node — may be null for defaults, file name for messages).
+using FilterRegistry =
+    Registry<Filter, std::shared_ptr<const SlamModel>, const YAML::Node&, const std::string&>;
+
+/// All filters (ekf, ukf, ckf, rspkf, seif, eif), filled with the built-ins on first use.
+FilterRegistry& filter_registry();
+
+std::unique_ptr<Filter> make_filter(const std::string& name, std::shared_ptr<const SlamModel> model,
+                                    const YAML::Node& settings = YAML::Node(),
+                                    const std::string& file = "<settings>");
+
+}  // namespace sextant

@@ -1,0 +1,71 @@
+#pragma once
+// Covariance-form SLAM filters: the EKF (eqs. 4.62–4.68) and one sigma-point filter that is the
+// UKF (Tables 4.2–4.3), the CKF (eqs. 4.73–4.81) or the RSPKF (eqs. 4.88–4.103) depending on its
+// SigmaPointRule. Sigma-point prediction augments the state with the control (eq. 4.73),
+// augmentation with the observation (eq. 4.103 / Table 4.3).
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "sextant/filters/filter.hpp"
+#include "sextant/filters/sigma_points.hpp"
+
+namespace sextant {
+
+struct GaussianFilterSettings {
+  bool joseph_form = false;  ///< EKF: P⁺ = (I−KH)P(I−KH)ᵀ + KRKᵀ (O(n³)) instead of P − KSKᵀ
+  bool symmetrize = true;    ///< P ← (P + Pᵀ)/2 after every step
+  bool check_covariance = true;  ///< LLᵀ test of P after every step (O(n³); off for benchmarks)
+  bool valid(std::string* why) const;
+};
+
+class Ekf final : public Filter {
+ public:
+  Ekf(std::shared_ptr<const SlamModel> model, GaussianFilterSettings settings = {});
+  std::string name() const override { return "ekf"; }
+  const SlamModel& model() const override { return *model_; }
+  StepResult initialize(const Eigen::VectorXd& x0, const Eigen::MatrixXd& P0) override;
+  StepResult predict(const Eigen::VectorXd& u, const Eigen::MatrixXd& Q) override;
+  StepResult update(const std::vector<Eigen::VectorXd>& zs, const Eigen::MatrixXd& R,
+                    const std::vector<int>& associations) override;
+  StepResult augment(const Eigen::VectorXd& z, const Eigen::MatrixXd& R) override;
+  Eigen::VectorXd mean() const override { return x_; }
+  Eigen::MatrixXd covariance() const override { return P_; }
+  int num_landmarks() const override;
+
+ private:
+  StepStatus finish_step();
+  std::shared_ptr<const SlamModel> model_;
+  GaussianFilterSettings s_;
+  Eigen::VectorXd x_;
+  Eigen::MatrixXd P_;
+};
+
+class SigmaPointFilter final : public Filter {
+ public:
+  SigmaPointFilter(std::string name, std::shared_ptr<const SlamModel> model,
+                   std::unique_ptr<SigmaPointRule> rule, GaussianFilterSettings settings = {},
+                   std::uint64_t seed = 1);
+  std::string name() const override { return name_; }
+  const SlamModel& model() const override { return *model_; }
+  StepResult initialize(const Eigen::VectorXd& x0, const Eigen::MatrixXd& P0) override;
+  StepResult predict(const Eigen::VectorXd& u, const Eigen::MatrixXd& Q) override;
+  StepResult update(const std::vector<Eigen::VectorXd>& zs, const Eigen::MatrixXd& R,
+                    const std::vector<int>& associations) override;
+  StepResult augment(const Eigen::VectorXd& z, const Eigen::MatrixXd& R) override;
+  Eigen::VectorXd mean() const override { return x_; }
+  Eigen::MatrixXd covariance() const override { return P_; }
+  int num_landmarks() const override;
+
+ private:
+  StepStatus finish_step();
+  std::string name_;
+  std::shared_ptr<const SlamModel> model_;
+  std::unique_ptr<SigmaPointRule> rule_;
+  GaussianFilterSettings s_;
+  Rng rng_;
+  Eigen::VectorXd x_;
+  Eigen::MatrixXd P_;
+};
+
+}  // namespace sextant
