@@ -20,9 +20,9 @@ int Ekf::num_landmarks() const {
   return landmark_count(*model_, x_.size());
 }
 
-StepStatus Ekf::finish_step() {
+StepStatus Ekf::finish_step(bool symmetrize) {
   normalize_state(*model_, x_);
-  if (s_.symmetrize) P_ = symmetrized(P_);
+  if (s_.symmetrize && symmetrize) P_ = symmetrized(P_);
   if (!x_.allFinite()) return StepStatus::kNotPositiveDefinite;
   if (s_.check_covariance && !is_positive_definite(P_)) return StepStatus::kNotPositiveDefinite;
   return StepStatus::kOk;
@@ -52,8 +52,8 @@ StepResult Ekf::predict(const Eigen::VectorXd& u, const Eigen::MatrixXd& Q) {
     P_.topRightCorner(p, n - p) = PvL;
     P_.bottomLeftCorner(n - p, p) = PvL.transpose();
   }
-  P_.topLeftCorner(p, p) = Pvv;
-  return record(finish_step(), clock.seconds());
+  P_.topLeftCorner(p, p) = symmetrized(Pvv);
+  return record(finish_step(false), clock.seconds());  // P stays symmetric: keep the step O(n)
 }
 
 // eqs. (4.65)–(4.66) with stacked observations; P Hᵀ is formed from the pose and landmark

@@ -34,7 +34,7 @@ class Ekf final : public Filter {
   int num_landmarks() const override;
 
  private:
-  StepStatus finish_step();
+  StepStatus finish_step(bool symmetrize = true);
   std::shared_ptr<const SlamModel> model_;
   GaussianFilterSettings s_;
   Eigen::VectorXd x_;
