@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   // One line per subcommand (keep sorted).
   add_convert_command(app, exit_code);
   add_info_command(app, exit_code);
+  add_match_command(app, exit_code);
   add_synth_command(app, exit_code);
   add_version_command(app, exit_code);
   CLI11_PARSE(app, argc, argv);
