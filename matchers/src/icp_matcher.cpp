@@ -86,8 +86,9 @@ class IcpMatcher final : public Matcher {
         result.why = Termination::kTooFewCorrespondences;
         return result;
       }
-      const IcpStep step =
-          objective_ == IcpObjective::kPointToPoint ? point_to_point_step(pairs) : point_to_plane_step(pairs);
+      const IcpStep step = objective_ == IcpObjective::kPointToPoint
+                               ? point_to_point_step(pairs, settings_.dof)
+                               : point_to_plane_step(pairs, settings_.dof);
       if (!step.ok) {
         result.why = Termination::kSolverFailure;
         return result;

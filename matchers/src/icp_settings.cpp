@@ -16,7 +16,7 @@ bool IcpSettings::valid(std::string* why) const {
   if (!(epsilon > 0.0) || !std::isfinite(epsilon)) return fail("epsilon must be positive");
   if (min_correspondences < 6) return fail("min_correspondences must be at least 6");
   if (normal_neighbours < 3) return fail("normal_neighbours must be at least 3");
-  return true;
+  return dof.valid(why);
 }
 
 IcpSettings read_icp_settings(IcpObjective objective, const YAML::Node& node, const std::string& file) {
@@ -27,6 +27,7 @@ IcpSettings read_icp_settings(IcpObjective objective, const YAML::Node& node, co
   in.read("epsilon", s.epsilon);
   in.read("min_correspondences", s.min_correspondences);
   if (objective == IcpObjective::kPointToPlane) in.read("normal_neighbours", s.normal_neighbours);
+  read_dof_mask(in, "dof", s.dof);
   in.finish();
   std::string why;
   if (!s.valid(&why)) in.fail("", why);

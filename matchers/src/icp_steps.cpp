@@ -28,6 +28,50 @@ Matrix6d point_to_point_information(const std::vector<Eigen::Vector3d>& input) {
   return H;
 }
 
+/// Solves H·Δξ = −g over the free parameters of `dof` (the others stay 0). False when the
+/// reduced system is singular or not finite.
+bool solve_free_parameters(const Matrix6d& H, const Vector6d& g, const DofMask& dof, Vector6d* dx) {
+  std::vector<int> free;
+  for (int i = 0; i < 6; ++i)
+    if (dof.active[static_cast<std::size_t>(i)]) free.push_back(i);
+  const int n = static_cast<int>(free.size());
+  Eigen::MatrixXd Hr(n, n);
+  Eigen::VectorXd gr(n);
+  for (int a = 0; a < n; ++a) {
+    gr[a] = g[free[a]];
+    for (int b = 0; b < n; ++b) Hr(a, b) = H(free[a], free[b]);
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(Hr);
+  const Eigen::VectorXd lambda = eig.eigenvalues();  // ascending
+  if (n == 0 || !lambda.allFinite() || !(lambda[n - 1] > 0.0) || lambda[0] <= 1e-10 * lambda[n - 1])
+    return false;
+  const Eigen::VectorXd xr =
+      eig.eigenvectors() * ((eig.eigenvectors().transpose() * -gr).cwiseQuotient(lambda));
+  dx->setZero();
+  for (int a = 0; a < n; ++a) (*dx)[free[a]] = xr[a];
+  return dx->allFinite();
+}
+
+/// One Gauss–Newton step of the point-to-point residual over the free parameters.
+IcpStep linearised_point_to_point_step(const Correspondences& pairs, const DofMask& dof) {
+  IcpStep step;
+  Vector6d g = Vector6d::Zero();
+  Eigen::Matrix<double, 3, 6> J;
+  J.leftCols<3>().setIdentity();
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    J.rightCols<3>() = -skew(pairs.input[i]);
+    g.noalias() += J.transpose() * (pairs.input[i] - pairs.reference[i]);
+  }
+  step.H = point_to_point_information(pairs.input);
+  if (!solve_free_parameters(step.H, g, dof, &step.xi)) {
+    step.problem = "point-to-point system is singular in the free parameters " + dof.to_string();
+    return step;
+  }
+  step.delta = to_isometry(Pose6::from_vector(step.xi));  // eq. (3.8)
+  step.ok = true;
+  return step;
+}
+
 double mean_squared_distance(const Correspondences& pairs, const Eigen::Isometry3d& delta) {
   double sum = 0.0;
   for (std::size_t i = 0; i < pairs.size(); ++i)
@@ -46,11 +90,19 @@ double mean_squared_plane_distance(const Correspondences& pairs, const Eigen::Is
 
 }  // namespace
 
-IcpStep point_to_point_step(const Correspondences& pairs) {
+IcpStep point_to_point_step(const Correspondences& pairs, const DofMask& dof) {
   IcpStep step;
   const std::size_t n = pairs.size();
   if (n < 3 || pairs.reference.size() != n) {
     step.problem = "fewer than 3 point pairs";
+    return step;
+  }
+  if (!dof.all()) {
+    step = linearised_point_to_point_step(pairs, dof);
+    if (step.ok) {
+      step.score_before = mean_squared_distance(pairs, Eigen::Isometry3d::Identity());
+      step.score_after = mean_squared_distance(pairs, step.delta);
+    }
     return step;
   }
   Eigen::Vector3d mean_p = Eigen::Vector3d::Zero(), mean_q = Eigen::Vector3d::Zero();
@@ -83,7 +135,7 @@ IcpStep point_to_point_step(const Correspondences& pairs) {
   return step;
 }
 
-IcpStep point_to_plane_step(const Correspondences& pairs) {
+IcpStep point_to_plane_step(const Correspondences& pairs, const DofMask& dof) {
   IcpStep step;
   const std::size_t n = pairs.size();
   if (n < 6 || pairs.reference.size() != n || pairs.normals.size() != n) {
@@ -102,14 +154,13 @@ IcpStep point_to_plane_step(const Correspondences& pairs) {
     H.noalias() += J * J.transpose();
     g.noalias() += J * r;
   }
-  const Eigen::SelfAdjointEigenSolver<Matrix6d> eig(H);
-  const Vector6d lambda = eig.eigenvalues();  // ascending
-  if (!lambda.allFinite() || !(lambda[5] > 0.0) || lambda[0] <= 1e-10 * lambda[5]) {
-    step.problem = "point-to-plane system is singular (too few independent normal directions)";
+  // Gauss–Newton: H Δξ = −g.
+  Vector6d dx;
+  if (!solve_free_parameters(H, g, dof, &dx)) {
+    step.problem = "point-to-plane system is singular in the free parameters " + dof.to_string() +
+                   " (too few independent normal directions)";
     return step;
   }
-  // Gauss–Newton: H Δξ = −g.
-  const Vector6d dx = eig.eigenvectors() * ((eig.eigenvectors().transpose() * -g).cwiseQuotient(lambda));
   step.xi = dx;
   step.delta = to_isometry(Pose6::from_vector(dx));  // eq. (3.8); first order equals I + [ω]×
   step.H = H;

@@ -251,9 +251,43 @@ INSTANTIATE_TEST_SUITE_P(Objectives, IcpSynthetic,
                                                                             : std::string("p2l");
                          });
 
+TEST_P(IcpSynthetic, DofMaskMovesOnlyTheFreeParameters) {
+  // The thesis' 2D case: x, y and yaw free; z, roll and pitch keep their initial value (0).
+  Rng rng(13);
+  const PointCloud reference = synthetic_scene(rng, 20000);
+  const Eigen::Isometry3d planar = pose(0.4, -0.3, 0.0, 0.0, 0.0, 5.0);
+  const PointCloud input = synthetic_scene(rng, 5000).transformed(inverse(planar));
+  IcpSettings settings;
+  settings.max_correspondence_distance = 2.0;
+  settings.epsilon = 1e-6;
+  settings.max_iterations = 100;
+  settings.dof.active = {true, true, false, false, false, true};
+  const auto icp = make_icp(GetParam(), settings);
+  icp->set_reference(reference);
+  RegistrationResult r = icp->align(input, Eigen::Isometry3d::Identity());
+  EXPECT_TRUE(r.converged) << r.summary();
+  EXPECT_LT(translation_error(planar, r.T), 0.01) << r.summary();
+  EXPECT_LT(rotation_error(planar, r.T), 0.1 * kDeg) << r.summary();
+  const Pose6 p = to_pose6(r.T);
+  EXPECT_NEAR(p.z, 0.0, 1e-12);
+  EXPECT_NEAR(p.alpha, 0.0, 1e-12);
+  EXPECT_NEAR(p.beta, 0.0, 1e-12);
+
+  // A true height offset cannot be recovered with z fixed.
+  const PointCloud lifted = synthetic_scene(rng, 5000).transformed(inverse(pose(0.4, -0.3, 0.3, 0, 0, 5.0)));
+  r = icp->align(lifted, Eigen::Isometry3d::Identity());
+  EXPECT_NEAR(to_pose6(r.T).z, 0.0, 1e-12);
+}
+
 TEST(IcpSettings, YamlErrorsNameTheKey) {
   const YAML::Node good = YAML::Load("max_correspondence_distance: 0.5\nnormal_neighbours: 12\n");
   EXPECT_EQ(read_icp_settings(IcpObjective::kPointToPlane, good, "s.yaml").normal_neighbours, 12);
+  const IcpSettings planar =
+      read_icp_settings(IcpObjective::kPointToPoint, YAML::Load("dof: [x, y, yaw]"), "s.yaml");
+  EXPECT_EQ(planar.dof.count(), 3);
+  EXPECT_FALSE(planar.dof.active[2]);
+  EXPECT_THROW(read_icp_settings(IcpObjective::kPointToPoint, YAML::Load("dof: [x, up]"), "s.yaml"),
+               InputError);
   // normal_neighbours means nothing to point-to-point.
   EXPECT_THROW(read_icp_settings(IcpObjective::kPointToPoint, good, "s.yaml"), InputError);
   try {

@@ -16,6 +16,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "sextant/matchers/dof_mask.hpp"
 #include "sextant/matchers/matcher.hpp"
 
 namespace sextant {
@@ -31,6 +32,8 @@ struct IcpSettings {
   double epsilon = 1e-4;                     ///< stop when ‖Δξ‖ < ε [m and rad combined]
   int min_correspondences = 10;              ///< fewer matched points → too_few_correspondences
   int normal_neighbours = 10;                ///< k nearest reference points for PCA normals (p2l only)
+  /// Free parameters of the increment (YAML `dof: [x, y, yaw]`); the others' increments stay 0.
+  DofMask dof;
 
   bool valid(std::string* why) const;
 };

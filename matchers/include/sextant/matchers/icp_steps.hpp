@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "sextant/core/pose.hpp"
+#include "sextant/matchers/dof_mask.hpp"
 
 namespace sextant {
 
@@ -36,12 +37,14 @@ struct IcpStep {
   double score_after = 0.0;        ///< mean squared residual after the step, same pairs [m²]
 };
 
-/// Closed-form least squares Σ‖ΔT·p − q‖² (Arun/Horn: SVD of the cross-covariance, with the
-/// reflection fixed). Fails when the pairs are fewer than 3 or collinear.
-IcpStep point_to_point_step(const Correspondences& pairs);
+/// Least squares Σ‖ΔT·p − q‖². With all six parameters free: closed form (Arun/Horn: SVD of
+/// the cross-covariance, with the reflection fixed), failing when the pairs are fewer than 3 or
+/// collinear. With a DOF mask: one linearised Gauss–Newton step over the free parameters only
+/// (J = [I, −[p]×]), failing when that reduced system is singular.
+IcpStep point_to_point_step(const Correspondences& pairs, const DofMask& dof = {});
 
-/// Linearised least squares Σ (nᵀ(ΔT·p − q))² with ΔT ≈ [I + [ω]×, Δt], one 6×6 solve;
-/// fails when JᵀJ is singular (e.g. all normals parallel).
-IcpStep point_to_plane_step(const Correspondences& pairs);
+/// Linearised least squares Σ (nᵀ(ΔT·p − q))² with ΔT ≈ [I + [ω]×, Δt], one solve over the
+/// free parameters of `dof`; fails when that system is singular (e.g. all normals parallel).
+IcpStep point_to_plane_step(const Correspondences& pairs, const DofMask& dof = {});
 
 }  // namespace sextant
