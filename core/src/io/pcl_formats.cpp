@@ -29,7 +29,9 @@ PointCloud from_blob(const std::filesystem::path& file, const pcl::PCLPointCloud
     if (!has_field(blob, axis)) throw InputError(file.string(), "", std::string("no '") + axis + "' field");
   }
   PointCloud cloud;
-  if (has_field(blob, "intensity")) {
+  if (blob.data.empty() || blob.width * blob.height == 0) {
+    // PCL's conversion indexes element 0 of an empty cloud (UB); nothing to convert anyway.
+  } else if (has_field(blob, "intensity")) {
     pcl::PointCloud<pcl::PointXYZI> points;
     pcl::fromPCLPointCloud2(blob, points);
     cloud.points().reserve(points.size());
