@@ -25,6 +25,10 @@ int main(int argc, char** argv) {
   add_convert_command(app, exit_code);
   add_info_command(app, exit_code);
   add_match_command(app, exit_code);
+  add_merge_command(app, exit_code);
+  add_report_command(app, exit_code);
+  add_reproduce_command(app, exit_code);
+  add_run_command(app, exit_code);
   add_synth_command(app, exit_code);
   add_version_command(app, exit_code);
   CLI11_PARSE(app, argc, argv);

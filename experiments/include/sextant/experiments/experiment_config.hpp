@@ -1,0 +1,78 @@
+#pragma once
+// One experiment, as written in experiments/eNN_<slug>.yaml:
+//
+//   name: e02_accuracy_100_scans      # result folder name
+//   kind: registration                # which run kind executes it (run_kind.hpp)
+//   title: "..."                       # shown in the report
+//   thesis: "§5.1.1.2 A, tables 5.1-5.4"
+//   seed: 1                           # base seed of every random choice
+//   repetitions: 1                    # runs per (method, sweep point)
+//   dataset: {source: synthetic, campus: {...}}   # or {source: folder, path: ...} or none
+//   methods: [{name: ndt, ...}, ...]  # each method's settings, passed through to the kind
+//   sweep: {axis: [values], pair: {from: 0, to: 99}}  # cartesian product of the axes
+//   metrics: [...]                    # which metrics the report shows (the kind checks names)
+//   params: {...}                     # kind-specific settings
+//   reference: {...}                  # the thesis' values, for the report
+//   quick: {...}                      # overrides merged over the above by `--quick`
+//
+// Reading validates the generic schema; the kind validates methods, params and reference.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+namespace sextant {
+
+/// One sweep axis: its name and values (scalars or small sequences), in file order.
+struct SweepAxis {
+  std::string name;
+  std::vector<YAML::Node> values;
+};
+
+enum class DatasetSource { kNone, kSynthetic, kFolder };
+
+struct DatasetConfig {
+  DatasetSource source = DatasetSource::kNone;
+  std::filesystem::path path;  ///< folder (uos or KITTI) when source = folder; relative to the config file
+  YAML::Node campus;           ///< synthetic campus settings (synth::CampusSettings), may be null
+  std::uint64_t seed = 1;      ///< generator seed of the synthetic campus
+  YAML::Node node;             ///< the whole block, for the resolved run config
+};
+
+struct MethodConfig {
+  std::string name;  ///< label in tables and results
+  YAML::Node node;   ///< the whole method map (kind-specific keys)
+};
+
+struct ExperimentConfig {
+  std::string file;  ///< path of the YAML file, for error messages
+  std::string name;
+  std::string kind;
+  std::string title;
+  std::string thesis;  ///< where in the thesis (section, tables, figures)
+  std::string description;
+  std::uint64_t seed = 1;
+  int repetitions = 1;  ///< ≥ 1
+  bool quick = false;   ///< the quick overrides were applied
+  DatasetConfig dataset;
+  std::vector<MethodConfig> methods;  ///< at least one
+  std::vector<SweepAxis> sweep;
+  std::vector<std::string> metrics;
+  YAML::Node params;     ///< map or null
+  YAML::Node reference;  ///< map or null
+  YAML::Node effective;  ///< the document after applying `quick` (without the quick block)
+};
+
+/// Reads and validates the generic schema; throws InputError (file, line, key) on any problem.
+/// With `quick`, the `quick:` block is merged over the document first (maps merge, other values
+/// replace), so the override's keys are validated like the originals.
+ExperimentConfig read_experiment_config(const std::filesystem::path& file, bool quick);
+/// Same from an already loaded document (`file` names it in errors).
+ExperimentConfig parse_experiment_config(const YAML::Node& document, const std::string& file, bool quick);
+
+/// The YAML files under `folder` whose name matches eNN_*.yaml, sorted.
+std::vector<std::filesystem::path> list_experiment_configs(const std::filesystem::path& folder);
+
+}  // namespace sextant

@@ -1,0 +1,49 @@
+#pragma once
+// One result row per run, stored as a JSON line in results/<experiment>/runs.jsonl (appended
+// durably as each run finishes) and mirrored into runs.csv.
+#include <cstddef>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "sextant/experiments/run_plan.hpp"
+
+namespace sextant {
+
+struct RunRow {
+  std::string key;
+  std::string experiment;
+  std::string method;
+  std::map<std::string, std::string> point;
+  int repetition = 0;
+  std::uint64_t seed = 0;
+  bool ok = true;  ///< false when the run threw (the message is in `error`); such runs are retried
+  std::string error;
+  double seconds = 0.0;                               ///< wall time of the run
+  std::map<std::string, double> values;               ///< scalar metrics (NaN allowed)
+  std::map<std::string, std::vector<double>> series;  ///< curves (per iteration, per scan, ...)
+
+  /// NaN when absent.
+  double value(const std::string& name) const;
+};
+
+/// A row with the run's identity filled in.
+RunRow row_for(const RunSpec& run, const std::string& experiment);
+
+std::string to_json_line(const RunRow& row);
+/// Parses one line; returns false (and leaves `row` unspecified) for a truncated or malformed line.
+bool parse_json_line(const std::string& line, RunRow& row);
+
+struct RowFile {
+  std::vector<RunRow> rows;   ///< in file order; the last row wins for a repeated key
+  std::size_t bad_lines = 0;  ///< truncated or malformed lines skipped (a killed writer)
+};
+
+/// Reads runs.jsonl (missing file = no rows); keeps only the last row of each key.
+RowFile read_rows(const std::filesystem::path& jsonl);
+/// Writes rows as CSV atomically: key, method, point.<axis>..., repetition, seed, ok, seconds, <values>...
+void write_rows_csv(const std::filesystem::path& csv, const std::vector<RunRow>& rows);
+
+}  // namespace sextant

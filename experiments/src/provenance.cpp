@@ -1,0 +1,93 @@
+#include "sextant/experiments/provenance.hpp"
+
+#include <unistd.h>
+
+#include <array>
+#include <cstdio>
+#include <ctime>
+
+#include <ceres/version.h>
+#include <oneapi/tbb/version.h>
+#include <Eigen/Core>
+
+#include "sextant/experiments/json.hpp"
+
+#ifndef SEXTANT_GIT_SHA
+#define SEXTANT_GIT_SHA "unknown"
+#endif
+#ifndef SEXTANT_GIT_DIRTY
+#define SEXTANT_GIT_DIRTY 0
+#endif
+#ifndef SEXTANT_SOURCE_DIR
+#define SEXTANT_SOURCE_DIR "."
+#endif
+#ifndef SEXTANT_PCL_VERSION
+#define SEXTANT_PCL_VERSION "unknown"
+#endif
+#ifndef SEXTANT_YAMLCPP_VERSION
+#define SEXTANT_YAMLCPP_VERSION "unknown"
+#endif
+#ifndef SEXTANT_FMT_VERSION
+#define SEXTANT_FMT_VERSION "unknown"
+#endif
+
+namespace sextant {
+namespace {
+
+/// Output of a shell command (stdout, trailing newline removed); nullopt-like empty + ok=false on failure.
+bool run_command(const std::string& command, std::string& output) {
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) return false;
+  std::array<char, 256> buf{};
+  output.clear();
+  while (std::fgets(buf.data(), static_cast<int>(buf.size()), pipe)) output += buf.data();
+  const int status = ::pclose(pipe);
+  while (!output.empty() && (output.back() == '\n' || output.back() == '\r')) output.pop_back();
+  return status == 0;
+}
+
+}  // namespace
+
+GitState current_git_state() {
+  GitState state;
+  const std::string git = "git -C '" + std::string(SEXTANT_SOURCE_DIR) + "' ";
+  std::string sha, status;
+  if (run_command(git + "rev-parse HEAD 2>/dev/null", sha) && sha.size() == 40 &&
+      run_command(git + "status --porcelain --untracked-files=no 2>/dev/null", status)) {
+    state.sha = sha;
+    state.dirty = !status.empty();
+    state.source = "git";
+    return state;
+  }
+  state.sha = SEXTANT_GIT_SHA;
+  state.dirty = SEXTANT_GIT_DIRTY != 0;
+  state.source = "configure";
+  return state;
+}
+
+std::string library_versions_json() {
+  const std::string eigen = std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) +
+                            "." + std::to_string(EIGEN_MINOR_VERSION);
+  return "{\"eigen\": " + json_string(eigen) + ", \"yaml-cpp\": " + json_string(SEXTANT_YAMLCPP_VERSION) +
+         ", \"tbb\": " + json_string(TBB_VERSION_STRING) +
+         ", \"ceres\": " + json_string(CERES_VERSION_STRING) +
+         ", \"pcl\": " + json_string(SEXTANT_PCL_VERSION) + ", \"fmt\": " + json_string(SEXTANT_FMT_VERSION) +
+         "}";
+}
+
+std::string host_name() {
+  std::array<char, 256> buf{};
+  if (::gethostname(buf.data(), buf.size() - 1) != 0) return "unknown";
+  return buf.data();
+}
+
+std::string iso_time_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm local{};
+  ::localtime_r(&now, &local);
+  char buf[40];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%S%z", &local);
+  return buf;
+}
+
+}  // namespace sextant

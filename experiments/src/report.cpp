@@ -1,0 +1,211 @@
+#include "sextant/experiments/report.hpp"
+
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+
+#include "sextant/core/atomic_file.hpp"
+#include "sextant/core/error.hpp"
+#include "sextant/core/settings_reader.hpp"
+#include "sextant/eval/html_report.hpp"
+#include "sextant/eval/plots.hpp"
+#include "sextant/eval/table.hpp"
+#include "sextant/experiments/json.hpp"
+#include "sextant/experiments/provenance.hpp"
+#include "sextant/experiments/run_kind.hpp"
+#include "sextant/experiments/runner.hpp"
+
+namespace sextant {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// experiment name → its result folders (one per results root that has it).
+std::map<std::string, std::vector<fs::path>> find_experiments(const std::vector<fs::path>& roots) {
+  std::map<std::string, std::vector<fs::path>> found;
+  for (const auto& root : roots) {
+    if (!fs::is_directory(root)) throw InputError(root.string(), "", "not a results folder");
+    if (fs::exists(root / kEffectiveConfig)) {  // a single experiment's folder given directly
+      found[root.filename().string()].push_back(root);
+      continue;
+    }
+    for (const auto& entry : fs::directory_iterator(root)) {
+      if (entry.is_directory() && fs::exists(entry.path() / kEffectiveConfig))
+        found[entry.path().filename().string()].push_back(entry.path());
+    }
+  }
+  return found;
+}
+
+/// Rows of all folders, one per key; a successful row beats a failed one.
+std::vector<RunRow> union_rows(const std::vector<fs::path>& folders) {
+  std::vector<RunRow> rows;
+  std::unordered_map<std::string, std::size_t> position;
+  for (const auto& folder : folders) {
+    for (auto& row : read_rows(folder / kRunsJsonl).rows) {
+      const auto it = position.find(row.key);
+      if (it == position.end()) {
+        position[row.key] = rows.size();
+        rows.push_back(std::move(row));
+      } else if (row.ok || !rows[it->second].ok) {
+        rows[it->second] = std::move(row);
+      }
+    }
+  }
+  return rows;
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<fs::path> provenance_files(const fs::path& folder) {
+  std::vector<fs::path> files;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("provenance", 0) == 0 && entry.path().extension() == ".json")
+      files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+std::string escape(const std::string& s) {
+  return escape_html(s);
+}
+
+std::string markdown_section(const std::string& title, const ExperimentConfig& config,
+                             const ReportSection& section, std::size_t found, std::size_t expected) {
+  std::string md = "# " + title + "\n\n";
+  if (!config.thesis.empty()) md += "Thesis: " + config.thesis + "\n\n";
+  if (!config.description.empty()) md += config.description + "\n\n";
+  if (!section.notes.empty()) md += section.notes + "\n\n";
+  md += "Runs: " + std::to_string(found) + " of " + std::to_string(expected) + " found.\n\n";
+  for (const auto& table : section.tables) md += render_markdown(table) + "\n";
+  for (const auto& figure : section.figures) md += "![" + figure.caption + "](" + figure.id + ".svg)\n\n";
+  if (!section.claims.empty()) {
+    md += "## Claims\n\n| claim | verdict | evidence |\n|---|---|---|\n";
+    for (const auto& c : section.claims)
+      md += "| " + c.statement + " | " + to_string(c.verdict) + " | " + c.evidence + " |\n";
+  }
+  return md;
+}
+
+}  // namespace
+
+ReportSummary write_report(const std::vector<fs::path>& results, const fs::path& out) {
+  ReportSummary summary;
+  HtmlReport page;
+  page.title = "Sextant — reproduction of the thesis' experiments";
+  page.subtitle =
+      "3D SLAM methods in outdoor and large-scale environments (2012): our numbers beside the thesis'";
+  const GitState git = current_git_state();
+  page.provenance.push_back({"generated", iso_time_now()});
+  page.provenance.push_back({"git", git.sha + (git.dirty ? " (dirty)" : "") + " [" + git.source + "]"});
+  page.provenance.push_back({"libraries", library_versions_json()});
+  page.provenance.push_back({"host", host_name()});
+  std::string roots;
+  for (const auto& r : results) roots += (roots.empty() ? "" : ", ") + r.string();
+  page.provenance.push_back({"results", roots});
+
+  std::string all_md = "# Sextant report\n\n";
+  for (const auto& [name, folders] : find_experiments(results)) {
+    const fs::path config_path = folders.front() / kEffectiveConfig;
+    const ExperimentConfig config =
+        parse_experiment_config(load_yaml_file(config_path.string()), config_path.string(), false);
+    const std::string title = config.title.empty() ? name : config.title;
+    HtmlSection& html = page.add_section(name, title);
+    const fs::path dir = out / name;
+    fs::create_directories(dir);
+    if (!run_kind_registry().contains(config.kind)) {
+      html.add_paragraph("Unknown run kind '" + config.kind + "': no report for this experiment.");
+      continue;
+    }
+    const auto kind = run_kind_registry().create(config.kind);
+    const std::vector<RunSpec> runs = expand_runs(config);
+    const std::vector<RunRow> rows = union_rows(folders);
+    std::unordered_map<std::string, const RunRow*> by_key;
+    for (const auto& r : rows) {
+      if (r.ok) by_key[r.key] = &r;
+    }
+    std::vector<const RunRow*> aligned;
+    std::size_t found = 0;
+    for (const auto& run : runs) {
+      const auto it = by_key.find(run.key);
+      aligned.push_back(it == by_key.end() ? nullptr : it->second);
+      found += aligned.back() != nullptr;
+    }
+    const ReportSection section = kind->report(config, runs, aligned);
+    ++summary.experiments;
+
+    if (!config.thesis.empty()) html.add_paragraph("Thesis: " + config.thesis);
+    if (!config.description.empty()) html.add_paragraph(config.description);
+    if (!section.notes.empty()) html.add_paragraph(section.notes);
+    html.add_paragraph("Runs: " + std::to_string(found) + " of " + std::to_string(runs.size()) +
+                       " found (missing runs are left out of the statistics).");
+    for (const auto& table : section.tables) {
+      write_table(table, TableFormat::markdown, dir / (table.label + ".md"));
+      write_table(table, TableFormat::latex, dir / (table.label + ".tex"));
+      write_table(table, TableFormat::csv, dir / (table.label + ".csv"));
+      html.add_table(table);
+      html.add_html("<p class=\"files\">Files: <a href=\"" + escape(name + "/" + table.label) +
+                    ".md\">Markdown</a> · <a href=\"" + escape(name + "/" + table.label) +
+                    ".tex\">LaTeX</a> · <a href=\"" + escape(name + "/" + table.label) +
+                    ".csv\">CSV</a></p>");
+      ++summary.tables;
+    }
+    for (const auto& figure : section.figures) {
+      write_svg(figure.svg, dir / (figure.id + ".svg"));
+      html.add_figure(name + "/" + figure.id + ".svg", figure.caption);
+      ++summary.figures;
+    }
+    for (const auto& claim : section.claims) html.add_claim(claim);
+    summary.claims += section.claims.size();
+
+    std::string provenance;
+    for (const auto& folder : folders) {
+      for (const auto& file : provenance_files(folder)) provenance += read_text(file);
+    }
+    html.add_html("<details><summary>Provenance</summary><pre>" + escape(provenance) + "</pre></details>");
+    const std::string md = markdown_section(title, config, section, found, runs.size());
+    write_file_atomically(dir / (name + ".md"), md);
+    all_md += md + "\n";
+  }
+  write_file_atomically(out / "report.md", all_md);
+  summary.index_html = out / "index.html";
+  page.write(summary.index_html);
+  return summary;
+}
+
+std::size_t merge_results(const std::vector<fs::path>& inputs, const fs::path& out) {
+  std::size_t written = 0;
+  for (const auto& [name, folders] : find_experiments(inputs)) {
+    const fs::path dir = out / name;
+    const std::vector<RunRow> rows = union_rows(folders);
+    std::string text;
+    for (const auto& row : rows) text += to_json_line(row) + "\n";
+    write_file_atomically(dir / kRunsJsonl, text);
+    write_rows_csv(dir / kRunsCsv, rows);
+    write_file_atomically(dir / kEffectiveConfig, read_text(folders.front() / kEffectiveConfig));
+    std::set<std::string> names;  // provenance files written by this merge
+    for (std::size_t k = 0; k < folders.size(); ++k) {
+      for (const auto& file : provenance_files(folders[k])) {
+        std::string target = file.filename().string();
+        if (!names.insert(target).second) {
+          target = file.stem().string() + ".input-" + std::to_string(k + 1) + ".json";
+          names.insert(target);
+        }
+        write_file_atomically(dir / target, read_text(file));
+      }
+    }
+    written += rows.size();
+  }
+  return written;
+}
+
+}  // namespace sextant

@@ -1,0 +1,154 @@
+#include "sextant/experiments/run_row.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+
+#include "sextant/core/atomic_file.hpp"
+#include "sextant/experiments/json.hpp"
+
+namespace sextant {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+double number_of(const YAML::Node& node) {
+  if (!node.IsDefined() || node.IsNull()) return kNaN;
+  return node.as<double>();
+}
+
+template <class Map, class Writer>
+std::string json_object(const Map& map, Writer write_value) {
+  std::string out = "{";
+  bool first = true;
+  for (const auto& [key, value] : map) {
+    out += (first ? "" : ", ") + json_string(key) + ": " + write_value(value);
+    first = false;
+  }
+  return out + "}";
+}
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (const char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+}  // namespace
+
+double RunRow::value(const std::string& name) const {
+  const auto it = values.find(name);
+  return it == values.end() ? kNaN : it->second;
+}
+
+RunRow row_for(const RunSpec& run, const std::string& experiment) {
+  RunRow row;
+  row.key = run.key;
+  row.experiment = experiment;
+  row.method = run.method;
+  row.point = run.point;
+  row.repetition = run.repetition;
+  row.seed = run.seed;
+  return row;
+}
+
+std::string to_json_line(const RunRow& row) {
+  std::string out =
+      "{\"key\": " + json_string(row.key) + ", \"experiment\": " + json_string(row.experiment) +
+      ", \"method\": " + json_string(row.method) +
+      ", \"point\": " + json_object(row.point, [](const std::string& v) { return json_string(v); }) +
+      ", \"repetition\": " + std::to_string(row.repetition) +
+      ", \"seed\": " + json_string(std::to_string(row.seed)) + ", \"ok\": " + (row.ok ? "true" : "false") +
+      ", \"error\": " + json_string(row.error) + ", \"seconds\": " + json_number(row.seconds) +
+      ", \"values\": " + json_object(row.values, [](double v) { return json_number(v); }) +
+      ", \"series\": " + json_object(row.series, [](const std::vector<double>& v) {
+        std::string s = "[";
+        for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + json_number(v[i]);
+        return s + "]";
+      });
+  return out + "}";
+}
+
+bool parse_json_line(const std::string& line, RunRow& row) {
+  if (line.empty() || line.front() != '{' || line.back() != '}') return false;
+  try {
+    const YAML::Node n = YAML::Load(line);
+    if (!n.IsMap() || !n["key"].IsScalar()) return false;
+    row = RunRow{};
+    row.key = n["key"].as<std::string>();
+    row.experiment = n["experiment"].as<std::string>("");
+    row.method = n["method"].as<std::string>("");
+    for (const auto& e : n["point"]) row.point[e.first.as<std::string>()] = e.second.as<std::string>();
+    row.repetition = n["repetition"].as<int>(0);
+    row.seed = std::stoull(n["seed"].as<std::string>("0"));
+    row.ok = n["ok"].as<bool>(false);
+    row.error = n["error"].as<std::string>("");
+    row.seconds = number_of(n["seconds"]);
+    for (const auto& e : n["values"]) row.values[e.first.as<std::string>()] = number_of(e.second);
+    for (const auto& e : n["series"]) {
+      auto& s = row.series[e.first.as<std::string>()];
+      for (const auto& v : e.second) s.push_back(number_of(v));
+    }
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+RowFile read_rows(const std::filesystem::path& jsonl) {
+  RowFile file;
+  std::ifstream in(jsonl, std::ios::binary);
+  if (!in) return file;
+  std::unordered_map<std::string, std::size_t> position;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    RunRow row;
+    if (!parse_json_line(line, row)) {
+      ++file.bad_lines;
+      continue;
+    }
+    const auto it = position.find(row.key);
+    if (it == position.end()) {
+      position[row.key] = file.rows.size();
+      file.rows.push_back(std::move(row));
+    } else {
+      file.rows[it->second] = std::move(row);
+    }
+  }
+  return file;
+}
+
+void write_rows_csv(const std::filesystem::path& csv, const std::vector<RunRow>& rows) {
+  std::set<std::string> axes, values;
+  for (const auto& row : rows) {
+    for (const auto& [k, v] : row.point) axes.insert(k);
+    for (const auto& [k, v] : row.values) values.insert(k);
+  }
+  std::ostringstream out;
+  out << "key,method";
+  for (const auto& a : axes) out << "," << csv_field("point." + a);
+  out << ",repetition,seed,ok,seconds";
+  for (const auto& v : values) out << "," << csv_field(v);
+  out << "\n";
+  for (const auto& row : rows) {
+    out << row.key << "," << csv_field(row.method);
+    for (const auto& a : axes) {
+      const auto it = row.point.find(a);
+      out << "," << (it == row.point.end() ? "" : csv_field(it->second));
+    }
+    out << "," << row.repetition << "," << row.seed << "," << (row.ok ? "true" : "false") << ","
+        << json_number(row.seconds);
+    for (const auto& v : values) {
+      const double x = row.value(v);
+      out << "," << (std::isfinite(x) ? json_number(x) : "");
+    }
+    out << "\n";
+  }
+  write_file_atomically(csv, out.str());
+}
+
+}  // namespace sextant

@@ -1,0 +1,254 @@
+#include "sextant/experiments/runner.hpp"
+
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <mutex>
+#include <thread>
+#include <unordered_set>
+
+#include <oneapi/tbb/global_control.h>
+#include <oneapi/tbb/parallel_for.h>
+#include <oneapi/tbb/task_arena.h>
+
+#include "sextant/core/atomic_file.hpp"
+#include "sextant/core/error.hpp"
+#include "sextant/core/settings_reader.hpp"
+#include "sextant/experiments/json.hpp"
+#include "sextant/experiments/provenance.hpp"
+#include "sextant/experiments/run_kind.hpp"
+#include "sextant/experiments/run_row.hpp"
+
+namespace sextant {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// A killed writer may leave a last line without its newline; end it so the next append starts clean.
+void terminate_partial_line(const std::filesystem::path& jsonl) {
+  std::ifstream in(jsonl, std::ios::binary | std::ios::ate);
+  if (!in || in.tellg() <= 0) return;
+  in.seekg(-1, std::ios::end);
+  char last = 0;
+  in.get(last);
+  if (last != '\n') append_line_durably(jsonl, "");
+}
+
+/// "[#####.....] 12/40 runs, ETA 1m05s" on stderr when it is a terminal.
+class ProgressLine {
+ public:
+  ProgressLine(std::size_t total, std::string label, bool enabled)
+      : total_(total),
+        label_(std::move(label)),
+        enabled_(enabled && total > 0 && ::isatty(2)),
+        start_(Clock::now()) {
+    draw();
+  }
+  ~ProgressLine() {
+    if (enabled_) std::fprintf(stderr, "\n");
+  }
+  void tick() {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    ++done_;
+    draw();
+  }
+
+ private:
+  void draw() {
+    if (!enabled_) return;
+    const double elapsed = seconds_since(start_);
+    const int width = 30;
+    const int filled = static_cast<int>(width * done_ / total_);
+    std::string bar(static_cast<std::size_t>(filled), '#');
+    bar.append(static_cast<std::size_t>(width - filled), '.');
+    std::string eta = "--";
+    if (done_ > 0) {
+      const auto remaining =
+          static_cast<long>(elapsed / static_cast<double>(done_) * static_cast<double>(total_ - done_));
+      eta = std::to_string(remaining / 60) + "m" + std::to_string(remaining % 60) + "s";
+    }
+    std::fprintf(stderr, "\r%s [%s] %zu/%zu runs, ETA %s   ", label_.c_str(), bar.c_str(), done_, total_,
+                 eta.c_str());
+    std::fflush(stderr);
+  }
+
+  std::size_t total_;
+  std::size_t done_ = 0;
+  std::string label_;
+  bool enabled_;
+  Clock::time_point start_;
+  std::mutex mutex_;
+};
+
+struct ProvenanceInput {
+  const ExperimentConfig* config;
+  const RunnerOptions* options;
+  const RunnerSummary* summary;
+  std::string start, end;
+  int threads;
+};
+
+std::string provenance_json(const ProvenanceInput& p) {
+  const GitState git = current_git_state();
+  const auto& s = *p.summary;
+  std::string out = "{\n";
+  out += "  \"experiment\": " + json_string(p.config->name) + ",\n";
+  out += "  \"kind\": " + json_string(p.config->kind) + ",\n";
+  out += "  \"config_file\": " + json_string(p.config->file) + ",\n";
+  out += "  \"profile\": " + json_string(p.options->quick ? "quick" : "full") + ",\n";
+  out += "  \"seed\": " + json_string(std::to_string(p.config->seed)) + ",\n";
+  out += "  \"git\": {\"sha\": " + json_string(git.sha) + ", \"dirty\": " + (git.dirty ? "true" : "false") +
+         ", \"source\": " + json_string(git.source) + "},\n";
+  out += "  \"libraries\": " + library_versions_json() + ",\n";
+  out += "  \"host\": " + json_string(host_name()) + ",\n";
+  out += "  \"threads\": " + std::to_string(p.threads) + ",\n";
+  out += "  \"hardware_threads\": " + std::to_string(std::thread::hardware_concurrency()) + ",\n";
+  out +=
+      "  \"shard\": " +
+      json_string(std::to_string(p.options->shard.index + 1) + "/" + std::to_string(p.options->shard.count)) +
+      ",\n";
+  out += "  \"start\": " + json_string(p.start) + ",\n";
+  out += "  \"end\": " + (p.end.empty() ? std::string("null") : json_string(p.end)) + ",\n";
+  out += "  \"runs\": {\"total\": " + std::to_string(s.total) +
+         ", \"in_shard\": " + std::to_string(s.in_shard) + ", \"skipped\": " + std::to_string(s.skipped) +
+         ", \"executed\": " + std::to_string(s.executed) + ", \"failed\": " + std::to_string(s.failed) +
+         "},\n";
+  out += "  \"resolved_config\": " + to_json(p.config->effective) + "\n}\n";
+  return out;
+}
+
+std::vector<RunRow> rows_in_expansion_order(const std::vector<RunRow>& rows,
+                                            const std::vector<RunSpec>& runs) {
+  std::unordered_map<std::string, const RunRow*> by_key;
+  for (const auto& r : rows) by_key[r.key] = &r;
+  std::vector<RunRow> out;
+  std::unordered_set<std::string> placed;
+  for (const auto& run : runs) {
+    const auto it = by_key.find(run.key);
+    if (it != by_key.end() && placed.insert(run.key).second) out.push_back(*it->second);
+  }
+  for (const auto& r : rows) {  // rows of other profiles or older configs stay, after the current ones
+    if (placed.insert(r.key).second) out.push_back(r);
+  }
+  return out;
+}
+
+}  // namespace
+
+bool RunnerOptions::valid(std::string* why) const {
+  const auto fail = [why](const std::string& text) {
+    if (why) *why = text;
+    return false;
+  };
+  if (jobs < 0) return fail("--jobs must be ≥ 0 (0 = all hardware threads)");
+  if (shard.count < 1 || shard.index >= shard.count) return fail("--shard must be i/n with 1 ≤ i ≤ n");
+  if (results_root.empty()) return fail("the results folder is empty");
+  return true;
+}
+
+std::string provenance_file_name(const Shard& shard) {
+  if (shard.count <= 1) return "provenance.json";
+  return "provenance.shard-" + std::to_string(shard.index + 1) + "-of-" + std::to_string(shard.count) +
+         ".json";
+}
+
+RunnerSummary run_experiment(const std::filesystem::path& config_file, const RunnerOptions& options) {
+  std::string why;
+  if (!options.valid(&why)) throw InputError("options", "", why);
+  const auto start = Clock::now();
+  const ExperimentConfig config = read_experiment_config(config_file, options.quick);
+  if (!run_kind_registry().contains(config.kind)) {
+    throw InputError(config.file, at_line(yaml_line(config.effective["kind"])),
+                     "key 'kind': " + run_kind_registry().unknown(config.kind));
+  }
+  const auto kind = run_kind_registry().create(config.kind);
+  kind->validate(config);
+
+  const std::vector<RunSpec> runs = expand_runs(config);
+  const std::vector<RunSpec> mine = select_shard(runs, options.shard);
+
+  RunnerSummary summary;
+  summary.experiment = config.name;
+  summary.folder = options.results_root / config.name;
+  summary.total = runs.size();
+  summary.in_shard = mine.size();
+  const auto jsonl = summary.folder / kRunsJsonl;
+  std::filesystem::create_directories(summary.folder);
+  terminate_partial_line(jsonl);
+
+  std::unordered_set<std::string> finished;
+  for (const auto& row : read_rows(jsonl).rows) {
+    if (row.ok) finished.insert(row.key);
+  }
+  std::vector<const RunSpec*> todo;
+  for (const auto& run : mine) {
+    if (finished.count(run.key)) {
+      ++summary.skipped;
+    } else if (options.max_runs == 0 || todo.size() < options.max_runs) {
+      todo.push_back(&run);
+    }
+  }
+
+  const int threads =
+      options.jobs > 0 ? options.jobs : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  ProvenanceInput provenance{&config, &options, &summary, iso_time_now(), "", threads};
+  {
+    YAML::Emitter emitter;
+    emitter << config.effective;
+    write_file_atomically(summary.folder / kEffectiveConfig, std::string(emitter.c_str()) + "\n");
+  }
+  write_file_atomically(summary.folder / provenance_file_name(options.shard), provenance_json(provenance));
+
+  if (!todo.empty()) {
+    PrepareContext context;
+    context.cache_root = options.cache_root.empty() ? options.results_root / "_cache" : options.cache_root;
+    const auto session = kind->prepare(config, context);
+    ProgressLine progress(todo.size(), config.name, options.progress);
+    std::atomic<std::size_t> executed{0}, failed{0};
+    std::mutex append_mutex;
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+      tbb::parallel_for(
+          tbb::blocked_range<std::size_t>(0, todo.size(), 1),
+          [&](const tbb::blocked_range<std::size_t>& range) {
+            for (std::size_t i = range.begin(); i != range.end(); ++i) {
+              const RunSpec& run = *todo[i];
+              RunRow row = row_for(run, config.name);
+              const auto run_start = Clock::now();
+              try {
+                session->run(run, row);
+              } catch (const std::exception& e) {
+                row.ok = false;
+                row.error = e.what();
+                ++failed;
+              }
+              row.seconds = seconds_since(run_start);
+              {
+                const std::lock_guard<std::mutex> lock(append_mutex);
+                append_line_durably(jsonl, to_json_line(row));
+              }
+              ++executed;
+              progress.tick();
+            }
+          },
+          tbb::simple_partitioner());
+    });
+    summary.executed = executed;
+    summary.failed = failed;
+  }
+
+  write_rows_csv(summary.folder / kRunsCsv, rows_in_expansion_order(read_rows(jsonl).rows, runs));
+  summary.seconds = seconds_since(start);
+  provenance.end = iso_time_now();
+  write_file_atomically(summary.folder / provenance_file_name(options.shard), provenance_json(provenance));
+  return summary;
+}
+
+}  // namespace sextant

@@ -1,0 +1,185 @@
+// The runner: results, resume, truncated lines, shards + merge, and a SIGKILL mid-sweep.
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <set>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "sextant/experiments/report.hpp"
+#include "sextant/experiments/run_row.hpp"
+#include "sextant/experiments/runner.hpp"
+#include "test_helpers.hpp"
+
+namespace sextant {
+namespace {
+
+using test::TempFolder;
+
+RunnerOptions options_for(const TempFolder& tmp, const std::string& results = "results") {
+  RunnerOptions o;
+  o.results_root = tmp / results;
+  o.jobs = 2;
+  o.progress = false;
+  return o;
+}
+
+std::size_t count_lines(const std::filesystem::path& file) {
+  const std::string text = test::read_text(file);
+  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+}
+
+TEST(Runner, WritesRowsCsvAndProvenanceThenSkipsFinishedRuns) {
+  TempFolder tmp;
+  test::write_text(tmp / "e.yaml", test::selftest_yaml("rt", 3, 1, 0));
+  const RunnerSummary first = run_experiment(tmp / "e.yaml", options_for(tmp));
+  EXPECT_EQ(first.total, 6u);
+  EXPECT_EQ(first.executed, 6u);
+  EXPECT_EQ(first.failed, 0u);
+  const auto folder = tmp / "results" / "rt";
+  EXPECT_EQ(read_rows(folder / kRunsJsonl).rows.size(), 6u);
+  EXPECT_EQ(count_lines(folder / kRunsCsv), 7u);
+  const std::string provenance = test::read_text(folder / "provenance.json");
+  for (const char* field : {"\"git\"", "\"sha\"", "\"dirty\"", "\"libraries\"", "\"host\"", "\"threads\": 2",
+                            "\"start\"", "\"end\"", "\"resolved_config\"", "\"seed\""}) {
+    EXPECT_NE(provenance.find(field), std::string::npos) << field;
+  }
+  EXPECT_TRUE(std::filesystem::exists(folder / kEffectiveConfig));
+
+  const RunnerSummary second = run_experiment(tmp / "e.yaml", options_for(tmp));
+  EXPECT_EQ(second.executed, 0u);
+  EXPECT_EQ(second.skipped, 6u);
+  EXPECT_EQ(count_lines(folder / kRunsJsonl), 6u);
+}
+
+TEST(Runner, AnInterruptedSweepIsCompletedWithoutDuplicates) {
+  TempFolder tmp;
+  test::write_text(tmp / "e.yaml", test::selftest_yaml("part", 5, 1, 0));
+  RunnerOptions o = options_for(tmp);
+  o.max_runs = 4;
+  EXPECT_EQ(run_experiment(tmp / "e.yaml", o).executed, 4u);
+  const RunnerSummary rest = run_experiment(tmp / "e.yaml", options_for(tmp));
+  EXPECT_EQ(rest.executed, 6u);
+  EXPECT_EQ(rest.skipped, 4u);
+  EXPECT_EQ(count_lines(tmp / "results" / "part" / kRunsJsonl), 10u);
+}
+
+TEST(Runner, ToleratesATruncatedLastLine) {
+  TempFolder tmp;
+  test::write_text(tmp / "e.yaml", test::selftest_yaml("trunc", 2, 1, 0));
+  run_experiment(tmp / "e.yaml", options_for(tmp));
+  const auto jsonl = tmp / "results" / "trunc" / kRunsJsonl;
+  // Keep three complete rows and half of the fourth, as a killed writer could leave it.
+  std::string text = test::read_text(jsonl);
+  std::size_t cut = 0;
+  for (int i = 0; i < 3; ++i) cut = text.find('\n', cut) + 1;
+  const std::size_t half = cut + (text.find('\n', cut) - cut) / 2;
+  test::write_text(jsonl, text.substr(0, half));
+  EXPECT_EQ(read_rows(jsonl).rows.size(), 3u);
+  EXPECT_EQ(read_rows(jsonl).bad_lines, 1u);
+
+  const RunnerSummary s = run_experiment(tmp / "e.yaml", options_for(tmp));
+  EXPECT_EQ(s.executed, 1u);
+  const RowFile rows = read_rows(jsonl);
+  EXPECT_EQ(rows.rows.size(), 4u);
+  EXPECT_EQ(rows.bad_lines, 1u);  // the truncated line stays, ended by a newline, and is skipped
+}
+
+TEST(Runner, ShardsMergeIntoTheWholeSweep) {
+  TempFolder tmp;
+  test::write_text(tmp / "e.yaml", test::selftest_yaml("sharded", 5, 2, 0));
+  std::vector<std::filesystem::path> roots;
+  std::size_t executed = 0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    RunnerOptions o = options_for(tmp, "shard" + std::to_string(i));
+    o.shard = Shard{i, 3};
+    executed += run_experiment(tmp / "e.yaml", o).executed;
+    roots.push_back(o.results_root);
+    EXPECT_TRUE(std::filesystem::exists(o.results_root / "sharded" / provenance_file_name(o.shard)));
+  }
+  EXPECT_EQ(executed, 20u);
+  EXPECT_EQ(merge_results(roots, tmp / "merged"), 20u);
+  const RowFile merged = read_rows(tmp / "merged" / "sharded" / kRunsJsonl);
+  EXPECT_EQ(merged.rows.size(), 20u);
+  EXPECT_EQ(count_lines(tmp / "merged" / "sharded" / kRunsJsonl), 20u);
+  EXPECT_TRUE(std::filesystem::exists(tmp / "merged" / "sharded" / "provenance.shard-2-of-3.json"));
+
+  // The merged root is complete: a rerun there has nothing left to do.
+  RunnerOptions o = options_for(tmp, "merged");
+  EXPECT_EQ(run_experiment(tmp / "e.yaml", o).executed, 0u);
+
+  // The report reads the shard roots directly too.
+  const ReportSummary report = write_report(roots, tmp / "report");
+  EXPECT_EQ(report.experiments, 1u);
+  EXPECT_NE(test::read_text(tmp / "report" / "sharded" / "runs_per_method.md").find("| 10"),
+            std::string::npos);
+}
+
+pid_t spawn(const std::vector<std::string>& args) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    std::vector<char*> argv;
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(argv[0], argv.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+int wait_for(pid_t pid) {
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return status;
+}
+
+TEST(Runner, ResumesAfterSigkillMidSweep) {
+  TempFolder tmp;
+  test::write_text(tmp / "e.yaml", test::selftest_yaml("killed", 30, 1, 40));  // 60 runs × 40 ms on 2 threads
+  const auto jsonl = tmp / "results" / "killed" / kRunsJsonl;
+  const std::vector<std::string> args{SEXTANT_BINARY,
+                                      "run",
+                                      (tmp / "e.yaml").string(),
+                                      "--results",
+                                      (tmp / "results").string(),
+                                      "--jobs",
+                                      "2",
+                                      "--no-progress"};
+  const pid_t pid = spawn(args);
+  ASSERT_GT(pid, 0);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+  while (count_lines(jsonl) < 6 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ::kill(pid, SIGKILL);
+  const int status = wait_for(pid);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the sweep finished before it could be killed";
+  const std::size_t before = read_rows(jsonl).rows.size();
+  EXPECT_GE(before, 6u);
+  EXPECT_LT(before, 60u);
+
+  const int rerun = wait_for(spawn(args));
+  ASSERT_TRUE(WIFEXITED(rerun));
+  EXPECT_EQ(WEXITSTATUS(rerun), 0);
+  const RowFile after = read_rows(jsonl);
+  EXPECT_EQ(after.rows.size(), 60u);
+  EXPECT_LE(after.bad_lines, 1u);
+  // No run was executed twice: every valid line has its own key.
+  std::set<std::string> keys;
+  std::size_t valid_lines = 0;
+  std::istringstream lines(test::read_text(jsonl));
+  for (std::string line; std::getline(lines, line);) {
+    RunRow row;
+    if (parse_json_line(line, row)) {
+      ++valid_lines;
+      keys.insert(row.key);
+    }
+  }
+  EXPECT_EQ(valid_lines, 60u);
+  EXPECT_EQ(keys.size(), 60u);
+}
+
+}  // namespace
+}  // namespace sextant
