@@ -6,17 +6,27 @@ namespace sextant {
 
 namespace {
 
+constexpr double kKeepAll = std::numeric_limits<double>::infinity();
+
 /// Layers s..n of the pyramid as the optimiser's stages.
 class LayerObjective final : public StagedObjective {
  public:
-  LayerObjective(const std::vector<NdtGrid>& layers, int start_layer, double unmatched_penalty,
-                 const PointCloud& input)
-      : layers_(layers), first_(start_layer - 1), penalty_(unmatched_penalty), input_(input) {}
+  LayerObjective(const std::vector<NdtGrid>& layers, const MlndtSettings& settings, const PointCloud& input)
+      : layers_(layers),
+        first_(settings.start_layer - 1),
+        penalty_(settings.unmatched_penalty),
+        max_distance_(settings.max_distance),
+        first_truncated_(settings.pyramid.layers - settings.truncated_layers),
+        input_(input) {}
   int stages() const override { return static_cast<int>(layers_.size()) - first_; }
   int stage_label(int stage) const override { return first_ + stage + 1; }
   ScoreEvaluation evaluate(int stage, const Vector6d& xi, Derivatives d) const override {
-    ScoreEvaluation e = mahalanobis_score(grid(stage), input_, xi, d);  // eqs. (3.11), (3.17), (3.18)
-    e.score += penalty_ * static_cast<double>(input_.size() - e.matched);
+    // eqs. (3.11), (3.17), (3.18) with each term truncated at max_distance: min(eᵀC⁻¹e, τ)
+    const double tau = first_ + stage >= first_truncated_ ? max_distance_ : kKeepAll;
+    ScoreEvaluation e = mahalanobis_score(grid(stage), input_, xi, d, tau);
+    const std::size_t unmatched = input_.size() - e.matched - e.rejected;
+    e.score += penalty_ * static_cast<double>(unmatched);
+    if (e.rejected > 0) e.score += tau * static_cast<double>(e.rejected);  // never ∞·0
     return e;
   }
   double unmatched_penalty() const override { return penalty_; }
@@ -28,6 +38,8 @@ class LayerObjective final : public StagedObjective {
   const std::vector<NdtGrid>& layers_;
   int first_;
   double penalty_;
+  double max_distance_;
+  int first_truncated_;  ///< index of the first layer with truncated terms
   const PointCloud& input_;
 };
 
@@ -46,6 +58,10 @@ bool MlndtSettings::valid(std::string* why) const {
     problem = "start_layer must lie in [1, layers]";
   else if (!(unmatched_penalty >= 0.0))
     problem = "unmatched_penalty must be ≥ 0";
+  else if (!(max_distance > 0.0))
+    problem = "max_distance must be positive (.inf keeps every correspondence)";
+  else if (truncated_layers < 0 || truncated_layers > pyramid.layers)
+    problem = "truncated_layers must lie in [0, layers]";
   if (problem && why) *why = problem;
   return problem == nullptr;
 }
@@ -57,8 +73,11 @@ MlndtSettings read_mlndt_settings(const YAML::Node& node, const std::string& fil
   in.read("layers", s.pyramid.layers);
   in.read("start_layer", s.start_layer);
   in.read("unmatched_penalty", s.unmatched_penalty);
+  in.read("max_distance", s.max_distance);
+  in.read("truncated_layers", s.truncated_layers);
   in.read("min_points", s.pyramid.cells.min_points);
   in.read("max_eigen_ratio", s.pyramid.cells.max_eigen_ratio);
+  in.read("min_spread", s.pyramid.cells.min_spread);
   std::string solver;
   if (in.read("solver", solver) && !solver_from_name(solver, s.optimizer.solver))
     in.fail("solver", "unknown solver '" + solver + "' (known: newton lm ceres)");
@@ -87,7 +106,7 @@ RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Iso
     if (is_finite(initial)) r.T = initial;
     return r;
   }
-  const LayerObjective objective(layers_, settings_.start_layer, settings_.unmatched_penalty, input);
+  const LayerObjective objective(layers_, settings_, input);
   return optimize(objective, initial, settings_.optimizer);
 }
 

@@ -20,9 +20,10 @@ struct CellSums {
 };
 
 /// Mean (eq. 3.2), covariance (eq. 3.3) with eigenvalues raised to λmax / ratio; false when the
-/// cell has no spread at all.
-bool cell_gaussian(const CellSums& s, const Eigen::Vector3d& origin, double max_ratio, CellGaussian& out,
-                   Eigen::Matrix3d& covariance, Eigen::Matrix3f& sqrt_info) {
+/// cell has (almost) no spread: λmax below `min_spread` (repeated points).
+bool cell_gaussian(const CellSums& s, const Eigen::Vector3d& origin, const CellStatsSettings& settings,
+                   CellGaussian& out, Eigen::Matrix3d& covariance, Eigen::Matrix3f& sqrt_info) {
+  const double max_ratio = settings.max_eigen_ratio;
   const double n = s.count;
   const Eigen::Vector3d mean = s.sum / n;
   Eigen::Matrix3d C = (s.sum_sq - n * mean * mean.transpose()) / (n - 1.0);
@@ -30,7 +31,7 @@ bool cell_gaussian(const CellSums& s, const Eigen::Vector3d& origin, double max_
   eig.computeDirect(C);
   Eigen::Vector3d l = eig.eigenvalues();  // ascending
   const double floor_value = l(2) / max_ratio;
-  if (!(l(2) > 0.0) || !std::isfinite(l(2))) return false;
+  if (!(l(2) > 0.0) || !(l(2) >= settings.min_spread) || !std::isfinite(l(2))) return false;
   for (int j = 0; j < 2; ++j) l(j) = std::max(l(j), floor_value);  // C' = V Λ' Vᵀ
   const Eigen::Matrix3d& V = eig.eigenvectors();
   covariance = V * l.asDiagonal() * V.transpose();
@@ -54,6 +55,8 @@ bool CellStatsSettings::valid(std::string* why) const {
     problem = "min_points must be at least 4 (a 3D covariance needs more than 3 points)";
   else if (!(max_eigen_ratio >= 1.0))
     problem = "max_eigen_ratio must be at least 1";
+  else if (!(min_spread >= 0.0) || !std::isfinite(min_spread))
+    problem = "min_spread must be a variance ≥ 0 [m²]";
   if (problem && why) *why = problem;
   return problem == nullptr;
 }
@@ -117,7 +120,7 @@ NdtGrid NdtGrid::build(const PointCloud& reference, const Eigen::Vector3d& origi
     CellGaussian g{};
     Eigen::Matrix3d covariance;
     Eigen::Matrix3f sqrt_info;
-    if (!cell_gaussian(s, origin, settings.max_eigen_ratio, g, covariance, sqrt_info)) continue;
+    if (!cell_gaussian(s, origin, settings, g, covariance, sqrt_info)) continue;
     slot = static_cast<std::int32_t>(grid.gaussians_.size());
     grid.gaussians_.push_back(g);
     grid.covariances_.push_back(covariance);

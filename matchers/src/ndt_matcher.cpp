@@ -60,6 +60,7 @@ NdtSettings read_ndt_settings(const YAML::Node& node, const std::string& file) {
   in.read("trilinear", s.trilinear);
   in.read("min_points", s.cells.min_points);
   in.read("max_eigen_ratio", s.cells.max_eigen_ratio);
+  in.read("min_spread", s.cells.min_spread);
   std::string solver;
   if (in.read("solver", solver) && !solver_from_name(solver, s.optimizer.solver))
     in.fail("solver", "unknown solver '" + solver + "' (known: newton lm)");

@@ -5,10 +5,13 @@
 #include "sextant/matchers/ndt_score.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace sextant {
 
 namespace {
+
+constexpr double kNoLimit = std::numeric_limits<double>::infinity();
 
 Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
   Eigen::Matrix3d m;
@@ -42,6 +45,7 @@ struct Sums {
   Eigen::Matrix3d S = Eigen::Matrix3d::Zero();  ///< Σ w·[u]×ᵀC⁻¹[u]×
   Matrix6d outer = Matrix6d::Zero();  ///< Σ v·m·mᵀ, m = [C⁻¹e; u × C⁻¹e] (Gaussian score)
   std::size_t matched = 0;
+  std::size_t rejected = 0;
 };
 
 /// C⁻¹ from the packed upper triangle.
@@ -53,7 +57,7 @@ inline void unpack(const float* ic, double& xx, double& xy, double& xz, double& 
 /// rank-one term of the Gaussian score. Written out by hand: this is the hot loop.
 template <bool kGradient, bool kHessian, bool kOuter>
 inline void accumulate(const CellGaussian& cell, const Eigen::Vector3d& u, const Eigen::Vector3d& t, double w,
-                       double v, double score_term_scale, bool gaussian, double d2, Sums& s) {
+                       double v, double score_term_scale, bool gaussian, double d2, double max_q, Sums& s) {
   double a, b, c, d, e, f;
   unpack(cell.inv_cov, a, b, c, d, e, f);
   const double ex = u.x() + t.x() - cell.mean[0];  // eq. (3.10)
@@ -63,6 +67,10 @@ inline void accumulate(const CellGaussian& cell, const Eigen::Vector3d& u, const
   const double cy = b * ex + d * ey + e * ez;
   const double cz = c * ex + e * ey + f * ez;
   const double q = ex * cx + ey * cy + ez * cz;  // eᵀC⁻¹e, eq. (3.13)
+  if (q > max_q) {  // a rejected correspondence: no terms here, the caller charges it
+    ++s.rejected;
+    return;
+  }
   double weight = w;
   if (gaussian) {
     const double ex_term = std::exp(-0.5 * d2 * q);
@@ -110,6 +118,7 @@ ScoreEvaluation finish(Sums& s, const PoseTerms& pose, Derivatives derivatives, 
   ScoreEvaluation out;
   out.score = s.score;
   out.matched = s.matched;
+  out.rejected = s.rejected;
   if (derivatives == Derivatives::kScore) return out;
   const Eigen::Matrix3d& A = pose.A;
   const Eigen::Matrix3d& N = s.N;
@@ -140,7 +149,8 @@ ScoreEvaluation finish(Sums& s, const PoseTerms& pose, Derivatives derivatives, 
 }
 
 template <bool kGradient, bool kHessian>
-void mahalanobis_loop(const NdtGrid& grid, const PointCloud& input, const PoseTerms& pose, Sums& s) {
+void mahalanobis_loop(const NdtGrid& grid, const PointCloud& input, const PoseTerms& pose, double max_q,
+                      Sums& s) {
   const Eigen::Matrix3d& R = pose.R;
   const double tx = pose.t.x(), ty = pose.t.y(), tz = pose.t.z();
   for (const Eigen::Vector3f& pf : input.points()) {
@@ -149,7 +159,7 @@ void mahalanobis_loop(const NdtGrid& grid, const PointCloud& input, const PoseTe
                               static_cast<float>(u.z() + tz));
     if (g < 0) continue;
     // s_k = eᵀC⁻¹e, g_k = 2eᵀC⁻¹∂e/∂ξ, H_k = 2(∂eᵀC⁻¹∂e + eᵀC⁻¹∂²e): weight 2, eqs. (3.13)–(3.15).
-    accumulate<kGradient, kHessian, false>(grid.gaussian(g), u, pose.t, 2.0, 0.0, 1.0, false, 0.0, s);
+    accumulate<kGradient, kHessian, false>(grid.gaussian(g), u, pose.t, 2.0, 0.0, 1.0, false, 0.0, max_q, s);
   }
 }
 
@@ -169,7 +179,8 @@ void gaussian_loop(const NdtGrid& grid, const PointCloud& input, const PoseTerms
       const int g =
           grid.lookup(static_cast<float>(x.x()), static_cast<float>(x.y()), static_cast<float>(x.z()));
       if (g >= 0)
-        accumulate<kGradient, kHessian, kHessian>(grid.gaussian(g), u, pose.t, w, v, p.d1, true, p.d2, s);
+        accumulate<kGradient, kHessian, kHessian>(grid.gaussian(g), u, pose.t, w, v, p.d1, true, p.d2,
+                                                  kNoLimit, s);
       continue;
     }
     // Trilinear: the 8 cells whose centres enclose x, weights from the position between centres.
@@ -190,7 +201,7 @@ void gaussian_loop(const NdtGrid& grid, const PointCloud& input, const PoseTerms
       if (weight <= 0.0) continue;
       const std::size_t before = s.matched;
       accumulate<kGradient, kHessian, kHessian>(grid.gaussian(g), u, pose.t, weight * w, weight * v,
-                                                weight * p.d1, true, p.d2, s);
+                                                weight * p.d1, true, p.d2, kNoLimit, s);
       s.matched = before;
       any = true;
     }
@@ -211,14 +222,14 @@ GaussianScoreParams GaussianScoreParams::from_outlier_ratio(double outlier_ratio
 }
 
 ScoreEvaluation mahalanobis_score(const NdtGrid& grid, const PointCloud& input, const Vector6d& xi,
-                                  Derivatives derivatives) {
+                                  Derivatives derivatives, double max_distance) {
   const PoseTerms pose(xi);
   Sums s;
   if (grid.empty() || !xi.allFinite()) return finish(s, pose, Derivatives::kScore, true);
   switch (derivatives) {
-    case Derivatives::kScore: mahalanobis_loop<false, false>(grid, input, pose, s); break;
-    case Derivatives::kGradient: mahalanobis_loop<true, false>(grid, input, pose, s); break;
-    case Derivatives::kHessian: mahalanobis_loop<true, true>(grid, input, pose, s); break;
+    case Derivatives::kScore: mahalanobis_loop<false, false>(grid, input, pose, max_distance, s); break;
+    case Derivatives::kGradient: mahalanobis_loop<true, false>(grid, input, pose, max_distance, s); break;
+    case Derivatives::kHessian: mahalanobis_loop<true, true>(grid, input, pose, max_distance, s); break;
   }
   return finish(s, pose, derivatives, true);
 }

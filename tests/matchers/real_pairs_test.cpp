@@ -1,8 +1,11 @@
-// ML-NDT on the shared real pairs (data/README.md): KITTI 00 frames 0→1 from identity, and the
-// fast_gicp Velodyne pair (p_target = T·p_source), inputs thinned with GBS.
+// ML-NDT on the shared real pairs (data/README.md): KITTI 00 frames 0→1 from identity, the
+// fast_gicp Velodyne pair (p_target = T·p_source), and PCL's room scans from the tutorial guess.
+// Settings for these ~70–120k-point outdoor scans (the thesis' q = 8, n = 4 was tuned on ~20k-point
+// hannover scans, whose finest cells are far smaller than 100 m scenes' 2–4 m): n = 6 (finest
+// cells ≈ 0.6–1 m), each finest-layer term truncated at eᵀC⁻¹e = 16 and unmatched points charged
+// the same (robust to moving objects and non-overlap), every input point used.
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <fstream>
 
 #include "sextant/core/io/cloud_io.hpp"
@@ -11,6 +14,8 @@
 
 namespace sextant {
 namespace {
+
+constexpr const char* kOutdoor = "{layers: 6, max_distance: 16, unmatched_penalty: 16, solver: ";
 
 Eigen::Isometry3d read_matrix(const std::string& path) {
   std::ifstream in(path);
@@ -25,38 +30,94 @@ struct Error {
   double metres, degrees;
 };
 
-Error align_pair(const std::string& reference, const std::string& input, const Eigen::Isometry3d& truth,
-                 const std::string& solver) {
-  const PointCloud ref = read_cloud(reference);
-  const PointCloud in = read_cloud(input);
-  auto matcher = make_matcher("mlndt", YAML::Load("{solver: " + solver + "}"));
-  Rng rng(1);
-  const PairMatch m = match_pair(*matcher, *make_sampler("gbs", YAML::Load("{cell_size: 1.0}")), ref, in,
-                                 Eigen::Isometry3d::Identity(), rng);
-  EXPECT_TRUE(m.result.converged) << m.result.summary();
-  const Eigen::Isometry3d E = truth.inverse() * m.result.T;
+Error difference(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+  const Eigen::Isometry3d E = a.inverse() * b;
   return {translation_norm(E), rotation_angle(E) * 180.0 / M_PI};
 }
 
-// NOT YET MET (disabled until the matcher reaches the tolerance): with the defaults
-// (q = 8, n = 4, GBS 1 m) ML-NDT reaches 14 cm (Newton) / 16 cm (LM) on KITTI, and 50 cm / 4.5°
-// on the Velodyne pair; n = 6 makes KITTI worse (32 cm). Run with --gtest_also_run_disabled_tests.
-TEST(RealPairs, DISABLED_KittiFromIdentity) {
-  const std::string dir = std::string(SEXTANT_DATA_DIR) + "/kitti00_pair/";
-  const Eigen::Isometry3d truth = read_matrix(dir + "T_velo0_from_velo1_DERIVED.txt");
+RegistrationResult align(const PointCloud& ref, const PointCloud& in, const std::string& matcher,
+                         const std::string& settings, const std::string& sampler, const std::string& sampling,
+                         const Eigen::Isometry3d& initial) {
+  Rng rng(1);
+  auto m = make_matcher(matcher, YAML::Load(settings));
+  return match_pair(*m, *make_sampler(sampler, YAML::Load(sampling)), ref, in, initial, rng).result;
+}
+
+struct KittiPair {
+  std::string dir = std::string(SEXTANT_DATA_DIR) + "/kitti00_pair/";
+  PointCloud ref = read_cloud(dir + "000000.xyz32.bin");
+  PointCloud in = read_cloud(dir + "000001.xyz32.bin");
+  Eigen::Isometry3d truth = read_matrix(dir + "T_velo0_from_velo1_DERIVED.txt");
+};
+
+// NOT MET, and not by any matcher here: ML-NDT (Newton and LM), point-to-plane ICP, PCL GICP and
+// PCL NDT all converge within 5 mm / 0.05° of each other at x ≈ 0.68 m, 17–19 cm / 0.2° from
+// the derived ground truth (x = 0.859 m). The derived matrix, not the registration, is the
+// suspect (unrectified scans vs. camera-time poses). Run with --gtest_also_run_disabled_tests.
+TEST(RealPairs, DISABLED_KittiFromIdentityAgainstGroundTruth) {
+  const KittiPair p;
   for (const char* solver : {"newton", "lm"}) {
-    const Error e = align_pair(dir + "000000.xyz32.bin", dir + "000001.xyz32.bin", truth, solver);
+    const RegistrationResult r = align(p.ref, p.in, "mlndt", std::string(kOutdoor) + solver + "}", "all",
+                                       "{}", Eigen::Isometry3d::Identity());
+    const Error e = difference(p.truth, r.T);
     EXPECT_LT(e.metres, 0.10) << solver;
     EXPECT_LT(e.degrees, 0.3) << solver;
   }
 }
 
-TEST(RealPairs, DISABLED_VelodyneFromIdentity) {
+// What is checked instead: from identity ML-NDT converges, and a point-to-plane ICP started at
+// its result (a tight, independent refinement) moves it by less than 2 cm / 0.05°.
+TEST(RealPairs, KittiFromIdentityAgreesWithIcpRefinement) {
+  const KittiPair p;
+  for (const char* solver : {"newton", "lm"}) {
+    const RegistrationResult r = align(p.ref, p.in, "mlndt", std::string(kOutdoor) + solver + "}", "all",
+                                       "{}", Eigen::Isometry3d::Identity());
+    ASSERT_TRUE(r.converged) << solver << ": " << r.summary();
+    const RegistrationResult icp = align(p.ref, p.in, "icp_p2l", "{max_correspondence_distance: 0.5}", "gbs",
+                                         "{cell_size: 0.5, max_per_cell: 3}", r.T);
+    ASSERT_TRUE(icp.converged) << icp.summary();
+    const Error e = difference(icp.T, r.T);
+    EXPECT_LT(e.metres, 0.02) << solver;
+    EXPECT_LT(e.degrees, 0.05) << solver;
+    EXPECT_LT(difference(p.truth, r.T).metres, 0.20) << solver;  // the ground-truth gap stays as measured
+  }
+}
+
+TEST(RealPairs, VelodyneFromIdentity) {
   const std::string dir = std::string(SEXTANT_DATA_DIR) + "/velodyne_pair/";
   const Eigen::Isometry3d truth = read_matrix(dir + "fast_gicp_relative.txt");
-  const Error e = align_pair(dir + "fast_gicp_251370668.pcd", dir + "fast_gicp_251371071.pcd", truth, "lm");
-  EXPECT_LT(e.metres, 0.05);
-  EXPECT_LT(e.degrees, 0.3);
+  const PointCloud ref = read_cloud(dir + "fast_gicp_251370668.pcd");
+  const PointCloud in = read_cloud(dir + "fast_gicp_251371071.pcd");
+  for (const char* solver : {"newton", "lm"}) {
+    const RegistrationResult r = align(ref, in, "mlndt", std::string(kOutdoor) + solver + "}", "all", "{}",
+                                       Eigen::Isometry3d::Identity());
+    EXPECT_TRUE(r.converged) << solver << ": " << r.summary();
+    const Error e = difference(truth, r.T);
+    EXPECT_LT(e.metres, 0.05) << solver;
+    EXPECT_LT(e.degrees, 0.3) << solver;
+  }
+}
+
+// The room scans have no ground truth. From the tutorial guess (yaw 0.6931 rad, t = (1.79387,
+// 0.720047, 0)) ML-NDT with the thesis' pyramid (q = 8, n = 4, plain eq. 3.11) must converge,
+// and agree with a point-to-plane ICP refinement started at its result to 10 cm / 1° (the scans
+// are noisy; PCL's NDT reaches t ≈ (1.97, 0.06, 0.01), yaw 40.8°, from the same guess).
+TEST(RealPairs, RoomScansFromTutorialGuess) {
+  const std::string dir = std::string(SEXTANT_DATA_DIR) + "/pcl_room_scan/";
+  const PointCloud ref = read_cloud(dir + "room_scan1.pcd");
+  const PointCloud in = read_cloud(dir + "room_scan2.pcd");
+  const Eigen::Isometry3d guess =
+      Eigen::Translation3d(1.79387, 0.720047, 0) * Eigen::AngleAxisd(0.6931, Eigen::Vector3d::UnitZ());
+  const RegistrationResult r = align(ref, in, "mlndt", "{}", "all", "{}", guess);
+  ASSERT_TRUE(r.converged) << r.summary();
+  const RegistrationResult icp = align(ref, in, "icp_p2l", "{max_correspondence_distance: 0.5}", "gbs",
+                                       "{cell_size: 0.2, max_per_cell: 3}", r.T);
+  ASSERT_TRUE(icp.converged) << icp.summary();
+  const Error e = difference(icp.T, r.T);
+  EXPECT_LT(e.metres, 0.10);
+  EXPECT_LT(e.degrees, 1.0);
+  EXPECT_NEAR(r.T.translation().x(), 1.97, 0.1);  // PCL NDT's order of magnitude
+  EXPECT_NEAR(r.T.translation().y(), 0.06, 0.1);
 }
 
 }  // namespace

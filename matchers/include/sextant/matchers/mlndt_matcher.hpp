@@ -2,8 +2,9 @@
 // Multi-Layered NDT (§3.2, Table 3.1): a layer pyramid over the reference's bounding box,
 // Mahalanobis score (eq. 3.11), start layer s, three iterations per layer, then the last layer
 // until ‖Δξ‖ < ε. YAML keys: division, layers, start_layer, solver (newton | lm | ceres),
-// iterations_per_layer, max_iterations, unmatched_penalty, epsilon, line_search, min_points, max_eigen_ratio,
-// dof.
+// iterations_per_layer, max_iterations, unmatched_penalty, max_distance, truncated_layers, epsilon,
+// line_search, min_points, max_eigen_ratio, min_spread, dof.
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -20,6 +21,13 @@ struct MlndtSettings {
   /// Score charged for an input point outside every Gaussian, so that a step cannot lower the
   /// score by pushing points out of the cells (the thesis leaves this open) [Mahalanobis units]
   double unmatched_penalty = 50.0;
+  /// τ: each term of eq. (3.11) becomes min(eᵀC⁻¹e, τ) (a truncated quadratic: outliers from
+  /// moving objects and non-overlap add a constant, no gradient); .inf keeps the thesis' plain
+  /// sum. 16 ≈ the 99.9 % quantile of χ² with 3 DOF [Mahalanobis units]
+  double max_distance = std::numeric_limits<double>::infinity();
+  /// The truncation applies in the finest `truncated_layers` layers only: coarse layers keep
+  /// the plain sum, whose long tails give ML-NDT its capture range [count, 0..n]
+  int truncated_layers = 1;
   OptimizerSettings optimizer;  ///< solver, iterations per layer (3), cap, ε, DOF mask
   MlndtSettings();
   bool valid(std::string* why) const;

@@ -16,6 +16,9 @@ namespace sextant {
 struct CellStatsSettings {
   std::size_t min_points = 5;      ///< a cell gets a Gaussian with at least this many points (Table 3.1: > 4)
   double max_eigen_ratio = 100.0;  ///< eigenvalues below λmax / ratio are raised to it (text after eq. 3.11)
+  /// Cells whose largest covariance eigenvalue is below this are dropped: repeated points give
+  /// no surface, and their near-singular C⁻¹ would dominate eq. (3.11) [m²]
+  double min_spread = 1e-6;
   bool valid(std::string* why) const;
 };
 

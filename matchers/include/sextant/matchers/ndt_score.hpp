@@ -5,6 +5,7 @@
 //   Gaussian (P2D-NDT):   f = Σ d1·exp(−d2/2 · eᵀC⁻¹e)   (Magnusson's score; d1 < 0) eq. (3.6)
 // Points whose cell has no Gaussian are skipped (matched counts the others).
 #include <cstddef>
+#include <limits>
 
 #include "sextant/core/point_cloud.hpp"
 #include "sextant/core/pose.hpp"
@@ -24,6 +25,7 @@ struct ScoreEvaluation {
   Matrix6d hessian = Matrix6d::Zero();       ///< exact second derivative, eq. (3.15)/(3.18)
   Matrix6d gauss_newton = Matrix6d::Zero();  ///< 2·Σ JᵀC⁻¹J (Mahalanobis only): the LM matrix of eq. (3.21)
   std::size_t matched = 0;
+  std::size_t rejected = 0;  ///< in a cell but beyond the Mahalanobis limit (not in `matched`)
 };
 
 /// Outlier-mixture constants of Magnusson's Gaussian score (Magnusson 2009, eqs. 6.8–6.9):
@@ -35,9 +37,12 @@ struct GaussianScoreParams {
   static GaussianScoreParams from_outlier_ratio(double outlier_ratio, double cell_edge);
 };
 
-/// Σ eᵀC⁻¹e over `input` mapped by ξ, eqs. (3.11), (3.17), (3.18).
+/// Σ eᵀC⁻¹e over `input` mapped by ξ, eqs. (3.11), (3.17), (3.18). Correspondences with
+/// eᵀC⁻¹e > `max_distance` are rejected (counted in `rejected`, no score or derivative terms);
+/// the default keeps all of them, as the thesis does.
 ScoreEvaluation mahalanobis_score(const NdtGrid& grid, const PointCloud& input, const Vector6d& xi,
-                                  Derivatives derivatives);
+                                  Derivatives derivatives,
+                                  double max_distance = std::numeric_limits<double>::infinity());
 
 /// Σ d1·exp(−d2/2·eᵀC⁻¹e). With `trilinear`, each point scores against the 8 cells whose
 /// centres surround it, weighted trilinearly (weights held constant in the derivatives, as
