@@ -7,6 +7,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/ndt_matcher.hpp"
+#include "sextant/matchers/ndt_score.hpp"
 #include "sextant/matchers/samplers.hpp"
 #include "test_clouds.hpp"
 
@@ -73,6 +74,42 @@ TEST(Mlndt, RecoversKnownTransformWithEverySolver) {
     EXPECT_LT(error_m(results[0].T, results[i].T), 1e-3) << i;
     EXPECT_LT(error_deg(results[0].T, results[i].T), 0.01) << i;
   }
+}
+
+// Known answers for the robust options: a point at the cell mean scores 0, so the whole score is
+// the far point's term; a limit below it rejects exactly that point (no score, no gradient).
+TEST(Mlndt, TruncationRejectsFarCorrespondencesAndDegenerateCellsAreDropped) {
+  PointCloud ref;
+  for (int i = 0; i < 200; ++i) {
+    const float a = 0.01f * static_cast<float>(i);
+    ref.push_back({0.5f + 0.1f * std::cos(7.0f * a), 0.5f + 0.1f * std::sin(5.0f * a),
+                   0.5f + 0.1f * std::cos(3.0f * a)});
+  }
+  const NdtGrid grid = NdtGrid::build(ref, Eigen::Vector3d::Zero(), 1.0, Eigen::Vector3i::Ones());
+  ASSERT_EQ(grid.gaussian_count(), 1u);
+  PointCloud in;
+  in.push_back({grid.gaussian(0).mean[0], grid.gaussian(0).mean[1], grid.gaussian(0).mean[2]});
+  in.push_back({0.95f, 0.95f, 0.95f});
+  const Vector6d zero = Vector6d::Zero();
+  const ScoreEvaluation all = mahalanobis_score(grid, in, zero, Derivatives::kScore);
+  EXPECT_EQ(all.matched, 2u);
+  EXPECT_EQ(all.rejected, 0u);
+  const double far = all.score;  // the first point contributes 0
+  const ScoreEvaluation cut = mahalanobis_score(grid, in, zero, Derivatives::kHessian, 0.5 * far);
+  EXPECT_EQ(cut.matched, 1u);
+  EXPECT_EQ(cut.rejected, 1u);
+  EXPECT_NEAR(cut.score, 0.0, 1e-9);
+  EXPECT_LT(cut.gradient.norm(), 1e-6);
+
+  PointCloud repeated(std::vector<Eigen::Vector3f>(10, Eigen::Vector3f(0.5f, 0.5f, 0.5f)));
+  repeated.push_back({0.5f + 1e-5f, 0.5f, 0.5f});  // λmax ≈ 1e-11 m², below min_spread
+  EXPECT_EQ(NdtGrid::build(repeated, Eigen::Vector3d::Zero(), 1.0, Eigen::Vector3i::Ones()).gaussian_count(),
+            0u);
+  CellStatsSettings keep;
+  keep.min_spread = 0.0;
+  EXPECT_EQ(
+      NdtGrid::build(repeated, Eigen::Vector3d::Zero(), 1.0, Eigen::Vector3i::Ones(), keep).gaussian_count(),
+      1u);
 }
 
 TEST(Mlndt, TraceFollowsLayerSchedule) {
