@@ -1,12 +1,10 @@
 #include "sextant/experiments/runner.hpp"
 
-#include <unistd.h>
-
 #include <atomic>
 #include <chrono>
-#include <cstdio>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <unordered_set>
 
@@ -16,6 +14,7 @@
 
 #include "sextant/core/atomic_file.hpp"
 #include "sextant/core/error.hpp"
+#include "sextant/core/progress.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/experiments/json.hpp"
 #include "sextant/experiments/provenance.hpp"
@@ -40,52 +39,6 @@ void terminate_partial_line(const std::filesystem::path& jsonl) {
   in.get(last);
   if (last != '\n') append_line_durably(jsonl, "");
 }
-
-/// "[#####.....] 12/40 runs, ETA 1m05s" on stderr when it is a terminal.
-class ProgressLine {
- public:
-  ProgressLine(std::size_t total, std::string label, bool enabled)
-      : total_(total),
-        label_(std::move(label)),
-        enabled_(enabled && total > 0 && ::isatty(2)),
-        start_(Clock::now()) {
-    draw();
-  }
-  ~ProgressLine() {
-    if (enabled_) std::fprintf(stderr, "\n");
-  }
-  void tick() {
-    const std::lock_guard<std::mutex> lock(mutex_);
-    ++done_;
-    draw();
-  }
-
- private:
-  void draw() {
-    if (!enabled_) return;
-    const double elapsed = seconds_since(start_);
-    const int width = 30;
-    const int filled = static_cast<int>(width * done_ / total_);
-    std::string bar(static_cast<std::size_t>(filled), '#');
-    bar.append(static_cast<std::size_t>(width - filled), '.');
-    std::string eta = "--";
-    if (done_ > 0) {
-      const auto remaining =
-          static_cast<long>(elapsed / static_cast<double>(done_) * static_cast<double>(total_ - done_));
-      eta = std::to_string(remaining / 60) + "m" + std::to_string(remaining % 60) + "s";
-    }
-    std::fprintf(stderr, "\r%s [%s] %zu/%zu runs, ETA %s   ", label_.c_str(), bar.c_str(), done_, total_,
-                 eta.c_str());
-    std::fflush(stderr);
-  }
-
-  std::size_t total_;
-  std::size_t done_ = 0;
-  std::string label_;
-  bool enabled_;
-  Clock::time_point start_;
-  std::mutex mutex_;
-};
 
 struct ProvenanceInput {
   const ExperimentConfig* config;
@@ -210,7 +163,12 @@ RunnerSummary run_experiment(const std::filesystem::path& config_file, const Run
     PrepareContext context;
     context.cache_root = options.cache_root.empty() ? options.results_root / "_cache" : options.cache_root;
     const auto session = kind->prepare(config, context);
-    ProgressLine progress(todo.size(), config.name, options.progress);
+    std::optional<Progress> progress;
+    if (options.progress) {
+      progress.emplace(todo.size(), config.name);
+    } else {
+      progress.emplace(todo.size(), config.name, nullptr);
+    }
     std::atomic<std::size_t> executed{0}, failed{0};
     std::mutex append_mutex;
     tbb::task_arena arena(threads);
@@ -235,11 +193,12 @@ RunnerSummary run_experiment(const std::filesystem::path& config_file, const Run
                 append_line_durably(jsonl, to_json_line(row));
               }
               ++executed;
-              progress.tick();
+              progress->tick();
             }
           },
           tbb::simple_partitioner());
     });
+    progress->finish();
     summary.executed = executed;
     summary.failed = failed;
   }
