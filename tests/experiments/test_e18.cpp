@@ -51,7 +51,10 @@ TEST(E18, ResultsAndReportHoldTheThesisValues) {
   EXPECT_NE(t62.find("2d_case1 | 2.31 | 2.31 | 4.00 | 4.00"), std::string::npos) << t62;
   EXPECT_TRUE(std::filesystem::exists(tmp / "report" / "e18_metric_examples" / "table_6_1.tex"));
   EXPECT_TRUE(std::filesystem::exists(tmp / "report" / "e18_metric_examples" / "table_6_2.csv"));
+  EXPECT_EQ(r.figures, 2u);
+  EXPECT_TRUE(std::filesystem::exists(tmp / "report" / "e18_metric_examples" / "examples_table_6_1.svg"));
   const std::string html = test::read_text(r.index_html);
+  EXPECT_NE(html.find("e18_metric_examples/examples_table_6_2.svg"), std::string::npos);
   EXPECT_NE(html.find("holds"), std::string::npos);
   EXPECT_EQ(html.find("does not hold"), std::string::npos) << "every E18 claim must hold";
 }

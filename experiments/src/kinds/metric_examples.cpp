@@ -5,12 +5,14 @@
 //   sweep:   {example: [1d_case1, ...]}
 //   params:  {examples: {1d_case1: {table: "6.1", truth: [[0], [4], ...], estimate: [[0], [1], ...]}}}
 //   reference: {tolerance: 0.005, wulf: {1d_case1: 1.5, ...}, kummerle: {...}}
+#include <algorithm>
 #include <cmath>
 #include <map>
 
 #include "kinds.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/eval/plots.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
 
 namespace sextant {
@@ -65,6 +67,47 @@ std::string metric_of(const YAML::Node& method, const std::string& file) {
   if (metric != "wulf" && metric != "kummerle")
     in.fail("metric", "key 'metric': '" + metric + "' is not wulf or kummerle");
   return metric;
+}
+
+/// Figures 6.1 and 6.2: the true and estimated positions of each example, one plot per table.
+/// 1D examples are drawn as position against step; 2D examples in the plane.
+std::vector<ReportFigure> example_figures(const std::map<std::string, Example>& examples,
+                                          const std::vector<YAML::Node>& order) {
+  std::map<std::string, XYPlot> plots;
+  std::map<std::string, bool> truth_drawn;
+  for (const auto& value : order) {
+    const std::string name = value.Scalar();
+    const Example& e = examples.at(name);
+    const std::string table = e.table.empty() ? "6.x" : e.table;
+    const bool planar = std::any_of(e.truth.begin(), e.truth.end(),
+                                    [](const Eigen::Isometry3d& T) { return T.translation().y() != 0.0; });
+    XYPlot& plot = plots[table];
+    plot.title = "Examples of table " + table + ": truth and estimates";
+    plot.x_label = planar ? "x" : "step";
+    plot.y_label = planar ? "y" : "position";
+    const auto series_of = [planar](const PoseList& poses) {
+      std::vector<double> x, y;
+      for (std::size_t i = 0; i < poses.size(); ++i) {
+        x.push_back(planar ? poses[i].translation().x() : static_cast<double>(i));
+        y.push_back(planar ? poses[i].translation().y() : poses[i].translation().x());
+      }
+      return std::make_pair(x, y);
+    };
+    if (!truth_drawn[table]) {
+      auto [x, y] = series_of(e.truth);
+      plot.series.push_back({"truth", x, y, PlotSeries::Style::line_and_markers, "#000000"});
+      truth_drawn[table] = true;
+    }
+    auto [x, y] = series_of(e.estimate);
+    plot.series.push_back({name, x, y, PlotSeries::Style::line_and_markers, ""});
+  }
+  std::vector<ReportFigure> figures;
+  for (const auto& [table, plot] : plots) {
+    const std::string id = "examples_table_" + table.substr(0, 1) + "_" + table.substr(table.find('.') + 1);
+    figures.push_back({id, "Figure for table " + table + ": the true and estimated positions of each example",
+                       render_svg(plot)});
+  }
+  return figures;
 }
 
 class MetricExamplesSession : public KindSession {
@@ -175,6 +218,7 @@ class MetricExamplesKind : public RunKind {
       t.add_row(std::move(cells));
     }
     for (auto& [name, t] : tables) section.tables.push_back(t);
+    section.figures = example_figures(examples, config.sweep[0].values);
 
     Claim exact{
         "Our Wulf and Kümmerle values equal the thesis' tables 6.1 and 6.2 (to the printed precision)",
