@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <set>
 #include <thread>
 
@@ -179,6 +180,50 @@ TEST(Runner, ResumesAfterSigkillMidSweep) {
   }
   EXPECT_EQ(valid_lines, 60u);
   EXPECT_EQ(keys.size(), 60u);
+}
+
+}  // namespace
+}  // namespace sextant
+
+namespace sextant {
+namespace {
+
+TEST(Cli, ReproduceRunsEveryConfigOfAFolderAndWritesTheReport) {
+  TempFolder tmp;
+  std::filesystem::create_directories(tmp / "configs");
+  std::filesystem::copy_file(
+      std::filesystem::path(SEXTANT_SOURCE_DIR) / "experiments" / "e18_metric_examples.yaml",
+      tmp / "configs" / "e18_metric_examples.yaml");
+  test::write_text(tmp / "configs" / "e99_selftest.yaml", test::selftest_yaml("e99_selftest", 2, 1, 0));
+  test::write_text(tmp / "configs" / "notes.yaml", "not: an experiment\n");  // ignored: not eNN_*.yaml
+  const std::vector<std::string> args{SEXTANT_BINARY,  "reproduce",
+                                      "--quick",       "--no-progress",
+                                      "--experiments", (tmp / "configs").string(),
+                                      "--results",     (tmp / "results").string(),
+                                      "--report",      (tmp / "report").string()};
+  const int status = wait_for(spawn(args));
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  EXPECT_EQ(read_rows(tmp / "results" / "e18_metric_examples" / kRunsJsonl).rows.size(), 10u);
+  EXPECT_EQ(read_rows(tmp / "results" / "e99_selftest" / kRunsJsonl).rows.size(), 4u);
+  const std::string html = test::read_text(tmp / "report" / "index.html");
+  EXPECT_NE(html.find("e99_selftest"), std::string::npos);
+  EXPECT_NE(html.find("e18_metric_examples"), std::string::npos);
+}
+
+TEST(Cli, ABadConfigStopsWithFileLineAndKey) {
+  TempFolder tmp;
+  test::write_text(tmp / "bad.yaml", test::selftest_yaml("bad", 2, 1, 0) + "colour: blue\n");
+  const std::string command = std::string("'") + SEXTANT_BINARY + "' run '" + (tmp / "bad.yaml").string() +
+                              "' --results '" + (tmp / "results").string() + "' 2> '" +
+                              (tmp / "err.txt").string() + "'";
+  const int status = std::system(command.c_str());
+  EXPECT_NE(status, 0);
+  const std::string err = test::read_text(tmp / "err.txt");
+  EXPECT_NE(err.find("bad.yaml"), std::string::npos) << err;
+  EXPECT_NE(err.find("line 12"), std::string::npos) << err;
+  EXPECT_NE(err.find("'colour'"), std::string::npos) << err;
+  EXPECT_FALSE(std::filesystem::exists(tmp / "results" / "bad" / kRunsJsonl));
 }
 
 }  // namespace
