@@ -1,0 +1,126 @@
+#pragma once
+// Plane SLAM driven by real extraction and semantic association (§4.2, §4.2.5). Per scan:
+//   1. predict with the odometry increment u = odometry_increment(o(k−1), o(k)) (eq. 4.72);
+//   2. extract plane landmarks from the scan (§4.1, features/extraction.hpp);
+//   3. transform them to the world with the predicted pose (eqs. 4.57–4.61);
+//   4. associate them with the map's semantic landmarks (C_o, C_t, C_p tests, §4.2.5);
+//   5. update with the matched observations z = (nᴸ, dᴸ) (eq. 4.64), augment with the new ones
+//      (eqs. 4.57–4.58, 4.67–4.68);
+//   6. copy the filter's (n, d) into the map landmarks and merge the associated observations'
+//      semantic data (centroid, covariance, hull, area) into them (merge_landmark_semantics).
+// The map's semantic landmarks are parallel to the filter's landmarks (same index).
+//
+//   PlaneSlamSettings s = read_plane_slam_settings(node, "e12.yaml");
+//   PlaneSlam slam(s, to_pose6(first_ground_truth), seed);
+//   for (i …) PlaneSlamStep step = slam.step(scan(i), odometry_pose(i));   // first call: no predict
+//
+// Or, for a whole sequence: run_plane_slam(s, scans, odometry, initial_pose, seed).
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+#include <Eigen/Geometry>
+
+#include "sextant/core/point_cloud.hpp"
+#include "sextant/core/pose.hpp"
+#include "sextant/core/rng.hpp"
+#include "sextant/features/association.hpp"
+#include "sextant/features/extraction.hpp"
+#include "sextant/filters/filter.hpp"
+#include "sextant/filters/slam_runner.hpp"
+
+namespace sextant {
+
+struct PlaneSlamSettings {
+  std::string filter = "ekf";          ///< filter registry name: ekf, ukf, ckf, rspkf, seif, eif
+  YAML::Node filter_settings;          ///< passed to make_filter (null: the filter's defaults)
+  PlaneExtractionSettings extraction;  ///< §4.1
+  AssociationSettings association;     ///< §4.2.5
+  // Q: noise of one odometry increment (eq. 4.72). 2D odometry says nothing about z, roll and
+  // pitch, so those entries carry the vehicle's unmodelled motion.
+  double sigma_xy = 0.2;           ///< σ of δx, δy [m]
+  double sigma_z = 0.1;            ///< σ of δz [m]
+  double sigma_roll_pitch = 0.01;  ///< σ of δα, δβ [rad]
+  double sigma_yaw = 0.02;         ///< σ of δγ [rad]
+  // R: noise of one plane observation (eq. 4.64).
+  double sigma_normal = 0.02;   ///< σ of each normal component [1]
+  double sigma_distance = 0.1;  ///< σ of d [m]
+  // P0 = p0_scale · diag(σ_t², σ_t², σ_t², σ_r², σ_r², σ_r²) for the initial pose.
+  double initial_sigma_translation = 0.01;  ///< [m]
+  double initial_sigma_rotation = 0.001;    ///< [rad]
+  double p0_scale = 1.0;                    ///< the thesis scales P0 up to show UKF failures [-]
+  bool merge_semantics = true;              ///< step 6 (off: map semantics stay as first seen)
+  bool record_pose_covariance = true;       ///< pose covariance per step (O(n³) for information filters)
+
+  bool valid(std::string* why) const;
+  Matrix6d process_noise() const;             ///< Q
+  Eigen::Matrix4d observation_noise() const;  ///< R
+  Matrix6d initial_covariance() const;        ///< P0
+};
+
+/// Keys: filter, filter_settings (map), extraction (map, read_plane_extraction_settings),
+/// association (map, read_association_settings) and the scalar field names above.
+PlaneSlamSettings read_plane_slam_settings(const YAML::Node& node, const std::string& file);
+
+/// One scan of plane SLAM.
+struct PlaneSlamStep {
+  SlamStepRecord filter;      ///< pose after the step, statuses, counts and predict/update/augment times
+  std::size_t extracted = 0;  ///< landmarks extracted from the scan
+  std::size_t matched = 0;    ///< associated with the map (= filter.updated when the update ran)
+  std::size_t map_size = 0;   ///< landmarks in the map after the step
+  /// Per extracted landmark: the filter landmark it observed or created, or −1 (augmentation failed).
+  std::vector<int> observation_landmark;
+  std::size_t candidates_tested = 0;  ///< association pairs evaluated
+  double extraction_seconds = 0.0;
+  double association_seconds = 0.0;
+  double seconds = 0.0;  ///< wall time of the whole step
+};
+
+class PlaneSlam {
+ public:
+  /// Throws std::invalid_argument for invalid settings, InputError for bad filter settings.
+  PlaneSlam(PlaneSlamSettings settings, const Pose6& initial_pose, std::uint64_t seed);
+
+  /// Processes one scan (sensor frame) with the odometry pose it was taken at. The first call
+  /// only extracts and augments (the filter starts at the initial pose).
+  PlaneSlamStep step(const PointCloud& scan, const Pose6& odometry_pose);
+
+  const Filter& filter() const { return *filter_; }
+  Pose6 pose() const;
+  /// The semantic map, parallel to the filter's landmarks.
+  const std::vector<PlaneLandmark>& map() const { return map_; }
+  /// The last scan's extracted landmarks in the sensor frame (inliers index the scan).
+  const std::vector<PlaneLandmark>& last_observed() const { return observed_; }
+
+ private:
+  void sync_map_planes();
+
+  PlaneSlamSettings s_;
+  std::unique_ptr<Filter> filter_;
+  Rng rng_;
+  std::vector<PlaneLandmark> map_;
+  std::vector<PlaneLandmark> observed_;
+  Pose6 last_odometry_;
+  bool started_ = false;
+};
+
+struct PlaneSlamRun {
+  std::vector<PlaneSlamStep> steps;
+  std::vector<Pose6> trajectory;  ///< estimated pose after every scan
+  FilterSummary summary;          ///< the filter's status counts over the run
+  std::size_t failed_steps = 0;   ///< steps with any non-ok filter status
+  std::size_t map_size = 0;
+};
+
+/// Runs plane SLAM over `count` scans: scan(i) gives scan i in the sensor frame, odometry[i]
+/// its odometry pose (world ← sensor); the filter starts at `initial_pose`.
+PlaneSlamRun run_plane_slam(const PlaneSlamSettings& settings, std::size_t count,
+                            const std::function<PointCloud(std::size_t)>& scan,
+                            const std::vector<Eigen::Isometry3d>& odometry, const Pose6& initial_pose,
+                            std::uint64_t seed);
+
+}  // namespace sextant

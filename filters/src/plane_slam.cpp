@@ -1,0 +1,212 @@
+#include "sextant/filters/plane_slam.hpp"
+
+#include <chrono>
+#include <stdexcept>
+
+#include "sextant/core/settings_reader.hpp"
+#include "sextant/features/merging.hpp"
+#include "sextant/filters/plane_slam_model.hpp"
+
+namespace sextant {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+/// The worse of two statuses (the first non-ok one is kept).
+void keep_first_failure(StepStatus& slot, StepStatus status) {
+  if (slot == StepStatus::kOk) slot = status;
+}
+
+}  // namespace
+
+bool PlaneSlamSettings::valid(std::string* why) const {
+  const char* problem = nullptr;
+  if (!filter_registry().contains(filter))
+    problem = "unknown filter (see the filter registry: ekf, ukf, ckf, rspkf, seif, eif)";
+  else if (filter_settings && !filter_settings.IsNull() && !filter_settings.IsMap())
+    problem = "filter_settings must be a map";
+  else if (!(sigma_xy > 0 && sigma_z > 0 && sigma_roll_pitch > 0 && sigma_yaw > 0))
+    problem = "odometry sigmas (sigma_xy, sigma_z, sigma_roll_pitch, sigma_yaw) must be > 0";
+  else if (!(sigma_normal > 0 && sigma_distance > 0))
+    problem = "observation sigmas (sigma_normal, sigma_distance) must be > 0";
+  else if (!(initial_sigma_translation > 0 && initial_sigma_rotation > 0 && p0_scale > 0))
+    problem = "initial sigmas and p0_scale must be > 0";
+  if (problem) {
+    if (why) *why = problem;
+    return false;
+  }
+  return extraction.valid(why) && association.valid(why);
+}
+
+// Q of the odometry increment u of eq. (4.72).
+Matrix6d PlaneSlamSettings::process_noise() const {
+  Vector6d d;
+  d << sigma_xy * sigma_xy, sigma_xy * sigma_xy, sigma_z * sigma_z, sigma_roll_pitch * sigma_roll_pitch,
+      sigma_roll_pitch * sigma_roll_pitch, sigma_yaw * sigma_yaw;
+  return d.asDiagonal();
+}
+
+// R of one plane observation z = (nᴸ, dᴸ), eq. (4.64).
+Eigen::Matrix4d PlaneSlamSettings::observation_noise() const {
+  const double n = sigma_normal * sigma_normal;
+  return Eigen::Vector4d(n, n, n, sigma_distance * sigma_distance).asDiagonal();
+}
+
+Matrix6d PlaneSlamSettings::initial_covariance() const {
+  const double t = initial_sigma_translation * initial_sigma_translation;
+  const double r = initial_sigma_rotation * initial_sigma_rotation;
+  Vector6d d;
+  d << t, t, t, r, r, r;
+  return p0_scale * Matrix6d(d.asDiagonal());
+}
+
+PlaneSlamSettings read_plane_slam_settings(const YAML::Node& node, const std::string& file) {
+  SettingsReader in(node, file);
+  PlaneSlamSettings s;
+  in.read("filter", s.filter);
+  if (in.has("filter_settings")) s.filter_settings = YAML::Clone(in.child("filter_settings"));
+  if (in.has("extraction")) s.extraction = read_plane_extraction_settings(in.child("extraction"), file);
+  if (in.has("association")) s.association = read_association_settings(in.child("association"), file);
+  in.read("sigma_xy", s.sigma_xy);
+  in.read("sigma_z", s.sigma_z);
+  in.read("sigma_roll_pitch", s.sigma_roll_pitch);
+  in.read("sigma_yaw", s.sigma_yaw);
+  in.read("sigma_normal", s.sigma_normal);
+  in.read("sigma_distance", s.sigma_distance);
+  in.read("initial_sigma_translation", s.initial_sigma_translation);
+  in.read("initial_sigma_rotation", s.initial_sigma_rotation);
+  in.read("p0_scale", s.p0_scale);
+  in.read("merge_semantics", s.merge_semantics);
+  in.read("record_pose_covariance", s.record_pose_covariance);
+  in.finish();
+  std::string why;
+  if (!s.valid(&why)) in.fail("", why);
+  // The filter's own keys are checked now, so a typo fails before a long run starts.
+  make_filter(s.filter, std::make_shared<PlaneSlamModel>(), s.filter_settings, file);
+  return s;
+}
+
+PlaneSlam::PlaneSlam(PlaneSlamSettings settings, const Pose6& initial_pose, std::uint64_t seed)
+    : s_(std::move(settings)), rng_(seed) {
+  std::string why;
+  if (!s_.valid(&why)) throw std::invalid_argument("plane SLAM settings: " + why);
+  filter_ = make_filter(s_.filter, std::make_shared<PlaneSlamModel>(), s_.filter_settings);
+  filter_->initialize(initial_pose.vector(), s_.initial_covariance());
+}
+
+Pose6 PlaneSlam::pose() const {
+  return Pose6::from_vector(filter_->pose());
+}
+
+// The filter owns (n, d); the semantic map follows it, keeping its normal's side.
+void PlaneSlam::sync_map_planes() {
+  const Eigen::VectorXd x = filter_->mean();
+  const PlaneSlamModel model;
+  for (std::size_t i = 0; i < map_.size(); ++i) {
+    Eigen::Vector4d v = x.segment<4>(landmark_offset(model, static_cast<int>(i)));
+    if (v.head<3>().dot(map_[i].plane.normal) < 0.0) v = -v;
+    map_[i].plane = plane_from_vector(v);
+  }
+}
+
+PlaneSlamStep PlaneSlam::step(const PointCloud& scan, const Pose6& odometry_pose) {
+  const auto t_step = Clock::now();
+  PlaneSlamStep out;
+  SlamStepRecord& rec = out.filter;
+
+  // 1. Prediction with the odometry increment (eq. 4.72).
+  if (started_) {
+    const StepResult r =
+        filter_->predict(odometry_increment(last_odometry_, odometry_pose), s_.process_noise());
+    rec.predict_status = r.status;
+    rec.predict_seconds = r.seconds;
+  }
+  started_ = true;
+  last_odometry_ = odometry_pose;
+
+  // 2.–4. Extraction, transformation with the predicted pose, semantic association (§4.2.5).
+  auto t0 = Clock::now();
+  observed_ = extract_planes(scan, s_.extraction, rng_).landmarks;
+  out.extraction_seconds = since(t0);
+  out.extracted = observed_.size();
+  t0 = Clock::now();
+  const std::vector<PlaneLandmark> predicted_world = transform_landmarks(observed_, to_isometry(pose()));
+  const AssociationResult assoc = associate_landmarks(predicted_world, map_, s_.association);
+  out.association_seconds = since(t0);
+  out.candidates_tested = assoc.candidates_tested;
+  out.matched = assoc.matches.size();
+  out.observation_landmark.assign(observed_.size(), -1);
+
+  // 5. Update with the matched observations (eqs. 4.62–4.66), then augment (eqs. 4.67–4.68).
+  const Eigen::Matrix4d R = s_.observation_noise();
+  std::vector<Eigen::VectorXd> zs;
+  std::vector<int> associations;
+  for (const LandmarkMatch& m : assoc.matches) {
+    zs.emplace_back(plane_vector(observed_[m.observed].plane));
+    associations.push_back(static_cast<int>(m.map));
+    out.observation_landmark[m.observed] = static_cast<int>(m.map);
+  }
+  if (!zs.empty()) {
+    const StepResult r = filter_->update(zs, R, associations);
+    rec.update_status = r.status;
+    rec.update_seconds = r.seconds;
+    if (r.ok()) rec.updated = zs.size();
+  }
+  for (std::size_t i : assoc.new_landmarks) {
+    const int before = filter_->num_landmarks();
+    const StepResult r = filter_->augment(plane_vector(observed_[i].plane), R);
+    keep_first_failure(rec.augment_status, r.status);
+    rec.augment_seconds += r.seconds;
+    if (filter_->num_landmarks() != before + 1) continue;
+    out.observation_landmark[i] = before;
+    map_.push_back(PlaneLandmark{});
+    map_.back().plane = observed_[i].plane;  // side only; sync_map_planes sets (n, d)
+    ++rec.augmented;
+  }
+
+  // 6. Semantics in the world frame of the updated pose; merged into the associated landmarks.
+  sync_map_planes();
+  const std::vector<PlaneLandmark> in_world = transform_landmarks(observed_, to_isometry(pose()));
+  for (std::size_t i = 0; i < in_world.size(); ++i) {
+    const int j = out.observation_landmark[i];
+    if (j < 0) continue;
+    PlaneLandmark& target = map_[static_cast<std::size_t>(j)];
+    if (target.inlier_count == 0) {  // just augmented: the observation is its semantic data
+      const Plane plane = target.plane;
+      target = in_world[i];
+      target.plane = plane;
+      target.inliers.clear();
+    } else if (s_.merge_semantics) {
+      target = merge_landmark_semantics(target, in_world[i]);
+    }
+  }
+
+  rec.pose = filter_->pose();
+  if (s_.record_pose_covariance) rec.pose_covariance = filter_->covariance().topLeftCorner(6, 6);
+  out.map_size = map_.size();
+  out.seconds = since(t_step);
+  return out;
+}
+
+PlaneSlamRun run_plane_slam(const PlaneSlamSettings& settings, std::size_t count,
+                            const std::function<PointCloud(std::size_t)>& scan,
+                            const std::vector<Eigen::Isometry3d>& odometry, const Pose6& initial_pose,
+                            std::uint64_t seed) {
+  if (odometry.size() < count) throw std::invalid_argument("run_plane_slam: fewer odometry poses than scans");
+  PlaneSlam slam(settings, initial_pose, seed);
+  PlaneSlamRun run;
+  for (std::size_t i = 0; i < count; ++i) {
+    run.steps.push_back(slam.step(scan(i), to_pose6(odometry[i])));
+    run.trajectory.push_back(slam.pose());
+    if (!run.steps.back().filter.ok()) ++run.failed_steps;
+  }
+  run.summary = slam.filter().summary();
+  run.map_size = slam.map().size();
+  return run;
+}
+
+}  // namespace sextant
