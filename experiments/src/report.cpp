@@ -140,7 +140,15 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
       aligned.push_back(it == by_key.end() ? nullptr : it->second);
       found += aligned.back() != nullptr;
     }
-    const ReportSection section = kind->report(config, runs, aligned);
+    ReportSection section;
+    try {
+      section = kind->report(config, runs, aligned);
+    } catch (const std::exception& e) {
+      // One experiment's broken report must not take the others down: say so on the page.
+      summary.failed.push_back(name + ": " + e.what());
+      html.add_paragraph("The report of this experiment failed: " + std::string(e.what()));
+      continue;
+    }
     ++summary.experiments;
 
     if (!config.thesis.empty()) html.add_paragraph("Thesis: " + config.thesis);

@@ -59,7 +59,8 @@ void add_reproduce_command(CLI::App& app, int& exit_code) {
       const ReportSummary r = write_report({args->results}, args->report);
       std::cout << "report: " << r.experiments << " experiments, " << r.tables << " tables, " << r.figures
                 << " figures, " << r.claims << " claims → " << r.index_html.string() << "\n";
-      return status;
+      for (const auto& failure : r.failed) std::cerr << "sextant: error: report of " << failure << "\n";
+      return r.failed.empty() ? status : 1;
     });
   });
 }

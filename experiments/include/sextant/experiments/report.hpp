@@ -4,6 +4,7 @@
 // figures, plus an index.html showing every table, figure, claim verdict and the provenance.
 #include <cstddef>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace sextant {
@@ -14,6 +15,7 @@ struct ReportSummary {
   std::size_t figures = 0;
   std::size_t claims = 0;
   std::filesystem::path index_html;
+  std::vector<std::string> failed;  ///< "<experiment>: <error>" for each experiment whose report failed
 };
 
 /// `results` are results roots (each holding <experiment>/experiment.yaml and runs.jsonl).
