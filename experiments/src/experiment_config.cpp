@@ -82,8 +82,9 @@ std::vector<YAML::Node> range_values(const YAML::Node& node, const std::string& 
   in.finish();
   if (!(step > 0) || !std::isfinite(from) || !std::isfinite(to) || to < from)
     in.fail("step", "axis '" + axis + "': the range needs finite from ≤ to and step > 0");
-  const auto count = static_cast<long>(std::floor((to - from) / step + 1e-9)) + 1;
-  if (count > 1000000) in.fail("to", "axis '" + axis + "': the range has more than 10^6 values");
+  const double steps = std::floor((to - from) / step + 1e-9);
+  if (!(steps < 1e6)) in.fail("to", "axis '" + axis + "': the range has more than 10^6 values");
+  const auto count = static_cast<long>(steps) + 1;
   const bool integral = from == std::floor(from) && step == std::floor(step);
   std::vector<YAML::Node> values;
   for (long i = 0; i < count; ++i) {

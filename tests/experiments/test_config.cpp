@@ -98,6 +98,10 @@ TEST(ExperimentConfig, BadValueNamesFileLineAndKey) {
   msg = error_of(tmp, replace(kValid, "{from: 0.5, to: 1.5, step: 0.5}", "{from: 2, to: 1}"));
   EXPECT_NE(msg.find("line 10"), std::string::npos) << msg;
   EXPECT_NE(msg.find("'y'"), std::string::npos) << msg;
+
+  msg = error_of(tmp, replace(kValid, "{from: 0.5, to: 1.5, step: 0.5}", "{from: 0, to: 1.0e300}"));
+  EXPECT_NE(msg.find("line 10"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("10^6"), std::string::npos) << msg;
 }
 
 TEST(ExperimentConfig, ErrorsInsideTheQuickBlockPointIntoIt) {
