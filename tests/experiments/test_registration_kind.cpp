@@ -15,16 +15,14 @@ namespace {
 
 using test::TempFolder;
 
-// Three consecutive pairs of a small, coarse campus; ML-NDT (LM) from the odometry guess.
+// Three consecutive pairs of the default campus (only scans 0–3 are generated); ML-NDT (LM)
+// from the odometry guess. Measured errors: 3.6, 3.5 and 7.1 cm, below 0.5°.
 const char* const kTiny = R"(name: reg_tiny
 kind: registration
 seed: 3
 dataset:
   source: synthetic
   seed: 1
-  campus:
-    trajectory: {scans: 6}
-    sensor: {yaw_steps: 90, elevation_steps: 80}
 methods:
   - {name: mlndt, matcher: mlndt, settings: {solver: lm}, sampler: gbs}
 sweep:
@@ -98,7 +96,7 @@ TEST(RegistrationKind, UnknownMatcherIsRejectedWithFileLineAndKey) {
   } catch (const InputError& e) {
     const std::string what = e.what();
     EXPECT_EQ(e.file(), file.string());
-    EXPECT_NE(what.find("line 11"), std::string::npos) << what;
+    EXPECT_NE(what.find("line 8"), std::string::npos) << what;
     EXPECT_NE(what.find("'matcher'"), std::string::npos) << what;
     EXPECT_NE(what.find("mlndtt"), std::string::npos) << what;
   }
