@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <regex>
 #include <set>
 
 #include "sextant/core/error.hpp"
@@ -35,7 +34,20 @@ YAML::Node merged(const YAML::Node& base, const YAML::Node& overlay) {
 }
 
 bool is_identifier(const std::string& s) {
-  return std::regex_match(s, std::regex("[a-z0-9_]+"));
+  return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
+  });
+}
+
+/// eNN_<slug>.yaml
+bool is_experiment_file_name(const std::string& name) {
+  const std::string suffix = ".yaml";
+  if (name.size() < 5 + suffix.size() ||
+      name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+    return false;
+  const auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  return name[0] == 'e' && digit(name[1]) && digit(name[2]) && name[3] == '_' &&
+         is_identifier(name.substr(4, name.size() - 4 - suffix.size()));
 }
 
 DatasetConfig read_dataset(const YAML::Node& node, const std::string& file) {
@@ -190,9 +202,8 @@ ExperimentConfig read_experiment_config(const std::filesystem::path& file, bool 
 std::vector<std::filesystem::path> list_experiment_configs(const std::filesystem::path& folder) {
   std::vector<std::filesystem::path> files;
   if (!std::filesystem::is_directory(folder)) return files;
-  const std::regex pattern("e[0-9][0-9]_[a-z0-9_]+\\.yaml");
   for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-    if (entry.is_regular_file() && std::regex_match(entry.path().filename().string(), pattern))
+    if (entry.is_regular_file() && is_experiment_file_name(entry.path().filename().string()))
       files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
