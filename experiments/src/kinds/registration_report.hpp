@@ -34,6 +34,9 @@ RegistrationStatsSettings stats_settings(const RegistrationParams& params);
 
 /// The thesis' mean / std / max per parameter: {mean: [6 numbers or null], std: [...], max: [...]}.
 ParameterReference read_parameter_reference(const YAML::Node& node, const std::string& file);
+/// `node[key]` when `node` is a map holding `key`, else a null node. (yaml-cpp's const operator[]
+/// returns an invalid node for a missing key, and asking that node anything but IsDefined() throws.)
+YAML::Node child_or_null(const YAML::Node& node, const std::string& key);
 /// A number under `key` of a map node, or nullopt.
 std::optional<double> reference_number(const YAML::Node& node, const std::string& key);
 /// A number cell, or missing for NaN / nullopt.

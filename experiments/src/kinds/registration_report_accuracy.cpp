@@ -65,7 +65,7 @@ ReportSection accuracy_report(const ExperimentConfig& config, const Registration
       ". Times are our C++ wall times (the thesis': MATLAB); compare ratios, not values.";
 
   // Table 5.1: the odometry guess against the ground truth (every pair once: the first method's rows).
-  const YAML::Node odometry_ref = config.reference["odometry"];
+  const YAML::Node odometry_ref = child_or_null(config.reference, "odometry");
   std::vector<RegistrationSample> odometry;
   if (!methods.empty()) {
     for (const RunRow* r : methods.front().rows) {
@@ -83,9 +83,9 @@ ReportSection accuracy_report(const ExperimentConfig& config, const Registration
   }
 
   // Tables 5.2 / 5.3 (and PCL peers as extra tables).
-  const YAML::Node method_refs = config.reference["methods"];
+  const YAML::Node method_refs = child_or_null(config.reference, "methods");
   for (const auto& m : methods) {
-    const YAML::Node ref_node = method_refs.IsMap() ? method_refs[m.name] : YAML::Node();
+    const YAML::Node ref_node = child_or_null(method_refs, m.name);
     const ParameterReference ref = read_parameter_reference(ref_node, config.file);
     const std::string id = table_id(ref_node);
     const std::string caption =
@@ -111,7 +111,7 @@ ReportSection accuracy_report(const ExperimentConfig& config, const Registration
       .add_number_column("kept %", 1)
       .add_number_column("pairs", 0);
   for (const auto& m : methods) {
-    const YAML::Node ref = method_refs.IsMap() ? method_refs[m.name] : YAML::Node();
+    const YAML::Node ref = child_or_null(method_refs, m.name);
     double kept = 0;
     for (const RunRow* r : m.rows) kept += r->value("kept_fraction");
     summary.add_row(

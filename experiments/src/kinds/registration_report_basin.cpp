@@ -112,7 +112,7 @@ ReportSection basin_report(const ExperimentConfig& config, const RegistrationPar
       ") whose input is displaced by tx [m] along x and a yaw [deg]; identity initial guess; success = " +
       params.success +
       ". The thesis gives its offsets in unnamed \"units\" on a mine scan; ours are metres on the campus.";
-  const YAML::Node refs = config.reference["methods"];
+  const YAML::Node refs = child_or_null(config.reference, "methods");
   Table basin;
   basin.caption = "Convergence basin per method (ours | thesis)";
   basin.label = "basin";
@@ -143,7 +143,7 @@ ReportSection basin_report(const ExperimentConfig& config, const RegistrationPar
     map.annotate_precision = 1;
     section.figures.push_back(
         {"success_map_" + name, "Success rate over the initial offsets, " + name, render_svg(map)});
-    const YAML::Node ref = refs.IsMap() ? refs[name] : YAML::Node();
+    const YAML::Node ref = child_or_null(refs, name);
     basin.add_row({Cell::text(name), number_or_missing(n > 0 ? 100.0 * c.successes.sum() / n : NAN),
                    number_or_missing(basin_extent(c, tx, yaw, true)),
                    number_or_missing(reference_number(ref, "max_tx")),
@@ -199,7 +199,7 @@ ReportSection basin_report(const ExperimentConfig& config, const RegistrationPar
   section.claims.push_back(wider);
   section.claims.push_back(fewer);
   for (std::size_t m = 0; m < config.methods.size(); ++m) {
-    const YAML::Node ref = refs.IsMap() ? refs[config.methods[m].name] : YAML::Node();
+    const YAML::Node ref = child_or_null(refs, config.methods[m].name);
     const auto max_tx = reference_number(ref, "max_tx"), max_yaw = reference_number(ref, "max_yaw_deg");
     if (!max_tx || !max_yaw) continue;
     const double rate = success_within(cells[m], tx, yaw, *max_tx, *max_yaw);
@@ -213,7 +213,7 @@ ReportSection basin_report(const ExperimentConfig& config, const RegistrationPar
                 : "no run within that region"};
     section.claims.push_back(c);
   }
-  const YAML::Node solvers = config.reference["compare_solvers"];
+  const YAML::Node solvers = child_or_null(config.reference, "compare_solvers");
   if (solvers.IsMap() && solvers["newton"].IsDefined() && solvers["lm"].IsDefined()) {
     const long n = method_index(solvers["newton"].as<std::string>()),
                l = method_index(solvers["lm"].as<std::string>());

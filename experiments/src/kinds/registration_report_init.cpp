@@ -82,7 +82,7 @@ ReportSection init_layer_report(const ExperimentConfig& config, const Registrati
       "iterations per layer, "
       "the last until convergence. Fail = not (" +
       params.success + "); error = mean translation error of the successes [cm].";
-  const YAML::Node thesis = config.reference["table_5_8"];
+  const YAML::Node thesis = child_or_null(config.reference, "table_5_8");
   for (std::size_t m = 0; m < config.methods.size(); ++m) {
     Table t;
     t.caption =
@@ -113,7 +113,7 @@ ReportSection init_layer_report(const ExperimentConfig& config, const Registrati
   // fastest".
   if (config.methods.empty()) return section;
   const auto& first = stats.front();
-  const YAML::Node guideline = config.reference["guideline"];
+  const YAML::Node guideline = child_or_null(config.reference, "guideline");
   for (std::size_t fi = 0; fi < fs.size(); ++fi) {
     const YAML::Node expected = numeric_entry(guideline, fs[fi]);
     if (!expected.IsSequence()) continue;
