@@ -1,10 +1,10 @@
 // The matcher registry: one line per built-in matcher (others insert their own lines).
 #include "sextant/matchers/feature_based_sampler.hpp"
 #include "sextant/matchers/icp.hpp"
-#include "sextant/matchers/pcl_peers.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/ndt_matcher.hpp"
+#include "sextant/matchers/pcl_peers.hpp"
 
 namespace sextant {
 
