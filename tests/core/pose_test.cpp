@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "sextant/core/pose.hpp"
+#include "test_util.hpp"
 
 namespace sextant {
 namespace {
@@ -14,30 +15,6 @@ Eigen::Matrix3d thesis_rotation(double a, double b, double g) {
   Ry << std::cos(b), 0, std::sin(b), 0, 1, 0, -std::sin(b), 0, std::cos(b);
   Rz << std::cos(g), -std::sin(g), 0, std::sin(g), std::cos(g), 0, 0, 0, 1;
   return Rx * Ry * Rz;
-}
-
-// 3DTK's EulerToMatrix4, column-major, as quoted in data/README.md.
-Eigen::Matrix4d threedtk_euler_to_matrix4(const Eigen::Vector3d& t, const Eigen::Vector3d& angles) {
-  const double sx = std::sin(angles[0]), cx = std::cos(angles[0]);
-  const double sy = std::sin(angles[1]), cy = std::cos(angles[1]);
-  const double sz = std::sin(angles[2]), cz = std::cos(angles[2]);
-  const double m[16] = {cy * cz,
-                        sx * sy * cz + cx * sz,
-                        -cx * sy * cz + sx * sz,
-                        0,
-                        -cy * sz,
-                        -sx * sy * sz + cx * cz,
-                        cx * sy * sz + sx * cz,
-                        0,
-                        sy,
-                        -sx * cy,
-                        cx * cy,
-                        0,
-                        t.x(),
-                        t.y(),
-                        t.z(),
-                        1};
-  return Eigen::Map<const Eigen::Matrix4d>(m);  // Eigen's default storage is column-major
 }
 
 TEST(Pose, RotationMatchesEquation38) {
@@ -53,7 +30,7 @@ TEST(Pose, RotationMatchesEquation38) {
 TEST(Pose, MatchesThreeDtkEulerToMatrix4) {
   const Pose6 pose{1.0, -2.0, 3.0, 0.3, -0.5, 1.1};
   const Eigen::Matrix4d expected =
-      threedtk_euler_to_matrix4({pose.x, pose.y, pose.z}, {pose.alpha, pose.beta, pose.gamma});
+      test::threedtk_euler_to_matrix4({pose.x, pose.y, pose.z}, {pose.alpha, pose.beta, pose.gamma});
   EXPECT_TRUE(to_isometry(pose).matrix().isApprox(expected, 1e-12));
 }
 

@@ -4,13 +4,41 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include <Eigen/Core>
+
 #include "sextant/core/error.hpp"
 
 namespace sextant::test {
+
+/// 3DTK's EulerToMatrix4 (column-major, as quoted in data/README.md), transcribed from its formula:
+/// the independent reference for eq. (3.8) and the uos pose conversion.
+inline Eigen::Matrix4d threedtk_euler_to_matrix4(const Eigen::Vector3d& t, const Eigen::Vector3d& r) {
+  const double sx = std::sin(r[0]), cx = std::cos(r[0]);
+  const double sy = std::sin(r[1]), cy = std::cos(r[1]);
+  const double sz = std::sin(r[2]), cz = std::cos(r[2]);
+  const double m[16] = {cy * cz,
+                        sx * sy * cz + cx * sz,
+                        -cx * sy * cz + sx * sz,
+                        0,
+                        -cy * sz,
+                        -sx * sy * sz + cx * cz,
+                        cx * sy * sz + sx * cz,
+                        0,
+                        sy,
+                        -sx * cy,
+                        cx * cy,
+                        0,
+                        t.x(),
+                        t.y(),
+                        t.z(),
+                        1};
+  return Eigen::Map<const Eigen::Matrix4d>(m);  // Eigen's default storage is column-major
+}
 
 /// A temporary folder removed at the end of the test.
 class TempDir {

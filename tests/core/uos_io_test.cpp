@@ -14,31 +14,8 @@ namespace {
 using test::data_dir;
 using test::expect_input_error;
 using test::TempDir;
+using test::threedtk_euler_to_matrix4;
 using test::write_text;
-
-// 3DTK's EulerToMatrix4 (column-major), transcribed from its formula.
-Eigen::Matrix4d threedtk_euler_to_matrix4(const Eigen::Vector3d& t, const Eigen::Vector3d& r) {
-  const double sx = std::sin(r[0]), cx = std::cos(r[0]);
-  const double sy = std::sin(r[1]), cy = std::cos(r[1]);
-  const double sz = std::sin(r[2]), cz = std::cos(r[2]);
-  const double m[16] = {cy * cz,
-                        sx * sy * cz + cx * sz,
-                        -cx * sy * cz + sx * sz,
-                        0,
-                        -cy * sz,
-                        -sx * sy * sz + cx * cz,
-                        cx * sy * sz + sx * cz,
-                        0,
-                        sy,
-                        -sx * cy,
-                        cx * cy,
-                        0,
-                        t.x(),
-                        t.y(),
-                        t.z(),
-                        1};
-  return Eigen::Map<const Eigen::Matrix4d>(m);
-}
 
 TEST(UosFrame, PointConversionAxesAndUnits) {
   // x_int = z_uos/100, y_int = −x_uos/100, z_int = y_uos/100.
