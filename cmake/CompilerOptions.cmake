@@ -8,5 +8,10 @@ if(SEXTANT_SANITIZE)
   target_compile_options(sextant_options INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer
                                                    -fno-sanitize-recover=undefined)
   target_link_options(sextant_options INTERFACE -fsanitize=address,undefined)
+  # Eigen stops trusting glibc's 16-byte malloc alignment under ASan and switches to its own
+  # aligned allocator, but Debian's prebuilt PCL allocates its Eigen members with plain malloc:
+  # objects built in PCL and freed in our code would then be freed the wrong way. Keep Eigen's
+  # allocation identical to PCL's (x86-64 glibc and ASan both return 16-byte aligned blocks).
+  target_compile_definitions(sextant_options INTERFACE EIGEN_MALLOC_ALREADY_ALIGNED=1)
 endif()
 install(TARGETS sextant_options EXPORT SextantTargets)
