@@ -21,11 +21,7 @@ int Ekf::num_landmarks() const {
 }
 
 StepStatus Ekf::finish_step(bool symmetrize) {
-  normalize_state(*model_, x_);
-  if (s_.symmetrize && symmetrize) P_ = symmetrized(P_);
-  if (!x_.allFinite()) return StepStatus::kNotPositiveDefinite;
-  if (s_.check_covariance && !is_positive_definite(P_)) return StepStatus::kNotPositiveDefinite;
-  return StepStatus::kOk;
+  return detail::finish_moment_step(*model_, x_, P_, s_.symmetrize && symmetrize, s_.check_covariance);
 }
 
 StepResult Ekf::initialize(const Eigen::VectorXd& x0, const Eigen::MatrixXd& P0) {

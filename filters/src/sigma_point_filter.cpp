@@ -72,11 +72,7 @@ int SigmaPointFilter::num_landmarks() const {
 }
 
 StepStatus SigmaPointFilter::finish_step() {
-  normalize_state(*model_, x_);
-  if (s_.symmetrize) P_ = symmetrized(P_);
-  if (!x_.allFinite()) return StepStatus::kNotPositiveDefinite;
-  if (s_.check_covariance && !is_positive_definite(P_)) return StepStatus::kNotPositiveDefinite;
-  return StepStatus::kOk;
+  return detail::finish_moment_step(*model_, x_, P_, s_.symmetrize, s_.check_covariance);
 }
 
 StepResult SigmaPointFilter::initialize(const Eigen::VectorXd& x0, const Eigen::MatrixXd& P0) {

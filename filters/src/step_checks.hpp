@@ -5,6 +5,8 @@
 
 #include <Eigen/Core>
 
+#include "sextant/filters/covariance.hpp"
+#include "sextant/filters/filter.hpp"
 #include "sextant/filters/slam_model.hpp"
 
 namespace sextant::detail {
@@ -40,6 +42,17 @@ inline bool valid_observations(const SlamModel& model, int landmarks, const std:
     if (associations[i] < 0 || associations[i] >= landmarks) return false;
   }
   return true;
+}
+
+/// The end of every moment-form step (EKF, sigma-point filters): wrap angles and renormalise
+/// normals, optionally symmetrise P, and report a non-finite state or non-PD covariance.
+inline StepStatus finish_moment_step(const SlamModel& model, Eigen::VectorXd& x, Eigen::MatrixXd& P,
+                                     bool symmetrize, bool check_covariance) {
+  normalize_state(model, x);
+  if (symmetrize) P = symmetrized(P);
+  if (!x.allFinite()) return StepStatus::kNotPositiveDefinite;
+  if (check_covariance && !is_positive_definite(P)) return StepStatus::kNotPositiveDefinite;
+  return StepStatus::kOk;
 }
 
 }  // namespace sextant::detail
