@@ -11,8 +11,12 @@ namespace {
 /// All points in one cost function: 3 residuals per point, zero for points without a cell.
 class MahalanobisCost final : public ceres::CostFunction {
  public:
-  MahalanobisCost(const NdtGrid& grid, const PointCloud& input, double unmatched_penalty)
-      : grid_(grid), input_(input), unmatched_residual_(std::sqrt(unmatched_penalty)) {
+  MahalanobisCost(const NdtGrid& grid, const PointCloud& input, double unmatched_penalty, double max_distance)
+      : grid_(grid),
+        input_(input),
+        unmatched_residual_(std::sqrt(unmatched_penalty)),
+        max_distance_(max_distance),
+        truncated_residual_(std::sqrt(max_distance)) {
     set_num_residuals(static_cast<int>(3 * input.size()));
     mutable_parameter_block_sizes()->push_back(6);
   }
@@ -42,6 +46,11 @@ class MahalanobisCost final : public ceres::CostFunction {
       const Eigen::Matrix3d Lt = grid_.sqrt_information(g).cast<double>();
       const Eigen::Vector3d e = x - Eigen::Vector3d(cell.mean[0], cell.mean[1], cell.mean[2]);  // eq. (3.10)
       r = Lt * e;
+      if (r.squaredNorm() > max_distance_) {  // min(eᵀC⁻¹e, τ): a constant beyond τ
+        r = Eigen::Vector3d(truncated_residual_, 0.0, 0.0);
+        if (jac) J.setZero();
+        continue;
+      }
       if (!jac) continue;
       Eigen::Matrix3d Jr;
       for (int i = 0; i < 3; ++i) Jr.col(i) = A.col(i).cross(u);
@@ -55,6 +64,8 @@ class MahalanobisCost final : public ceres::CostFunction {
   const NdtGrid& grid_;
   const PointCloud& input_;
   double unmatched_residual_;
+  double max_distance_;
+  double truncated_residual_;
 };
 
 /// Records one trace row per Ceres iteration (the pose is updated in place every iteration).
@@ -84,14 +95,16 @@ class TraceCallback final : public ceres::IterationCallback {
 
 CeresStageOutcome solve_stage_with_ceres(const NdtGrid& grid, const PointCloud& input, const Vector6d& xi0,
                                          int max_iterations, double epsilon, double unmatched_penalty,
-                                         const DofMask& dof, int label, int iteration_offset) {
+                                         double max_distance, const DofMask& dof, int label,
+                                         int iteration_offset) {
   CeresStageOutcome out;
   out.xi = xi0;
   if (input.empty() || max_iterations <= 0) return out;
   ceres::Problem::Options problem_options;
   problem_options.cost_function_ownership = ceres::TAKE_OWNERSHIP;
   ceres::Problem problem(problem_options);
-  problem.AddResidualBlock(new MahalanobisCost(grid, input, unmatched_penalty), nullptr, out.xi.data());
+  problem.AddResidualBlock(new MahalanobisCost(grid, input, unmatched_penalty, max_distance), nullptr,
+                           out.xi.data());
   if (!dof.all()) {
     std::vector<int> fixed;
     for (int i = 0; i < 6; ++i)

@@ -22,7 +22,7 @@ class LayerObjective final : public StagedObjective {
   int stage_label(int stage) const override { return first_ + stage + 1; }
   ScoreEvaluation evaluate(int stage, const Vector6d& xi, Derivatives d) const override {
     // eqs. (3.11), (3.17), (3.18) with each term truncated at max_distance: min(eᵀC⁻¹e, τ)
-    const double tau = first_ + stage >= first_truncated_ ? max_distance_ : kKeepAll;
+    const double tau = max_distance(stage);
     ScoreEvaluation e = mahalanobis_score(grid(stage), input_, xi, d, tau);
     const std::size_t unmatched = input_.size() - e.matched - e.rejected;
     e.score += penalty_ * static_cast<double>(unmatched);
@@ -30,6 +30,9 @@ class LayerObjective final : public StagedObjective {
     return e;
   }
   double unmatched_penalty() const override { return penalty_; }
+  double max_distance(int stage) const override {
+    return first_ + stage >= first_truncated_ ? max_distance_ : kKeepAll;
+  }
   const NdtGrid* mahalanobis_grid(int stage) const override { return &grid(stage); }
   const PointCloud& input() const override { return input_; }
 

@@ -172,7 +172,7 @@ class Loop {
     if (at.matched < settings_.min_matched) return finish(Termination::kTooFewCorrespondences, stage);
     const CeresStageOutcome out = solve_stage_with_ceres(
         *grid, objective_.input(), xi_, budget, settings_.epsilon, objective_.unmatched_penalty(),
-        settings_.dof, objective_.stage_label(stage), iterations_);
+        objective_.max_distance(stage), settings_.dof, objective_.stage_label(stage), iterations_);
     if (!out.xi.allFinite()) return finish(Termination::kDiverged, stage);
     xi_ = out.xi;
     iterations_ += out.iterations;

@@ -6,9 +6,13 @@
 // the same (robust to moving objects and non-overlap), every input point used.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <limits>
 
 #include "sextant/core/io/cloud_io.hpp"
+#include "sextant/matchers/kd_tree.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/samplers.hpp"
 
@@ -50,10 +54,12 @@ struct KittiPair {
   Eigen::Isometry3d truth = read_matrix(dir + "T_velo0_from_velo1_DERIVED.txt");
 };
 
-// NOT MET, and not by any matcher here: ML-NDT (Newton and LM), point-to-plane ICP, PCL GICP and
-// PCL NDT all converge within 5 mm / 0.05° of each other at x ≈ 0.68 m, 17–19 cm / 0.2° from
-// the derived ground truth (x = 0.859 m). The derived matrix, not the registration, is the
-// suspect (unrectified scans vs. camera-time poses). Run with --gtest_also_run_disabled_tests.
+// NOT MET, and not by any matcher here: ML-NDT (Newton, LM, Ceres), point-to-plane ICP, PCL GICP
+// and PCL NDT all converge within 5 mm / 0.05° of each other at x ≈ 0.68 m, 17–19 cm / 0.2° from
+// the derived ground truth (x = 0.859 m). The scans themselves contradict the ground truth (see
+// KittiScansFavourTheirOwnAlignmentOverGroundTruth below); neither a 0.22° elevation correction,
+// dropping the ground nor a constant-velocity de-skew moves any matcher by more than 5 mm.
+// Run with --gtest_also_run_disabled_tests.
 TEST(RealPairs, DISABLED_KittiFromIdentityAgainstGroundTruth) {
   const KittiPair p;
   for (const char* solver : {"newton", "lm"}) {
@@ -81,6 +87,65 @@ TEST(RealPairs, KittiFromIdentityAgreesWithIcpRefinement) {
     EXPECT_LT(e.degrees, 0.05) << solver;
     EXPECT_LT(difference(p.truth, r.T).metres, 0.20) << solver;  // the ground-truth gap stays as measured
   }
+}
+
+/// Median distance from the input's off-ground points beyond 20 m (mapped by T) to their nearest
+/// reference point: a registration-free measure of how well T aligns the scans' structure.
+double median_structure_gap(const PointCloud& ref, const PointCloud& in, const Eigen::Isometry3d& T) {
+  const KdTree tree(ref.points());
+  std::vector<float> gaps;
+  for (const Eigen::Vector3f& p : in.points()) {
+    if (p.norm() < 20.0f || p.z() < -1.4f) continue;  // the sensor is 1.73 m above the road
+    KdTree::Neighbour n;
+    if (tree.nearest(T.cast<float>() * p, 1.0f, &n)) gaps.push_back(std::sqrt(n.squared_distance));
+  }
+  if (gaps.empty()) return std::numeric_limits<double>::infinity();
+  std::nth_element(gaps.begin(), gaps.begin() + gaps.size() / 2, gaps.end());
+  return gaps[gaps.size() / 2];
+}
+
+// Why the ground-truth test above is disabled: by the scans' own far structure (walls, poles,
+// trees, no ground), the registered pose aligns them about twice as tightly as the derived ground
+// truth (measured: median gap 8.8 cm against 16 cm; sweeping x alone with the truth's rotation
+// puts the minimum at 0.68 m).
+TEST(RealPairs, KittiScansFavourTheirOwnAlignmentOverGroundTruth) {
+  const KittiPair p;
+  const RegistrationResult r =
+      align(p.ref, p.in, "mlndt", std::string(kOutdoor) + "lm}", "all", "{}", Eigen::Isometry3d::Identity());
+  ASSERT_TRUE(r.converged) << r.summary();
+  const double registered = median_structure_gap(p.ref, p.in, r.T);
+  const double truth = median_structure_gap(p.ref, p.in, p.truth);
+  EXPECT_LT(registered, 0.7 * truth) << registered << " m vs " << truth << " m";
+}
+
+/// ML-NDT from identity on the Velodyne pair (all points) with each solver.
+std::vector<Eigen::Isometry3d> velodyne_with_each_solver(const std::string& settings) {
+  const std::string dir = std::string(SEXTANT_DATA_DIR) + "/velodyne_pair/";
+  const PointCloud ref = read_cloud(dir + "fast_gicp_251370668.pcd");
+  const PointCloud in = read_cloud(dir + "fast_gicp_251371071.pcd");
+  std::vector<Eigen::Isometry3d> poses;
+  for (const char* solver : {"newton", "lm", "ceres"}) {
+    const RegistrationResult r =
+        align(ref, in, "mlndt", settings + solver + "}", "all", "{}", Eigen::Isometry3d::Identity());
+    EXPECT_TRUE(r.converged) << solver << ": " << r.summary();
+    poses.push_back(r.T);
+  }
+  return poses;
+}
+
+// On real data with the outdoor truncation (max_distance, unmatched_penalty) the three solvers
+// minimise the same objective, which is piecewise: LM and Ceres' LM agree to 1 mm / 0.01°;
+// Newton's steps stop on a neighbouring piece (measured 1.1 mm / 0.015° from LM). On smooth
+// synthetic data all three agree to 1 mm / 0.01° (Mlndt.RecoversKnownTransformWithEverySolver).
+TEST(RealPairs, SolversAgreeOnTruncatedObjective) {
+  const std::vector<Eigen::Isometry3d> poses = velodyne_with_each_solver(
+      "{layers: 6, max_distance: 16, unmatched_penalty: 16, epsilon: 1.0e-7, max_iterations: 100, solver: ");
+  const Error lm_ceres = difference(poses[1], poses[2]);
+  EXPECT_LT(lm_ceres.metres, 1e-3);
+  EXPECT_LT(lm_ceres.degrees, 0.01);
+  const Error newton_lm = difference(poses[0], poses[1]);
+  EXPECT_LT(newton_lm.metres, 3e-3);
+  EXPECT_LT(newton_lm.degrees, 0.03);
 }
 
 TEST(RealPairs, VelodyneFromIdentity) {

@@ -5,6 +5,7 @@
 // ‖Δξ‖ < ε or the iteration cap. Solvers: Newton (eq. 3.16, H + γI when H is not positive
 // definite, optional backtracking line search), Levenberg–Marquardt (eq. 3.21) and Ceres' LM.
 #include <cstddef>
+#include <limits>
 #include <string>
 
 #include "sextant/matchers/dof_mask.hpp"
@@ -42,6 +43,8 @@ class StagedObjective {
   virtual const NdtGrid* mahalanobis_grid(int stage) const = 0;
   /// Score of an input point without a Gaussian (included in evaluate()'s score).
   virtual double unmatched_penalty() const { return 0.0; }
+  /// τ of the stage: terms with eᵀC⁻¹e > τ are charged τ and contribute no derivatives.
+  virtual double max_distance(int /*stage*/) const { return std::numeric_limits<double>::infinity(); }
   virtual const PointCloud& input() const = 0;
 };
 
