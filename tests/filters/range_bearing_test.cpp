@@ -4,6 +4,7 @@
 
 #include <Eigen/Cholesky>
 
+#include "sextant/core/chi_square.hpp"
 #include "sextant/core/pose.hpp"
 
 #include "sextant/filters/covariance.hpp"
@@ -49,7 +50,8 @@ TEST(RangeBearing, AverageNeesWithinChiSquareBounds) {
   // M runs, 3 pose dof: the M-run average NEES lies in [χ²₀.₀₂₅(3M), χ²₀.₉₇₅(3M)]/M with 95%
   // probability; for M = 6, χ²(18) gives [8.231, 31.526]/6 = [1.372, 5.254].
   const int runs = 6;
-  const double lower = 8.231 / runs, upper = 31.526 / runs;
+  const double lower = chi_square_quantile(0.025, 3 * runs) / runs;
+  const double upper = chi_square_quantile(0.975, 3 * runs) / runs;
   for (const std::string name : {"ekf", "ukf", "ckf", "rspkf", "seif"}) {
     std::size_t failures = 0;
     const YAML::Node settings = name == "rspkf" ? YAML::Load("{iterations: 3}") : YAML::Node();
