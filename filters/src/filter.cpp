@@ -1,6 +1,25 @@
 #include "sextant/filters/filter.hpp"
 
+#include <stdexcept>
+
 namespace sextant {
+
+namespace {
+
+/// Rows of the state that belong to the pose and to each of `landmarks`, in that order.
+std::vector<Eigen::Index> joint_rows(const SlamModel& model, int num_landmarks,
+                                     const std::vector<int>& landmarks) {
+  std::vector<Eigen::Index> rows;
+  for (int k = 0; k < model.pose_dim(); ++k) rows.push_back(k);
+  for (int j : landmarks) {
+    if (j < 0 || j >= num_landmarks)
+      throw std::out_of_range("joint_covariance: no landmark " + std::to_string(j));
+    for (int k = 0; k < model.landmark_dim(); ++k) rows.push_back(landmark_offset(model, j) + k);
+  }
+  return rows;
+}
+
+}  // namespace
 
 std::string to_string(StepStatus status) {
   switch (status) {
@@ -22,6 +41,11 @@ void FilterSummary::add(StepStatus status) {
     case StepStatus::kSingularInnovation: ++singular_innovations; break;
     case StepStatus::kInvalidInput: ++invalid_inputs; break;
   }
+}
+
+Eigen::MatrixXd Filter::joint_covariance(const std::vector<int>& landmarks) const {
+  const std::vector<Eigen::Index> rows = joint_rows(model(), num_landmarks(), landmarks);
+  return covariance()(rows, rows);
 }
 
 StepResult Filter::record(StepStatus status, double seconds) {

@@ -3,8 +3,10 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "sextant/core/chi_square.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/features/merging.hpp"
+#include "sextant/filters/innovation_gate.hpp"
 #include "sextant/filters/plane_slam_model.hpp"
 
 namespace sextant {
@@ -35,6 +37,8 @@ bool PlaneSlamSettings::valid(std::string* why) const {
     problem = "observation sigmas (sigma_normal, sigma_distance) must be > 0";
   else if (!(initial_sigma_translation > 0 && initial_sigma_rotation > 0 && p0_scale > 0))
     problem = "initial sigmas and p0_scale must be > 0";
+  else if (!(gate_probability >= 0 && gate_probability < 1))
+    problem = "gate_probability must lie in [0, 1) (0 turns the gate off)";
   if (problem) {
     if (why) *why = problem;
     return false;
@@ -80,6 +84,7 @@ PlaneSlamSettings read_plane_slam_settings(const YAML::Node& node, const std::st
   in.read("initial_sigma_translation", s.initial_sigma_translation);
   in.read("initial_sigma_rotation", s.initial_sigma_rotation);
   in.read("p0_scale", s.p0_scale);
+  in.read("gate_probability", s.gate_probability);
   in.read("merge_semantics", s.merge_semantics);
   in.read("record_pose_covariance", s.record_pose_covariance);
   in.finish();
@@ -92,6 +97,9 @@ PlaneSlamSettings read_plane_slam_settings(const YAML::Node& node, const std::st
 
 PlaneSlam::PlaneSlam(PlaneSlamSettings settings, const Pose6& initial_pose, std::uint64_t seed)
     : s_(std::move(settings)), rng_(seed) {
+  gate_ = s_.gate_probability > 0.0
+              ? chi_square_quantile(s_.gate_probability, PlaneSlamModel().observation_dim())
+              : 0.0;
   std::string why;
   if (!s_.valid(&why)) throw std::invalid_argument("plane SLAM settings: " + why);
   filter_ = make_filter(s_.filter, std::make_shared<PlaneSlamModel>(), s_.filter_settings);
@@ -136,20 +144,26 @@ PlaneSlamStep PlaneSlam::step(const PointCloud& scan, const Pose6& odometry_pose
   t0 = Clock::now();
   const std::vector<PlaneLandmark> predicted_world = transform_landmarks(observed_, to_isometry(pose()));
   const AssociationResult assoc = associate_landmarks(predicted_world, map_, s_.association);
-  out.association_seconds = since(t0);
   out.candidates_tested = assoc.candidates_tested;
-  out.matched = assoc.matches.size();
   out.observation_landmark.assign(observed_.size(), -1);
-
-  // 5. Update with the matched observations (eqs. 4.62–4.66), then augment (eqs. 4.67–4.68).
   const Eigen::Matrix4d R = s_.observation_noise();
   std::vector<Eigen::VectorXd> zs;
   std::vector<int> associations;
   for (const LandmarkMatch& m : assoc.matches) {
-    zs.emplace_back(plane_vector(observed_[m.observed].plane));
-    associations.push_back(static_cast<int>(m.map));
-    out.observation_landmark[m.observed] = static_cast<int>(m.map);
+    const Eigen::Vector4d z = plane_vector(observed_[m.observed].plane);
+    const int j = static_cast<int>(m.map);
+    if (gate_ > 0.0 && !(innovation_distance(*filter_, z, R, j) <= gate_)) {
+      ++out.gated;
+      continue;
+    }
+    zs.emplace_back(z);
+    associations.push_back(j);
+    out.observation_landmark[m.observed] = j;
   }
+  out.matched = zs.size();
+  out.association_seconds = since(t0);
+
+  // 5. Update with the matched observations (eqs. 4.62–4.66), then augment (eqs. 4.67–4.68).
   if (!zs.empty()) {
     const StepResult r = filter_->update(zs, R, associations);
     rec.update_status = r.status;

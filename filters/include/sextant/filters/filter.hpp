@@ -72,6 +72,10 @@ class Filter {
   virtual Eigen::VectorXd mean() const = 0;
   /// Current covariance (SEIF/EIF: the inverse of the information matrix, O(n³), for inspection).
   virtual Eigen::MatrixXd covariance() const = 0;
+  /// Covariance of [pose; landmark landmarks[0]; …] (0-based indices), the joint marginal an
+  /// association gate needs. Default: read from covariance(). SEIF: its Markov-blanket
+  /// approximation (seif.hpp). Unknown indices throw std::out_of_range.
+  virtual Eigen::MatrixXd joint_covariance(const std::vector<int>& landmarks) const;
   virtual int num_landmarks() const = 0;
 
   Eigen::VectorXd pose() const { return mean().head(model().pose_dim()); }

@@ -3,7 +3,9 @@
 //   1. predict with the odometry increment u = odometry_increment(o(k−1), o(k)) (eq. 4.72);
 //   2. extract plane landmarks from the scan (§4.1, features/extraction.hpp);
 //   3. transform them to the world with the predicted pose (eqs. 4.57–4.61);
-//   4. associate them with the map's semantic landmarks (C_o, C_t, C_p tests, §4.2.5);
+//   4. associate them with the map's semantic landmarks (C_o, C_t, C_p tests, §4.2.5), then
+//      drop matches whose innovation fails the χ² gate (innovation_gate.hpp; with SEIF its
+//      Markov-blanket covariance) — a dropped observation neither updates nor augments;
 //   5. update with the matched observations z = (nᴸ, dᴸ) (eq. 4.64), augment with the new ones
 //      (eqs. 4.57–4.58, 4.67–4.68);
 //   6. copy the filter's (n, d) into the map landmarks and merge the associated observations'
@@ -53,6 +55,7 @@ struct PlaneSlamSettings {
   double initial_sigma_translation = 0.01;  ///< [m]
   double initial_sigma_rotation = 0.001;    ///< [rad]
   double p0_scale = 1.0;                    ///< the thesis scales P0 up to show UKF failures [-]
+  double gate_probability = 0.99;           ///< χ² gate of step 4 at this probability; 0 turns it off [-]
   bool merge_semantics = true;              ///< step 6 (off: map semantics stay as first seen)
   bool record_pose_covariance = true;       ///< pose covariance per step (O(n³) for information filters)
 
@@ -71,8 +74,10 @@ struct PlaneSlamStep {
   SlamStepRecord filter;      ///< pose after the step, statuses, counts and predict/update/augment times
   std::size_t extracted = 0;  ///< landmarks extracted from the scan
   std::size_t matched = 0;    ///< associated with the map (= filter.updated when the update ran)
+  std::size_t gated = 0;      ///< semantic matches the χ² gate dropped (not in `matched`)
   std::size_t map_size = 0;   ///< landmarks in the map after the step
-  /// Per extracted landmark: the filter landmark it observed or created, or −1 (augmentation failed).
+  /// Per extracted landmark: the filter landmark it observed or created, or −1 (gated, or
+  /// augmentation failed).
   std::vector<int> observation_landmark;
   std::size_t candidates_tested = 0;  ///< association pairs evaluated
   double extraction_seconds = 0.0;
@@ -100,6 +105,7 @@ class PlaneSlam {
   void sync_map_planes();
 
   PlaneSlamSettings s_;
+  double gate_ = 0.0;  ///< χ² quantile of gate_probability (0: no gate)
   std::unique_ptr<Filter> filter_;
   Rng rng_;
   std::vector<PlaneLandmark> map_;

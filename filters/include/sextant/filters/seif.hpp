@@ -17,7 +17,12 @@
 // (eq. 4.112), (2) the mean is recovered by a few Gauss–Seidel sweeps of Ω μ = ξ over the pose
 // and the active landmarks only, so passive landmarks keep their last mean and the linearisation
 // points may lag, (3) renormalising a plane's normal changes the mean but not Ω (as in the EKF).
-// Data association uses the mean of the predicted pose (no Markov-blanket conditional).
+// (4) joint_covariance() — what an association gate needs — is the covariance of the pose and
+// the landmarks conditioned on their Markov blanket's complement at its mean: (Ω_BB)⁻¹ over the
+// blanket B = pose, active landmarks, each landmark with its neighbours, and a shortest path in
+// the information graph joining a landmark not yet linked to that set. Conditioning only removes
+// uncertainty, so this is never larger than the exact marginal (it equals it when B holds every
+// variable, as in the EIF), and its cost depends on the blanket, not on the map size.
 #include <cstddef>
 #include <map>
 #include <memory>
@@ -85,7 +90,11 @@ class Seif final : public Filter {
   StepResult augment(const Eigen::VectorXd& z, const Eigen::MatrixXd& R) override;
   Eigen::VectorXd mean() const override { return mu_; }
   Eigen::MatrixXd covariance() const override;
+  Eigen::MatrixXd joint_covariance(const std::vector<int>& landmarks) const override;
   int num_landmarks() const override { return omega_.variables() - 1; }
+  /// Variables (0 = pose, k = landmark k−1) of the Markov blanket used by joint_covariance(),
+  /// starting with the pose and then the landmarks asked for.
+  std::vector<int> markov_blanket(const std::vector<int>& landmarks) const;
 
   const BlockInformationMatrix& information() const { return omega_; }
   const Eigen::VectorXd& information_vector() const { return xi_; }
