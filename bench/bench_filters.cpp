@@ -1,6 +1,7 @@
 // Per-step update time of the plane-SLAM filters vs the number of landmarks (50 → 800):
 // the EKF's covariance update grows quadratically with the map, the SEIF's measurement and
-// motion updates stay flat (bounded active set, block-sparse information matrix).
+// motion updates stay flat (bounded active set, block-sparse information matrix); and the cost
+// of gating one association (SEIF: Markov-blanket covariance).
 //   build-*/bench/bench_filters --benchmark_min_time=0.2
 #include <benchmark/benchmark.h>
 
@@ -8,6 +9,7 @@
 
 #include "sextant/core/rng.hpp"
 #include "sextant/filters/gaussian_filters.hpp"
+#include "sextant/filters/innovation_gate.hpp"
 #include "sextant/filters/plane_slam_model.hpp"
 #include "sextant/filters/seif.hpp"
 
@@ -102,10 +104,30 @@ void BM_SeifPredict(benchmark::State& state) {
   state.counters["touched"] = static_cast<double>(seif->last_step_touched());
 }
 
+// The χ² gate of one association (innovation_gate.hpp): the EKF reads Σ from P, the SEIF inverts
+// the information block of the landmark's Markov blanket.
+template <class MakeFilter>
+void gate_one_association(benchmark::State& state, MakeFilter make) {
+  auto filter = make(static_cast<int>(state.range(0)));
+  std::vector<Eigen::VectorXd> zs;
+  std::vector<int> ids;
+  observe_last_two(*filter, &zs, &ids);
+  for (auto _ : state) benchmark::DoNotOptimize(sextant::innovation_distance(*filter, zs[0], kR, ids[0]));
+  state.counters["landmarks"] = static_cast<double>(state.range(0));
+}
+void BM_EkfGate(benchmark::State& state) {
+  gate_one_association(state, make_ekf);
+}
+void BM_SeifGate(benchmark::State& state) {
+  gate_one_association(state, make_seif);
+}
+
 }  // namespace
 
 BENCHMARK(BM_EkfUpdate)->Arg(50)->Arg(100)->Arg(200)->Arg(400)->Arg(800)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_EkfPredict)->Arg(50)->Arg(100)->Arg(200)->Arg(400)->Arg(800)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SeifUpdate)->Arg(50)->Arg(100)->Arg(200)->Arg(400)->Arg(800)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_SeifPredict)->Arg(50)->Arg(100)->Arg(200)->Arg(400)->Arg(800)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_EkfGate)->Arg(50)->Arg(100)->Arg(200)->Arg(400)->Arg(800)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SeifGate)->Arg(50)->Arg(100)->Arg(200)->Arg(400)->Arg(800)->Unit(benchmark::kMicrosecond);
 BENCHMARK_MAIN();

@@ -4,23 +4,6 @@
 
 namespace sextant {
 
-namespace {
-
-/// Rows of the state that belong to the pose and to each of `landmarks`, in that order.
-std::vector<Eigen::Index> joint_rows(const SlamModel& model, int num_landmarks,
-                                     const std::vector<int>& landmarks) {
-  std::vector<Eigen::Index> rows;
-  for (int k = 0; k < model.pose_dim(); ++k) rows.push_back(k);
-  for (int j : landmarks) {
-    if (j < 0 || j >= num_landmarks)
-      throw std::out_of_range("joint_covariance: no landmark " + std::to_string(j));
-    for (int k = 0; k < model.landmark_dim(); ++k) rows.push_back(landmark_offset(model, j) + k);
-  }
-  return rows;
-}
-
-}  // namespace
-
 std::string to_string(StepStatus status) {
   switch (status) {
     case StepStatus::kOk: return "ok";
@@ -43,9 +26,20 @@ void FilterSummary::add(StepStatus status) {
   }
 }
 
+Eigen::MatrixXd joint_block(const SlamModel& model, const Eigen::MatrixXd& P,
+                            const std::vector<int>& landmarks) {
+  const int count = landmark_count(model, P.rows());
+  std::vector<Eigen::Index> rows;
+  for (int k = 0; k < model.pose_dim(); ++k) rows.push_back(k);
+  for (int j : landmarks) {
+    if (j < 0 || j >= count) throw std::out_of_range("joint_covariance: no landmark " + std::to_string(j));
+    for (int k = 0; k < model.landmark_dim(); ++k) rows.push_back(landmark_offset(model, j) + k);
+  }
+  return P(rows, rows);
+}
+
 Eigen::MatrixXd Filter::joint_covariance(const std::vector<int>& landmarks) const {
-  const std::vector<Eigen::Index> rows = joint_rows(model(), num_landmarks(), landmarks);
-  return covariance()(rows, rows);
+  return joint_block(model(), covariance(), landmarks);
 }
 
 StepResult Filter::record(StepStatus status, double seconds) {

@@ -124,14 +124,14 @@ std::vector<int> BlockInformationMatrix::neighbours(int i) const {
   return out;
 }
 
-Eigen::MatrixXd BlockInformationMatrix::gather(const std::vector<int>& vars) const {
+Eigen::MatrixXd BlockInformationMatrix::gather(const std::vector<int>& vars, bool count) const {
   const auto off = local_offsets(*this, vars);
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(off.back(), off.back());
   for (std::size_t a = 0; a < vars.size(); ++a)
     for (std::size_t b = 0; b < vars.size(); ++b) {
       const auto it = rows_[vars[a]].find(vars[b]);
       if (it == rows_[vars[a]].end()) continue;
-      touched_ += static_cast<std::size_t>(it->second.size());
+      if (count) touched_ += static_cast<std::size_t>(it->second.size());
       out.block(off[a], off[b], dims_[vars[a]], dims_[vars[b]]) = it->second;
     }
   return out;

@@ -73,7 +73,7 @@ std::vector<int> Seif::markov_blanket(const std::vector<int>& landmarks) const {
 
 Eigen::MatrixXd Seif::joint_covariance(const std::vector<int>& landmarks) const {
   const std::vector<int> blanket = markov_blanket(landmarks);
-  const Eigen::MatrixXd omega_bb = omega_.gather(blanket);
+  const Eigen::MatrixXd omega_bb = omega_.gather(blanket, false);
   const Eigen::MatrixXd sigma_bb =
       omega_bb.llt().solve(Eigen::MatrixXd::Identity(omega_bb.rows(), omega_bb.cols()));
   std::map<int, Eigen::Index> local;  // variable → first row in the gathered block

@@ -87,6 +87,11 @@ class Filter {
   FilterSummary summary_;
 };
 
+/// The rows and columns of the pose and of `landmarks` (0-based) in a full state covariance P,
+/// in that order (Filter::joint_covariance of the moment filters). Throws std::out_of_range.
+Eigen::MatrixXd joint_block(const SlamModel& model, const Eigen::MatrixXd& P,
+                            const std::vector<int>& landmarks);
+
 /// Factory signature: (model, settings node — may be null for defaults, file name for messages).
 using FilterRegistry =
     Registry<Filter, std::shared_ptr<const SlamModel>, const YAML::Node&, const std::string&>;

@@ -31,6 +31,9 @@ class Ekf final : public Filter {
   StepResult augment(const Eigen::VectorXd& z, const Eigen::MatrixXd& R) override;
   Eigen::VectorXd mean() const override { return x_; }
   Eigen::MatrixXd covariance() const override { return P_; }
+  Eigen::MatrixXd joint_covariance(const std::vector<int>& landmarks) const override {
+    return joint_block(*model_, P_, landmarks);
+  }
   int num_landmarks() const override;
 
  private:
@@ -55,6 +58,9 @@ class SigmaPointFilter final : public Filter {
   StepResult augment(const Eigen::VectorXd& z, const Eigen::MatrixXd& R) override;
   Eigen::VectorXd mean() const override { return x_; }
   Eigen::MatrixXd covariance() const override { return P_; }
+  Eigen::MatrixXd joint_covariance(const std::vector<int>& landmarks) const override {
+    return joint_block(*model_, P_, landmarks);
+  }
   int num_landmarks() const override;
 
  private:

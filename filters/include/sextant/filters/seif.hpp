@@ -60,8 +60,9 @@ class BlockInformationMatrix {
   void erase(int i, int j);
   /// Variables linked to i (excluding i), ascending.
   std::vector<int> neighbours(int i) const;
-  /// Dense gather/scatter over a variable subset (order as given).
-  Eigen::MatrixXd gather(const std::vector<int>& vars) const;
+  /// Dense gather/scatter over a variable subset (order as given). A gather outside a filter
+  /// step (count = false: the association gate) is not counted in touched().
+  Eigen::MatrixXd gather(const std::vector<int>& vars, bool count = true) const;
   void scatter(const std::vector<int>& vars, const Eigen::MatrixXd& dense);
   /// The whole matrix, dense (tests, covariance()).
   Eigen::MatrixXd dense() const;
