@@ -26,25 +26,11 @@ double smallest_eigenvalue(const Eigen::MatrixXd& M) {
   return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(0.5 * (M + M.transpose())).eigenvalues().minCoeff();
 }
 
-/// A SEIF over `planes` random planes, a motion update after each augmentation (as costs grow in
-/// a real run), then a few re-observations of the first planes so they are linked to others.
 Seif seif_with_map(int planes, int max_active) {
-  auto model = std::make_shared<PlaneSlamModel>();
   SeifSettings s;
   s.max_active_landmarks = max_active;
-  Seif seif("seif", model, s);
-  seif.initialize(Eigen::VectorXd::Zero(6), Eigen::MatrixXd::Identity(6, 6) * 1e-4);
-  Rng rng(7);
-  const Eigen::Matrix4d R = Eigen::Vector4d(1e-4, 1e-4, 1e-4, 1e-2).asDiagonal();
-  Eigen::VectorXd u(6);
-  u << 0.5, 0.0, 0.0, 0.0, 0.0, 0.01;
-  const Eigen::MatrixXd Q = Eigen::MatrixXd::Identity(6, 6) * 1e-4;
-  for (int i = 0; i < planes; ++i) {
-    Eigen::VectorXd z(4);
-    z << Eigen::Vector3d(rng.normal(), rng.normal(), rng.normal()).normalized(), rng.uniform(1.0, 20.0);
-    EXPECT_TRUE(seif.augment(z, R).ok());
-    EXPECT_TRUE(seif.predict(u, Q).ok());
-  }
+  Seif seif("seif", std::make_shared<PlaneSlamModel>(), s);
+  test::grow_random_plane_map(seif, planes, 7);
   return seif;
 }
 

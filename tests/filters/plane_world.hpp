@@ -1,6 +1,8 @@
 #pragma once
 // A small synthetic plane world for the SLAM tests: known planes, a true 6D trajectory, noisy
 // (biased) odometry increments and noisy plane observations taken from the truth.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <map>
 #include <vector>
@@ -83,6 +85,24 @@ std::map<int, int> start_plane_slam(FilterT& filter, const PlaneWorld& w, double
     known[static_cast<int>(known.size())] = filter.num_landmarks() - 1;
   }
   return known;
+}
+
+/// Starts `filter` at the origin and adds `planes` random planes, with a motion update (0.5 m,
+/// 0.01 rad) after each: the growing map of the SEIF cost and Markov-blanket tests.
+template <class FilterT>
+void grow_random_plane_map(FilterT& filter, int planes, std::uint64_t seed) {
+  filter.initialize(Eigen::VectorXd::Zero(6), Eigen::MatrixXd::Identity(6, 6) * 1e-4);
+  Rng rng(seed);
+  const Eigen::Matrix4d R = Eigen::Vector4d(1e-4, 1e-4, 1e-4, 1e-2).asDiagonal();
+  Eigen::VectorXd u(6);
+  u << 0.5, 0.0, 0.0, 0.0, 0.0, 0.01;
+  const Eigen::MatrixXd Q = Eigen::MatrixXd::Identity(6, 6) * 1e-4;
+  for (int i = 0; i < planes; ++i) {
+    Eigen::VectorXd z(4);
+    z << Eigen::Vector3d(rng.normal(), rng.normal(), rng.normal()).normalized(), rng.uniform(1.0, 20.0);
+    EXPECT_TRUE(filter.augment(z, R).ok());
+    EXPECT_TRUE(filter.predict(u, Q).ok());
+  }
 }
 
 inline double position_error(const Eigen::VectorXd& pose, const Pose6& truth) {

@@ -17,27 +17,18 @@ Costs costs_with_map(int landmarks, int max_active) {
   SeifSettings s;
   s.max_active_landmarks = max_active;
   Seif seif("seif", model, s);
-  seif.initialize(Eigen::VectorXd::Zero(6), Eigen::MatrixXd::Identity(6, 6) * 1e-4);
-  Rng rng(3);
-  const Eigen::Matrix4d R = Eigen::Vector4d(1e-4, 1e-4, 1e-4, 1e-2).asDiagonal();
+  test::grow_random_plane_map(seif, landmarks, 3);
+  EXPECT_LE(static_cast<int>(seif.active_landmarks().size()), max_active);
+  EXPECT_EQ(seif.information().neighbours(0).size(), seif.active_landmarks().size());
+  Costs c;
   Eigen::VectorXd u(6);
   u << 0.5, 0.0, 0.0, 0.0, 0.0, 0.01;
-  const Eigen::MatrixXd Q = Eigen::MatrixXd::Identity(6, 6) * 1e-4;
-  for (int i = 0; i < landmarks; ++i) {
-    Eigen::VectorXd z(4);
-    z << Eigen::Vector3d(rng.normal(), rng.normal(), rng.normal()).normalized(), rng.uniform(1.0, 20.0);
-    EXPECT_TRUE(seif.augment(z, R).ok());
-    EXPECT_TRUE(seif.predict(u, Q).ok());
-    EXPECT_LE(static_cast<int>(seif.active_landmarks().size()), max_active);
-    EXPECT_EQ(seif.information().neighbours(0).size(), seif.active_landmarks().size());
-  }
-  Costs c;
-  EXPECT_TRUE(seif.predict(u, Q).ok());
+  EXPECT_TRUE(seif.predict(u, Eigen::MatrixXd::Identity(6, 6) * 1e-4).ok());
   c.predict = seif.last_step_touched();
   const int observed = landmarks - 1;  // an active landmark
   const Eigen::VectorXd z =
       model->observe(seif.pose(), seif.mean().segment(landmark_offset(*model, observed), 4));
-  EXPECT_TRUE(seif.update({z}, R, {observed}).ok());
+  EXPECT_TRUE(seif.update({z}, Eigen::Vector4d(1e-4, 1e-4, 1e-4, 1e-2).asDiagonal(), {observed}).ok());
   c.update = seif.last_step_touched();
   return c;
 }
