@@ -17,13 +17,14 @@ class LayerObjective final : public StagedObjective {
         penalty_(settings.unmatched_penalty),
         max_distance_(settings.max_distance),
         first_truncated_(settings.pyramid.layers - settings.truncated_layers),
+        threads_(settings.threads),
         input_(input) {}
   int stages() const override { return static_cast<int>(layers_.size()) - first_; }
   int stage_label(int stage) const override { return first_ + stage + 1; }
   ScoreEvaluation evaluate(int stage, const Vector6d& xi, Derivatives d) const override {
     // eqs. (3.11), (3.17), (3.18) with each term truncated at max_distance: min(eᵀC⁻¹e, τ)
     const double tau = max_distance(stage);
-    ScoreEvaluation e = mahalanobis_score(grid(stage), input_, xi, d, tau);
+    ScoreEvaluation e = mahalanobis_score(grid(stage), input_, xi, d, tau, threads_);
     const std::size_t unmatched = input_.size() - e.matched - e.rejected;
     e.score += penalty_ * static_cast<double>(unmatched);
     if (e.rejected > 0) e.score += tau * static_cast<double>(e.rejected);  // never ∞·0
@@ -42,7 +43,8 @@ class LayerObjective final : public StagedObjective {
   int first_;
   double penalty_;
   double max_distance_;
-  int first_truncated_;  ///< index of the first layer with truncated terms
+  int first_truncated_;   ///< index of the first layer with truncated terms
+  ScoreThreads threads_;  ///< one TBB arena for all evaluations of the registration
   const PointCloud& input_;
 };
 
@@ -65,6 +67,8 @@ bool MlndtSettings::valid(std::string* why) const {
     problem = "max_distance must be positive (.inf keeps every correspondence)";
   else if (truncated_layers < 0 || truncated_layers > pyramid.layers)
     problem = "truncated_layers must lie in [0, layers]";
+  else if (threads < 0)
+    problem = "threads must be ≥ 0 (0: all hardware threads)";
   if (problem && why) *why = problem;
   return problem == nullptr;
 }
@@ -78,6 +82,8 @@ MlndtSettings read_mlndt_settings(const YAML::Node& node, const std::string& fil
   in.read("unmatched_penalty", s.unmatched_penalty);
   in.read("max_distance", s.max_distance);
   in.read("truncated_layers", s.truncated_layers);
+  if (in.read("threads", s.threads) && s.threads < 0)
+    in.fail("threads", "threads must be ≥ 0 (0: all hardware threads)");
   in.read("min_points", s.pyramid.cells.min_points);
   in.read("max_eigen_ratio", s.pyramid.cells.max_eigen_ratio);
   in.read("min_spread", s.pyramid.cells.min_spread);

@@ -10,13 +10,13 @@ namespace {
 
 class GaussianObjective final : public StagedObjective {
  public:
-  GaussianObjective(const NdtGrid& grid, const GaussianScoreParams& params, bool trilinear,
+  GaussianObjective(const NdtGrid& grid, const GaussianScoreParams& params, bool trilinear, int threads,
                     const PointCloud& input)
-      : grid_(grid), params_(params), trilinear_(trilinear), input_(input) {}
+      : grid_(grid), params_(params), trilinear_(trilinear), threads_(threads), input_(input) {}
   int stages() const override { return 1; }
   int stage_label(int /*stage*/) const override { return 0; }
   ScoreEvaluation evaluate(int /*stage*/, const Vector6d& xi, Derivatives d) const override {
-    return gaussian_score(grid_, input_, xi, params_, trilinear_, d);  // eq. (3.6)
+    return gaussian_score(grid_, input_, xi, params_, trilinear_, d, threads_);  // eq. (3.6)
   }
   const NdtGrid* mahalanobis_grid(int /*stage*/) const override { return nullptr; }
   const PointCloud& input() const override { return input_; }
@@ -25,6 +25,7 @@ class GaussianObjective final : public StagedObjective {
   const NdtGrid& grid_;
   const GaussianScoreParams& params_;
   bool trilinear_;
+  ScoreThreads threads_;  ///< one TBB arena for all evaluations of the registration
   const PointCloud& input_;
 };
 
@@ -46,6 +47,8 @@ bool NdtSettings::valid(std::string* why) const {
     problem = "outlier_ratio must lie in (0, 1)";
   else if (optimizer.solver == SolverKind::kCeres)
     problem = "ndt supports the solvers newton and lm";
+  else if (threads < 0)
+    problem = "threads must be ≥ 0 (0: all hardware threads)";
   if (problem && why) *why = problem;
   if (problem) return false;
   return cells.valid(why) && optimizer.valid(why);
@@ -58,6 +61,8 @@ NdtSettings read_ndt_settings(const YAML::Node& node, const std::string& file) {
   in.read("volume_divisions", s.volume_divisions);
   in.read("outlier_ratio", s.outlier_ratio);
   in.read("trilinear", s.trilinear);
+  if (in.read("threads", s.threads) && s.threads < 0)
+    in.fail("threads", "threads must be ≥ 0 (0: all hardware threads)");
   in.read("min_points", s.cells.min_points);
   in.read("max_eigen_ratio", s.cells.max_eigen_ratio);
   in.read("min_spread", s.cells.min_spread);
@@ -91,7 +96,7 @@ RegistrationResult NdtMatcher::align(const PointCloud& input, const Eigen::Isome
     if (is_finite(initial)) r.T = initial;
     return r;
   }
-  const GaussianObjective objective(grid_, params_, settings_.trilinear, input);
+  const GaussianObjective objective(grid_, params_, settings_.trilinear, settings_.threads, input);
   return optimize(objective, initial, settings_.optimizer);
 }
 

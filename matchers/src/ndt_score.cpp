@@ -4,8 +4,16 @@
 // only adds to sums (C⁻¹, C⁻¹[u]×, [u]×ᵀC⁻¹[u]×, C⁻¹e·uᵀ) and A is applied once at the end.
 #include "sextant/matchers/ndt_score.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
 
 namespace sextant {
 
@@ -47,6 +55,47 @@ struct Sums {
   std::size_t matched = 0;
   std::size_t rejected = 0;
 };
+
+/// total += block, term by term.
+void add(Sums& total, const Sums& block) {
+  total.score += block.score;
+  total.g_t += block.g_t;
+  total.N += block.N;
+  total.P += block.P;
+  total.Q += block.Q;
+  total.S += block.S;
+  total.outer += block.outer;
+  total.matched += block.matched;
+  total.rejected += block.rejected;
+}
+
+/// Runs `block(begin, end, sums)` over the fixed blocks [b·K, min((b+1)·K, n)), K =
+/// kScoreBlockPoints, each into its own zeroed Sums, and adds the block sums in block order on
+/// the calling thread. The blocks and the order of every addition are the same for every
+/// thread count, so the result is bit-identical for 1, 2, … threads; one thread (or a single
+/// block) runs the same blocks in turn on the calling thread.
+template <class Block>
+Sums blocked_sum(std::size_t n, const ScoreThreads& threads, const Block& block) {
+  constexpr std::size_t K = kScoreBlockPoints;
+  const std::size_t blocks = (n + K - 1) / K;
+  Sums total;
+  if (threads.concurrency() <= 1 || blocks < 2) {
+    for (std::size_t b = 0; b < blocks; ++b) {
+      Sums s;
+      block(b * K, std::min(n, (b + 1) * K), s);
+      add(total, s);
+    }
+    return total;
+  }
+  std::vector<Sums> sums(blocks);
+  threads.for_each(blocks, [&](std::size_t b) {
+    Sums s;  // on this thread's stack, copied out once per block
+    block(b * K, std::min(n, (b + 1) * K), s);
+    sums[b] = s;
+  });
+  for (const Sums& s : sums) add(total, s);  // block order, whatever thread summed each block
+  return total;
+}
 
 /// C⁻¹ from the packed upper triangle.
 inline void unpack(const float* ic, double& xx, double& xy, double& xz, double& yy, double& yz, double& zz) {
@@ -149,11 +198,12 @@ ScoreEvaluation finish(Sums& s, const PoseTerms& pose, Derivatives derivatives, 
 }
 
 template <bool kGradient, bool kHessian>
-void mahalanobis_loop(const NdtGrid& grid, const PointCloud& input, const PoseTerms& pose, double max_q,
-                      Sums& s) {
+void mahalanobis_loop(const NdtGrid& grid, const Eigen::Vector3f* begin, const Eigen::Vector3f* end,
+                      const PoseTerms& pose, double max_q, Sums& s) {
   const Eigen::Matrix3d& R = pose.R;
   const double tx = pose.t.x(), ty = pose.t.y(), tz = pose.t.z();
-  for (const Eigen::Vector3f& pf : input.points()) {
+  for (const Eigen::Vector3f* p = begin; p != end; ++p) {
+    const Eigen::Vector3f& pf = *p;
     const Eigen::Vector3d u = R * pf.cast<double>();
     const int g = grid.lookup(static_cast<float>(u.x() + tx), static_cast<float>(u.y() + ty),
                               static_cast<float>(u.z() + tz));
@@ -164,15 +214,16 @@ void mahalanobis_loop(const NdtGrid& grid, const PointCloud& input, const PoseTe
 }
 
 template <bool kGradient, bool kHessian>
-void gaussian_loop(const NdtGrid& grid, const PointCloud& input, const PoseTerms& pose,
-                   const GaussianScoreParams& p, bool trilinear, Sums& s) {
+void gaussian_loop(const NdtGrid& grid, const Eigen::Vector3f* begin, const Eigen::Vector3f* end,
+                   const PoseTerms& pose, const GaussianScoreParams& p, bool trilinear, Sums& s) {
   // f = d1·exp(−d2/2·q): ∂f = −d1·d2·exp(·)·eᵀC⁻¹∂e, ∂²f = −d1·d2·exp(·)·(∂eᵀC⁻¹∂e + eᵀC⁻¹∂²e
   // − d2·(eᵀC⁻¹∂e)(eᵀC⁻¹∂e)ᵀ).
   const double w = -p.d1 * p.d2;
   const double v = p.d1 * p.d2 * p.d2;
   const double edge = grid.cell_edge();
   const Eigen::Vector3d origin = grid.origin();
-  for (const Eigen::Vector3f& pf : input.points()) {
+  for (const Eigen::Vector3f* point = begin; point != end; ++point) {
+    const Eigen::Vector3f& pf = *point;
     const Eigen::Vector3d u = pose.R * pf.cast<double>();
     const Eigen::Vector3d x = u + pose.t;
     if (!trilinear) {
@@ -211,6 +262,37 @@ void gaussian_loop(const NdtGrid& grid, const PointCloud& input, const PoseTerms
 
 }  // namespace
 
+struct ScoreThreads::Arena {
+  tbb::task_arena arena;
+  explicit Arena(int concurrency) : arena(concurrency) {}  // initialised on first use
+};
+
+ScoreThreads::ScoreThreads(int threads) {
+  if (threads == 1) return;
+  // More threads than TBB allows would only idle (and make TBB warn).
+  std::size_t limit = tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+  if (threads > 0) limit = std::min(limit, static_cast<std::size_t>(threads));
+  concurrency_ = static_cast<int>(std::max<std::size_t>(limit, 1));
+  if (concurrency_ > 1) arena_ = std::make_unique<Arena>(concurrency_);
+}
+
+ScoreThreads::~ScoreThreads() = default;
+
+void ScoreThreads::for_each(std::size_t count, const std::function<void(std::size_t)>& body) const {
+  if (!arena_) {
+    for (std::size_t i = 0; i < count; ++i) body(i);
+    return;
+  }
+  arena_->arena.execute([&] {
+    tbb::parallel_for(
+        tbb::blocked_range<std::size_t>(0, count, 1),
+        [&](const tbb::blocked_range<std::size_t>& range) {
+          for (std::size_t i = range.begin(); i != range.end(); ++i) body(i);
+        },
+        tbb::simple_partitioner());
+  });
+}
+
 GaussianScoreParams GaussianScoreParams::from_outlier_ratio(double outlier_ratio, double cell_edge) {
   const double c1 = 10.0 * (1.0 - outlier_ratio);
   const double c2 = outlier_ratio / (cell_edge * cell_edge * cell_edge);
@@ -222,28 +304,51 @@ GaussianScoreParams GaussianScoreParams::from_outlier_ratio(double outlier_ratio
 }
 
 ScoreEvaluation mahalanobis_score(const NdtGrid& grid, const PointCloud& input, const Vector6d& xi,
-                                  Derivatives derivatives, double max_distance) {
+                                  Derivatives derivatives, double max_distance, const ScoreThreads& threads) {
   const PoseTerms pose(xi);
-  Sums s;
-  if (grid.empty() || !xi.allFinite()) return finish(s, pose, Derivatives::kScore, true);
-  switch (derivatives) {
-    case Derivatives::kScore: mahalanobis_loop<false, false>(grid, input, pose, max_distance, s); break;
-    case Derivatives::kGradient: mahalanobis_loop<true, false>(grid, input, pose, max_distance, s); break;
-    case Derivatives::kHessian: mahalanobis_loop<true, true>(grid, input, pose, max_distance, s); break;
+  if (grid.empty() || !xi.allFinite()) {
+    Sums none;
+    return finish(none, pose, Derivatives::kScore, true);
   }
+  const Eigen::Vector3f* points = input.points().data();
+  Sums s = blocked_sum(input.size(), threads, [&](std::size_t begin, std::size_t end, Sums& block) {
+    switch (derivatives) {
+      case Derivatives::kScore:
+        mahalanobis_loop<false, false>(grid, points + begin, points + end, pose, max_distance, block);
+        break;
+      case Derivatives::kGradient:
+        mahalanobis_loop<true, false>(grid, points + begin, points + end, pose, max_distance, block);
+        break;
+      case Derivatives::kHessian:
+        mahalanobis_loop<true, true>(grid, points + begin, points + end, pose, max_distance, block);
+        break;
+    }
+  });
   return finish(s, pose, derivatives, true);
 }
 
 ScoreEvaluation gaussian_score(const NdtGrid& grid, const PointCloud& input, const Vector6d& xi,
-                               const GaussianScoreParams& params, bool trilinear, Derivatives derivatives) {
+                               const GaussianScoreParams& params, bool trilinear, Derivatives derivatives,
+                               const ScoreThreads& threads) {
   const PoseTerms pose(xi);
-  Sums s;
-  if (grid.empty() || !xi.allFinite()) return finish(s, pose, Derivatives::kScore, false);
-  switch (derivatives) {
-    case Derivatives::kScore: gaussian_loop<false, false>(grid, input, pose, params, trilinear, s); break;
-    case Derivatives::kGradient: gaussian_loop<true, false>(grid, input, pose, params, trilinear, s); break;
-    case Derivatives::kHessian: gaussian_loop<true, true>(grid, input, pose, params, trilinear, s); break;
+  if (grid.empty() || !xi.allFinite()) {
+    Sums none;
+    return finish(none, pose, Derivatives::kScore, false);
   }
+  const Eigen::Vector3f* points = input.points().data();
+  Sums s = blocked_sum(input.size(), threads, [&](std::size_t begin, std::size_t end, Sums& block) {
+    switch (derivatives) {
+      case Derivatives::kScore:
+        gaussian_loop<false, false>(grid, points + begin, points + end, pose, params, trilinear, block);
+        break;
+      case Derivatives::kGradient:
+        gaussian_loop<true, false>(grid, points + begin, points + end, pose, params, trilinear, block);
+        break;
+      case Derivatives::kHessian:
+        gaussian_loop<true, true>(grid, points + begin, points + end, pose, params, trilinear, block);
+        break;
+    }
+  });
   return finish(s, pose, derivatives, false);
 }
 

@@ -3,7 +3,7 @@
 // Mahalanobis score (eq. 3.11), start layer s, three iterations per layer, then the last layer
 // until ‖Δξ‖ < ε. YAML keys: division, layers, start_layer, solver (newton | lm | ceres),
 // iterations_per_layer, max_iterations, unmatched_penalty, max_distance, truncated_layers, epsilon,
-// line_search, min_points, max_eigen_ratio, min_spread, dof.
+// line_search, min_points, max_eigen_ratio, min_spread, dof, threads.
 #include <limits>
 #include <memory>
 #include <string>
@@ -28,6 +28,11 @@ struct MlndtSettings {
   /// The truncation applies in the finest `truncated_layers` layers only: coarse layers keep
   /// the plain sum, whose long tails give ML-NDT its capture range [count, 0..n]
   int truncated_layers = 1;
+  /// Threads of each score evaluation (newton and lm; a Ceres solve stays single-threaded):
+  /// 1 runs on the calling thread, 0 uses all hardware threads. The score is summed in fixed
+  /// blocks added in a fixed order (ndt_score.hpp), so the registration is bit-identical for
+  /// every value [count, ≥ 0]
+  int threads = 1;
   OptimizerSettings optimizer;  ///< solver, iterations per layer (3), cap, ε, DOF mask
   MlndtSettings();
   bool valid(std::string* why) const;

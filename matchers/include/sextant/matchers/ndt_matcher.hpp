@@ -2,7 +2,8 @@
 // Classic 3D P2D-NDT (eqs. 3.1–3.6): one fixed grid, Magnusson's Gaussian score with the
 // outlier-mixture constants, Newton with a backtracking line search; optional trilinear
 // interpolation over the 8 neighbouring cells. YAML keys: cell_size, volume_divisions,
-// outlier_ratio, trilinear, max_iterations, epsilon, line_search, min_points, max_eigen_ratio, dof.
+// outlier_ratio, trilinear, max_iterations, epsilon, line_search, min_points, max_eigen_ratio, dof,
+// threads.
 #include <memory>
 #include <string>
 
@@ -17,6 +18,9 @@ struct NdtSettings {
   int volume_divisions = 64;    ///< cell volume = bounding volume / this (64 = ML-NDT layer 2) [count]
   double outlier_ratio = 0.55;  ///< Magnusson's p_outlier in (0, 1)
   bool trilinear = false;       ///< score against the 8 surrounding cells
+  /// Threads of each score evaluation: 1 runs on the calling thread, 0 uses all hardware
+  /// threads; bit-identical results for every value (fixed blocks, ndt_score.hpp) [count, ≥ 0]
+  int threads = 1;
   CellStatsSettings cells;
   OptimizerSettings optimizer;  ///< Newton with line search, cap 35, ε = 1e-4
   NdtSettings();

@@ -4,14 +4,51 @@
 //   Mahalanobis (ML-NDT): f = Σ eᵀC⁻¹e, e = R·x + t − μ                         eqs. (3.10)–(3.18)
 //   Gaussian (P2D-NDT):   f = Σ d1·exp(−d2/2 · eᵀC⁻¹e)   (Magnusson's score; d1 < 0) eq. (3.6)
 // Points whose cell has no Gaussian are skipped (matched counts the others).
+//
+// Threads: the input is summed in fixed blocks of kScoreBlockPoints consecutive points, each
+// block from zero, and the block sums are added in block order on the calling thread. Neither
+// the blocks nor the order of any addition depend on the thread count, so every thread count
+// (1 included, which runs the same blocks one after another without TBB) gives bit-identical
+// results.
 #include <cstddef>
+#include <functional>
 #include <limits>
+#include <memory>
 
 #include "sextant/core/point_cloud.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/matchers/ndt_grid.hpp"
 
 namespace sextant {
+
+/// Points per accumulation block (see the header comment). Fixed: a block size that followed
+/// the thread count would change the rounding of the sums with it.
+inline constexpr std::size_t kScoreBlockPoints = 2048;
+
+/// Where the score kernels run. 1 (the default): on the calling thread, without TBB. More: in a
+/// TBB task arena of that many threads (at most what TBB allows: the hardware, or a
+/// tbb::global_control limit), created once here and reused by every evaluation given this
+/// object: keep one per registration, not per evaluation (on the 2-core development machine a
+/// fresh arena per call made a 2-thread, 20,000-point evaluation take ≈ 345 µs instead of
+/// ≈ 270 µs). The thread count never changes the results. Several threads may share one object.
+class ScoreThreads {
+ public:
+  /// `threads` ≤ 0: all the threads TBB allows.
+  explicit ScoreThreads(int threads = 1);
+  ~ScoreThreads();
+  ScoreThreads(const ScoreThreads&) = delete;
+  ScoreThreads& operator=(const ScoreThreads&) = delete;
+
+  /// Threads actually used (1: the calling thread only).
+  int concurrency() const { return concurrency_; }
+  /// body(i) for every i in [0, count), spread over the threads in any order (one task per i).
+  void for_each(std::size_t count, const std::function<void(std::size_t)>& body) const;
+
+ private:
+  struct Arena;
+  int concurrency_ = 1;
+  std::unique_ptr<Arena> arena_;
+};
 
 enum class Derivatives {
   kScore,     ///< score and matched count only
@@ -42,12 +79,14 @@ struct GaussianScoreParams {
 /// the default keeps all of them, as the thesis does.
 ScoreEvaluation mahalanobis_score(const NdtGrid& grid, const PointCloud& input, const Vector6d& xi,
                                   Derivatives derivatives,
-                                  double max_distance = std::numeric_limits<double>::infinity());
+                                  double max_distance = std::numeric_limits<double>::infinity(),
+                                  const ScoreThreads& threads = ScoreThreads());
 
 /// Σ d1·exp(−d2/2·eᵀC⁻¹e). With `trilinear`, each point scores against the 8 cells whose
 /// centres surround it, weighted trilinearly (weights held constant in the derivatives, as
 /// Magnusson does).
 ScoreEvaluation gaussian_score(const NdtGrid& grid, const PointCloud& input, const Vector6d& xi,
-                               const GaussianScoreParams& params, bool trilinear, Derivatives derivatives);
+                               const GaussianScoreParams& params, bool trilinear, Derivatives derivatives,
+                               const ScoreThreads& threads = ScoreThreads());
 
 }  // namespace sextant
