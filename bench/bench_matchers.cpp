@@ -1,11 +1,13 @@
 // Matcher kernels (issue 4, "Performance"): one Mahalanobis score + gradient + Hessian
 // evaluation over 20,000 points on a layer with 10⁴–10⁵ cells (target ≤ 30 ns per point on one
 // core), the same for the Gaussian (P2D-NDT) score, the layer-pyramid build per 100k reference
-// points, the GBS sampler, and one whole ML-NDT registration.
+// points, the GBS sampler, and one whole ML-NDT registration; the Mahalanobis evaluation also
+// over 1 and 2 TBB threads (BM_MahalanobisKernelThreads, wall-clock ns per point).
 //   build-*/bench/bench_matchers --benchmark_counters_tabular=true
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <limits>
 
 #include "sextant/core/rng.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
@@ -95,6 +97,22 @@ BENCHMARK(BM_MahalanobisKernel)
     ->Arg(static_cast<int>(Derivatives::kScore))
     ->Arg(static_cast<int>(Derivatives::kHessian))
     ->Unit(benchmark::kMicrosecond);
+
+// The same score + gradient + Hessian evaluation with the blocked accumulation on Arg threads
+// (bit-identical results for every count), one ScoreThreads (TBB arena) for all iterations as
+// in a registration. Wall-clock time: the calling thread's CPU time would hide the workers.
+void BM_MahalanobisKernelThreads(benchmark::State& state) {
+  const KernelFixture& f = kernel_fixture();
+  const ScoreThreads threads(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    const ScoreEvaluation e = mahalanobis_score(f.grid, f.input, f.xi, Derivatives::kHessian,
+                                                std::numeric_limits<double>::infinity(), threads);
+    benchmark::DoNotOptimize(e.hessian(5, 5));
+  }
+  report_per_point(state, f.input.size());
+  state.counters["threads"] = threads.concurrency();
+}
+BENCHMARK(BM_MahalanobisKernelThreads)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMicrosecond);
 
 void BM_GaussianKernel(benchmark::State& state) {
   const KernelFixture& f = kernel_fixture();
