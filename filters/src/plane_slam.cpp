@@ -97,11 +97,11 @@ PlaneSlamSettings read_plane_slam_settings(const YAML::Node& node, const std::st
 
 PlaneSlam::PlaneSlam(PlaneSlamSettings settings, const Pose6& initial_pose, std::uint64_t seed)
     : s_(std::move(settings)), rng_(seed) {
+  std::string why;
+  if (!s_.valid(&why)) throw std::invalid_argument("plane SLAM settings: " + why);
   gate_ = s_.gate_probability > 0.0
               ? chi_square_quantile(s_.gate_probability, PlaneSlamModel().observation_dim())
               : 0.0;
-  std::string why;
-  if (!s_.valid(&why)) throw std::invalid_argument("plane SLAM settings: " + why);
   filter_ = make_filter(s_.filter, std::make_shared<PlaneSlamModel>(), s_.filter_settings);
   filter_->initialize(initial_pose.vector(), s_.initial_covariance());
 }

@@ -150,6 +150,9 @@ TEST(PlaneSlamCampus, SettingsFromYaml) {
   EXPECT_DOUBLE_EQ(s.initial_covariance()(0, 0), 100 * 1e-4);
   EXPECT_THROW(read_plane_slam_settings(YAML::Load("{filter: nope}"), "t.yaml"), InputError);
   EXPECT_THROW(read_plane_slam_settings(YAML::Load("{sigma_xz: 1}"), "t.yaml"), InputError);
+  EXPECT_THROW(read_plane_slam_settings(YAML::Load("{gate_probability: 1.0}"), "t.yaml"), InputError);
+  EXPECT_DOUBLE_EQ(read_plane_slam_settings(YAML::Load("{gate_probability: 0}"), "t.yaml").gate_probability,
+                   0.0);
   EXPECT_THROW(read_plane_slam_settings(YAML::Load("{filter: ukf, filter_settings: {alhpa: 1}}"), "t.yaml"),
                InputError);
 }
