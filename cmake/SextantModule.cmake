@@ -23,6 +23,7 @@ function(sextant_add_test name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main sextant_options)
+  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/tests/common)
   target_compile_definitions(${name} PRIVATE
     SEXTANT_DATA_DIR="${PROJECT_SOURCE_DIR}/data"
     SEXTANT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <locale>
 
+#include "sextant/eval/table.hpp"
+
 namespace sextant::svg {
 
 std::string num(double v) {
@@ -17,20 +19,6 @@ std::string tick_label(double v) {
   return num(std::abs(v) < 1e-12 ? 0.0 : v);
 }
 
-std::string escape(const std::string& s) {
-  std::string out;
-  for (char ch : s) {
-    switch (ch) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += ch;
-    }
-  }
-  return out;
-}
-
 Document::Document(int width, int height) : width_(width), height_(height) {
   body_.imbue(std::locale::classic());
 }
@@ -38,24 +26,24 @@ Document::Document(int width, int height) : width_(width), height_(height) {
 void Document::rect(double x, double y, double w, double h, const std::string& fill,
                     const std::string& stroke, double stroke_width) {
   body_ << "<rect x=\"" << num(x) << "\" y=\"" << num(y) << "\" width=\"" << num(w) << "\" height=\""
-        << num(h) << "\" fill=\"" << escape(fill) << "\"";
+        << num(h) << "\" fill=\"" << escape_html(fill) << "\"";
   if (stroke != "none")
-    body_ << " stroke=\"" << escape(stroke) << "\" stroke-width=\"" << num(stroke_width) << "\"";
+    body_ << " stroke=\"" << escape_html(stroke) << "\" stroke-width=\"" << num(stroke_width) << "\"";
   body_ << "/>\n";
 }
 
 void Document::line(double x1, double y1, double x2, double y2, const std::string& stroke, double width,
                     const std::string& dash) {
   body_ << "<line x1=\"" << num(x1) << "\" y1=\"" << num(y1) << "\" x2=\"" << num(x2) << "\" y2=\"" << num(y2)
-        << "\" stroke=\"" << escape(stroke) << "\" stroke-width=\"" << num(width) << "\"";
-  if (!dash.empty()) body_ << " stroke-dasharray=\"" << escape(dash) << "\"";
+        << "\" stroke=\"" << escape_html(stroke) << "\" stroke-width=\"" << num(width) << "\"";
+  if (!dash.empty()) body_ << " stroke-dasharray=\"" << escape_html(dash) << "\"";
   body_ << "/>\n";
 }
 
 void Document::polyline(const std::vector<double>& xs, const std::vector<double>& ys,
                         const std::string& stroke, double width, bool closed) {
   if (xs.empty()) return;
-  body_ << (closed ? "<polygon" : "<polyline") << " fill=\"none\" stroke=\"" << escape(stroke)
+  body_ << (closed ? "<polygon" : "<polyline") << " fill=\"none\" stroke=\"" << escape_html(stroke)
         << "\" stroke-width=\"" << num(width) << "\" stroke-linejoin=\"round\" points=\"";
   for (std::size_t i = 0; i < xs.size() && i < ys.size(); ++i)
     body_ << (i ? " " : "") << num(xs[i]) << "," << num(ys[i]);
@@ -64,16 +52,16 @@ void Document::polyline(const std::vector<double>& xs, const std::vector<double>
 
 void Document::circle(double cx, double cy, double r, const std::string& fill) {
   body_ << "<circle cx=\"" << num(cx) << "\" cy=\"" << num(cy) << "\" r=\"" << num(r) << "\" fill=\""
-        << escape(fill) << "\"/>\n";
+        << escape_html(fill) << "\"/>\n";
 }
 
 void Document::text(double x, double y, const std::string& content, double size, const std::string& anchor,
                     double rotate, const std::string& fill) {
   body_ << "<text x=\"" << num(x) << "\" y=\"" << num(y) << "\" font-size=\"" << num(size)
-        << "\" text-anchor=\"" << anchor << "\" fill=\"" << escape(fill) << "\"";
+        << "\" text-anchor=\"" << anchor << "\" fill=\"" << escape_html(fill) << "\"";
   if (rotate != 0.0)
     body_ << " transform=\"rotate(" << num(rotate) << " " << num(x) << " " << num(y) << ")\"";
-  body_ << ">" << escape(content) << "</text>\n";
+  body_ << ">" << escape_html(content) << "</text>\n";
 }
 
 void Document::raw(const std::string& markup) {

@@ -11,8 +11,6 @@ namespace sextant::svg {
 std::string num(double v);
 /// Tick label text: like num() but values within 1e-12 of zero print as "0".
 std::string tick_label(double v);
-/// XML-escapes text content and attribute values.
-std::string escape(const std::string& s);
 
 class Document {
  public:

@@ -31,6 +31,15 @@ MetricStatus check_pair(const PoseList& estimate, const PoseList& reference, std
   return {};
 }
 
+/// The settings' own check, then check_pair.
+template <class Settings>
+MetricStatus check_inputs(const Settings& settings, const PoseList& estimate, const PoseList& reference,
+                          std::size_t min_poses) {
+  std::string why;
+  if (!settings.valid(&why)) return failure(why);
+  return check_pair(estimate, reference, min_poses);
+}
+
 /// E = (ref_i⁻¹ ref_j)⁻¹ (est_i⁻¹ est_j), the relative error used by RPE and KITTI.
 Eigen::Isometry3d relative_error(const PoseList& estimate, const PoseList& reference, std::size_t i,
                                  std::size_t j) {
@@ -211,12 +220,7 @@ std::vector<std::pair<std::size_t, std::size_t>> rpe_pairs(const PoseList& refer
 RpeResult relative_pose_error(const PoseList& estimate, const PoseList& reference,
                               const RpeSettings& settings) {
   RpeResult r;
-  std::string why;
-  if (!settings.valid(&why)) {
-    r.status = failure(why);
-    return r;
-  }
-  r.status = check_pair(estimate, reference, 2);
+  r.status = check_inputs(settings, estimate, reference, 2);
   if (!r.status.ok) return r;
   r.pairs = rpe_pairs(reference, settings);
   if (r.pairs.empty()) {
@@ -248,12 +252,7 @@ bool KittiDriftSettings::valid(std::string* why) const {
 KittiDriftResult kitti_drift(const PoseList& estimate, const PoseList& reference,
                              const KittiDriftSettings& settings) {
   KittiDriftResult r;
-  std::string why;
-  if (!settings.valid(&why)) {
-    r.status = failure(why);
-    return r;
-  }
-  r.status = check_pair(estimate, reference, 2);
+  r.status = check_inputs(settings, estimate, reference, 2);
   if (!r.status.ok) return r;
   const std::vector<double> distance = path_distances(reference);
   double sum_t = 0.0, sum_r = 0.0;

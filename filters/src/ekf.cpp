@@ -6,31 +6,8 @@
 
 namespace sextant {
 
-bool GaussianFilterSettings::valid(std::string* /*why*/) const {
-  return true;
-}
-
 Ekf::Ekf(std::shared_ptr<const SlamModel> model, GaussianFilterSettings settings)
-    : model_(std::move(model)),
-      s_(settings),
-      x_(Eigen::VectorXd::Zero(model_->pose_dim())),
-      P_(Eigen::MatrixXd::Identity(model_->pose_dim(), model_->pose_dim())) {}
-
-int Ekf::num_landmarks() const {
-  return landmark_count(*model_, x_.size());
-}
-
-StepStatus Ekf::finish_step(bool symmetrize) {
-  return detail::finish_moment_step(*model_, x_, P_, s_.symmetrize && symmetrize, s_.check_covariance);
-}
-
-StepResult Ekf::initialize(const Eigen::VectorXd& x0, const Eigen::MatrixXd& P0) {
-  detail::StepClock clock;
-  if (!detail::valid_state(*model_, x0, P0)) return record(StepStatus::kInvalidInput, clock.seconds());
-  x_ = x0;
-  P_ = P0;
-  return record(finish_step(), clock.seconds());
-}
+    : MomentFilter(std::move(model), settings) {}
 
 // eqs. (4.62)–(4.63): only the pose rows and columns of P change, O(n).
 StepResult Ekf::predict(const Eigen::VectorXd& u, const Eigen::MatrixXd& Q) {
@@ -107,9 +84,7 @@ StepResult Ekf::update(const std::vector<Eigen::VectorXd>& zs, const Eigen::Matr
 // eqs. (4.67)–(4.68)
 StepResult Ekf::augment(const Eigen::VectorXd& z, const Eigen::MatrixXd& R) {
   detail::StepClock clock;
-  if (z.size() != model_->observation_dim() || !z.allFinite() ||
-      !detail::square_of(R, model_->observation_dim()))
-    return record(StepStatus::kInvalidInput, clock.seconds());
+  if (!detail::valid_observation(*model_, z, R)) return record(StepStatus::kInvalidInput, clock.seconds());
   const int p = model_->pose_dim(), l = model_->landmark_dim();
   const Eigen::Index n = x_.size();
   const Eigen::VectorXd pose = x_.head(p);

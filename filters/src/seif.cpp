@@ -306,9 +306,7 @@ StepResult Seif::update(const std::vector<Eigen::VectorXd>& zs, const Eigen::Mat
 
 StepResult Seif::augment(const Eigen::VectorXd& z, const Eigen::MatrixXd& R) {
   detail::StepClock clock;
-  if (z.size() != model_->observation_dim() || !z.allFinite() ||
-      !detail::square_of(R, model_->observation_dim()))
-    return finish(StepStatus::kInvalidInput, clock.seconds());
+  if (!detail::valid_observation(*model_, z, R)) return finish(StepStatus::kInvalidInput, clock.seconds());
   const int p = model_->pose_dim(), l = model_->landmark_dim();
   const Eigen::VectorXd pose = mu_.head(p);
   const Eigen::MatrixXd Gv = model_->augment_jacobian_pose(pose, z);

@@ -59,29 +59,7 @@ Eigen::MatrixXd block_join(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B) {
 SigmaPointFilter::SigmaPointFilter(std::string name, std::shared_ptr<const SlamModel> model,
                                    std::unique_ptr<SigmaPointRule> rule, GaussianFilterSettings settings,
                                    std::uint64_t seed)
-    : name_(std::move(name)),
-      model_(std::move(model)),
-      rule_(std::move(rule)),
-      s_(settings),
-      rng_(seed),
-      x_(Eigen::VectorXd::Zero(model_->pose_dim())),
-      P_(Eigen::MatrixXd::Identity(model_->pose_dim(), model_->pose_dim())) {}
-
-int SigmaPointFilter::num_landmarks() const {
-  return landmark_count(*model_, x_.size());
-}
-
-StepStatus SigmaPointFilter::finish_step() {
-  return detail::finish_moment_step(*model_, x_, P_, s_.symmetrize, s_.check_covariance);
-}
-
-StepResult SigmaPointFilter::initialize(const Eigen::VectorXd& x0, const Eigen::MatrixXd& P0) {
-  detail::StepClock clock;
-  if (!detail::valid_state(*model_, x0, P0)) return record(StepStatus::kInvalidInput, clock.seconds());
-  x_ = x0;
-  P_ = P0;
-  return record(finish_step(), clock.seconds());
-}
+    : MomentFilter(std::move(model), settings), name_(std::move(name)), rule_(std::move(rule)), rng_(seed) {}
 
 // Table 4.2 prediction / eqs. (4.73)–(4.76) / (4.99)–(4.100): the state is augmented with u.
 StepResult SigmaPointFilter::predict(const Eigen::VectorXd& u, const Eigen::MatrixXd& Q) {
@@ -144,9 +122,7 @@ StepResult SigmaPointFilter::update(const std::vector<Eigen::VectorXd>& zs, cons
 // Table 4.3 / eq. (4.103): the state is augmented with z and passed through g^a = [x; g(x_v, z)].
 StepResult SigmaPointFilter::augment(const Eigen::VectorXd& z, const Eigen::MatrixXd& R) {
   detail::StepClock clock;
-  if (z.size() != model_->observation_dim() || !z.allFinite() ||
-      !detail::square_of(R, model_->observation_dim()))
-    return record(StepStatus::kInvalidInput, clock.seconds());
+  if (!detail::valid_observation(*model_, z, R)) return record(StepStatus::kInvalidInput, clock.seconds());
   const int p = model_->pose_dim(), l = model_->landmark_dim(), od = model_->observation_dim();
   const Eigen::Index n = x_.size();
   Eigen::VectorXd joint(n + od);

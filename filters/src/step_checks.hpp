@@ -34,6 +34,11 @@ inline bool valid_control(const SlamModel& model, const Eigen::VectorXd& u, cons
   return u.size() == model.control_dim() && u.allFinite() && square_of(Q, model.control_dim());
 }
 
+/// One observation z of a new landmark, with its noise R.
+inline bool valid_observation(const SlamModel& model, const Eigen::VectorXd& z, const Eigen::MatrixXd& R) {
+  return z.size() == model.observation_dim() && z.allFinite() && square_of(R, model.observation_dim());
+}
+
 inline bool valid_observations(const SlamModel& model, int landmarks, const std::vector<Eigen::VectorXd>& zs,
                                const Eigen::MatrixXd& R, const std::vector<int>& associations) {
   if (zs.size() != associations.size() || !square_of(R, model.observation_dim())) return false;

@@ -65,14 +65,10 @@ class IcpMatcher final : public Matcher {
 
  private:
   RegistrationResult run(const PointCloud& input, const Eigen::Isometry3d& initial) const {
+    if (!is_finite(initial)) return not_started(Termination::kNonFiniteInput, input.size(), initial);
     RegistrationResult result;
     result.input_points = input.size();
     result.T = initial;
-    if (!is_finite(initial)) {
-      result.T = Eigen::Isometry3d::Identity();
-      result.why = Termination::kNonFiniteInput;
-      return result;
-    }
     if (tree_.empty() || input.empty()) {
       result.why = Termination::kEmptyInput;
       return result;

@@ -84,17 +84,9 @@ MlndtSettings read_mlndt_settings(const YAML::Node& node, const std::string& fil
   in.read("truncated_layers", s.truncated_layers);
   if (in.read("threads", s.threads) && s.threads < 0)
     in.fail("threads", "threads must be ≥ 0 (0: all hardware threads)");
-  in.read("min_points", s.pyramid.cells.min_points);
-  in.read("max_eigen_ratio", s.pyramid.cells.max_eigen_ratio);
-  in.read("min_spread", s.pyramid.cells.min_spread);
-  std::string solver;
-  if (in.read("solver", solver) && !solver_from_name(solver, s.optimizer.solver))
-    in.fail("solver", "unknown solver '" + solver + "' (known: newton lm ceres)");
+  read_cell_stats_settings(in, s.pyramid.cells);
+  read_optimizer_settings(in, "newton lm ceres", s.optimizer);
   in.read("iterations_per_layer", s.optimizer.iterations_per_stage);
-  in.read("max_iterations", s.optimizer.max_iterations);
-  in.read("epsilon", s.optimizer.epsilon);
-  in.read("line_search", s.optimizer.line_search);
-  read_dof_mask(in, "dof", s.optimizer.dof);
   in.finish();
   std::string why;
   if (!s.valid(&why)) in.fail("", why);
@@ -108,13 +100,8 @@ void MlndtMatcher::set_reference(const PointCloud& reference) {
 }
 
 RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Isometry3d& initial) {
-  if (layers_.empty() || layers_.back().empty()) {
-    RegistrationResult r;
-    r.input_points = input.size();
-    r.why = Termination::kEmptyInput;
-    if (is_finite(initial)) r.T = initial;
-    return r;
-  }
+  if (layers_.empty() || layers_.back().empty())
+    return not_started(Termination::kEmptyInput, input.size(), initial);
   const LayerObjective objective(layers_, settings_, input);
   return optimize(objective, initial, settings_.optimizer);
 }

@@ -7,6 +7,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "sextant/core/settings_reader.hpp"
+
 namespace sextant {
 
 namespace {
@@ -187,6 +189,12 @@ std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const Laye
         NdtGrid::build(reference, bounds.min.cast<double>(), g.cell_edge, g.dims, settings.cells));
   }
   return layers;
+}
+
+void read_cell_stats_settings(SettingsReader& in, CellStatsSettings& s) {
+  in.read("min_points", s.min_points);
+  in.read("max_eigen_ratio", s.max_eigen_ratio);
+  in.read("min_spread", s.min_spread);
 }
 
 }  // namespace sextant

@@ -63,16 +63,8 @@ NdtSettings read_ndt_settings(const YAML::Node& node, const std::string& file) {
   in.read("trilinear", s.trilinear);
   if (in.read("threads", s.threads) && s.threads < 0)
     in.fail("threads", "threads must be ≥ 0 (0: all hardware threads)");
-  in.read("min_points", s.cells.min_points);
-  in.read("max_eigen_ratio", s.cells.max_eigen_ratio);
-  in.read("min_spread", s.cells.min_spread);
-  std::string solver;
-  if (in.read("solver", solver) && !solver_from_name(solver, s.optimizer.solver))
-    in.fail("solver", "unknown solver '" + solver + "' (known: newton lm)");
-  in.read("max_iterations", s.optimizer.max_iterations);
-  in.read("epsilon", s.optimizer.epsilon);
-  in.read("line_search", s.optimizer.line_search);
-  read_dof_mask(in, "dof", s.optimizer.dof);
+  read_cell_stats_settings(in, s.cells);
+  read_optimizer_settings(in, "newton lm", s.optimizer);
   in.finish();
   std::string why;
   if (!s.valid(&why)) in.fail("", why);
@@ -89,13 +81,7 @@ void NdtMatcher::set_reference(const PointCloud& reference) {
 }
 
 RegistrationResult NdtMatcher::align(const PointCloud& input, const Eigen::Isometry3d& initial) {
-  if (grid_.empty()) {
-    RegistrationResult r;
-    r.input_points = input.size();
-    r.why = Termination::kEmptyInput;
-    if (is_finite(initial)) r.T = initial;
-    return r;
-  }
+  if (grid_.empty()) return not_started(Termination::kEmptyInput, input.size(), initial);
   const GaussianObjective objective(grid_, params_, settings_.trilinear, settings_.threads, input);
   return optimize(objective, initial, settings_.optimizer);
 }

@@ -9,6 +9,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "ceres_stage.hpp"
+#include "sextant/core/settings_reader.hpp"
 
 namespace sextant {
 
@@ -234,6 +235,16 @@ bool solver_from_name(const std::string& name, SolverKind& kind) {
   else
     return false;
   return true;
+}
+
+void read_optimizer_settings(SettingsReader& in, const std::string& known_solvers, OptimizerSettings& s) {
+  std::string solver;
+  if (in.read("solver", solver) && !solver_from_name(solver, s.solver))
+    in.fail("solver", "unknown solver '" + solver + "' (known: " + known_solvers + ")");
+  in.read("max_iterations", s.max_iterations);
+  in.read("epsilon", s.epsilon);
+  in.read("line_search", s.line_search);
+  read_dof_mask(in, "dof", s.dof);
 }
 
 std::string to_string(SolverKind kind) {

@@ -90,14 +90,10 @@ class PclPeer : public Matcher {
 
   RegistrationResult align(const PointCloud& input, const Eigen::Isometry3d& initial) override {
     const auto start = std::chrono::steady_clock::now();
+    if (!is_finite(initial)) return not_started(Termination::kNonFiniteInput, input.size(), initial);
     RegistrationResult result;
     result.input_points = input.size();
     result.T = initial;
-    if (!is_finite(initial)) {
-      result.T = Eigen::Isometry3d::Identity();
-      result.why = Termination::kNonFiniteInput;
-      return result;
-    }
     const PclCloud::Ptr source = to_pcl(input);
     if (!target_ || target_->empty() || source->empty()) {
       result.why = Termination::kEmptyInput;

@@ -23,4 +23,12 @@ std::string RegistrationResult::summary() const {
                      matched_points, input_points, seconds);
 }
 
+RegistrationResult not_started(Termination why, std::size_t input_points, const Eigen::Isometry3d& initial) {
+  RegistrationResult r;
+  r.why = why;
+  r.input_points = input_points;
+  if (is_finite(initial)) r.T = initial;
+  return r;
+}
+
 }  // namespace sextant

@@ -1,8 +1,7 @@
 #pragma once
-// Helpers shared by the core tests: a fresh temporary folder per test, and an expectation that
-// a call throws an InputError whose message names the file, the place and the problem.
+// Helpers shared by the core tests (plus sextant_test/temp_dir.hpp): 3DTK's pose formula, and an expectation
+// that a call throws an InputError whose message names the file, the place and the problem.
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -12,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "sextant/core/error.hpp"
+#include "sextant_test/temp_dir.hpp"
 
 namespace sextant::test {
 
@@ -38,32 +38,6 @@ inline Eigen::Matrix4d threedtk_euler_to_matrix4(const Eigen::Vector3d& t, const
                         t.z(),
                         1};
   return Eigen::Map<const Eigen::Matrix4d>(m);  // Eigen's default storage is column-major
-}
-
-/// A temporary folder removed at the end of the test.
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = std::filesystem::temp_directory_path() / ("sextant_core_" + std::string(info->test_suite_name()) +
-                                                      "_" + info->name() + "_" + std::to_string(::getpid()));
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  std::filesystem::path path_;
-};
-
-inline void write_text(const std::filesystem::path& file, const std::string& text) {
-  std::ofstream out(file, std::ios::binary);
-  out << text;
 }
 
 inline std::filesystem::path data_dir() {

@@ -9,7 +9,7 @@
 namespace sextant {
 namespace {
 
-using test::TempFolder;
+using test::TempDir;
 using test::write_text;
 
 const char* kValid = R"(name: demo
@@ -31,7 +31,7 @@ quick:
 )";
 
 /// Parses `text` from a file and returns the InputError's message ("" when it parses).
-std::string error_of(const TempFolder& tmp, const std::string& text, bool validate_kind = false) {
+std::string error_of(const TempDir& tmp, const std::string& text, bool validate_kind = false) {
   const auto file = tmp / "exp.yaml";
   write_text(file, text);
   try {
@@ -51,7 +51,7 @@ std::string replace(std::string text, const std::string& from, const std::string
 }
 
 TEST(ExperimentConfig, ReadsTheSchemaAndAppliesQuickOverrides) {
-  TempFolder tmp;
+  TempDir tmp;
   write_text(tmp / "exp.yaml", kValid);
   const ExperimentConfig full = read_experiment_config(tmp / "exp.yaml", false);
   EXPECT_EQ(full.name, "demo");
@@ -72,7 +72,7 @@ TEST(ExperimentConfig, ReadsTheSchemaAndAppliesQuickOverrides) {
 }
 
 TEST(ExperimentConfig, UnknownKeyNamesFileLineAndKey) {
-  TempFolder tmp;
+  TempDir tmp;
   const std::string msg = error_of(tmp, replace(kValid, "seed: 3", "sed: 3"));
   EXPECT_NE(msg.find("exp.yaml"), std::string::npos) << msg;
   EXPECT_NE(msg.find("line 3"), std::string::npos) << msg;
@@ -80,14 +80,14 @@ TEST(ExperimentConfig, UnknownKeyNamesFileLineAndKey) {
 }
 
 TEST(ExperimentConfig, WrongTypeNamesFileLineAndKey) {
-  TempFolder tmp;
+  TempDir tmp;
   const std::string msg = error_of(tmp, replace(kValid, "repetitions: 2", "repetitions: many"));
   EXPECT_NE(msg.find("line 4"), std::string::npos) << msg;
   EXPECT_NE(msg.find("'repetitions'"), std::string::npos) << msg;
 }
 
 TEST(ExperimentConfig, BadValueNamesFileLineAndKey) {
-  TempFolder tmp;
+  TempDir tmp;
   std::string msg = error_of(tmp, replace(kValid, "repetitions: 2", "repetitions: 0"));
   EXPECT_NE(msg.find("line 4"), std::string::npos) << msg;
   EXPECT_NE(msg.find("repetitions"), std::string::npos) << msg;
@@ -105,7 +105,7 @@ TEST(ExperimentConfig, BadValueNamesFileLineAndKey) {
 }
 
 TEST(ExperimentConfig, ErrorsInsideTheQuickBlockPointIntoIt) {
-  TempFolder tmp;
+  TempDir tmp;
   const auto file = tmp / "exp.yaml";
   write_text(file, replace(kValid, "  repetitions: 1", "  repetitions: -1"));
   try {
@@ -117,7 +117,7 @@ TEST(ExperimentConfig, ErrorsInsideTheQuickBlockPointIntoIt) {
 }
 
 TEST(ExperimentConfig, KindValidationNamesTheKey) {
-  TempFolder tmp;
+  TempDir tmp;
   const std::string msg = error_of(tmp, replace(kValid, "sleep_ms: 0", "sleep_ms: -5"), true);
   EXPECT_NE(msg.find("line 12"), std::string::npos) << msg;
   EXPECT_NE(msg.find("sleep_ms"), std::string::npos) << msg;

@@ -12,13 +12,13 @@
 namespace sextant {
 namespace {
 
-using test::TempFolder;
+using test::TempDir;
 
 const std::filesystem::path kConfig =
     std::filesystem::path(SEXTANT_SOURCE_DIR) / "experiments" / "e18_metric_examples.yaml";
 
 TEST(E18, ResultsAndReportHoldTheThesisValues) {
-  TempFolder tmp;
+  TempDir tmp;
   RunnerOptions o;
   o.results_root = tmp / "results";
   o.jobs = 2;
@@ -65,7 +65,7 @@ TEST(E18, ReportRendersInHeadlessChromium) {
   if (!std::filesystem::exists(script)) GTEST_SKIP() << "scripts/check_report_html.sh is not in the tree";
   if (std::system("command -v chromium >/dev/null 2>&1 || command -v chromium-browser >/dev/null 2>&1") != 0)
     GTEST_SKIP() << "chromium is not installed (apt-get install chromium) — the HTML check is skipped";
-  TempFolder tmp;
+  TempDir tmp;
   RunnerOptions o;
   o.results_root = tmp / "results";
   o.progress = false;

@@ -13,7 +13,7 @@
 namespace sextant {
 namespace {
 
-using test::TempFolder;
+using test::TempDir;
 
 // Three consecutive pairs of the default campus (only scans 0–3 are generated); ML-NDT (LM)
 // from the odometry guess. Measured errors: 3.6, 3.5 and 7.1 cm, below 0.5°.
@@ -39,7 +39,7 @@ reference:
 )";
 
 TEST(RegistrationKind, TinyExperimentRunsEndToEnd) {
-  TempFolder tmp;
+  TempDir tmp;
   test::write_text(tmp / "e99_reg_tiny.yaml", kTiny);
   RunnerOptions o;
   o.results_root = tmp / "results";
@@ -83,7 +83,7 @@ TEST(RegistrationKind, TinyExperimentRunsEndToEnd) {
 }
 
 TEST(RegistrationKind, UnknownMatcherIsRejectedWithFileLineAndKey) {
-  TempFolder tmp;
+  TempDir tmp;
   std::string text = kTiny;
   const std::string from = "matcher: mlndt";
   text.replace(text.find(from), from.size(), "matcher: mlndtt");
@@ -103,7 +103,7 @@ TEST(RegistrationKind, UnknownMatcherIsRejectedWithFileLineAndKey) {
 }
 
 TEST(RegistrationKind, SweepAxesMustFitThePairSource) {
-  TempFolder tmp;
+  TempDir tmp;
   std::string text = kTiny;
   text.replace(text.find("  pair: {from: 0, to: 2}"), 24, "  pair: {from: 0, to: 2}\n  yaw: [0, 5]");
   const auto file = tmp / "bad.yaml";

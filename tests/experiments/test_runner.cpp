@@ -18,9 +18,9 @@
 namespace sextant {
 namespace {
 
-using test::TempFolder;
+using test::TempDir;
 
-RunnerOptions options_for(const TempFolder& tmp, const std::string& results = "results") {
+RunnerOptions options_for(const TempDir& tmp, const std::string& results = "results") {
   RunnerOptions o;
   o.results_root = tmp / results;
   o.jobs = 2;
@@ -34,7 +34,7 @@ std::size_t count_lines(const std::filesystem::path& file) {
 }
 
 TEST(Runner, WritesRowsCsvAndProvenanceThenSkipsFinishedRuns) {
-  TempFolder tmp;
+  TempDir tmp;
   test::write_text(tmp / "e.yaml", test::selftest_yaml("rt", 3, 1, 0));
   const RunnerSummary first = run_experiment(tmp / "e.yaml", options_for(tmp));
   EXPECT_EQ(first.total, 6u);
@@ -57,7 +57,7 @@ TEST(Runner, WritesRowsCsvAndProvenanceThenSkipsFinishedRuns) {
 }
 
 TEST(Runner, AnInterruptedSweepIsCompletedWithoutDuplicates) {
-  TempFolder tmp;
+  TempDir tmp;
   test::write_text(tmp / "e.yaml", test::selftest_yaml("part", 5, 1, 0));
   RunnerOptions o = options_for(tmp);
   o.max_runs = 4;
@@ -69,7 +69,7 @@ TEST(Runner, AnInterruptedSweepIsCompletedWithoutDuplicates) {
 }
 
 TEST(Runner, ToleratesATruncatedLastLine) {
-  TempFolder tmp;
+  TempDir tmp;
   test::write_text(tmp / "e.yaml", test::selftest_yaml("trunc", 2, 1, 0));
   run_experiment(tmp / "e.yaml", options_for(tmp));
   const auto jsonl = tmp / "results" / "trunc" / kRunsJsonl;
@@ -90,7 +90,7 @@ TEST(Runner, ToleratesATruncatedLastLine) {
 }
 
 TEST(Runner, ShardsMergeIntoTheWholeSweep) {
-  TempFolder tmp;
+  TempDir tmp;
   test::write_text(tmp / "e.yaml", test::selftest_yaml("sharded", 5, 2, 0));
   std::vector<std::filesystem::path> roots;
   std::size_t executed = 0;
@@ -138,7 +138,7 @@ int wait_for(pid_t pid) {
 }
 
 TEST(Runner, ResumesAfterSigkillMidSweep) {
-  TempFolder tmp;
+  TempDir tmp;
   test::write_text(tmp / "e.yaml", test::selftest_yaml("killed", 30, 1, 40));  // 60 runs × 40 ms on 2 threads
   const auto jsonl = tmp / "results" / "killed" / kRunsJsonl;
   const std::vector<std::string> args{SEXTANT_BINARY,
@@ -189,7 +189,7 @@ namespace sextant {
 namespace {
 
 TEST(Cli, ReproduceRunsEveryConfigOfAFolderAndWritesTheReport) {
-  TempFolder tmp;
+  TempDir tmp;
   std::filesystem::create_directories(tmp / "configs");
   std::filesystem::copy_file(
       std::filesystem::path(SEXTANT_SOURCE_DIR) / "experiments" / "e18_metric_examples.yaml",
@@ -212,7 +212,7 @@ TEST(Cli, ReproduceRunsEveryConfigOfAFolderAndWritesTheReport) {
 }
 
 TEST(Cli, ABadConfigStopsWithFileLineAndKey) {
-  TempFolder tmp;
+  TempDir tmp;
   test::write_text(tmp / "bad.yaml", test::selftest_yaml("bad", 2, 1, 0) + "colour: blue\n");
   const std::string command = std::string("'") + SEXTANT_BINARY + "' run '" + (tmp / "bad.yaml").string() +
                               "' --results '" + (tmp / "results").string() + "' 2> '" +

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "pose_errors.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/matchers/icp.hpp"
@@ -13,7 +14,10 @@
 namespace sextant {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
+using test::kDeg;
+using test::pose;
+using test::rotation_error;
+using test::translation_error;
 
 /// A small structured scene: sloped ground, two walls, a box and a pole, sampled at random.
 PointCloud synthetic_scene(Rng& rng, std::size_t n, double noise = 0.005) {
@@ -45,17 +49,6 @@ PointCloud synthetic_scene(Rng& rng, std::size_t n, double noise = 0.005) {
     cloud.push_back(p.cast<float>());
   }
   return cloud;
-}
-
-Eigen::Isometry3d pose(double x, double y, double z, double a_deg, double b_deg, double g_deg) {
-  return to_isometry(Pose6{x, y, z, a_deg * kDeg, b_deg * kDeg, g_deg * kDeg});
-}
-
-double translation_error(const Eigen::Isometry3d& truth, const Eigen::Isometry3d& estimate) {
-  return translation_norm(inverse(truth) * estimate);
-}
-double rotation_error(const Eigen::Isometry3d& truth, const Eigen::Isometry3d& estimate) {
-  return rotation_angle(inverse(truth) * estimate);
 }
 
 // ---------------------------------------------------------------- k-d tree

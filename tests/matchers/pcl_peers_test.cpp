@@ -9,6 +9,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "pose_errors.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/cloud_io.hpp"
 #include "sextant/matchers/matcher.hpp"
@@ -18,18 +19,10 @@
 namespace sextant {
 namespace {
 
-constexpr double kDeg = M_PI / 180.0;
-
-Eigen::Isometry3d pose(double x, double y, double z, double a_deg, double b_deg, double g_deg) {
-  return to_isometry(Pose6{x, y, z, a_deg * kDeg, b_deg * kDeg, g_deg * kDeg});
-}
-
-double translation_error(const Eigen::Isometry3d& truth, const Eigen::Isometry3d& estimate) {
-  return translation_norm(inverse(truth) * estimate);
-}
-double rotation_error(const Eigen::Isometry3d& truth, const Eigen::Isometry3d& estimate) {
-  return rotation_angle(inverse(truth) * estimate);
-}
+using test::kDeg;
+using test::pose;
+using test::rotation_error;
+using test::translation_error;
 
 Eigen::Isometry3d read_matrix(const std::string& file) {
   std::ifstream in(file);

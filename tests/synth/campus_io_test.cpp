@@ -8,6 +8,7 @@
 
 #include "sextant/core/io/uos.hpp"
 #include "sextant/synth/campus_io.hpp"
+#include "sextant_test/temp_dir.hpp"
 #include "small_campus.hpp"
 
 namespace sextant::synth {
@@ -15,33 +16,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class TempDir {
- public:
-  TempDir() {
-    path_ = fs::temp_directory_path() /
-            ("sextant-synth-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
-             ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
-std::string slurp(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using sextant::test::read_text;
+using sextant::test::TempDir;
 
 std::map<std::string, std::string> folder_contents(const fs::path& root) {
   std::map<std::string, std::string> out;
   for (const auto& entry : fs::recursive_directory_iterator(root))
-    if (entry.is_regular_file()) out[fs::relative(entry.path(), root).string()] = slurp(entry.path());
+    if (entry.is_regular_file()) out[fs::relative(entry.path(), root).string()] = read_text(entry.path());
   return out;
 }
 
@@ -61,7 +42,7 @@ TEST(CampusIo, SameSeedGivesByteIdenticalFiles) {
     EXPECT_TRUE(a.count(expected)) << expected;
   // Different seed → different bytes.
   write_campus(generate_campus(test::small_campus(5), 22), tmp.path() / "c");
-  EXPECT_NE(slurp(tmp.path() / "a" / "scan000.3d"), slurp(tmp.path() / "c" / "scan000.3d"));
+  EXPECT_NE(read_text(tmp.path() / "a" / "scan000.3d"), read_text(tmp.path() / "c" / "scan000.3d"));
 }
 
 TEST(CampusIo, UosRoundTripReproducesCloudsAndPoses) {

@@ -19,16 +19,12 @@ struct GaussianFilterSettings {
   bool valid(std::string* why) const;
 };
 
-class Ekf final : public Filter {
+/// What the EKF and the sigma-point filters share: the model, the settings and the moments
+/// (x, P), their initialisation and the end-of-step normalisation and checks.
+class MomentFilter : public Filter {
  public:
-  Ekf(std::shared_ptr<const SlamModel> model, GaussianFilterSettings settings = {});
-  std::string name() const override { return "ekf"; }
   const SlamModel& model() const override { return *model_; }
   StepResult initialize(const Eigen::VectorXd& x0, const Eigen::MatrixXd& P0) override;
-  StepResult predict(const Eigen::VectorXd& u, const Eigen::MatrixXd& Q) override;
-  StepResult update(const std::vector<Eigen::VectorXd>& zs, const Eigen::MatrixXd& R,
-                    const std::vector<int>& associations) override;
-  StepResult augment(const Eigen::VectorXd& z, const Eigen::MatrixXd& R) override;
   Eigen::VectorXd mean() const override { return x_; }
   Eigen::MatrixXd covariance() const override { return P_; }
   Eigen::MatrixXd joint_covariance(const std::vector<int>& landmarks) const override {
@@ -36,42 +32,43 @@ class Ekf final : public Filter {
   }
   int num_landmarks() const override;
 
- private:
+ protected:
+  MomentFilter(std::shared_ptr<const SlamModel> model, GaussianFilterSettings settings);
+  /// Wraps angles, normalises landmarks, symmetrises P (when the settings and `symmetrize` say
+  /// so) and checks it (step_checks.hpp).
   StepStatus finish_step(bool symmetrize = true);
+
   std::shared_ptr<const SlamModel> model_;
   GaussianFilterSettings s_;
   Eigen::VectorXd x_;
   Eigen::MatrixXd P_;
 };
 
-class SigmaPointFilter final : public Filter {
+class Ekf final : public MomentFilter {
+ public:
+  Ekf(std::shared_ptr<const SlamModel> model, GaussianFilterSettings settings = {});
+  std::string name() const override { return "ekf"; }
+  StepResult predict(const Eigen::VectorXd& u, const Eigen::MatrixXd& Q) override;
+  StepResult update(const std::vector<Eigen::VectorXd>& zs, const Eigen::MatrixXd& R,
+                    const std::vector<int>& associations) override;
+  StepResult augment(const Eigen::VectorXd& z, const Eigen::MatrixXd& R) override;
+};
+
+class SigmaPointFilter final : public MomentFilter {
  public:
   SigmaPointFilter(std::string name, std::shared_ptr<const SlamModel> model,
                    std::unique_ptr<SigmaPointRule> rule, GaussianFilterSettings settings = {},
                    std::uint64_t seed = 1);
   std::string name() const override { return name_; }
-  const SlamModel& model() const override { return *model_; }
-  StepResult initialize(const Eigen::VectorXd& x0, const Eigen::MatrixXd& P0) override;
   StepResult predict(const Eigen::VectorXd& u, const Eigen::MatrixXd& Q) override;
   StepResult update(const std::vector<Eigen::VectorXd>& zs, const Eigen::MatrixXd& R,
                     const std::vector<int>& associations) override;
   StepResult augment(const Eigen::VectorXd& z, const Eigen::MatrixXd& R) override;
-  Eigen::VectorXd mean() const override { return x_; }
-  Eigen::MatrixXd covariance() const override { return P_; }
-  Eigen::MatrixXd joint_covariance(const std::vector<int>& landmarks) const override {
-    return joint_block(*model_, P_, landmarks);
-  }
-  int num_landmarks() const override;
 
  private:
-  StepStatus finish_step();
   std::string name_;
-  std::shared_ptr<const SlamModel> model_;
   std::unique_ptr<SigmaPointRule> rule_;
-  GaussianFilterSettings s_;
   Rng rng_;
-  Eigen::VectorXd x_;
-  Eigen::MatrixXd P_;
 };
 
 }  // namespace sextant

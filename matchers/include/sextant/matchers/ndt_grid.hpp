@@ -22,6 +22,10 @@ struct CellStatsSettings {
   bool valid(std::string* why) const;
 };
 
+class SettingsReader;
+/// Reads min_points, max_eigen_ratio and min_spread at the reader's level.
+void read_cell_stats_settings(SettingsReader& in, CellStatsSettings& s);
+
 /// One cell's normal distribution in the hot-loop layout: mean and the upper triangle of C⁻¹.
 struct CellGaussian {
   float mean[3];

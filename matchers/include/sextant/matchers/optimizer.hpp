@@ -31,6 +31,10 @@ struct OptimizerSettings {
   bool valid(std::string* why) const;
 };
 
+/// Reads the optimiser keys the NDT matchers share: solver (message lists `known_solvers`),
+/// max_iterations, epsilon, line_search and dof.
+void read_optimizer_settings(SettingsReader& in, const std::string& known_solvers, OptimizerSettings& s);
+
 /// What the loop optimises. Scores are minimised.
 class StagedObjective {
  public:

@@ -49,4 +49,8 @@ struct RegistrationResult {
   std::string summary() const;
 };
 
+/// A registration that could not start (e.g. no reference model): not converged for `why`, T the
+/// initial guess when it is finite (identity otherwise).
+RegistrationResult not_started(Termination why, std::size_t input_points, const Eigen::Isometry3d& initial);
+
 }  // namespace sextant

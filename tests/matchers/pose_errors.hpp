@@ -1,0 +1,28 @@
+#pragma once
+// Poses in degrees and the error of an estimated transform, for the matcher tests.
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+#include "sextant/core/pose.hpp"
+
+namespace sextant::test {
+
+constexpr double kDeg = M_PI / 180.0;
+
+/// T from x, y, z [m] and α, β, γ [deg] (eq. 3.8).
+inline Eigen::Isometry3d pose(double x, double y, double z, double a_deg, double b_deg, double g_deg) {
+  return to_isometry(Pose6{x, y, z, a_deg * kDeg, b_deg * kDeg, g_deg * kDeg});
+}
+
+/// ‖t‖ of truth⁻¹·estimate [m].
+inline double translation_error(const Eigen::Isometry3d& truth, const Eigen::Isometry3d& estimate) {
+  return translation_norm(inverse(truth) * estimate);
+}
+
+/// Rotation angle of truth⁻¹·estimate [rad].
+inline double rotation_error(const Eigen::Isometry3d& truth, const Eigen::Isometry3d& estimate) {
+  return rotation_angle(inverse(truth) * estimate);
+}
+
+}  // namespace sextant::test
