@@ -21,7 +21,7 @@ p.sx-note{font-size:.85em;color:#555}
 figure{margin:1em 0}figure img{max-width:100%;border:1px solid #eee}figcaption{font-size:.9em;color:#444}
 ul.claims{list-style:none;padding-left:0}ul.claims li{margin:.4em 0;padding:.4em .6em;border-left:4px solid #999;background:#fafafa}
 .verdict{font-weight:bold;padding:0 .4em;border-radius:3px;color:#fff}
-.v-holds{background:#2a7d2a}.v-does-not-hold{background:#b22222}.v-not-comparable{background:#777}
+.v-holds{background:#2a7d2a}.v-does-not-hold{background:#b22222}.v-inconclusive{background:#b8860b}.v-not-comparable{background:#777}
 li.c-holds{border-left-color:#2a7d2a}li.c-does-not-hold{border-left-color:#b22222}
 .evidence{display:block;font-size:.88em;color:#444;margin-top:.2em}
 dl.provenance{display:grid;grid-template-columns:max-content auto;gap:.2em 1em;font-size:.9em}
@@ -32,6 +32,7 @@ std::string verdict_class(Verdict v) {
   switch (v) {
     case Verdict::holds: return "holds";
     case Verdict::does_not_hold: return "does-not-hold";
+    case Verdict::inconclusive: return "inconclusive";
     case Verdict::not_comparable: return "not-comparable";
   }
   return "not-comparable";
@@ -53,6 +54,7 @@ std::string to_string(Verdict verdict) {
   switch (verdict) {
     case Verdict::holds: return "holds";
     case Verdict::does_not_hold: return "does not hold";
+    case Verdict::inconclusive: return "inconclusive";
     case Verdict::not_comparable: return "not comparable";
   }
   return "not comparable";
@@ -104,7 +106,7 @@ HtmlSection& HtmlReport::add_section(const std::string& id, const std::string& t
 }
 
 std::string HtmlReport::render() const {
-  std::array<std::size_t, 3> counts{};
+  std::array<std::size_t, 4> counts{};
   for (const HtmlSection& s : sections)
     for (const Claim& c : s.claims()) ++counts[static_cast<std::size_t>(c.verdict)];
   std::ostringstream out;
@@ -112,10 +114,11 @@ std::string HtmlReport::render() const {
       << escape_html(title) << "</title>\n<style>\n"
       << kStyle << "</style>\n</head>\n<body>\n<h1>" << escape_html(title) << "</h1>\n";
   if (!subtitle.empty()) out << "<p>" << escape_html(subtitle) << "</p>\n";
-  if (counts[0] + counts[1] + counts[2] > 0)
+  if (counts[0] + counts[1] + counts[2] + counts[3] > 0)
     out << "<p class=\"summary\">Claims: <span class=\"verdict v-holds\">" << counts[0]
         << " hold</span> <span class=\"verdict v-does-not-hold\">" << counts[1]
-        << " do not hold</span> <span class=\"verdict v-not-comparable\">" << counts[2]
+        << " do not hold</span> <span class=\"verdict v-inconclusive\">" << counts[2]
+        << " inconclusive</span> <span class=\"verdict v-not-comparable\">" << counts[3]
         << " not comparable</span></p>\n";
   if (!sections.empty()) {
     out << "<nav><ul>\n";

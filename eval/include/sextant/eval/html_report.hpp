@@ -19,15 +19,22 @@
 
 namespace sextant {
 
-enum class Verdict { holds, does_not_hold, not_comparable };
+/// A claim's outcome, decided on an interval (see verdict.hpp): `inconclusive` when the interval
+/// straddles the claim, `not_comparable` when there is nothing to decide on.
+enum class Verdict { holds, does_not_hold, inconclusive, not_comparable };
 
-/// "holds", "does not hold", "not comparable".
+/// "holds", "does not hold", "inconclusive", "not comparable".
 std::string to_string(Verdict verdict);
+
+/// A thesis claim is counted on the front page; a sanity check (e.g. "beats the odometry guess")
+/// guards the experiment itself and is listed apart from the thesis' claims.
+enum class ClaimKind { thesis, sanity };
 
 struct Claim {
   std::string statement;  ///< the thesis' claim, e.g. "ML-NDT is about 4× faster than NDT"
   Verdict verdict = Verdict::not_comparable;
   std::string evidence;  ///< the numbers behind the verdict
+  ClaimKind kind = ClaimKind::thesis;
 };
 
 class HtmlSection {
