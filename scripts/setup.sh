@@ -8,6 +8,9 @@ cd "$(dirname "$0")/.."
 packages=(build-essential cmake pkg-config git
           libeigen3-dev libceres-dev libpcl-dev libgeographiclib-dev libyaml-cpp-dev libtbb-dev
           libcli11-dev libfmt-dev libbenchmark-dev libgtest-dev libopenmpi-dev)
+# Further packages a caller needs (scripts/test.sh: chromium, which renders the report in the tests).
+read -r -a extra <<<"${SEXTANT_EXTRA_PACKAGES:-}"
+packages+=("${extra[@]}")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -2,7 +2,8 @@
 # Setup + build + the whole test suite (the README's second command; CI runs it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh -DSEXTANT_WERROR=ON "$@"
+# The report tests render every generated page and figure in headless Chromium: install it too.
+SEXTANT_EXTRA_PACKAGES="chromium ${SEXTANT_EXTRA_PACKAGES:-}" scripts/setup.sh -DSEXTANT_WERROR=ON "$@"
 jobs=$(nproc 2>/dev/null || echo 2)
 cd build
 ctest --output-on-failure -j"$jobs"

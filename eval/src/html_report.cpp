@@ -23,6 +23,8 @@ ul.claims{list-style:none;padding-left:0}ul.claims li{margin:.4em 0;padding:.4em
 .verdict{font-weight:bold;padding:0 .4em;border-radius:3px;color:#fff}
 .v-holds{background:#2a7d2a}.v-does-not-hold{background:#b22222}.v-inconclusive{background:#b8860b}.v-not-comparable{background:#777}
 li.c-holds{border-left-color:#2a7d2a}li.c-does-not-hold{border-left-color:#b22222}
+li.c-inconclusive{border-left-color:#b8860b}
+table.overview td{vertical-align:top}tr.c-holds td:first-child{border-left:4px solid #2a7d2a}tr.c-does-not-hold td:first-child{border-left:4px solid #b22222}tr.c-inconclusive td:first-child{border-left:4px solid #b8860b}
 .evidence{display:block;font-size:.88em;color:#444;margin-top:.2em}
 dl.provenance{display:grid;grid-template-columns:max-content auto;gap:.2em 1em;font-size:.9em}
 dl.provenance dt{font-weight:bold}dl.provenance dd{margin:0;font-family:monospace;white-space:pre-wrap}
@@ -91,10 +93,14 @@ std::string HtmlSection::render() const {
   std::ostringstream out;
   out << "<section id=\"" << escape_html(id_) << "\">\n<h2>" << escape_html(title_) << "</h2>\n";
   for (const std::string& b : blocks_) out << b;
-  if (!claims_.empty()) {
-    out << "<h3>Claims of the thesis</h3>\n<ul class=\"claims\">\n";
-    for (const Claim& c : claims_) out << render_claim(c);
-    out << "</ul>\n";
+  for (ClaimKind kind : {ClaimKind::thesis, ClaimKind::sanity}) {
+    std::string items;
+    for (const Claim& c : claims_)
+      if (c.kind == kind) items += render_claim(c);
+    if (items.empty()) continue;
+    out << (kind == ClaimKind::thesis ? "<h3>Claims of the thesis</h3>\n" : "<h3>Sanity checks</h3>\n")
+        << "<ul class=\"claims\">\n"
+        << items << "</ul>\n";
   }
   out << "</section>\n";
   return out.str();
@@ -107,8 +113,16 @@ HtmlSection& HtmlReport::add_section(const std::string& id, const std::string& t
 
 std::string HtmlReport::render() const {
   std::array<std::size_t, 4> counts{};
+  std::size_t sanity = 0, sanity_held = 0;
   for (const HtmlSection& s : sections)
-    for (const Claim& c : s.claims()) ++counts[static_cast<std::size_t>(c.verdict)];
+    for (const Claim& c : s.claims()) {
+      if (c.kind == ClaimKind::sanity) {
+        ++sanity;
+        sanity_held += c.verdict == Verdict::holds;
+      } else {
+        ++counts[static_cast<std::size_t>(c.verdict)];
+      }
+    }
   std::ostringstream out;
   out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>"
       << escape_html(title) << "</title>\n<style>\n"
@@ -119,7 +133,12 @@ std::string HtmlReport::render() const {
         << " hold</span> <span class=\"verdict v-does-not-hold\">" << counts[1]
         << " do not hold</span> <span class=\"verdict v-inconclusive\">" << counts[2]
         << " inconclusive</span> <span class=\"verdict v-not-comparable\">" << counts[3]
-        << " not comparable</span></p>\n";
+        << " not comparable</span>"
+        << (sanity > 0
+                ? "; sanity checks passed: " + std::to_string(sanity_held) + " of " + std::to_string(sanity)
+                : std::string())
+        << "</p>\n";
+  out << front_html;
   if (!sections.empty()) {
     out << "<nav><ul>\n";
     for (const HtmlSection& s : sections)

@@ -98,7 +98,8 @@ Interval mean_interval(const std::vector<double>& values, double confidence) {
   return {mean, mean - z * se, mean + z * se, confidence, v.size()};
 }
 
-Interval bootstrap_median(const std::vector<double>& values, std::uint64_t seed, double confidence, int resamples) {
+Interval bootstrap_median(const std::vector<double>& values, std::uint64_t seed, double confidence,
+                          int resamples) {
   const std::vector<double> v = finite_values(values);
   if (v.empty() || resamples < 1) return undefined(confidence, v.size());
   Rng rng(seed);
@@ -111,8 +112,9 @@ Interval bootstrap_median(const std::vector<double>& values, std::uint64_t seed,
   return percentile_interval(median_copy(v), draws, confidence, v.size());
 }
 
-Interval bootstrap_ratio_of_medians(const std::vector<double>& numerator, const std::vector<double>& denominator,
-                                    std::uint64_t seed, double confidence, int resamples) {
+Interval bootstrap_ratio_of_medians(const std::vector<double>& numerator,
+                                    const std::vector<double>& denominator, std::uint64_t seed,
+                                    double confidence, int resamples) {
   const std::vector<double> a = finite_values(numerator), b = finite_values(denominator);
   if (a.empty() || b.empty() || resamples < 1) return undefined(confidence, std::min(a.size(), b.size()));
   Rng rng(seed);
@@ -123,7 +125,8 @@ Interval bootstrap_ratio_of_medians(const std::vector<double>& numerator, const 
     resample(b, sb, rng);
     draws.push_back(median_of(sa) / median_of(sb));
   }
-  return percentile_interval(median_copy(a) / median_copy(b), draws, confidence, std::min(a.size(), b.size()));
+  return percentile_interval(median_copy(a) / median_copy(b), draws, confidence,
+                             std::min(a.size(), b.size()));
 }
 
 Interval bootstrap_paired_mean_difference(const std::vector<double>& a, const std::vector<double>& b,
@@ -154,14 +157,16 @@ double mcnemar_p_value(std::size_t only_a, std::size_t only_b) {
   // 2 · P(X ≤ k) for X ~ Binomial(n, 1/2), summed in log space.
   double tail = 0.0;
   for (std::size_t i = 0; i <= k; ++i) {
-    const double log_term = std::lgamma(static_cast<double>(n) + 1.0) - std::lgamma(static_cast<double>(i) + 1.0) -
-                            std::lgamma(static_cast<double>(n - i) + 1.0) - static_cast<double>(n) * std::log(2.0);
+    const double log_term =
+        std::lgamma(static_cast<double>(n) + 1.0) - std::lgamma(static_cast<double>(i) + 1.0) -
+        std::lgamma(static_cast<double>(n - i) + 1.0) - static_cast<double>(n) * std::log(2.0);
     tail += std::exp(log_term);
   }
   return std::min(1.0, 2.0 * tail);
 }
 
-PairedRates compare_paired_successes(const std::vector<bool>& a, const std::vector<bool>& b, double confidence) {
+PairedRates compare_paired_successes(const std::vector<bool>& a, const std::vector<bool>& b,
+                                     double confidence) {
   PairedRates r;
   r.n = std::min(a.size(), b.size());
   std::size_t both = 0, neither = 0;
@@ -186,11 +191,14 @@ PairedRates compare_paired_successes(const std::vector<bool>& a, const std::vect
   const double denom = (a1 + b1) * (c1 + d1) * (a1 + c1) * (b1 + d1);
   const double phi = denom > 0.0 ? (a1 * d1 - b1 * c1) / std::sqrt(denom) : 0.0;
   const double p1 = w1.estimate, p2 = w2.estimate;
-  const double delta = std::sqrt(std::max(
-      0.0, (p1 - w1.lo) * (p1 - w1.lo) - 2.0 * phi * (p1 - w1.lo) * (w2.hi - p2) + (w2.hi - p2) * (w2.hi - p2)));
-  const double epsilon = std::sqrt(std::max(
-      0.0, (w1.hi - p1) * (w1.hi - p1) - 2.0 * phi * (w1.hi - p1) * (p2 - w2.lo) + (p2 - w2.lo) * (p2 - w2.lo)));
-  r.difference = {p1 - p2, std::max(-1.0, p1 - p2 - delta), std::min(1.0, p1 - p2 + epsilon), confidence, r.n};
+  const double delta =
+      std::sqrt(std::max(0.0, (p1 - w1.lo) * (p1 - w1.lo) - 2.0 * phi * (p1 - w1.lo) * (w2.hi - p2) +
+                                  (w2.hi - p2) * (w2.hi - p2)));
+  const double epsilon =
+      std::sqrt(std::max(0.0, (w1.hi - p1) * (w1.hi - p1) - 2.0 * phi * (w1.hi - p1) * (p2 - w2.lo) +
+                                  (p2 - w2.lo) * (p2 - w2.lo)));
+  r.difference = {p1 - p2, std::max(-1.0, p1 - p2 - delta), std::min(1.0, p1 - p2 + epsilon), confidence,
+                  r.n};
   return r;
 }
 
@@ -261,8 +269,8 @@ std::string describe(const PairedRates& rates, int precision) {
                      std::to_string(rates.b_successes) + "/" + std::to_string(rates.n);
   if (rates.difference.defined()) {
     text += ", difference " + std::string(rates.difference.estimate >= 0 ? "+" : "") +
-            number(rates.difference.estimate, precision) + " [" + number(rates.difference.lo, precision) + ", " +
-            number(rates.difference.hi, precision) + "]";
+            number(rates.difference.estimate, precision) + " [" + number(rates.difference.lo, precision) +
+            ", " + number(rates.difference.hi, precision) + "]";
   }
   char p[32];
   std::snprintf(p, sizeof p, "%.3g", rates.p_value);

@@ -1,11 +1,13 @@
 #include "sextant/experiments/report.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
 #include <unordered_map>
 
+#include "report_overview.hpp"
 #include "sextant/core/atomic_file.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
@@ -79,6 +81,27 @@ std::string escape(const std::string& s) {
   return escape_html(s);
 }
 
+/// "quick" or "full" as the runner recorded it in the folders' provenance ("" when unknown, "mixed" when
+/// the folders disagree).
+std::string profile_of(const std::vector<fs::path>& folders) {
+  std::string profile;
+  for (const auto& folder : folders) {
+    for (const auto& file : provenance_files(folder)) {
+      std::string found;
+      try {
+        const YAML::Node node = YAML::LoadFile(file.string());
+        if (node.IsMap() && node["profile"].IsScalar()) found = node["profile"].Scalar();
+      } catch (const YAML::Exception&) {
+        continue;  // a provenance file being written or damaged does not decide the profile
+      }
+      if (found.empty()) continue;
+      if (!profile.empty() && profile != found) return "mixed";
+      profile = found;
+    }
+  }
+  return profile;
+}
+
 std::string markdown_section(const std::string& title, const ExperimentConfig& config,
                              const ReportSection& section, std::size_t found, std::size_t expected) {
   std::string md = "# " + title + "\n\n";
@@ -114,38 +137,50 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
   page.provenance.push_back({"results", roots});
 
   std::string all_md = "# Sextant report\n\n";
+  std::vector<OverviewEntry> overview;
   for (const auto& [name, folders] : find_experiments(results)) {
     const fs::path config_path = folders.front() / kEffectiveConfig;
     const ExperimentConfig config =
         parse_experiment_config(load_yaml_file(config_path.string()), config_path.string(), false);
     const std::string title = config.title.empty() ? name : config.title;
-    HtmlSection& html = page.add_section(name, title);
-    const fs::path dir = out / name;
-    fs::create_directories(dir);
-    if (!run_kind_registry().contains(config.kind)) {
-      html.add_paragraph("Unknown run kind '" + config.kind + "': no report for this experiment.");
-      continue;
-    }
-    const auto kind = run_kind_registry().create(config.kind);
     const std::vector<RunSpec> runs = expand_runs(config);
+    OverviewEntry& entry = overview.emplace_back();
+    entry.id = name;
+    entry.title = title;
+    entry.thesis = config.thesis;
+    entry.profile = profile_of(folders);
+    entry.runs_expected = runs.size();
     const std::vector<RunRow> rows = union_rows(folders);
     std::unordered_map<std::string, const RunRow*> by_key;
     for (const auto& r : rows) {
       if (r.ok) by_key[r.key] = &r;
     }
     std::vector<const RunRow*> aligned;
-    std::size_t found = 0;
     for (const auto& run : runs) {
       const auto it = by_key.find(run.key);
       aligned.push_back(it == by_key.end() ? nullptr : it->second);
-      found += aligned.back() != nullptr;
+      entry.runs_found += aligned.back() != nullptr;
     }
+    const std::size_t found = entry.runs_found;
+    // The heading says which profile the numbers come from and how many runs stand behind them.
+    HtmlSection& html =
+        page.add_section(name, title + " [" + (entry.profile.empty() ? "" : entry.profile + ", ") +
+                                   "n = " + std::to_string(found) + " runs]");
+    const fs::path dir = out / name;
+    fs::create_directories(dir);
+    if (!run_kind_registry().contains(config.kind)) {
+      entry.failure = "unknown run kind '" + config.kind + "'";
+      html.add_paragraph("Unknown run kind '" + config.kind + "': no report for this experiment.");
+      continue;
+    }
+    const auto kind = run_kind_registry().create(config.kind);
     ReportSection section;
     try {
       section = kind->report(config, runs, aligned);
     } catch (const std::exception& e) {
       // One experiment's broken report must not take the others down: say so on the page.
       summary.failed.push_back(name + ": " + e.what());
+      entry.failure = e.what();
       html.add_paragraph("The report of this experiment failed: " + std::string(e.what()));
       continue;
     }
@@ -174,6 +209,7 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
     }
     for (const auto& claim : section.claims) html.add_claim(claim);
     summary.claims += section.claims.size();
+    entry.claims = section.claims;
 
     std::string provenance;
     for (const auto& folder : folders) {
@@ -184,6 +220,12 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
     write_file_atomically(dir / (name + ".md"), md);
     all_md += md + "\n";
   }
+  std::sort(overview.begin(), overview.end(), [](const OverviewEntry& a, const OverviewEntry& b) {
+    const int na = experiment_number(a.id), nb = experiment_number(b.id);
+    return na != nb ? (na == 0 ? false : nb == 0 ? true : na < nb) : a.id < b.id;
+  });
+  page.front_html = overview_html(overview);
+  write_file_atomically(out / "overview.md", "# Experiments\n\n" + overview_markdown(overview));
   write_file_atomically(out / "report.md", all_md);
   summary.index_html = out / "index.html";
   page.write(summary.index_html);

@@ -52,7 +52,7 @@ class HtmlSection {
   const std::string& title() const { return title_; }
   const std::vector<std::string>& figures() const { return figures_; }
   const std::vector<Claim>& claims() const { return claims_; }
-  /// The section as HTML (blocks in insertion order, claims as a list at the end).
+  /// The section as HTML (blocks in insertion order, then the thesis' claims, then the sanity checks).
   std::string render() const;
 
  private:
@@ -65,11 +65,13 @@ class HtmlSection {
 struct HtmlReport {
   std::string title = "Sextant report";
   std::string subtitle;
+  std::string front_html;  ///< raw HTML shown first, before the contents (e.g. the experiments' overview)
   std::vector<HtmlSection> sections;
   std::vector<std::pair<std::string, std::string>> provenance;  ///< key, value
 
   HtmlSection& add_section(const std::string& id, const std::string& title);
-  /// Whole page: table of contents, a claim summary (counts per verdict), sections, provenance.
+  /// Whole page: a claim summary (thesis claims per verdict, sanity checks apart), the front HTML, a table
+  /// of contents, sections, provenance.
   std::string render() const;
   /// Renders and writes atomically.
   void write(const std::filesystem::path& path) const;

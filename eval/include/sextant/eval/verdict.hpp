@@ -9,7 +9,8 @@
 //
 //   // "ML-NDT is about 4× faster" with the band the report accepts as "about 4×":
 //   const Interval speedup = bootstrap_ratio_of_medians(ndt_seconds, mlndt_seconds, seed);
-//   Claim f{"ML-NDT is about 4× faster than NDT", verdict_in_band(speedup, 2.0, 8.0), describe(speedup, "×")};
+//   Claim f{"ML-NDT is about 4× faster than NDT", verdict_in_band(speedup, 2.0, 8.0), describe(speedup,
+//   "×")};
 //
 // Every resampling draws from an Rng seeded by the caller, so verdicts are deterministic.
 #include <cstddef>
@@ -43,8 +44,9 @@ Interval bootstrap_median(const std::vector<double>& values, std::uint64_t seed,
                           int resamples = 2000);
 /// Percentile bootstrap of median(numerator) / median(denominator), the two samples resampled
 /// independently (e.g. run times of two methods). NaN when either has no finite value.
-Interval bootstrap_ratio_of_medians(const std::vector<double>& numerator, const std::vector<double>& denominator,
-                                    std::uint64_t seed, double confidence = 0.95, int resamples = 2000);
+Interval bootstrap_ratio_of_medians(const std::vector<double>& numerator,
+                                    const std::vector<double>& denominator, std::uint64_t seed,
+                                    double confidence = 0.95, int resamples = 2000);
 /// Percentile bootstrap of the mean of a − b over the pairs where both are finite (paired samples).
 Interval bootstrap_paired_mean_difference(const std::vector<double>& a, const std::vector<double>& b,
                                           std::uint64_t seed, double confidence = 0.95, int resamples = 2000);
@@ -53,11 +55,11 @@ Interval bootstrap_paired_mean_difference(const std::vector<double>& a, const st
 
 /// Paired success/failure outcomes of two methods on the same cases.
 struct PairedRates {
-  std::size_t n = 0;                      ///< pairs compared
+  std::size_t n = 0;  ///< pairs compared
   std::size_t a_successes = 0, b_successes = 0;
-  std::size_t only_a = 0, only_b = 0;     ///< discordant pairs
-  double p_value = 1.0;                   ///< exact two-sided McNemar (binomial on the discordant pairs)
-  Interval difference{};                  ///< rate(a) − rate(b), Newcombe's interval for paired data
+  std::size_t only_a = 0, only_b = 0;  ///< discordant pairs
+  double p_value = 1.0;                ///< exact two-sided McNemar (binomial on the discordant pairs)
+  Interval difference{};               ///< rate(a) − rate(b), Newcombe's interval for paired data
 };
 
 /// Compares a[i] against b[i] for i < min(size); NaN-free by construction.

@@ -1,0 +1,119 @@
+#include "report_overview.hpp"
+
+#include <array>
+#include <cctype>
+
+#include "sextant/eval/table.hpp"
+
+namespace sextant {
+namespace {
+
+constexpr int kThesisExperiments = 19;
+
+struct Counts {
+  std::array<std::size_t, 4> thesis{};  // indexed by Verdict
+  std::size_t sanity = 0, sanity_held = 0;
+  std::size_t thesis_total() const { return thesis[0] + thesis[1] + thesis[2] + thesis[3]; }
+};
+
+Counts count(const std::vector<Claim>& claims) {
+  Counts c;
+  for (const Claim& claim : claims) {
+    if (claim.kind == ClaimKind::sanity) {
+      ++c.sanity;
+      c.sanity_held += claim.verdict == Verdict::holds;
+    } else {
+      ++c.thesis[static_cast<std::size_t>(claim.verdict)];
+    }
+  }
+  return c;
+}
+
+std::string label(const OverviewEntry& e) {
+  const int n = experiment_number(e.id);
+  return n > 0 ? "E" + std::to_string(n) : e.id;
+}
+
+std::string runs_text(const OverviewEntry& e) {
+  std::string text = std::to_string(e.runs_found) + "/" + std::to_string(e.runs_expected);
+  return e.profile.empty() ? text : text + " (" + e.profile + ")";
+}
+
+std::string held_text(const Counts& c) {
+  std::string text = std::to_string(c.thesis[0]) + " / " + std::to_string(c.thesis_total());
+  if (c.sanity > 0) text += " · sanity " + std::to_string(c.sanity_held) + " / " + std::to_string(c.sanity);
+  return text;
+}
+
+std::string html_rows(const std::vector<OverviewEntry>& entries, bool extensions) {
+  std::string out;
+  for (const OverviewEntry& e : entries) {
+    const int n = experiment_number(e.id);
+    if ((n >= 1 && n <= kThesisExperiments) == extensions) continue;
+    const Counts c = count(e.claims);
+    const std::string cls = !e.failure.empty()                ? "does-not-hold"
+                            : c.thesis[1] > 0                 ? "does-not-hold"
+                            : c.thesis[2] > 0                 ? "inconclusive"
+                            : c.thesis[0] == c.thesis_total() ? "holds"
+                                                              : "not-comparable";
+    out += "<tr class=\"c-" + cls + "\"><td><a href=\"#" + escape_html(e.id) + "\">" + escape_html(label(e)) +
+           "</a></td><td>" + escape_html(e.title) + "</td><td>" + escape_html(e.thesis) + "</td><td>" +
+           escape_html(runs_text(e)) + "</td><td>" + escape_html(held_text(c)) + "</td><td>" +
+           escape_html(one_line_outcome(e)) + "</td></tr>\n";
+  }
+  return out;
+}
+
+std::string html_table(const std::string& caption, const std::string& rows) {
+  if (rows.empty()) return "";
+  return "<table class=\"overview\"><caption>" + escape_html(caption) +
+         "</caption>\n<thead><tr><th>exp.</th><th>title</th><th>thesis</th><th>runs</th><th>claims held / "
+         "total</th><th>outcome</th></tr></thead>\n<tbody>\n" +
+         rows + "</tbody></table>\n";
+}
+
+}  // namespace
+
+int experiment_number(const std::string& id) {
+  if (id.size() < 3 || id[0] != 'e' || !std::isdigit(static_cast<unsigned char>(id[1]))) return 0;
+  int n = 0;
+  std::size_t k = 1;
+  for (; k < id.size() && std::isdigit(static_cast<unsigned char>(id[k])); ++k) n = 10 * n + (id[k] - '0');
+  return k < id.size() && id[k] != '_' ? 0 : n;
+}
+
+std::string one_line_outcome(const OverviewEntry& entry) {
+  if (!entry.failure.empty()) return "report failed: " + entry.failure;
+  if (entry.runs_found == 0) return "no runs found";
+  const Counts c = count(entry.claims);
+  if (c.thesis_total() == 0) return "no thesis claims to check";
+  std::string text = std::to_string(c.thesis[0]) + " of " + std::to_string(c.thesis_total()) + " claims hold";
+  const char* names[] = {"hold", "do not hold", "inconclusive", "not comparable"};
+  for (std::size_t v = 1; v < 4; ++v)
+    if (c.thesis[v] > 0) text += "; " + std::to_string(c.thesis[v]) + " " + names[v];
+  // Name the first claim that does not hold (or, failing that, the first inconclusive one).
+  for (Verdict wanted : {Verdict::does_not_hold, Verdict::inconclusive}) {
+    for (const Claim& claim : entry.claims) {
+      if (claim.kind == ClaimKind::thesis && claim.verdict == wanted)
+        return text + " — " + (wanted == Verdict::does_not_hold ? "not: " : "open: ") + claim.statement;
+    }
+  }
+  return text;
+}
+
+std::string overview_html(const std::vector<OverviewEntry>& entries) {
+  return html_table("The thesis' experiments", html_rows(entries, false)) +
+         html_table("Extensions beyond the thesis", html_rows(entries, true));
+}
+
+std::string overview_markdown(const std::vector<OverviewEntry>& entries) {
+  std::string md =
+      "| exp. | title | thesis | runs | claims held / total | outcome |\n|---|---|---|---|---|---|\n";
+  for (const OverviewEntry& e : entries) {
+    md += "| [" + label(e) + "](" + e.id + "/" + e.id + ".md) | " + e.title + " | " + e.thesis + " | " +
+          runs_text(e) + " | " + held_text(count(e.claims)) + " | " + one_line_outcome(e) + " |\n";
+  }
+  return md;
+}
+
+}  // namespace sextant
