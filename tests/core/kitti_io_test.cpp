@@ -55,7 +55,8 @@ TEST(KittiPair, RelativePoseEqualsTrInvP0InvP1Tr) {
   EXPECT_TRUE(velo[0].isApprox(Eigen::Isometry3d::Identity(), 1e-12));
   EXPECT_TRUE(velo[1].matrix().isApprox(expected, 1e-12));
 
-  // The shared derived file (printed with 9 significant digits).
+  // The shared derived file (printed with 9 significant digits): the same arithmetic. It is not ground
+  // truth for the scans (data/README.md, correction); only the format and the composition are checked.
   std::ifstream derived_in(dir / "T_velo0_from_velo1_DERIVED.txt");
   Eigen::Matrix4d derived;
   for (int r = 0; r < 4; ++r)
