@@ -18,9 +18,10 @@ std::string to_string(Termination why) {
 }
 
 std::string RegistrationResult::summary() const {
-  return fmt::format("{} after {} iterations ({}), score {:.6g}, {} of {} points matched, {:.4f} s",
+  return fmt::format("{} after {} iterations ({}), score {:.6g}, {} of {} points matched, {:.4f} s{}",
                      converged ? "converged" : "not converged", iterations, to_string(why), score,
-                     matched_points, input_points, seconds);
+                     matched_points, input_points, seconds,
+                     fallback.empty() ? "" : "; fallback: " + fallback);
 }
 
 RegistrationResult not_started(Termination why, std::size_t input_points, const Eigen::Isometry3d& initial) {

@@ -1,6 +1,8 @@
 #include "sextant/matchers/feature_based_sampler.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <iterator>
 #include <utility>
 
 #include "sextant/core/settings_reader.hpp"
@@ -22,8 +24,35 @@ std::unique_ptr<Sampler> create_feature_based_sampler(const YAML::Node& settings
 }
 
 bool FbmlndtSettings::valid(std::string* why) const {
-  return mlndt.valid(why) && features.valid(why);
+  return mlndt.valid(why) && features.valid(why) && constraints.valid(why) && fallback_gbs.valid(why);
 }
+
+namespace {
+
+ConstraintThresholds read_constraint_thresholds(const YAML::Node& node, const std::string& file) {
+  ConstraintThresholds t;
+  SettingsReader in(node, file);
+  in.read("min_planes", t.min_planes);
+  in.read("min_inliers", t.min_inliers);
+  in.read("min_normal_spread", t.min_normal_spread);
+  in.read("min_information_ratio", t.min_information_ratio);
+  in.finish();
+  std::string why;
+  if (!t.valid(&why)) in.fail("", why);
+  return t;
+}
+
+FbsFallback read_fallback(SettingsReader& in) {
+  std::string name = "gbs";
+  in.read("fallback", name);
+  if (name == "add_gbs") return FbsFallback::kAddGbs;
+  if (name == "gbs") return FbsFallback::kGbs;
+  if (name == "none") return FbsFallback::kNone;
+  in.fail("fallback", "key 'fallback': '" + name + "' is not gbs, add_gbs or none");
+  return FbsFallback::kNone;
+}
+
+}  // namespace
 
 FbmlndtSettings read_fbmlndt_settings(const YAML::Node& node, const std::string& file) {
   FbmlndtSettings s;
@@ -32,9 +61,11 @@ FbmlndtSettings read_fbmlndt_settings(const YAML::Node& node, const std::string&
     SettingsReader in(node, file);
     in.read("seed", s.seed);
     if (in.has("features")) s.features = read_plane_extraction_settings(in.child("features"), file);
+    s.fallback = read_fallback(in);
+    if (in.has("constraints")) s.constraints = read_constraint_thresholds(in.child("constraints"), file);
+    if (in.has("fallback_gbs")) s.fallback_gbs = read_grid_sampler_settings(in.child("fallback_gbs"), file);
     rest = YAML::Clone(node);  // the remaining keys belong to mlndt (which rejects unknown ones)
-    rest.remove("seed");
-    rest.remove("features");
+    for (const char* own : {"seed", "features", "fallback", "constraints", "fallback_gbs"}) rest.remove(own);
   }
   s.mlndt = read_mlndt_settings(rest, file);
   return s;
@@ -49,8 +80,28 @@ FbmlndtMatcher::FbmlndtMatcher(FbmlndtSettings settings)
 RegistrationResult FbmlndtMatcher::align(const PointCloud& input, const Eigen::Isometry3d& initial) {
   const auto start = std::chrono::steady_clock::now();
   Rng rng(settings_.seed);
-  const PointCloud sample =
-      input.subset(extract_cell_planes(input, settings_.features, rng).cell_inlier_indices());
+  const PlaneExtraction features = extract_cell_planes(input, settings_.features, rng);
+  std::vector<std::size_t> indices = features.cell_inlier_indices();
+  // Fail safe: a feature sample that leaves a pose direction unconstrained gets GBS points.
+  last_check_ = check_plane_constraints(features.cell_planes, input, settings_.constraints);
+  std::string fallback;
+  if (!last_check_.constrains_all && settings_.fallback != FbsFallback::kNone && !input.empty()) {
+    const std::vector<std::size_t> gbs = GridSampler(settings_.fallback_gbs).select(input, rng);
+    const std::size_t features_kept = indices.size();
+    if (settings_.fallback == FbsFallback::kGbs) {
+      indices = gbs;
+    } else {
+      std::vector<std::size_t> both;
+      std::set_union(indices.begin(), indices.end(), gbs.begin(), gbs.end(), std::back_inserter(both));
+      indices.swap(both);
+    }
+    fallback =
+        "feature sample degenerate (" + last_check_.reason + "): " +
+        (settings_.fallback == FbsFallback::kGbs ? "matched " + std::to_string(indices.size()) + " GBS points"
+                                                 : "added " + std::to_string(indices.size() - features_kept) +
+                                                       " GBS points to " + std::to_string(features_kept));
+  }
+  const PointCloud sample = input.subset(indices);
   last_sample_size_ = sample.size();
   RegistrationResult result;
   if (sample.empty()) {
@@ -60,6 +111,7 @@ RegistrationResult FbmlndtMatcher::align(const PointCloud& input, const Eigen::I
     result = mlndt_.align(sample, initial);
   }
   result.input_points = sample.size();
+  result.fallback = fallback;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

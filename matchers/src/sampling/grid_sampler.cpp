@@ -62,7 +62,7 @@ std::vector<std::size_t> GridSampler::select(const PointCloud& input, Rng& rng) 
   return selected;
 }
 
-std::unique_ptr<Sampler> create_grid_sampler(const YAML::Node& settings, const std::string& file) {
+GridSamplerSettings read_grid_sampler_settings(const YAML::Node& settings, const std::string& file) {
   SettingsReader in(settings, file);
   GridSamplerSettings s;
   in.read("cell_size", s.cell_size);
@@ -71,7 +71,11 @@ std::unique_ptr<Sampler> create_grid_sampler(const YAML::Node& settings, const s
   in.finish();
   std::string why;
   if (!s.valid(&why)) in.fail("", why);
-  return std::make_unique<GridSampler>(s);
+  return s;
+}
+
+std::unique_ptr<Sampler> create_grid_sampler(const YAML::Node& settings, const std::string& file) {
+  return std::make_unique<GridSampler>(read_grid_sampler_settings(settings, file));
 }
 
 }  // namespace sextant

@@ -6,6 +6,9 @@
 //   matcher `fbmlndt`: the mlndt keys, plus `features:` (plane extraction settings) and `seed`
 //                      (the RANSAC stream, fixed per align call so results are deterministic).
 //                      align() takes the whole input scan and samples it with fbs itself.
+//                      It fails safe: `fallback` (gbs | add_gbs | none), `constraints:` (thresholds
+//                      of sample_constraints.hpp) and `fallback_gbs:` (GBS settings) decide what
+//                      happens when the feature sample cannot constrain all six parameters.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -14,7 +17,9 @@
 #include "sextant/features/extraction.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
+#include "sextant/matchers/sample_constraints.hpp"
 #include "sextant/matchers/sampler.hpp"
+#include "sextant/matchers/samplers.hpp"
 
 namespace sextant {
 
@@ -31,10 +36,20 @@ class FeatureBasedSampler final : public Sampler {
 
 std::unique_ptr<Sampler> create_feature_based_sampler(const YAML::Node& settings, const std::string& file);
 
+/// What FbML-NDT does when the feature sample is degenerate (sample_constraints.hpp).
+enum class FbsFallback {
+  kGbs,     ///< match a GBS sample of the whole scan instead (default: what mlndt itself matches)
+  kAddGbs,  ///< match the feature points plus a GBS sample (the planes still dominate the score)
+  kNone,    ///< match the feature sample anyway (the thesis' FbML-NDT; the check is still recorded)
+};
+
 struct FbmlndtSettings {
   MlndtSettings mlndt;               ///< the registration process (Table 3.2)
   PlaneExtractionSettings features;  ///< the feature extraction process
   std::uint64_t seed = 1;            ///< RANSAC seed used at every align() call
+  FbsFallback fallback = FbsFallback::kGbs;
+  ConstraintThresholds constraints;  ///< when a feature sample counts as degenerate
+  GridSamplerSettings fallback_gbs;  ///< the GBS sample added or used on fallback
   bool valid(std::string* why) const;
 };
 
@@ -48,13 +63,16 @@ class FbmlndtMatcher final : public Matcher {
   void set_reference(const PointCloud& reference) override { mlndt_.set_reference(reference); }
   /// `input` is the whole scan; an input without planes gives a result with converged = false.
   RegistrationResult align(const PointCloud& input, const Eigen::Isometry3d& initial) override;
-  /// Points of the last input that were matched (the fbs sample).
+  /// Points of the last input that were matched (the fbs sample, plus GBS points on fallback).
   std::size_t last_sample_size() const { return last_sample_size_; }
+  /// The constraint check of the last input's feature sample.
+  const ConstraintCheck& last_check() const { return last_check_; }
 
  private:
   FbmlndtSettings settings_;
   MlndtMatcher mlndt_;
   std::size_t last_sample_size_ = 0;
+  ConstraintCheck last_check_;
 };
 
 std::unique_ptr<Matcher> create_fbmlndt_matcher(const YAML::Node& settings, const std::string& file);

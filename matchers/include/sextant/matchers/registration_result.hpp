@@ -44,8 +44,11 @@ struct RegistrationResult {
   std::size_t matched_points = 0;
   std::size_t input_points = 0;  ///< points offered to the matcher after sampling
   double seconds = 0.0;
+  /// Empty, or what the matcher fell back to and why (e.g. FbML-NDT on a degenerate feature sample:
+  /// "feature sample degenerate (normals span fewer than three directions (0.0004)): added 5120 GBS points").
+  std::string fallback;
 
-  /// One line: "converged after 12 iterations (converged), score …, 1234 matched, 0.012 s".
+  /// One line: "converged after 12 iterations (converged), score …, 1234 matched, 0.012 s[; fallback: …]".
   std::string summary() const;
 };
 

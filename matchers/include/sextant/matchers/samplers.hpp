@@ -68,6 +68,9 @@ class GridSampler final : public Sampler {
   GridSamplerSettings settings_;
 };
 
+/// Keys cell_size, max_per_cell, min_per_cell (null node → defaults); InputError on bad keys or values.
+GridSamplerSettings read_grid_sampler_settings(const YAML::Node& settings, const std::string& file);
+
 /// Registry factories: settings from YAML (null node → defaults); InputError on bad keys.
 std::unique_ptr<Sampler> create_all_sampler(const YAML::Node& settings, const std::string& file);
 std::unique_ptr<Sampler> create_regular_sampler(const YAML::Node& settings, const std::string& file);
