@@ -4,7 +4,15 @@ target_compile_options(sextant_options INTERFACE -Wall -Wextra -Wpedantic)
 if(SEXTANT_WERROR)
   target_compile_options(sextant_options INTERFACE -Werror)
 endif()
-if(SEXTANT_SANITIZE)
+if(SEXTANT_FUZZ)
+  # libFuzzer harnesses (fuzz/): clang only; everything is instrumented for coverage and runs under
+  # ASan + UBSan, so the sanitizer block below applies too.
+  if(NOT CMAKE_CXX_COMPILER_ID MATCHES "Clang")
+    message(FATAL_ERROR "SEXTANT_FUZZ needs clang: configure with -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++")
+  endif()
+  target_compile_options(sextant_options INTERFACE -fsanitize=fuzzer-no-link)
+endif()
+if(SEXTANT_SANITIZE OR SEXTANT_FUZZ)
   target_compile_options(sextant_options INTERFACE -fsanitize=address,undefined -fno-omit-frame-pointer
                                                    -fno-sanitize-recover=undefined)
   target_link_options(sextant_options INTERFACE -fsanitize=address,undefined)

@@ -60,7 +60,10 @@ void write_file_atomically(const std::filesystem::path& path,
       throw InputError(tmp.string(), "", "cannot open for writing: " + std::string(std::strerror(errno)));
     writer(out);
     out.flush();
-    if (!out) throw InputError(path.string(), "", "write failed");
+    if (!out) {
+      throw InputError(path.string(), "",
+                       "write failed (" + std::string(std::strerror(errno)) + "); the previous file is kept");
+    }
   });
 }
 
@@ -74,10 +77,21 @@ void append_line_durably(const std::filesystem::path& path, const std::string& l
   if (fd < 0)
     throw InputError(path.string(), "", "cannot open for appending: " + std::string(std::strerror(errno)));
   const std::string text = line + "\n";
+  const off_t before = ::lseek(fd, 0, SEEK_END);
   const ssize_t written = ::write(fd, text.data(), text.size());
+  const int write_errno = errno;
+  if (written != static_cast<ssize_t>(text.size())) {
+    // Disk full (ENOSPC), file-size limit (EFBIG), I/O error: take back a partial line, so the
+    // file holds only whole lines and everything written before stays readable.
+    if (before >= 0 && ::ftruncate(fd, before) == 0) ::fsync(fd);
+    ::close(fd);
+    throw InputError(path.string(), "",
+                     "cannot append a line: " +
+                         std::string(written < 0 ? std::strerror(write_errno) : "short write (disk full?)") +
+                         "; the lines already in the file are kept");
+  }
   ::fsync(fd);
   ::close(fd);
-  if (written != static_cast<ssize_t>(text.size())) throw InputError(path.string(), "", "short append");
 }
 
 }  // namespace sextant

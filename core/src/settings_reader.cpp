@@ -1,5 +1,7 @@
 #include "sextant/core/settings_reader.hpp"
 
+#include <filesystem>
+
 namespace sextant {
 
 long yaml_line(const YAML::Node& node) {
@@ -8,14 +10,53 @@ long yaml_line(const YAML::Node& node) {
   return mark.line >= 0 ? mark.line + 1 : 0;
 }
 
+namespace {
+
+// Aliases share nodes, so a few lines can stand for an exponentially large tree ("billion
+// laughs"); everything that walks the tree later (merging, hashing, writing the effective config)
+// would expand it. The walk below stops at the caps, so it costs at most kMaxYamlNodes steps.
+constexpr std::size_t kMaxYamlNodes = 1000000;
+constexpr int kMaxYamlDepth = 64;
+
+void check_tree(const YAML::Node& node, int depth, std::size_t& count, const std::string& path) {
+  if (++count > kMaxYamlNodes) {
+    throw InputError(path, at_line(yaml_line(node)),
+                     "the YAML expands to more than 10^6 nodes (aliases repeating aliases?)");
+  }
+  if (depth > kMaxYamlDepth)
+    throw InputError(path, at_line(yaml_line(node)), "the YAML nests deeper than 64 levels");
+  if (node.IsSequence()) {
+    for (const auto& child : node) check_tree(child, depth + 1, count, path);
+  } else if (node.IsMap()) {
+    for (const auto& entry : node) {
+      if (!entry.first.IsScalar()) {
+        throw InputError(path, at_line(yaml_line(entry.first)),
+                         "a map key must be a plain name, not a list or map");
+      }
+      check_tree(entry.second, depth + 1, count, path);
+    }
+  }
+}
+
+}  // namespace
+
 YAML::Node load_yaml_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw InputError(path, "", "is a folder, expected a YAML file");
+  YAML::Node root;
   try {
-    return YAML::LoadFile(path);
+    root = YAML::LoadFile(path);
   } catch (const YAML::BadFile&) {
     throw InputError(path, "", "cannot open YAML file");
   } catch (const YAML::ParserException& e) {
     throw InputError(path, at_line(e.mark.line + 1), "YAML syntax error: " + e.msg);
+  } catch (const YAML::Exception& e) {
+    throw InputError(path, e.mark.line >= 0 ? at_line(e.mark.line + 1) : "", "YAML error: " + e.msg);
   }
+  std::size_t count = 0;
+  check_tree(root, 0, count, path);
+  return root;
 }
 
 SettingsReader::SettingsReader(const YAML::Node& node, std::string file)

@@ -6,10 +6,12 @@
 #include <set>
 #include <sstream>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "report_overview.hpp"
 #include "sextant/core/atomic_file.hpp"
 #include "sextant/core/error.hpp"
+#include "sextant/core/log.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/eval/html_report.hpp"
 #include "sextant/eval/plots.hpp"
@@ -42,11 +44,18 @@ std::map<std::string, std::vector<fs::path>> find_experiments(const std::vector<
 }
 
 /// Rows of all folders, one per key; a successful row beats a failed one.
-std::vector<RunRow> union_rows(const std::vector<fs::path>& folders) {
+/// Unreadable lines are skipped, each named (file:line) in `warnings` and logged.
+std::vector<RunRow> union_rows(const std::vector<fs::path>& folders,
+                               std::vector<std::string>* warnings = nullptr) {
   std::vector<RunRow> rows;
   std::unordered_map<std::string, std::size_t> position;
   for (const auto& folder : folders) {
-    for (auto& row : read_rows(folder / kRunsJsonl).rows) {
+    RowFile file = read_rows(folder / kRunsJsonl);
+    for (const auto& message : bad_line_messages(folder / kRunsJsonl, file)) {
+      log_warning(message);
+      if (warnings) warnings->push_back(message);
+    }
+    for (auto& row : file.rows) {
       const auto it = position.find(row.key);
       if (it == position.end()) {
         position[row.key] = rows.size();
@@ -103,12 +112,13 @@ std::string profile_of(const std::vector<fs::path>& folders) {
 }
 
 std::string markdown_section(const std::string& title, const ExperimentConfig& config,
-                             const ReportSection& section, std::size_t found, std::size_t expected) {
+                             const ReportSection& section, std::size_t found, std::size_t expected,
+                             const std::string& shown) {
   std::string md = "# " + title + "\n\n";
   if (!config.thesis.empty()) md += "Thesis: " + config.thesis + "\n\n";
   if (!config.description.empty()) md += config.description + "\n\n";
   if (!section.notes.empty()) md += section.notes + "\n\n";
-  md += "Runs: " + std::to_string(found) + " of " + std::to_string(expected) + " found.\n\n";
+  md += "Runs: " + std::to_string(found) + " of " + std::to_string(expected) + " found.\n\n" + shown + "\n\n";
   for (const auto& table : section.tables) md += render_markdown(table) + "\n";
   for (const auto& figure : section.figures) md += "![" + figure.caption + "](" + figure.id + ".svg)\n\n";
   if (!section.claims.empty()) {
@@ -150,7 +160,8 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
     entry.thesis = config.thesis;
     entry.profile = profile_of(folders);
     entry.runs_expected = runs.size();
-    const std::vector<RunRow> rows = union_rows(folders);
+    std::vector<std::string> warnings;
+    const std::vector<RunRow> rows = union_rows(folders, &warnings);
     std::unordered_map<std::string, const RunRow*> by_key;
     for (const auto& r : rows) {
       if (r.ok) by_key[r.key] = &r;
@@ -174,6 +185,22 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
       continue;
     }
     const auto kind = run_kind_registry().create(config.kind);
+    // Which config this section shows, and what of runs.jsonl it leaves out (rows of an earlier,
+    // edited config or of the other profile keep their own keys and stay in the file).
+    std::unordered_set<std::string> current;
+    for (const auto& run : runs) current.insert(run.key);
+    std::size_t other = 0;
+    for (const auto& r : rows) other += current.count(r.key) == 0;
+    std::string shown = "Shown: the config in " + config_path.string() + " (fingerprint " +
+                        hex64(stable_hash(canonical_json(config.effective))) + ")";
+    if (other > 0) {
+      shown +=
+          "; " + std::to_string(other) +
+          " rows in runs.jsonl belong to another config or profile (edited since, or --quick vs full) and "
+          "are kept there but not shown";
+    }
+    shown += ".";
+    for (const auto& w : warnings) shown += " " + w + ".";
     ReportSection section;
     try {
       section = kind->report(config, runs, aligned);
@@ -191,6 +218,7 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
     if (!section.notes.empty()) html.add_paragraph(section.notes);
     html.add_paragraph("Runs: " + std::to_string(found) + " of " + std::to_string(runs.size()) +
                        " found (missing runs are left out of the statistics).");
+    html.add_paragraph(shown);
     for (const auto& table : section.tables) {
       write_table(table, TableFormat::markdown, dir / (table.label + ".md"));
       write_table(table, TableFormat::latex, dir / (table.label + ".tex"));
@@ -216,7 +244,7 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
       for (const auto& file : provenance_files(folder)) provenance += read_text(file);
     }
     html.add_html("<details><summary>Provenance</summary><pre>" + escape(provenance) + "</pre></details>");
-    const std::string md = markdown_section(title, config, section, found, runs.size());
+    const std::string md = markdown_section(title, config, section, found, runs.size(), shown);
     write_file_atomically(dir / (name + ".md"), md);
     all_md += md + "\n";
   }

@@ -104,11 +104,14 @@ RowFile read_rows(const std::filesystem::path& jsonl) {
   if (!in) return file;
   std::unordered_map<std::string, std::size_t> position;
   std::string line;
+  long number = 0;
   while (std::getline(in, line)) {
+    ++number;
     if (line.empty()) continue;
     RunRow row;
     if (!parse_json_line(line, row)) {
       ++file.bad_lines;
+      file.bad_line_numbers.push_back(number);
       continue;
     }
     const auto it = position.find(row.key);
@@ -120,6 +123,15 @@ RowFile read_rows(const std::filesystem::path& jsonl) {
     }
   }
   return file;
+}
+
+std::vector<std::string> bad_line_messages(const std::filesystem::path& jsonl, const RowFile& file) {
+  std::vector<std::string> out;
+  for (long n : file.bad_line_numbers) {
+    out.push_back(jsonl.string() + ":" + std::to_string(n) +
+                  ": unreadable line skipped (truncated or corrupted); its run, if any, counts as missing");
+  }
+  return out;
 }
 
 void write_rows_csv(const std::filesystem::path& csv, const std::vector<RunRow>& rows) {

@@ -12,8 +12,10 @@
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
 
+#include "results_lock.hpp"
 #include "sextant/core/atomic_file.hpp"
 #include "sextant/core/error.hpp"
+#include "sextant/core/log.hpp"
 #include "sextant/core/progress.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/experiments/json.hpp"
@@ -133,13 +135,16 @@ RunnerSummary run_experiment(const std::filesystem::path& config_file, const Run
   summary.total = runs.size();
   summary.in_shard = mine.size();
   const auto jsonl = summary.folder / kRunsJsonl;
-  std::filesystem::create_directories(summary.folder);
+  const detail::ResultsLock lock(summary.folder);  // one runner per results folder
   terminate_partial_line(jsonl);
 
   std::unordered_set<std::string> finished;
-  for (const auto& row : read_rows(jsonl).rows) {
+  const RowFile existing = read_rows(jsonl);
+  for (const auto& row : existing.rows) {
     if (row.ok) finished.insert(row.key);
   }
+  summary.warnings = bad_line_messages(jsonl, existing);
+  for (const auto& warning : summary.warnings) log_warning(warning);
   std::vector<const RunSpec*> todo;
   for (const auto& run : mine) {
     if (finished.count(run.key)) {

@@ -1,5 +1,8 @@
 # Runs one `sextant` command and checks its exit code and output:
-# cmake -DCOMMAND="exe;arg;…" -DEXPECT_EXIT=0 -DEXPECT_REGEX="…" [-DSETUP_DIR=…] -P cli_check.cmake
+# cmake -DCOMMAND="exe;arg;…" -DEXPECT_EXIT=0 -DEXPECT_REGEX="…" [-DSETUP_DIR=…] [-DTOUCH=file] -P cli_check.cmake
+if(TOUCH)  # an empty file to feed the command
+  file(WRITE "${TOUCH}" "")
+endif()
 if(SETUP_DIR)
   file(REMOVE_RECURSE "${SETUP_DIR}")
   file(MAKE_DIRECTORY "${SETUP_DIR}")

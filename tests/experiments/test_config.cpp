@@ -104,6 +104,38 @@ TEST(ExperimentConfig, BadValueNamesFileLineAndKey) {
   EXPECT_NE(msg.find("10^6"), std::string::npos) << msg;
 }
 
+// "Billion laughs": nine levels of aliases, each repeating the previous ten times, stand for 10^9
+// nodes in a few lines; merging, hashing or writing the config would expand them.
+TEST(ExperimentConfig, AliasBombIsRefusedBeforeAnythingExpandsIt) {
+  TempDir tmp;
+  std::string bomb =
+      std::string(kValid) + "reference:\n  l0: &l0 [lol, lol, lol, lol, lol, lol, lol, lol, lol, lol]\n";
+  for (int level = 1; level <= 9; ++level) {
+    const std::string prev = "*l" + std::to_string(level - 1);
+    bomb += "  l" + std::to_string(level) + ": &l" + std::to_string(level) + " [";
+    for (int k = 0; k < 10; ++k) bomb += (k ? ", " : "") + prev;
+    bomb += "]\n";
+  }
+  const std::string msg = error_of(tmp, bomb);
+  EXPECT_NE(msg.find("expands to more than 10^6 nodes"), std::string::npos) << msg;
+}
+
+TEST(ExperimentConfig, DeepNestingNonScalarKeysAndFoldersAreRefused) {
+  TempDir tmp;
+  std::string msg = error_of(
+      tmp, std::string(kValid) + "reference: " + std::string(100, '[') + std::string(100, ']') + "\n");
+  EXPECT_NE(msg.find("nests deeper than 64 levels"), std::string::npos) << msg;
+  msg = error_of(tmp, std::string(kValid) + "reference:\n  [a, b]: 1\n");
+  EXPECT_NE(msg.find("a map key must be a plain name"), std::string::npos) << msg;
+  std::filesystem::create_directories(tmp / "folder.yaml");
+  try {
+    read_experiment_config(tmp / "folder.yaml", false);
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a folder"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ExperimentConfig, ErrorsInsideTheQuickBlockPointIntoIt) {
   TempDir tmp;
   const auto file = tmp / "exp.yaml";

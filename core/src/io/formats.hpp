@@ -14,7 +14,7 @@ PointCloud read_point_list(const std::filesystem::path& file, ScanLoadReport* re
 void write_point_list(const std::filesystem::path& file, const PointCloud& cloud,
                       bool with_header_and_commas);
 
-/// PCD and PLY through PCL io (the only file that includes PCL headers in core).
+/// PCD and PLY: our own readers (headers checked against the file size), PCL writers.
 PointCloud read_pcd(const std::filesystem::path& file, ScanLoadReport* report);
 void write_pcd(const std::filesystem::path& file, const PointCloud& cloud);
 PointCloud read_ply(const std::filesystem::path& file, ScanLoadReport* report);

@@ -1,5 +1,6 @@
-// PCD and PLY through PCL io. The only core file that includes PCL (linked privately), so PCL
-// never leaks into our headers or into the compile time of other files.
+// PCD and PLY writers through PCL io (the readers are pcd_read.cpp and ply_read.cpp). The only core file that
+// includes PCL (linked privately), so PCL never leaks into our headers or into the compile time of other
+// files.
 #include <pcl/PCLPointCloud2.h>
 #include <pcl/conversions.h>
 #include <pcl/io/pcd_io.h>
@@ -18,38 +19,6 @@
 namespace sextant::detail {
 namespace {
 
-bool has_field(const pcl::PCLPointCloud2& blob, const std::string& name) {
-  return std::any_of(blob.fields.begin(), blob.fields.end(),
-                     [&](const pcl::PCLPointField& f) { return f.name == name; });
-}
-
-PointCloud from_blob(const std::filesystem::path& file, const pcl::PCLPointCloud2& blob,
-                     ScanLoadReport* report) {
-  for (const char* axis : {"x", "y", "z"}) {
-    if (!has_field(blob, axis)) throw InputError(file.string(), "", std::string("no '") + axis + "' field");
-  }
-  PointCloud cloud;
-  if (blob.data.empty() || blob.width * blob.height == 0) {
-    // PCL's conversion indexes element 0 of an empty cloud (UB); nothing to convert anyway.
-  } else if (has_field(blob, "intensity")) {
-    pcl::PointCloud<pcl::PointXYZI> points;
-    pcl::fromPCLPointCloud2(blob, points);
-    cloud.points().reserve(points.size());
-    cloud.intensity().reserve(points.size());
-    for (const auto& p : points) cloud.push_back(Eigen::Vector3f(p.x, p.y, p.z), p.intensity);
-  } else {
-    pcl::PointCloud<pcl::PointXYZ> points;
-    pcl::fromPCLPointCloud2(blob, points);
-    cloud.reserve(points.size());
-    for (const auto& p : points) cloud.push_back(Eigen::Vector3f(p.x, p.y, p.z));
-  }
-  ScanLoadReport local;
-  local.points_read = cloud.size();
-  local.non_finite_dropped = remove_non_finite(cloud);
-  if (report) *report = local;
-  return cloud;
-}
-
 template <class PclPoint>
 pcl::PointCloud<PclPoint> to_pcl(const PointCloud& cloud) {
   pcl::PointCloud<PclPoint> out;
@@ -64,11 +33,6 @@ pcl::PointCloud<PclPoint> to_pcl(const PointCloud& cloud) {
   out.height = 1;
   out.is_dense = true;
   return out;
-}
-
-void require_file(const std::filesystem::path& file) {
-  std::ifstream probe(file);
-  if (!probe) throw InputError(file.string(), "", "cannot open");
 }
 
 template <class PclPoint>
@@ -100,32 +64,12 @@ void save_ply(const std::filesystem::path& file, const PointCloud& cloud) {
 
 }  // namespace
 
-PointCloud read_pcd(const std::filesystem::path& file, ScanLoadReport* report) {
-  require_file(file);
-  pcl::PCLPointCloud2 blob;
-  if (pcl::PCDReader().read(file.string(), blob) < 0) {
-    throw InputError(file.string(), "",
-                     "PCL could not read the PCD file (malformed header or truncated data)");
-  }
-  return from_blob(file, blob, report);
-}
-
 void write_pcd(const std::filesystem::path& file, const PointCloud& cloud) {
   if (cloud.has_intensity()) {
     save_pcd<pcl::PointXYZI>(file, cloud);
   } else {
     save_pcd<pcl::PointXYZ>(file, cloud);
   }
-}
-
-PointCloud read_ply(const std::filesystem::path& file, ScanLoadReport* report) {
-  require_file(file);
-  pcl::PCLPointCloud2 blob;
-  if (pcl::PLYReader().read(file.string(), blob) < 0) {
-    throw InputError(file.string(), "",
-                     "PCL could not read the PLY file (malformed header or truncated data)");
-  }
-  return from_blob(file, blob, report);
 }
 
 void write_ply(const std::filesystem::path& file, const PointCloud& cloud) {

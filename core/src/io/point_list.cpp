@@ -35,8 +35,8 @@ PointCloud read_point_list(const std::filesystem::path& file, ScanLoadReport* re
                            std::to_string(columns));
     }
     ++local.points_read;
-    bool finite = true;
-    for (double v : values) finite = finite && std::isfinite(v);
+    bool finite = true;  // NaN, ±Inf and values outside float's range (1e308) alike
+    for (double v : values) finite = finite && fits_float(v);
     if (!finite) {
       ++local.non_finite_dropped;
       return;

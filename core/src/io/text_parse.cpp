@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
 
 #include "sextant/core/error.hpp"
 
@@ -59,6 +60,10 @@ bool parse_numbers(std::string_view line, std::vector<double>& out, std::string*
     i = end;
   }
   return true;
+}
+
+bool fits_float(double v) {
+  return std::isfinite(v) && std::abs(v) <= static_cast<double>(std::numeric_limits<float>::max());
 }
 
 std::string bad_number_problem(const std::string& token) {

@@ -35,6 +35,10 @@ bool is_blank(std::string_view line);
 /// "inf" parse (the callers drop and count such points).
 bool parse_numbers(std::string_view line, std::vector<double>& out, std::string* bad_token);
 
+/// True when `v` is finite and inside float's range (so the cast to float is exact up to
+/// rounding); NaN, ±Inf and out-of-range values (1e308) are dropped and counted alike.
+bool fits_float(double v);
+
 /// "cannot read 'abc' as a number" style message.
 std::string bad_number_problem(const std::string& token);
 

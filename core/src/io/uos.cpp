@@ -121,7 +121,9 @@ PointCloud read_uos_scan(const std::filesystem::path& file, ScanLoadReport* repo
     }
     ++local.points_read;
     const Eigen::Vector3d p(values[0], values[1], values[2]);
-    const bool finite = p.allFinite() && (columns == 3 || std::isfinite(values[3]));
+    // NaN, ±Inf and values outside float's range (1e308) are dropped alike.
+    const bool finite = detail::fits_float(p.x()) && detail::fits_float(p.y()) && detail::fits_float(p.z()) &&
+                        (columns == 3 || detail::fits_float(values[3]));
     if (!finite) {
       ++local.non_finite_dropped;
       return;

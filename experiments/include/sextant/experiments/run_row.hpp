@@ -37,9 +37,13 @@ std::string to_json_line(const RunRow& row);
 bool parse_json_line(const std::string& line, RunRow& row);
 
 struct RowFile {
-  std::vector<RunRow> rows;   ///< in file order; the last row wins for a repeated key
-  std::size_t bad_lines = 0;  ///< truncated or malformed lines skipped (a killed writer)
+  std::vector<RunRow> rows;            ///< in file order; the last row wins for a repeated key
+  std::size_t bad_lines = 0;           ///< truncated or malformed lines skipped (a killed writer)
+  std::vector<long> bad_line_numbers;  ///< their 1-based line numbers, to name them
 };
+
+/// "results/e01/runs.jsonl:7: unreadable line skipped (…)" for each bad line of `file`.
+std::vector<std::string> bad_line_messages(const std::filesystem::path& jsonl, const RowFile& file);
 
 /// Reads runs.jsonl (missing file = no rows); keeps only the last row of each key.
 RowFile read_rows(const std::filesystem::path& jsonl);

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "sextant/experiments/run_plan.hpp"
 
@@ -32,6 +33,7 @@ struct RunnerSummary {
   std::size_t executed = 0;      ///< ran now
   std::size_t failed = 0;        ///< ran now and threw (recorded with ok = false, retried next time)
   double seconds = 0.0;
+  std::vector<std::string> warnings;  ///< e.g. "…/runs.jsonl:7: unreadable line skipped …" (also logged)
 };
 
 /// Runs one experiment config. Throws InputError for a bad config or option.

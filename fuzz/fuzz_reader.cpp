@@ -1,0 +1,115 @@
+// One libFuzzer harness per reader, chosen at compile time by SEXTANT_FUZZ_TARGET (see
+// fuzz/CMakeLists.txt). The readers take paths, so each input is written to a file (under
+// /dev/shm when it exists) with the extension the reader expects. A reader may refuse an input
+// only with sextant::InputError; any other exception, a crash, a leak or a sanitizer report is a
+// finding. Accepted clouds must hold only finite points and account for every point read.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "sextant/core/error.hpp"
+#include "sextant/core/geo.hpp"
+#include "sextant/core/io/cloud_io.hpp"
+#include "sextant/core/io/kitti.hpp"
+#include "sextant/core/io/trajectory_io.hpp"
+#include "sextant/core/io/uos.hpp"
+#include "sextant/experiments/experiment_config.hpp"
+
+namespace {
+
+enum Target {
+  uos_3d,
+  uos_pose,
+  uos_frames,
+  kitti_bin,
+  xyz32,
+  kitti_poses,
+  kitti_calib,
+  pcd,
+  ply,
+  csv,
+  tum,
+  kitti_traj,
+  oxts,
+  config
+};
+
+constexpr Target kTarget = SEXTANT_FUZZ_TARGET;
+
+const char* extension() {
+  switch (kTarget) {
+    case uos_3d: return ".3d";
+    case uos_pose: return ".pose";
+    case uos_frames: return ".frames";
+    case kitti_bin: return ".bin";
+    case xyz32: return ".xyz32.bin";
+    case pcd: return ".pcd";
+    case ply: return ".ply";
+    case csv: return ".csv";
+    case config: return ".yaml";
+    default: return ".txt";
+  }
+}
+
+const std::filesystem::path& input_file() {
+  static const std::filesystem::path file = [] {
+    const std::filesystem::path dir =
+        std::filesystem::exists("/dev/shm") ? "/dev/shm" : std::filesystem::temp_directory_path();
+    return dir / ("sextant-fuzz-" + std::to_string(::getpid()) + extension());
+  }();
+  return file;
+}
+
+void check_cloud(const sextant::PointCloud& cloud, const sextant::ScanLoadReport& report) {
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (!cloud[i].allFinite()) std::abort();
+  }
+  if (cloud.size() + report.non_finite_dropped + report.no_return_dropped != report.points_read) std::abort();
+}
+
+void read_input(const std::filesystem::path& file) {
+  using namespace sextant;
+  ScanLoadReport report;
+  switch (kTarget) {
+    case uos_3d:
+    case kitti_bin:
+    case xyz32:
+    case pcd:
+    case ply:
+    case csv: check_cloud(read_cloud(file, &report), report); break;
+    case uos_pose: read_uos_pose(file); break;
+    case uos_frames: read_uos_frames(file); break;
+    case kitti_poses: read_kitti_poses(file); break;
+    case kitti_calib: read_kitti_calib_tr(file); break;
+    case tum: read_tum_trajectory(file); break;
+    case kitti_traj: read_kitti_trajectory(file); break;
+    case oxts: oxts_to_poses(read_oxts_file(file)); break;
+    case config:
+      read_experiment_config(file, false);
+      read_experiment_config(file, true);
+      break;
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::filesystem::path& file = input_file();
+  {
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  }
+  try {
+    read_input(file);
+  } catch (const sextant::InputError&) {
+    // a clear refusal is the expected answer to bad input
+  }
+  return 0;
+}
