@@ -12,6 +12,7 @@
 #include "sextant/core/atomic_file.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/log.hpp"
+#include "sextant/core/io/trajectory_io.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/eval/html_report.hpp"
 #include "sextant/eval/plots.hpp"
@@ -121,6 +122,8 @@ std::string markdown_section(const std::string& title, const ExperimentConfig& c
   md += "Runs: " + std::to_string(found) + " of " + std::to_string(expected) + " found.\n\n" + shown + "\n\n";
   for (const auto& table : section.tables) md += render_markdown(table) + "\n";
   for (const auto& figure : section.figures) md += "![" + figure.caption + "](" + figure.id + ".svg)\n\n";
+  for (const auto& t : section.trajectories) md += "- [" + t.caption + "](" + t.id + ".tum) (TUM)\n";
+  if (!section.trajectories.empty()) md += "\n";
   if (!section.claims.empty()) {
     md += "## Claims\n\n| claim | verdict | evidence |\n|---|---|---|\n";
     for (const auto& c : section.claims)
@@ -235,6 +238,14 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
       html.add_figure(name + "/" + figure.id + ".svg", figure.caption);
       ++summary.figures;
     }
+    std::string tum_links;
+    for (const auto& t : section.trajectories) {
+      write_tum_trajectory(dir / (t.id + ".tum"), t.poses);
+      tum_links += std::string(tum_links.empty() ? "" : " · ") + "<a href=\"" + escape(name + "/" + t.id) +
+                   ".tum\">" + escape(t.caption) + "</a>";
+    }
+    if (!tum_links.empty())
+      html.add_html("<p class=\"files\">Trajectories (TUM, for evo): " + tum_links + "</p>");
     for (const auto& claim : section.claims) html.add_claim(claim);
     summary.claims += section.claims.size();
     entry.claims = section.claims;

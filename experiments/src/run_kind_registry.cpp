@@ -12,6 +12,8 @@ const RunKindRegistry& run_kind_registry() {
           [] { return make_metric_examples_kind(); });
     r.add("registration", "E1, E2, E4: scan pairs with an initial guess, any matcher × sampler",
           [] { return make_registration_kind(); });
+    r.add("sequence", "E7, E9: a matcher over a sequence of scans, chained or fused with odometry by a KF",
+          [] { return make_sequence_kind(); });
     r.add("selftest", "runner self-test: sleeps and records seeds (sharding, resume, merge)",
           [] { return make_selftest_kind(); });
     return r;

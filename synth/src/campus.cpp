@@ -52,6 +52,15 @@ Campus generate_campus(const CampusSettings& settings, std::uint64_t seed) {
   campus.odometry = simulate_odometry(campus.ground_truth, settings.odometry, odometry_rng);
   Rng gnss_rng(mix(seed, kGnss));
   campus.gnss = simulate_gnss(campus.ground_truth, campus.stamps, settings.gnss, gnss_rng);
+  // first_scans: the first N poses of the same route (everything above was drawn for the whole
+  // route, so they equal the full campus' first N).
+  if (settings.trajectory.first_scans > 0) {
+    const auto n = static_cast<std::size_t>(settings.trajectory.first_scans);
+    campus.ground_truth.resize(n);
+    campus.odometry.resize(n);
+    campus.stamps.resize(n);
+    campus.gnss.resize(n);
+  }
   return campus;
 }
 

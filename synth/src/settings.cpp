@@ -37,6 +37,7 @@ void visit(WorldSettings& s, Visitor&& v) {
 template <class Visitor>
 void visit(TrajectorySettings& s, Visitor&& v) {
   v("scans", s.scans);
+  v("first_scans", s.first_scans);
   v("sensor_height", s.sensor_height);
   v("corner_radius", s.corner_radius);
   v("sharp_turn_deg", s.sharp_turn_deg);
@@ -166,6 +167,8 @@ bool WorldSettings::valid(std::string* why) const {
 bool TrajectorySettings::valid(std::string* why) const {
   Checker c(why);
   c.require(scans >= 1, "scans must be at least 1");
+  c.require(first_scans >= 0 && first_scans <= scans,
+            "first_scans must be in [0, scans] (0 keeps the whole route; use scans to stretch it)");
   c.require(sensor_height > 0.2, "sensor_height must exceed 0.2 m");
   c.require(corner_radius >= 0.0 && corner_radius <= 14.0, "corner_radius must be in [0, 14] m");
   c.require(sharp_turn_deg > 0.0 && sharp_turn_deg < 90.0, "sharp_turn_deg must be in (0, 90)");

@@ -33,6 +33,33 @@ TEST(Campus, WorldHasTheThesisIngredients) {
   }
 }
 
+// first_scans keeps a prefix of the same route (what `sextant synth --scans N` writes); changing
+// `scans` instead stretches the whole route over fewer, farther-apart poses.
+TEST(Campus, FirstScansIsAPrefixOfTheFullRouteAndScansStretchesIt) {
+  const Campus full = generate_campus(CampusSettings{}, 4);
+  CampusSettings s;
+  s.trajectory.first_scans = 30;
+  const Campus prefix = generate_campus(s, 4);
+  ASSERT_EQ(prefix.size(), 30u);
+  ASSERT_EQ(prefix.odometry.size(), 30u);
+  ASSERT_EQ(prefix.gnss.size(), 30u);
+  for (std::size_t i = 0; i < prefix.size(); ++i) {
+    EXPECT_TRUE(prefix.ground_truth[i].isApprox(full.ground_truth[i], 1e-12)) << i;
+    EXPECT_TRUE(prefix.odometry[i].isApprox(full.odometry[i], 1e-12)) << i;
+    EXPECT_EQ(prefix.stamps[i], full.stamps[i]);
+  }
+  EXPECT_EQ(prefix.scan(7).cloud.size(), full.scan(7).cloud.size());
+  const double step = (full.ground_truth[1].translation() - full.ground_truth[0].translation()).norm();
+  EXPECT_LT(step, 4.0);  // ≈ 2.8 m between the default route's scans
+
+  CampusSettings stretched;
+  stretched.trajectory.scans = 30;
+  const Campus far = generate_campus(stretched, 4);
+  ASSERT_EQ(far.size(), 30u);
+  const double far_step = (far.ground_truth[10].translation() - far.ground_truth[9].translation()).norm();
+  EXPECT_GT(far_step, 30.0);  // the whole route over 30 scans: ≈ 45 m apart
+}
+
 TEST(Campus, DifferentSeedsGiveDifferentWorlds) {
   const Campus a = generate_campus(test::small_campus(), 1);
   const Campus b = generate_campus(test::small_campus(), 2);

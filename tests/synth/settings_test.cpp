@@ -56,6 +56,8 @@ TEST(CampusSettings, NegativeRangeZeroScansAndWrongTypesAreRejected) {
   const std::string scans = error_of("trajectory:\n  scans: 0\n");
   EXPECT_NE(scans.find("scans must be at least 1"), std::string::npos) << scans;
   EXPECT_NE(error_of("trajectory:\n  scans: many\n").find("scans"), std::string::npos);
+  const std::string first = error_of("trajectory:\n  scans: 20\n  first_scans: 21\n");
+  EXPECT_NE(first.find("first_scans must be in [0, scans]"), std::string::npos) << first;
   EXPECT_NE(error_of("odometry:\n  model: kalman\n").find("model"), std::string::npos);
   EXPECT_NE(error_of("sensor:\n  range_noise: -0.1\n").find("range_noise"), std::string::npos);
 }

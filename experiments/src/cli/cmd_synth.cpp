@@ -1,5 +1,7 @@
-// `sextant synth --out DIR [--scans N] [--seed S] [--config FILE] [--preview FILE]`: writes the
-// built-in synthetic campus (docs/synthetic_campus.md) as a uos folder.
+// `sextant synth --out DIR [--scans N] [--stretch-route-to M] [--seed S] [--config FILE]
+// [--preview FILE]`: writes the built-in synthetic campus (docs/synthetic_campus.md) as a uos
+// folder. --scans keeps the first N scans of the route (trajectory.first_scans); the route keeps
+// its spacing. --stretch-route-to divides the whole route into M scans (trajectory.scans).
 #include <chrono>
 #include <iostream>
 #include <memory>
@@ -17,7 +19,8 @@ struct SynthOptions {
   std::string out;
   std::string config;
   std::string preview;
-  int scans = -1;  ///< −1: keep the configured number
+  int scans = -1;    ///< −1: keep the configured number (trajectory.first_scans)
+  int stretch = -1;  ///< −1: keep the configured route division (trajectory.scans)
   std::uint64_t seed = 1;
   bool seed_given = false;
   std::size_t preview_scan = 0;
@@ -31,9 +34,23 @@ int run_synth(const SynthOptions& o) {
     settings = synth::read_campus_settings(load_yaml_file(o.config), o.config, &config_seed);
     if (!o.seed_given) seed = config_seed;
   }
-  if (o.scans >= 0) settings.trajectory.scans = o.scans;
+  if (o.stretch >= 0) {
+    if (o.stretch < 1) throw InputError("--stretch-route-to", "", "must be at least 1");
+    settings.trajectory.scans = o.stretch;
+    if (o.scans < 0 && settings.trajectory.first_scans > o.stretch)
+      throw InputError("--stretch-route-to", "",
+                       "the config keeps the first " + std::to_string(settings.trajectory.first_scans) +
+                           " scans, more than the " + std::to_string(o.stretch) + " of the stretched route");
+  }
+  if (o.scans >= 0) {
+    if (o.scans < 1 || o.scans > settings.trajectory.scans)
+      throw InputError("--scans", "",
+                       "must be in [1, " + std::to_string(settings.trajectory.scans) +
+                           "], the scans of the route (--stretch-route-to changes the route's division)");
+    settings.trajectory.first_scans = o.scans;
+  }
   std::string why;
-  if (!settings.valid(&why)) throw InputError("--scans", "", why);
+  if (!settings.valid(&why)) throw InputError(o.config.empty() ? "--scans" : o.config, "", why);
   const auto start = std::chrono::steady_clock::now();
   const synth::Campus campus = synth::generate_campus(settings, seed);
   synth::write_campus(campus, o.out);
@@ -53,7 +70,10 @@ void add_synth_command(CLI::App& app, int& exit_code) {
   auto options = std::make_shared<SynthOptions>();
   auto* cmd = app.add_subcommand("synth", "Write the built-in synthetic campus dataset (uos layout)");
   cmd->add_option("--out", options->out, "Output folder")->required();
-  cmd->add_option("--scans", options->scans, "Number of scans (default: the configured 468)");
+  cmd->add_option("--scans", options->scans,
+                  "Write only the first N scans of the route (default: all; the route keeps its spacing)");
+  cmd->add_option("--stretch-route-to", options->stretch,
+                  "Divide the whole route into M scans instead of 468 (M = 30 puts scans ~45 m apart)");
   auto* seed = cmd->add_option("--seed", options->seed, "Random seed (default 1, or the config's seed)");
   cmd->add_option("--config", options->config,
                   "YAML campus settings (world, trajectory, sensor, odometry, gnss)")

@@ -9,5 +9,6 @@ namespace sextant {
 std::unique_ptr<RunKind> make_metric_examples_kind();
 std::unique_ptr<RunKind> make_registration_kind();
 std::unique_ptr<RunKind> make_selftest_kind();
+std::unique_ptr<RunKind> make_sequence_kind();
 
 }  // namespace sextant

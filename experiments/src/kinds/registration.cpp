@@ -11,6 +11,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "dataset_source.hpp"
 #include "kinds.hpp"
 #include "registration_report.hpp"
 #include "registration_settings.hpp"
@@ -19,8 +20,6 @@
 #include "sextant/core/pose.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/matchers/match_pair.hpp"
-#include "sextant/synth/campus.hpp"
-#include "sextant/synth/settings.hpp"
 
 namespace sextant {
 namespace {
@@ -31,20 +30,6 @@ constexpr double kDeg = kPi / 180.0;
 double point_value(const RunSpec& run, const std::string& axis, double fallback) {
   const auto it = run.point.find(axis);
   return it == run.point.end() ? fallback : std::stod(it->second);
-}
-
-std::unique_ptr<Dataset> open_registration_dataset(const ExperimentConfig& config) {
-  switch (config.dataset.source) {
-    case DatasetSource::kSynthetic: {
-      std::uint64_t seed = config.dataset.seed;
-      const synth::CampusSettings settings =
-          synth::read_campus_settings(config.dataset.campus, config.file, &seed);
-      return std::make_unique<synth::CampusDataset>(synth::generate_campus(settings, seed));
-    }
-    case DatasetSource::kFolder: return open_dataset(config.dataset.path);
-    case DatasetSource::kNone: break;
-  }
-  throw InputError(config.file, "", "key 'dataset': the registration kind needs source: synthetic or folder");
 }
 
 /// The relative pose b ⊖ a from a pose source; throws when the dataset lacks it.
@@ -60,7 +45,7 @@ class RegistrationSession : public KindSession {
                       std::vector<RegistrationMethod> methods)
       : params_(std::move(params)),
         methods_(std::move(methods)),
-        dataset_(open_registration_dataset(config)) {
+        dataset_(open_experiment_dataset(config, "registration")) {
     const std::vector<std::size_t> indices = needed_scans(config, params_);
     for (const std::size_t i : indices) {
       if (i >= dataset_->size())
@@ -164,13 +149,7 @@ class RegistrationKind : public RunKind {
     const RegistrationParams params = read_registration_params(config);
     (void)read_methods(config);
     check_registration_sweep(config, params);
-    if (config.dataset.source == DatasetSource::kNone)
-      throw InputError(config.file, "",
-                       "key 'dataset': the registration kind needs source: synthetic or folder");
-    if (config.dataset.source == DatasetSource::kSynthetic) {
-      std::uint64_t seed = config.dataset.seed;
-      (void)synth::read_campus_settings(config.dataset.campus, config.file, &seed);
-    }
+    check_experiment_dataset(config, "registration");
     check_registration_reference(config, params);
   }
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "sextant/core/trajectory.hpp"
 #include "sextant/eval/html_report.hpp"
 #include "sextant/eval/table.hpp"
 
@@ -16,11 +17,19 @@ struct ReportFigure {
   std::string svg;  ///< a complete SVG document
 };
 
+/// A trajectory the report writes as `<id>.tum` (TUM format, for evo) beside the tables.
+struct ReportTrajectory {
+  std::string id;
+  std::string caption;
+  Trajectory poses;
+};
+
 struct ReportSection {
   std::string notes;          ///< free text (dataset, deviations from the thesis)
   std::vector<Table> tables;  ///< Table::label is the file stem
   std::vector<ReportFigure> figures;
   std::vector<Claim> claims;
+  std::vector<ReportTrajectory> trajectories;
 };
 
 }  // namespace sextant

@@ -3,6 +3,7 @@
 // per kind under src/kinds/, registered by name in run_kind_registry():
 //   metric_examples — E18: the Wulf and Kümmerle metrics on the thesis' worked examples (exact)
 //   registration    — E1–E4, E6: scan pairs with an initial guess, any matcher × sampler
+//   sequence        — E7, E9: a matcher over consecutive scans, chained or fused by a KF
 #include <filesystem>
 #include <memory>
 #include <string>

@@ -34,7 +34,8 @@ struct WorldSettings {
 };
 
 struct TrajectorySettings {
-  int scans = 468;               ///< stop-and-go scan poses [-]
+  int scans = 468;      ///< stop-and-go scan poses the whole route is divided into (sets the spacing) [-]
+  int first_scans = 0;  ///< keep only the first N of those poses (0 = all; ≤ scans) [-]
   double sensor_height = 1.1;    ///< scanner above the ground contact [m]
   double corner_radius = 9.0;    ///< radius of the rounded corners [m]
   double sharp_turn_deg = 51.5;  ///< the one turn on the spot, between scans 3 and 4 by default [deg]

@@ -1,0 +1,18 @@
+#pragma once
+// The dataset of an experiment config, for the kinds that read scans (registration, sequence):
+// `source: synthetic` builds the built-in campus in memory from `campus:` settings and `seed`;
+// `source: folder` opens a uos or KITTI folder (`path:`, relative to the config file).
+#include <memory>
+#include <string>
+
+#include "sextant/core/dataset.hpp"
+#include "sextant/experiments/experiment_config.hpp"
+
+namespace sextant {
+
+/// Checks the dataset block without generating anything (InputError naming `kind`).
+void check_experiment_dataset(const ExperimentConfig& config, const std::string& kind);
+/// Opens the dataset (InputError when the source is none).
+std::unique_ptr<Dataset> open_experiment_dataset(const ExperimentConfig& config, const std::string& kind);
+
+}  // namespace sextant
