@@ -27,6 +27,25 @@ double position_nees(const SequenceRun& r, std::size_t k) {
   return llt.info() == Eigen::Success ? e.dot(llt.solve(e)) : kNaN;
 }
 
+/// ellipse_scale 0: the number of σ that makes the largest drawn ellipse about 3 % of the
+/// trajectory's extent (a round 1, 2, 5 × 10^k), so the exaggeration is visible and stated.
+double auto_ellipse_scale(const SequenceRun& run, const std::vector<Eigen::Matrix3d>& ellipses) {
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e300), hi = -lo;
+  for (const auto& T : run.truth) {
+    lo = lo.cwiseMin(T.translation().head<2>());
+    hi = hi.cwiseMax(T.translation().head<2>());
+  }
+  double sigma = 0;
+  for (const auto& P : ellipses)
+    if (P.allFinite()) sigma = std::max(sigma, std::sqrt(std::max(P(0, 0), P(1, 1))));
+  if (!(sigma > 0) || !(hi - lo).allFinite()) return 2;
+  const double wanted = 0.03 * (hi - lo).maxCoeff() / sigma;
+  const double decade = std::pow(10.0, std::floor(std::log10(std::max(wanted, 1.0))));
+  for (const double step : {5.0, 2.0, 1.0})
+    if (step * decade <= wanted) return step * decade;
+  return decade;
+}
+
 }  // namespace
 
 ReportSection kalman_report(const ExperimentConfig& config, const SequenceParams& params,
@@ -52,6 +71,7 @@ ReportSection kalman_report(const ExperimentConfig& config, const SequenceParams
       "°. The thesis shows the covariance ellipses without a claim on their size: with an absolute pose "
       "measurement at every accepted step, P(k|k) ≤ R(k), so the covariance stays bounded and grows by Q "
       "only on "
+      "alarm steps; with R = H⁻¹ at the millimetre level the KF follows the matcher and uses the odometry only on "
       "alarm steps. Deviations: thresholds, Q and P0 are ours (the thesis gives none); errors are horizontal "
       "(the odometry is 2D); synthetic campus instead of hannover1.";
 
@@ -122,14 +142,17 @@ ReportSection kalman_report(const ExperimentConfig& config, const SequenceParams
 
     if (!mine.empty()) {
       const SequenceRun& first = mine.front();
+      std::string scan_list;
+      for (const int scan : params.ellipses_at) scan_list += (scan_list.empty() ? "" : ", ") + std::to_string(scan);
       std::vector<Eigen::Matrix3d> ellipses(first.estimate.size(), Eigen::Matrix3d::Constant(kNaN));
       for (const int scan : params.ellipses_at) {
         const auto k = static_cast<std::size_t>(scan - 1);
         if (k < first.covariance.size() && k < ellipses.size()) ellipses[k] = first.covariance[k];
       }
-      const std::vector<NamedPoses> estimates{{name + " alone", &first.matcher, "#8e44ad"},
-                                              {"KF (" + fixed(params.ellipse_scale, 0) + "σ ellipses)",
-                                               &first.estimate, "#1f5fbf", ellipses, params.ellipse_scale}};
+      const double scale = params.ellipse_scale > 0 ? params.ellipse_scale : auto_ellipse_scale(first, ellipses);
+      const std::vector<NamedPoses> estimates{
+          {name + " alone", &first.matcher, "#8e44ad"},
+          {"KF (" + fixed(scale, 0) + "σ ellipses)", &first.estimate, "#1f5fbf", ellipses, scale}};
       section.figures.push_back(trajectory_figure(
           "trajectory" + suffix,
           "Figs 5.19–5.20: trajectories with the KF's position covariance at scans 15, 30, 45, 60 "

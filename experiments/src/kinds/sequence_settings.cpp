@@ -79,7 +79,7 @@ SequenceParams read_sequence_params(const ExperimentConfig& config) {
               "key 'ellipses_at': " + std::to_string(k) + " is not a scan number in [1, scans]");
   }
   in.read("ellipse_scale", p.ellipse_scale);
-  if (!(p.ellipse_scale > 0)) in.fail("ellipse_scale", "key 'ellipse_scale' must be > 0");
+  if (!(p.ellipse_scale >= 0)) in.fail("ellipse_scale", "key 'ellipse_scale' must be ≥ 0 (0 = automatic)");
   in.finish();
   return p;
 }

@@ -16,7 +16,8 @@
 //          alarm_rotation_deg: 10, measurement_noise_scale: 1, initial_sigma: 0.01}
 //     report: dead_reckoning      # dead_reckoning (E7) | kalman (E9)
 //     ellipses_at: [15, 30, 45, 60]   # kalman: 1-based scan numbers with covariance ellipses
-//     ellipse_scale: 20           # kalman: ellipses drawn at this many σ (the thesis exaggerates)
+//     ellipse_scale: 0            # kalman: ellipses drawn at this many σ (the thesis exaggerates);
+//                                 #   0 = automatic (the largest ≈ 3 % of the map), stated in the legend
 // Every registration starts from the odometry increment, so the registrations of one run do not
 // depend on each other and run in parallel; chaining and filtering follow in scan order.
 #include <cstddef>
@@ -43,7 +44,7 @@ struct SequenceParams {
   double initial_sigma = 0.01;         ///< P0 = σ² I (the first pose is the true one) [m, rad]
   SequenceLayout report = SequenceLayout::kDeadReckoning;
   std::vector<int> ellipses_at{15, 30, 45, 60};
-  double ellipse_scale = 20;
+  double ellipse_scale = 0;  ///< σ multiple of the drawn ellipses; 0 = automatic
 };
 
 /// Reads and checks `params` (InputError with file, line, key); checks the odometry source
