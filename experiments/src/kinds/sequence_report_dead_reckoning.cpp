@@ -110,11 +110,13 @@ ReportSection dead_reckoning_report(const ExperimentConfig& config, const Sequen
                               verdict_in_band(ratio, band[0], band[1]), evidence});
     // The end point of a route that loops back is a lucky or unlucky place to look; the mean over
     // the whole path is not.
-    const Interval closer = bootstrap_paired_mean_difference(run_values(mine, "mean_xy_estimate"),
-                                                             run_values(mine, "mean_xy_odometry"), config.seed);
-    section.claims.push_back({"Chained " + name + " stays closer to the truth than the odometry over the path "
+    const Interval closer = bootstrap_paired_mean_difference(
+        run_values(mine, "mean_xy_estimate"), run_values(mine, "mean_xy_odometry"), config.seed);
+    section.claims.push_back({"Chained " + name +
+                                  " stays closer to the truth than the odometry over the path "
                                   "(mean horizontal error)",
-                              verdict_less(closer, 0.0), name + " − odometry, paired over runs: " + describe(closer, " m"),
+                              verdict_less(closer, 0.0),
+                              name + " − odometry, paired over runs: " + describe(closer, " m"),
                               ClaimKind::sanity});
   }
   return section;

@@ -71,7 +71,8 @@ ReportSection kalman_report(const ExperimentConfig& config, const SequenceParams
       "°. The thesis shows the covariance ellipses without a claim on their size: with an absolute pose "
       "measurement at every accepted step, P(k|k) ≤ R(k), so the covariance stays bounded and grows by Q "
       "only on "
-      "alarm steps; with R = H⁻¹ at the millimetre level the KF follows the matcher and uses the odometry only on "
+      "alarm steps; with R = H⁻¹ at the millimetre level the KF follows the matcher and uses the odometry "
+      "only on "
       "alarm steps. Deviations: thresholds, Q and P0 are ours (the thesis gives none); errors are horizontal "
       "(the odometry is 2D); synthetic campus instead of hannover1.";
 
@@ -143,13 +144,15 @@ ReportSection kalman_report(const ExperimentConfig& config, const SequenceParams
     if (!mine.empty()) {
       const SequenceRun& first = mine.front();
       std::string scan_list;
-      for (const int scan : params.ellipses_at) scan_list += (scan_list.empty() ? "" : ", ") + std::to_string(scan);
+      for (const int scan : params.ellipses_at)
+        scan_list += (scan_list.empty() ? "" : ", ") + std::to_string(scan);
       std::vector<Eigen::Matrix3d> ellipses(first.estimate.size(), Eigen::Matrix3d::Constant(kNaN));
       for (const int scan : params.ellipses_at) {
         const auto k = static_cast<std::size_t>(scan - 1);
         if (k < first.covariance.size() && k < ellipses.size()) ellipses[k] = first.covariance[k];
       }
-      const double scale = params.ellipse_scale > 0 ? params.ellipse_scale : auto_ellipse_scale(first, ellipses);
+      const double scale =
+          params.ellipse_scale > 0 ? params.ellipse_scale : auto_ellipse_scale(first, ellipses);
       const std::vector<NamedPoses> estimates{
           {name + " alone", &first.matcher, "#8e44ad"},
           {"KF (" + fixed(scale, 0) + "σ ellipses)", &first.estimate, "#1f5fbf", ellipses, scale}};
