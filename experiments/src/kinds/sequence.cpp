@@ -3,6 +3,7 @@
 // chained from the true first pose (dead reckoning, §5.1.3, fig 5.15) or fused with the odometry
 // by Table 3.3's linear KF (§3.4.2, §5.1.3.2). The row holds the trajectories (truth, odometry,
 // estimate, and for the KF the matcher alone and the position covariance) and per-step status.
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <stdexcept>
@@ -130,6 +131,8 @@ class SequenceSession : public KindSession {
     row.values["end_xy_estimate"] = estimate_xy.back();
     row.values["end_3d_estimate"] = position_errors(estimate, truth_).back();
     row.values["end_xy_matcher"] = horizontal_errors(chained, truth_).back();
+    row.values["max_xy_odometry"] = *std::max_element(odometry_xy.begin(), odometry_xy.end());
+    row.values["max_xy_estimate"] = *std::max_element(estimate_xy.begin(), estimate_xy.end());
     row.values["mean_xy_odometry"] = mean_of(odometry_xy);
     row.values["mean_xy_estimate"] = mean_of(estimate_xy);
     row.values["mean_xy_matcher"] = mean_of(horizontal_errors(chained, truth_));

@@ -66,6 +66,8 @@ ReportSection dead_reckoning_report(const ExperimentConfig& config, const Sequen
     };
     add_end("odometry", "end_xy_odometry", thesis_odometry);
     add_end(name + " (chained)", "end_xy_estimate", thesis_matcher);
+    add_end("odometry, largest along the path", "max_xy_odometry", std::nullopt);
+    add_end(name + " (chained), largest along the path", "max_xy_estimate", std::nullopt);
     section.tables.push_back(end);
 
     Table metrics = metrics_table("Trajectory metrics over the sequence, " + name,
