@@ -4,6 +4,7 @@
 
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/filters/plane_slam_model.hpp"
 
 namespace sextant {
 namespace {
@@ -64,7 +65,11 @@ PlaneSlamParams read_plane_slam_params(const ExperimentConfig& config) {
   p.revisit_gap = read_count(in, "revisit_gap", p.revisit_gap);
   p.spike_window = read_count(in, "spike_window", p.spike_window);
   p.compare_scans = read_count(in, "compare_scans", 0);
-  if (in.has("slam")) p.slam = YAML::Clone(in.child("slam"));
+  if (in.has("slam")) {
+    const YAML::Node slam = in.child("slam");
+    (void)read_plane_slam_settings(slam, config.file);  // errors name the line of the key
+    p.slam = YAML::Clone(slam);
+  }
   std::vector<long> at;
   in.read("information_at", at);
   for (long a : at) {
@@ -92,9 +97,13 @@ PlaneSlamMethod read_plane_slam_method(const YAML::Node& node, const std::string
   PlaneSlamMethod m;
   in.require("name", m.name);
   in.require("filter", m.filter);
-  if (in.has("filter_settings")) m.filter_settings = YAML::Clone(in.child("filter_settings"));
+  if (in.has("filter_settings")) m.filter_settings = in.child("filter_settings");
   m.scans = read_count(in, "scans", 0);
   in.finish();
+  if (!filter_registry().contains(m.filter))
+    in.fail("filter", "key 'filter': '" + m.filter + "' is not a filter (ekf, ukf, ckf, rspkf, seif, eif)");
+  (void)make_filter(m.filter, std::make_shared<PlaneSlamModel>(), m.filter_settings, file);
+  m.filter_settings = YAML::Clone(m.filter_settings);
   return m;
 }
 
