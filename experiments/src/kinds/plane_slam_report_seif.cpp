@@ -17,6 +17,14 @@ namespace {
 // "Flat": the fitted time changes by less than this fraction of its median across the map's range.
 constexpr double kFlatGrowth = 0.5;
 
+double median_of(std::vector<double> v) {
+  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
+  if (v.empty()) return NAN;
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
 struct Growth {
   Interval slope;   ///< ms per landmark
   Interval growth;  ///< slope · (map range) / median time
@@ -142,7 +150,8 @@ ReportSection seif_report(const ExperimentConfig& config, const PlaneSlamParams&
   t.note =
       "slopes by least squares of time against map size, 95 % bootstrap intervals over the scans; median "
       "over "
-      "scans and repetitions; final error = 3D position error after the last scan [m].";
+      "scans and repetitions; map size and final error (3D position error after the last scan [m]): medians "
+      "over repetitions.";
   t.add_column("method")
       .add_number_column("measurement ms (median)", 3)
       .add_number_column("measurement slope ms/landmark", 4)
@@ -157,9 +166,9 @@ ReportSection seif_report(const ExperimentConfig& config, const PlaneSlamParams&
     growth[g->method] = {m, p};
     t.add_row({Cell::text(g->method), cell_or_missing(m.median_ms), cell_or_missing(m.slope.estimate),
                cell_or_missing(p.median_ms), cell_or_missing(p.slope.estimate),
-               cell_or_missing(g->first()->value("map_size")),
+               cell_or_missing(median_of(g->values("map_size"))),
                cell_or_missing(reference_value(config, "map_size", g->method)),
-               cell_or_missing(g->first()->value("final_error_m")),
+               cell_or_missing(median_of(g->values("final_error_m"))),
                cell_or_missing(reference_value(config, "final_error_m", g->method))});
   }
   section.tables.push_back(t);
