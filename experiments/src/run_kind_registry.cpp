@@ -10,6 +10,8 @@ const RunKindRegistry& run_kind_registry() {
     // One line per kind (keep sorted).
     r.add("metric_examples", "E18: Wulf and Kümmerle metrics on the thesis' worked examples",
           [] { return make_metric_examples_kind(); });
+    r.add("plane_slam", "E12-E14, E16, E17, E19: plane SLAM over a campus scan sequence, any filter",
+          [] { return make_plane_slam_kind(); });
     r.add("registration", "E1, E2, E4: scan pairs with an initial guess, any matcher × sampler",
           [] { return make_registration_kind(); });
     r.add("sequence", "E7, E9: a matcher over a sequence of scans, chained or fused with odometry by a KF",
