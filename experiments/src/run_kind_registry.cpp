@@ -10,12 +10,16 @@ const RunKindRegistry& run_kind_registry() {
     // One line per kind (keep sorted).
     r.add("metric_examples", "E18: Wulf and Kümmerle metrics on the thesis' worked examples",
           [] { return make_metric_examples_kind(); });
+    r.add("plane_features", "E10, E11: plane merging tests, extraction and semantic association",
+          [] { return make_plane_features_kind(); });
     r.add("registration", "E1, E2, E4: scan pairs with an initial guess, any matcher × sampler",
           [] { return make_registration_kind(); });
     r.add("sequence", "E7, E9: a matcher over a sequence of scans, chained or fused with odometry by a KF",
           [] { return make_sequence_kind(); });
     r.add("selftest", "runner self-test: sleeps and records seeds (sharding, resume, merge)",
           [] { return make_selftest_kind(); });
+    r.add("simulation", "E8, E15: 2D room with ML-NDT into the EKF, range-bearing Monte Carlo of filters",
+          [] { return make_simulation_kind(); });
     return r;
   }();
   return registry;
