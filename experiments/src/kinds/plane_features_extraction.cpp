@@ -212,6 +212,7 @@ class ExtractionStudy : public PlaneFeaturesStudy {
     ref.read("second_scan_associated", x);
     ref.read("feature_band_factor", x);
     ref.read("association_precision_floor", x);
+    ref.read("trivial_motion_m", x);
     std::vector<std::vector<double>> table;
     ref.read("table_5_10", table);
     ref.finish();
