@@ -84,7 +84,8 @@ TEST(E10, QuickProfileGivesTheFixedSeedValuesAndTheReport) {
       std::string::npos)
       << t41;
   EXPECT_EQ(markdown_rows(test::read_text(folder / "merging_repetitions.md")), 4u);
-  EXPECT_TRUE(std::filesystem::exists(folder / "generated_planes.svg"));
+  EXPECT_TRUE(std::filesystem::exists(folder / "generated_planes_case1.svg"));
+  EXPECT_TRUE(std::filesystem::exists(folder / "generated_planes_case2.svg"));
   EXPECT_TRUE(std::filesystem::exists(folder / "cp_against_dc.svg"));
   const std::string summary = test::read_text(folder / "e10_merging_tests.md");
   // d_c does not separate the cases, C_p does: computed verdicts on the 30 quick repetitions.

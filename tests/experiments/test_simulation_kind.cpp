@@ -70,11 +70,11 @@ TEST(E15, QuickProfileRunsPairedFiltersAndComparesThem) {
     const RunRow &ukf = methods.at("ukf"), &rspkf = methods.at("rspkf");
     EXPECT_EQ(ukf.seed, rspkf.seed);  // paired: the same noise
     // The same simulated run: same steps and the same dead reckoning.
-    EXPECT_EQ(ukf.value("steps"), 1000.0);
+    EXPECT_EQ(ukf.value("steps"), 600.0);
     EXPECT_EQ(ukf.value("dead_reckoning_error_m"), rspkf.value("dead_reckoning_error_m"));
     EXPECT_EQ(ukf.value("failed_steps"), 0.0);
     EXPECT_EQ(rspkf.value("failed_steps"), 0.0);
-    EXPECT_EQ(ukf.series.at("t").size(), 20u);  // every 50 steps of 1000
+    EXPECT_EQ(ukf.series.at("t").size(), 12u);  // every 50 steps of 600
     EXPECT_TRUE(std::isfinite(ukf.value("mean_position_error_m")));
     EXPECT_TRUE(std::isfinite(rspkf.value("mean_heading_error_deg")));
     if (rep == 0) {

@@ -170,23 +170,24 @@ class MergingStudy : public PlaneFeaturesStudy {
 };
 
 /// Fig. 4.2: the generated points of both cases seen along z (x against y), repetition 0.
-ReportFigure planes_figure(const MergingParams& p, std::uint64_t seed) {
-  XYPlot plot{"Fig. 4.2: generated planes (top view, x against y)", "x", "y", {}};
-  const char* colours[3] = {"#1f77b4", "#ff7f0e", "#2ca02c"};
-  for (int c = 1; c <= 2; ++c) {
-    std::vector<std::vector<Eigen::Vector3f>> points;
-    (void)make_case(p, c, seed, &points);
-    for (std::size_t i = 0; i < 3; ++i) {
-      std::vector<double> x, y;
-      for (const auto& q : points[i]) x.push_back(q.x()), y.push_back(q.y());
-      const std::string name = "case " + std::to_string(c) + ", plane " + std::to_string(i + 1);
-      plot.series.push_back({name, x, y, PlotSeries::Style::markers, c == 1 ? colours[i] : "#7f7f7f"});
-    }
+ReportFigure planes_figure(const MergingParams& p, int which, std::uint64_t seed) {
+  XYPlot plot{"Fig. 4.2 (" + std::string(which == 1 ? "a" : "b") + "): case " + std::to_string(which) +
+                  ", generated planes (top view, x against y)",
+              "x",
+              "y",
+              {}};
+  std::vector<std::vector<Eigen::Vector3f>> points;
+  (void)make_case(p, which, seed, &points);
+  for (std::size_t i = 0; i < 3; ++i) {
+    std::vector<double> x, y;
+    for (const auto& q : points[i]) x.push_back(q.x()), y.push_back(q.y());
+    plot.series.push_back({"plane " + std::to_string(i + 1), x, y, PlotSeries::Style::markers, ""});
   }
-  return {"generated_planes",
-          "Fig. 4.2: the three planes of case 1 (colours) and case 2 (grey, planes 2 and 3 "
-          "shifted along y), seed " +
-              std::to_string(seed),
+  return {"generated_planes_case" + std::to_string(which),
+          "Fig. 4.2 (" + std::string(which == 1 ? "a" : "b") + "): the three planes of case " +
+              std::to_string(which) +
+              (which == 2 ? " (planes 2 and 3 shifted along y)" : " (one infinite plane)") + ", seed " +
+              std::to_string(seed) + "; planes 2 and 3 overlap for x = 15 … 25",
           render_svg(plot)};
 }
 
@@ -252,7 +253,8 @@ ReportSection MergingStudy::report(const ExperimentConfig& config, const std::ve
   }
   section.tables.push_back(t41);
   section.tables.push_back(spread);
-  section.figures.push_back(planes_figure(p, config.seed));
+  section.figures.push_back(planes_figure(p, 1, config.seed));
+  section.figures.push_back(planes_figure(p, 2, config.seed));
 
   XYPlot scatter{
       "C_p against d_c over the repetitions", "d_c (centre distance)", "C_p (Mahalanobis distance)", {}};

@@ -112,9 +112,11 @@ ReportSection monte_carlo_report(const ExperimentConfig& config, const MonteCarl
     map.series.push_back({m.name + " landmarks", series_of(r, "map_x"), series_of(r, "map_y"),
                           PlotSeries::Style::markers, ""});
   }
-  section.figures.push_back({"map_and_paths",
-                             "Fig. 5.36: true and estimated landmarks, true and estimated paths",
-                             render_svg(map)});
+  section.figures.push_back(
+      {"map_and_paths",
+       "Fig. 5.36: true and estimated landmarks, true and estimated paths (repetition 0; where the UKF's "
+       "and the RSPKF's estimates coincide, the RSPKF's, drawn last, cover them)",
+       render_svg(map)});
 
   Table table;
   table.caption = "E15: errors over the Monte Carlo runs, mean with its 95 % interval";
