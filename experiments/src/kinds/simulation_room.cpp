@@ -6,9 +6,8 @@
 //   methods: [{name: ekf_mlndt, matcher: mlndt, settings: {dof: [x, y, yaw], layers: 3}}]
 //
 // The lag the thesis sees in fig. 5.18 is measured as the time shift τ that best aligns the
-// estimate with the true path: τ* = argmin_τ mean_k ‖ê(t_k) − p(t_k − τ)‖² (τ > 0: the estimate
-// trails the truth), on a grid refined by a parabola through the three best points, with the true
-// path recorded at every control; its interval is over the repetitions. The claim asks for a lag
+// estimate with the true path recorded at every control (eval/time_lag.hpp; τ > 0: the estimate
+// trails the truth); its interval is over the repetitions. The claim asks for a lag
 // one can see in the figure: above `visible_lag` seconds.
 #include <algorithm>
 #include <cmath>
@@ -18,6 +17,7 @@
 #include "sextant/core/pose.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/eval/plots.hpp"
+#include "sextant/eval/time_lag.hpp"
 #include "sextant/eval/verdict.hpp"
 #include "sextant/filters/room_sim_2d.hpp"
 #include "simulation.hpp"
@@ -67,49 +67,13 @@ RoomMethod read_room_method(const YAML::Node& node, const std::string& file) {
   return m;
 }
 
-/// A piecewise-linear path p(t) sampled at increasing times.
-struct Path {
-  std::vector<double> t, x, y;
-  /// Linear interpolation; false outside [t.front(), t.back()].
-  bool at(double time, double* px, double* py) const {
-    if (t.empty() || time < t.front() || time > t.back()) return false;
-    const auto it = std::upper_bound(t.begin(), t.end(), time);
-    const std::size_t j = it == t.end() ? t.size() - 1 : static_cast<std::size_t>(it - t.begin());
-    const std::size_t i = j == 0 ? 0 : j - 1;
-    const double w = t[j] > t[i] ? (time - t[i]) / (t[j] - t[i]) : 0.0;
-    *px = x[i] + w * (x[j] - x[i]);
-    *py = y[i] + w * (y[j] - y[i]);
-    return true;
-  }
-};
-
-/// mean_k ‖ê(t_k) − p(t_k − τ)‖² over the scans whose shifted time lies on the path (NaN if none).
-double alignment_cost(const Path& truth, const std::vector<double>& t, const std::vector<double>& ex,
-                      const std::vector<double>& ey, double tau) {
-  double sum = 0.0;
-  std::size_t n = 0;
-  for (std::size_t k = 1; k < t.size(); ++k) {  // k = 0 is the known start
-    double px = 0, py = 0;
-    if (!truth.at(t[k] - tau, &px, &py)) continue;
-    sum += (ex[k] - px) * (ex[k] - px) + (ey[k] - py) * (ey[k] - py);
-    ++n;
-  }
-  return n > 0 ? sum / static_cast<double>(n) : NAN;
-}
-
-std::vector<double> tau_grid(const RoomParams& p) {
-  std::vector<double> taus;
-  const int steps = static_cast<int>(std::floor(p.lag_max / p.lag_step + 1e-9));
-  for (int i = -steps; i <= steps; ++i) taus.push_back(i * p.lag_step);
-  return taus;
-}
-
-Path path_of(const RunRow& row) {
-  Path p;
-  p.t = row.series.count("path_t") ? row.series.at("path_t") : std::vector<double>{};
-  p.x = row.series.count("path_x") ? row.series.at("path_x") : std::vector<double>{};
-  p.y = row.series.count("path_y") ? row.series.at("path_y") : std::vector<double>{};
-  if (p.x.size() != p.t.size() || p.y.size() != p.t.size()) p = Path{};
+TimedPath path_of(const RunRow& row) {
+  TimedPath p;
+  const auto get = [&](const char* name) {
+    const auto it = row.series.find(name);
+    return it == row.series.end() ? std::vector<double>{} : it->second;
+  };
+  p.t = get("path_t"), p.x = get("path_x"), p.y = get("path_y");
   return p;
 }
 
@@ -158,7 +122,7 @@ class Room2dModel : public SimulationModel {
       }
     }
     const double n = static_cast<double>(r.steps.size());
-    Path path;
+    TimedPath path;
     path.t.push_back(0.0), path.x.push_back(r.steps.front().truth.x()),
         path.y.push_back(r.steps.front().truth.y());
     for (std::size_t k = 0; k < r.truth_path.size(); ++k) {
@@ -166,16 +130,7 @@ class Room2dModel : public SimulationModel {
       path.x.push_back(r.truth_path[k].x());
       path.y.push_back(r.truth_path[k].y());
     }
-    const std::vector<double> taus = tau_grid(p);
-    std::vector<double> costs;
-    for (double tau : taus) costs.push_back(alignment_cost(path, t, ex, ey, tau));
-    const std::size_t b =
-        static_cast<std::size_t>(std::min_element(costs.begin(), costs.end()) - costs.begin());
-    double best_tau = taus[b], best_cost = costs[b];
-    if (b > 0 && b + 1 < taus.size()) {  // vertex of the parabola through the three best points
-      const double curvature = costs[b - 1] - 2 * costs[b] + costs[b + 1];
-      if (curvature > 0) best_tau += 0.5 * p.lag_step * (costs[b - 1] - costs[b + 1]) / curvature;
-    }
+    const TimeLag lag = estimate_time_lag(path, t, ex, ey, p.lag_max, p.lag_step);
     const double updates = static_cast<double>(r.updates);
     row.values["scans"] = n - 1;
     row.values["updates"] = updates;
@@ -184,9 +139,9 @@ class Room2dModel : public SimulationModel {
     row.values["final_estimate_m"] = (r.steps.back().estimate - r.steps.back().truth).head<2>().norm();
     row.values["final_odometry_m"] = (r.steps.back().odometry - r.steps.back().truth).head<2>().norm();
     row.values["max_heading_deg"] = max_heading * 180.0 / kPi;
-    row.values["lag_s"] = best_tau;
-    row.values["lag_cost_m"] = std::sqrt(best_cost);
-    row.values["zero_lag_cost_m"] = std::sqrt(alignment_cost(path, t, ex, ey, 0.0));
+    row.values["lag_s"] = lag.lag;
+    row.values["lag_cost_m"] = lag.rms_at_lag;
+    row.values["zero_lag_cost_m"] = lag.rms_at_zero;
     row.values["along_track_m"] = along / n;
     row.values["xi_error_m"] = updates > 0 ? xi_error / updates : NAN;
     row.values["xi_sigma_m"] = updates > 0 ? xi_sigma / updates : NAN;
@@ -320,12 +275,10 @@ ReportSection Room2dModel::report(const ExperimentConfig& config, const std::vec
                   "time shift τ [s]",
                   "RMS distance ‖ê(t) − p(t − τ)‖ [m]",
                   {}};
-      std::vector<double> taus = tau_grid(p), costs;
-      for (double tau : taus)
-        costs.push_back(std::sqrt(alignment_cost(path_of(*first), series_or_empty(*first, "t"),
-                                                 series_or_empty(*first, "est_x"),
-                                                 series_or_empty(*first, "est_y"), tau)));
-      cost.add_line(method, taus, costs);
+      const TimeLag lag =
+          estimate_time_lag(path_of(*first), series_or_empty(*first, "t"), series_or_empty(*first, "est_x"),
+                            series_or_empty(*first, "est_y"), p.lag_max, p.lag_step);
+      cost.add_line(method, lag.taus, lag.rms);
       section.figures.push_back(
           {"lag_alignment_" + method,
            "The lag: RMS distance between the estimate and the true path shifted by τ; the "

@@ -4,6 +4,8 @@
 //   metric_examples — E18: the Wulf and Kümmerle metrics on the thesis' worked examples (exact)
 //   registration    — E1–E4, E6: scan pairs with an initial guess, any matcher × sampler
 //   sequence        — E7, E9: a matcher over consecutive scans, chained or fused by a KF
+//   plane_features  — E10, E11: plane merging tests, extraction and semantic association
+//   simulation      — E8, E15: 2D room with ML-NDT into the EKF, range–bearing filter Monte Carlo
 #include <filesystem>
 #include <memory>
 #include <string>
