@@ -23,12 +23,12 @@
 #include <map>
 #include <set>
 
+#include "dataset_source.hpp"
 #include "plane_features.hpp"
 #include "plane_features_extraction.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/synth/campus.hpp"
-#include "sextant/synth/settings.hpp"
 
 namespace sextant {
 
@@ -77,16 +77,16 @@ std::uint64_t scan_seed(std::uint64_t seed, std::size_t scan) {
 class ExtractionSession : public KindSession {
  public:
   ExtractionSession(const ExperimentConfig& config, ExtractionStudyParams p)
-      : p_(std::move(p)), seed_(config.seed) {
-    std::uint64_t seed = config.dataset.seed;
-    const synth::CampusSettings settings =
-        synth::read_campus_settings(config.dataset.campus, config.file, &seed);
-    campus_ = synth::generate_campus(settings, seed);
+      : p_(std::move(p)), seed_(config.seed), dataset_(open_experiment_dataset(config, "plane_features")) {
+    const auto* campus = dynamic_cast<const synth::CampusDataset*>(dataset_.get());
+    if (!campus)
+      throw InputError(config.file, "", "key 'dataset': the extraction study needs source: synthetic");
+    campus_ = &campus->campus();
   }
 
   void run(const RunSpec& run, RunRow& row) const override {
     const std::size_t i = static_cast<std::size_t>(std::stoul(run.point.at("scan")));
-    if (i + 1 >= campus_.size())
+    if (i + 1 >= campus_->size())
       throw std::runtime_error("scan " + std::to_string(i + 1) + " is past the campus");
     const ScanFeatures a = features(i), b = features(i + 1);
     const ExtractionStatistics& st = a.extraction.stats;
@@ -104,7 +104,7 @@ class ExtractionSession : public KindSession {
     std::size_t tp = 0;
     for (std::size_t j = 0; j < a.extraction.landmarks.size(); ++j) {
       const int id = a.truth[j];
-      if (id >= 0 && matches_true_plane(a.extraction.landmarks[j], id, campus_.ground_truth[i]))
+      if (id >= 0 && matches_true_plane(a.extraction.landmarks[j], id, campus_->ground_truth[i]))
         ++tp, found.insert(id);
     }
     std::size_t visible = 0, recalled = 0;
@@ -117,8 +117,8 @@ class ExtractionSession : public KindSession {
     row.values["visible_true_planes"] = static_cast<double>(visible);
     row.values["recalled_true_planes"] = static_cast<double>(recalled);
 
-    const Eigen::Isometry3d truth = campus_.ground_truth[i].inverse() * campus_.ground_truth[i + 1];
-    const Eigen::Isometry3d odometry = campus_.odometry[i].inverse() * campus_.odometry[i + 1];
+    const Eigen::Isometry3d truth = campus_->ground_truth[i].inverse() * campus_->ground_truth[i + 1];
+    const Eigen::Isometry3d odometry = campus_->odometry[i].inverse() * campus_->odometry[i + 1];
     row.values["true_yaw_deg"] = std::atan2(truth.rotation()(1, 0), truth.rotation()(0, 0)) * 180.0 / kPi;
     row.values["true_translation_m"] = truth.translation().norm();
     std::set<int> in_map(a.truth.begin(), a.truth.end());
@@ -160,7 +160,7 @@ class ExtractionSession : public KindSession {
  private:
   ScanFeatures features(std::size_t scan) const {
     ScanFeatures f;
-    f.sim = campus_.scan(scan);
+    f.sim = campus_->scan(scan);
     Rng rng(scan_seed(seed_, scan));
     f.extraction = extract_planes(f.sim.cloud, p_.extraction, rng);
     for (const PlaneLandmark& l : f.extraction.landmarks) f.truth.push_back(majority(l, f.sim.landmark));
@@ -171,7 +171,7 @@ class ExtractionSession : public KindSession {
   /// within the angle tolerance (either orientation) and d within the distance tolerance.
   bool matches_true_plane(const PlaneLandmark& detected, int id,
                           const Eigen::Isometry3d& world_from_sensor) const {
-    const synth::Landmark& l = campus_.world->landmarks[static_cast<std::size_t>(id)];
+    const synth::Landmark& l = campus_->world->landmarks[static_cast<std::size_t>(id)];
     const Plane truth = Plane{l.normal, l.d}.transformed(world_from_sensor.inverse());
     const double dot = detected.plane.normal.dot(truth.normal);
     const double angle = std::acos(std::min(1.0, std::abs(dot))) * 180.0 / kPi;
@@ -181,7 +181,8 @@ class ExtractionSession : public KindSession {
 
   ExtractionStudyParams p_;
   std::uint64_t seed_;
-  synth::Campus campus_;
+  std::unique_ptr<Dataset> dataset_;
+  const synth::Campus* campus_ = nullptr;  ///< owned by dataset_
 };
 
 class ExtractionStudy : public PlaneFeaturesStudy {
@@ -191,8 +192,7 @@ class ExtractionStudy : public PlaneFeaturesStudy {
     if (config.dataset.source != DatasetSource::kSynthetic)
       throw InputError(config.file, "",
                        "key 'dataset': the extraction study needs source: synthetic (true planes)");
-    std::uint64_t seed = config.dataset.seed;
-    (void)synth::read_campus_settings(config.dataset.campus, config.file, &seed);
+    check_experiment_dataset(config, "plane_features");
     if (config.sweep.size() != 1 || config.sweep[0].name != "scan")
       throw InputError(config.file, "", "key 'sweep': the extraction study needs exactly one axis 'scan'");
     for (const auto& v : config.sweep[0].values)
