@@ -10,6 +10,8 @@ const RunKindRegistry& run_kind_registry() {
     // One line per kind (keep sorted).
     r.add("metric_examples", "E18: Wulf and Kümmerle metrics on the thesis' worked examples",
           [] { return make_metric_examples_kind(); });
+    r.add("plane_features", "E10, E11: plane merging tests, extraction and semantic association",
+          [] { return make_plane_features_kind(); });
     r.add("plane_slam", "E12-E14, E16, E17, E19: plane SLAM over a campus scan sequence, any filter",
           [] { return make_plane_slam_kind(); });
     r.add("registration", "E1, E2, E4: scan pairs with an initial guess, any matcher × sampler",
@@ -18,6 +20,8 @@ const RunKindRegistry& run_kind_registry() {
           [] { return make_sequence_kind(); });
     r.add("selftest", "runner self-test: sleeps and records seeds (sharding, resume, merge)",
           [] { return make_selftest_kind(); });
+    r.add("simulation", "E8, E15: 2D room with ML-NDT into the EKF, range-bearing Monte Carlo of filters",
+          [] { return make_simulation_kind(); });
     return r;
   }();
   return registry;

@@ -205,6 +205,7 @@ RoomSim2dRun run_room_sim_2d(const RoomSim2dSettings& s, Matcher& matcher, Rng& 
     odometry = vehicle.process(odometry, u);
     ekf.predict(u, Q);  // eqs. (3.48)–(3.49)
     ++run.controls;
+    run.truth_path.push_back(truth);
     if (k % scan_period != 0) continue;
 
     RoomSimStep step;

@@ -45,6 +45,9 @@ TEST(RoomSim2d, EkfWithMlndtTracksTheTruth) {
   Rng rng(7);
   const RoomSim2dRun run = run_room_sim_2d(s, *matcher, rng);
   ASSERT_GT(run.steps.size(), 20u);
+  ASSERT_EQ(run.truth_path.size(), run.controls);  // the true pose after every control
+  EXPECT_EQ(run.truth_path[static_cast<std::size_t>(std::lround(s.scan_every / s.dt)) - 1],
+            run.steps[1].truth);
 
   double sq_est = 0.0, sq_odo = 0.0, max_heading = 0.0;
   for (const RoomSimStep& step : run.steps) {

@@ -11,5 +11,7 @@ std::unique_ptr<RunKind> make_plane_slam_kind();
 std::unique_ptr<RunKind> make_registration_kind();
 std::unique_ptr<RunKind> make_selftest_kind();
 std::unique_ptr<RunKind> make_sequence_kind();
+std::unique_ptr<RunKind> make_simulation_kind();
+std::unique_ptr<RunKind> make_plane_features_kind();
 
 }  // namespace sextant

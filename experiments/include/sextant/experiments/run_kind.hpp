@@ -5,6 +5,8 @@
 //   plane_slam      — E12–E14, E16, E17, E19: plane SLAM over a campus scan sequence, any filter
 //   registration    — E1–E4, E6: scan pairs with an initial guess, any matcher × sampler
 //   sequence        — E7, E9: a matcher over consecutive scans, chained or fused by a KF
+//   plane_features  — E10, E11: plane merging tests, extraction and semantic association
+//   simulation      — E8, E15: 2D room with ML-NDT into the EKF, range–bearing filter Monte Carlo
 #include <filesystem>
 #include <memory>
 #include <string>

@@ -101,7 +101,9 @@ struct RoomSimStep {
 struct RoomSim2dRun {
   std::vector<RoomSimStep> steps;  ///< one per scan; element 0 is the start (no match)
   std::size_t controls = 0;        ///< control periods simulated
-  std::size_t updates = 0;         ///< steps with status kUpdated
+  /// The true pose after every control (time (k + 1)·dt), for measurements between scans (the lag).
+  std::vector<Eigen::Vector3d> truth_path;
+  std::size_t updates = 0;  ///< steps with status kUpdated
   std::vector<Eigen::Vector3d> truth() const;
   std::vector<Eigen::Vector3d> estimate() const;
   std::vector<Eigen::Vector3d> odometry() const;

@@ -1,0 +1,142 @@
+// The `plane_features` kind: E10 (table 4.1) with its exact values for the fixed seed, and E11's
+// quick profile (extraction, association, precision/recall on the campus) — outputs and shapes.
+#include <cmath>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "sextant/core/error.hpp"
+#include "sextant/experiments/experiment_config.hpp"
+#include "sextant/experiments/report.hpp"
+#include "sextant/experiments/run_kind.hpp"
+#include "sextant/experiments/run_row.hpp"
+#include "sextant/experiments/runner.hpp"
+#include "test_helpers.hpp"
+
+namespace sextant {
+namespace {
+
+using test::TempDir;
+
+const std::filesystem::path kExperiments = std::filesystem::path(SEXTANT_SOURCE_DIR) / "experiments";
+
+RunnerSummary run_quick(const std::string& file, const std::filesystem::path& results) {
+  RunnerOptions o;
+  o.results_root = results;
+  o.jobs = 2;
+  o.quick = true;
+  o.progress = false;
+  return run_experiment(kExperiments / file, o);
+}
+
+/// Number of table rows in a Markdown table file (lines starting with "| " after the separator).
+std::size_t markdown_rows(const std::string& text) {
+  std::size_t rows = 0;
+  bool body = false;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("| :", 0) == 0 || line.rfind("|---", 0) == 0)
+      body = true;
+    else if (body && line.rfind("| ", 0) == 0)
+      ++rows;
+  }
+  return rows;
+}
+
+// Repetition 0 draws the planes from seed 1, exactly as tests/features/merging_test.cpp's seed 1
+// (C_p 4.74 / 2.91 / 12.88 / 10.70 against the thesis' 5.14 / 2.38 / 44.77 / 141.74).
+TEST(E10, QuickProfileGivesTheFixedSeedValuesAndTheReport) {
+  TempDir tmp;
+  const RunnerSummary s = run_quick("e10_merging_tests.yaml", tmp / "results");
+  ASSERT_EQ(s.failed, 0u);
+  ASSERT_EQ(s.executed, 30u);
+  const RunRow* first = nullptr;
+  const auto rows = read_rows(s.folder / kRunsJsonl).rows;
+  for (const auto& r : rows)
+    if (r.repetition == 0) first = &r;
+  ASSERT_NE(first, nullptr);
+  const std::map<std::string, double> expected{
+      {"case1_12_co", 2.791312242332653},  {"case1_12_ct", 0.6174567552986131},
+      {"case1_12_cp", 4.7367034407798805}, {"case1_12_dc", 15.000360191734202},
+      {"case1_13_co", 2.0464777137519206}, {"case1_13_ct", 0.0002631391207432443},
+      {"case1_13_cp", 2.9117136097021157}, {"case1_13_dc", 25.000043075328016},
+      {"case2_12_co", 2.7913125770763334}, {"case2_12_ct", 5.614419873612151},
+      {"case2_12_cp", 12.877387135503701}, {"case2_12_dc", 15.84456749669636},
+      {"case2_13_co", 2.0464777629661017}, {"case2_13_ct", 4.999703624949408},
+      {"case2_13_cp", 10.704992021369161}, {"case2_13_dc", 25.50423966511534}};
+  for (const auto& [key, value] : expected) EXPECT_NEAR(first->value(key), value, 1e-9 * (1 + value)) << key;
+  EXPECT_EQ(first->value("case1_merged_planes"), 1.0);
+  EXPECT_EQ(first->value("case2_merged_planes"), 2.0);
+  EXPECT_EQ(first->value("case1_12_passes"), 1.0);
+  EXPECT_EQ(first->value("case2_13_passes"), 0.0);
+
+  const ReportSummary r = write_report({tmp / "results"}, tmp / "report");
+  ASSERT_TRUE(r.failed.empty()) << r.failed.front();
+  const auto folder = tmp / "report" / "e10_merging_tests";
+  const std::string t41 = test::read_text(folder / "table_4_1.md");
+  EXPECT_EQ(markdown_rows(t41), 4u) << t41;
+  EXPECT_NE(
+      t41.find("| case 1 | 1 and 2 | 2.79 | 4.28 | 0.62 | 0.19 | 4.74 | 5.14 | 22.44 | 15.00 | 15.20 |"),
+      std::string::npos)
+      << t41;
+  EXPECT_NE(
+      t41.find("| case 2 | 1 and 3 | 2.05 | 1.62 | 5.00 | 4.86 | 10.70 | 141.74 | 114.60 | 25.50 | 25.88 |"),
+      std::string::npos)
+      << t41;
+  EXPECT_EQ(markdown_rows(test::read_text(folder / "merging_repetitions.md")), 4u);
+  EXPECT_TRUE(std::filesystem::exists(folder / "generated_planes_case1.svg"));
+  EXPECT_TRUE(std::filesystem::exists(folder / "generated_planes_case2.svg"));
+  EXPECT_TRUE(std::filesystem::exists(folder / "cp_against_dc.svg"));
+  const std::string summary = test::read_text(folder / "e10_merging_tests.md");
+  // d_c does not separate the cases, C_p does: computed verdicts on the 30 quick repetitions.
+  EXPECT_NE(summary.find("cannot tell the cases apart (case 2 / case 1 within ±10 %) | holds"),
+            std::string::npos)
+      << summary;
+  EXPECT_NE(summary.find("case 2 above (no merge) | holds"), std::string::npos) << summary;
+}
+
+TEST(E11, QuickProfileWritesExtractionAssociationAndPrecisionRecall) {
+  TempDir tmp;
+  const RunnerSummary s = run_quick("e11_extraction_association.yaml", tmp / "results");
+  ASSERT_EQ(s.failed, 0u);
+  ASSERT_EQ(s.executed, 5u);  // scan pairs 0 → 1 … 4 → 5
+  for (const auto& r : read_rows(s.folder / kRunsJsonl).rows) {
+    EXPECT_GT(r.value("landmarks"), 0.0);
+    EXPECT_LE(r.value("true_positives"), r.value("landmarks"));
+    EXPECT_LE(r.value("recalled_true_planes"), r.value("visible_true_planes"));
+    for (const char* pose : {"none", "odometry", "truth"}) {
+      const std::string p = pose;
+      EXPECT_LE(r.value("assoc_" + p + "_correct"), r.value("assoc_" + p + "_true_plane"));
+      EXPECT_LE(r.value("assoc_" + p + "_true_plane"), r.value("assoc_" + p + "_matches"));
+      EXPECT_EQ(r.series.at("crit_" + p + "_co").size(),
+                static_cast<std::size_t>(r.value("assoc_" + p + "_matches")));
+    }
+    if (r.point.at("scan") == "3") {
+      EXPECT_NEAR(std::abs(r.value("true_yaw_deg")), 51.5, 1.0);  // the sharp turn
+    }
+  }
+  const ReportSummary r = write_report({tmp / "results"}, tmp / "report");
+  ASSERT_TRUE(r.failed.empty()) << r.failed.front();
+  const auto folder = tmp / "report" / "e11_extraction_association";
+  EXPECT_EQ(markdown_rows(test::read_text(folder / "extraction_first_scans.md")), 5u);
+  EXPECT_EQ(markdown_rows(test::read_text(folder / "association_first_pairs.md")), 5u);
+  EXPECT_GE(markdown_rows(test::read_text(folder / "table_5_10_truth.md")), 4u);
+  EXPECT_EQ(markdown_rows(test::read_text(folder / "precision_recall.md")), 8u);
+  for (const char* svg : {"features_scan_0.svg", "features_scan_1.svg", "precision_recall_per_scan.svg"})
+    EXPECT_TRUE(std::filesystem::exists(folder / svg)) << svg;
+}
+
+TEST(PlaneFeaturesKind, RejectsAnUnknownStudyAndKeys) {
+  const auto parse = [](const std::string& text) {
+    const ExperimentConfig c = parse_experiment_config(YAML::Load(text), "x.yaml", false);
+    run_kind_registry().create(c.kind)->validate(c);
+  };
+  EXPECT_THROW(parse("name: x\nkind: plane_features\nmethods: [{name: a}]\nparams: {study: nothing}\n"),
+               InputError);
+  EXPECT_THROW(
+      parse("name: x\nkind: plane_features\nmethods: [{name: a}]\nparams: {study: merging, planes: []}\n"),
+      InputError);
+}
+
+}  // namespace
+}  // namespace sextant

@@ -1,0 +1,114 @@
+// The `simulation` kind: E8 (room, ML-NDT into the EKF, the lag) and E15 (UKF vs RSPKF Monte
+// Carlo) quick profiles — rows, series, tables, figures and computed claims.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "sextant/core/error.hpp"
+#include "sextant/experiments/experiment_config.hpp"
+#include "sextant/experiments/report.hpp"
+#include "sextant/experiments/run_kind.hpp"
+#include "sextant/experiments/run_row.hpp"
+#include "sextant/experiments/runner.hpp"
+#include "test_helpers.hpp"
+
+namespace sextant {
+namespace {
+
+using test::TempDir;
+
+RunnerSummary run_quick(const std::string& file, const std::filesystem::path& results) {
+  RunnerOptions o;
+  o.results_root = results;
+  o.jobs = 2;
+  o.quick = true;
+  o.progress = false;
+  return run_experiment(std::filesystem::path(SEXTANT_SOURCE_DIR) / "experiments" / file, o);
+}
+
+TEST(E8, QuickProfileTracksTheRoomLoopsAndMeasuresTheLag) {
+  TempDir tmp;
+  const RunnerSummary s = run_quick("e08_ekf_mlndt_2d.yaml", tmp / "results");
+  ASSERT_EQ(s.failed, 0u);
+  ASSERT_EQ(s.executed, 3u);
+  const auto rows = read_rows(s.folder / kRunsJsonl).rows;
+  ASSERT_EQ(rows.size(), 3u);
+  for (const auto& r : rows) {
+    EXPECT_GT(r.value("scans"), 20.0);
+    EXPECT_EQ(r.series.at("t").size(), r.series.at("est_x").size());
+    EXPECT_EQ(r.series.at("path_t").size(), r.series.at("path_x").size());
+    EXPECT_GT(r.series.at("path_t").size(), r.series.at("t").size());  // the true path at every control
+    EXPECT_LT(r.value("rms_estimate_m"), r.value("rms_odometry_m"));
+    EXPECT_TRUE(std::isfinite(r.value("lag_s")));
+    EXPECT_LE(std::abs(r.value("lag_s")), 2.0);
+    // Shifting by the best lag aligns at least as well as no shift.
+    EXPECT_LE(r.value("lag_cost_m"), r.value("zero_lag_cost_m") + 1e-12);
+  }
+  const ReportSummary rep = write_report({tmp / "results"}, tmp / "report");
+  ASSERT_TRUE(rep.failed.empty()) << rep.failed.front();
+  const auto folder = tmp / "report" / "e08_ekf_mlndt_2d";
+  for (const char* f :
+       {"room_trajectory.svg", "room_errors.svg", "lag_alignment_ekf_mlndt.svg", "room_errors_ekf_mlndt.md"})
+    EXPECT_TRUE(std::filesystem::exists(folder / f)) << f;
+  const std::string summary = test::read_text(folder / "e08_ekf_mlndt_2d.md");
+  EXPECT_NE(summary.find("visibly trails the true position"), std::string::npos);
+  EXPECT_NE(summary.find("tracks the truth far better than dead reckoning of the same controls | holds"),
+            std::string::npos)
+      << summary;
+}
+
+TEST(E15, QuickProfileRunsPairedFiltersAndComparesThem) {
+  TempDir tmp;
+  const RunnerSummary s = run_quick("e15_rspkf_vs_ukf_2d.yaml", tmp / "results");
+  ASSERT_EQ(s.failed, 0u);
+  ASSERT_EQ(s.executed, 8u);  // 2 filters × 4 repetitions
+  std::map<int, std::map<std::string, RunRow>> by_rep;
+  for (const auto& r : read_rows(s.folder / kRunsJsonl).rows) by_rep[r.repetition][r.method] = r;
+  ASSERT_EQ(by_rep.size(), 4u);
+  for (const auto& [rep, methods] : by_rep) {
+    ASSERT_EQ(methods.size(), 2u);
+    const RunRow &ukf = methods.at("ukf"), &rspkf = methods.at("rspkf");
+    EXPECT_EQ(ukf.seed, rspkf.seed);  // paired: the same noise
+    // The same simulated run: same steps and the same dead reckoning.
+    EXPECT_EQ(ukf.value("steps"), 600.0);
+    EXPECT_EQ(ukf.value("dead_reckoning_error_m"), rspkf.value("dead_reckoning_error_m"));
+    EXPECT_EQ(ukf.value("failed_steps"), 0.0);
+    EXPECT_EQ(rspkf.value("failed_steps"), 0.0);
+    EXPECT_EQ(ukf.series.at("t").size(), 12u);  // every 50 steps of 600
+    EXPECT_TRUE(std::isfinite(ukf.value("mean_position_error_m")));
+    EXPECT_TRUE(std::isfinite(rspkf.value("mean_heading_error_deg")));
+    if (rep == 0) {
+      EXPECT_FALSE(rspkf.series.at("map_x").empty());
+    }
+  }
+  const ReportSummary rep = write_report({tmp / "results"}, tmp / "report");
+  ASSERT_TRUE(rep.failed.empty()) << rep.failed.front();
+  const auto folder = tmp / "report" / "e15_rspkf_vs_ukf_2d";
+  for (const char* f : {"average_position_error.svg", "average_heading_error.svg", "map_and_paths.svg",
+                        "monte_carlo_errors.md", "monte_carlo_paired_difference.md"})
+    EXPECT_TRUE(std::filesystem::exists(folder / f)) << f;
+  const std::string summary = test::read_text(folder / "e15_rspkf_vs_ukf_2d.md");
+  EXPECT_NE(summary.find("The RSPKF's average position error norm is below the UKF's"), std::string::npos);
+  EXPECT_NE(summary.find("(95 %, n = 4)"), std::string::npos) << summary;
+}
+
+TEST(SimulationKind, RejectsAnUnknownModelAndBadKeys) {
+  const auto parse = [](const std::string& text) {
+    const ExperimentConfig c = parse_experiment_config(YAML::Load(text), "x.yaml", false);
+    run_kind_registry().create(c.kind)->validate(c);
+  };
+  EXPECT_THROW(parse("name: x\nkind: simulation\nmethods: [{name: a}]\nparams: {model: nothing}\n"),
+               InputError);
+  EXPECT_THROW(parse("name: x\nkind: simulation\nmethods: [{name: a, matcher: mlndt}]\n"
+                     "params: {model: room_2d, room: {beam: 3}}\n"),
+               InputError);
+  EXPECT_THROW(parse("name: x\nkind: simulation\nmethods: [{name: ukf, filter: ukf}]\n"
+                     "params: {model: range_bearing, baseline: ukf, proposed: rspkf}\n"),
+               InputError);  // no method named rspkf
+  EXPECT_NO_THROW(
+      parse("name: x\nkind: simulation\nmethods: [{name: ukf, filter: ukf}, {name: r, filter: rspkf}]\n"
+            "params: {model: range_bearing, baseline: ukf, proposed: r}\n"));
+}
+
+}  // namespace
+}  // namespace sextant
