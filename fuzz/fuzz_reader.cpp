@@ -1,8 +1,9 @@
-// One libFuzzer harness per reader, chosen at compile time by SEXTANT_FUZZ_TARGET (see
-// fuzz/CMakeLists.txt). The readers take paths, so each input is written to a file (under
-// /dev/shm when it exists) with the extension the reader expects. A reader may refuse an input
-// only with sextant::InputError; any other exception, a crash, a leak or a sanitizer report is a
-// finding. Accepted clouds must hold only finite points and account for every point read.
+// One libFuzzer harness per reader: every fuzz_<name> executable links this same object and picks
+// its reader from its own name (fuzz_pcd → the PCD reader), so the file is compiled once. The readers take
+// paths, so each input is written to a file (under /dev/shm when it exists) with the extension the reader
+// expects. A reader may refuse an input only with sextant::InputError; any other exception, a crash, a leak
+// or a sanitizer report is a finding. Accepted clouds must hold only finite points and account for every
+// point read.
 #include <unistd.h>
 
 #include <cmath>
@@ -41,7 +42,11 @@ enum Target {
   config
 };
 
-constexpr Target kTarget = SEXTANT_FUZZ_TARGET;
+const char* const kNames[] = {"uos_3d",      "uos_pose",    "uos_frames", "kitti_bin", "xyz32",
+                              "kitti_poses", "kitti_calib", "pcd",        "ply",       "csv",
+                              "tum",         "kitti_traj",  "oxts",       "config"};
+
+Target kTarget = pcd;
 
 const char* extension() {
   switch (kTarget) {
@@ -99,6 +104,19 @@ void read_input(const std::filesystem::path& file) {
 }
 
 }  // namespace
+
+extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
+  (void)argc;
+  const std::string exe = std::filesystem::path((*argv)[0]).filename().string();  // fuzz_<name>
+  for (int t = 0; t <= config; ++t) {
+    if (exe == std::string("fuzz_") + kNames[t]) {
+      kTarget = static_cast<Target>(t);
+      return 0;
+    }
+  }
+  std::fprintf(stderr, "%s: not a harness name (fuzz_pcd, fuzz_ply, …)\n", exe.c_str());
+  std::abort();
+}
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::filesystem::path& file = input_file();
