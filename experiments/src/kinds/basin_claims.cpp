@@ -76,7 +76,8 @@ std::vector<Claim> basin_claims(const BasinData& d, const RegistrationParams& pa
     const PairedRates r = compare_paired_successes(sp, sb);
     out.push_back({params.proposed + " succeeds from more initial offsets than " + params.baseline +
                        " (the same offsets for both: paired)",
-                   verdict_greater(r.difference, 0.0), describe(r)});
+                   verdict_greater(r.difference, 0.0),
+                   "a = " + params.proposed + ", b = " + params.baseline + ": " + describe(r)});
     const Interval settle_ndt = bootstrap_median(finite(d.values(B, &BasinRun::settle, true)), seed + 13);
     out.push_back({params.baseline + " settles after ≈ " + format_number(s.ndt_settle, 0) +
                        " iterations (accepted band " + format_number(s.ndt_settle_band[0], 1) + "–" +
@@ -101,7 +102,8 @@ std::vector<Claim> basin_claims(const BasinData& d, const RegistrationParams& pa
     const PairedRates r = compare_paired_successes(sn, sl);
     out.push_back({"ML-NDT with Newton and with LM give very similar results (success rates within ±" +
                        format_number(100 * s.solver_difference, 0) + " points)",
-                   verdict_in_band(r.difference, -s.solver_difference, s.solver_difference), describe(r)});
+                   verdict_in_band(r.difference, -s.solver_difference, s.solver_difference),
+                   "a = " + s.newton + ", b = " + s.lm + ": " + describe(r)});
     std::vector<double> in, il;
     d.paired_values(L, N, &BasinRun::settle, il, in);
     const Interval faster = bootstrap_paired_mean_difference(il, in, seed + 15);
@@ -161,7 +163,8 @@ std::vector<Claim> basin_claims(const BasinData& d, const RegistrationParams& pa
     out.push_back(sanity("ML-NDT started at layer 1 (" + s.first_layer +
                              ") succeeds more often than at layer 2 (" + s.second_layer +
                              ", NDT's own grid): the coarse layer is what widens the basin",
-                         verdict_greater(r.difference, 0.0), describe(r)));
+                         verdict_greater(r.difference, 0.0),
+                         "a = " + s.first_layer + ", b = " + s.second_layer + ": " + describe(r)));
   }
   return out;
 }

@@ -291,21 +291,22 @@ ReportSection basin_report(const ExperimentConfig& config, const RegistrationPar
   const std::vector<std::size_t> active = d.active_scenes();
   std::vector<std::string> scene_ticks;
   for (const std::size_t s : active) scene_ticks.push_back(d.scenes[s]);
+  // Rows = scenes, columns = methods (method names fit under the columns, not beside the rows).
   const auto radii = [&](const std::vector<std::vector<double>>& v) {
-    Eigen::MatrixXd out(static_cast<Eigen::Index>(d.methods.size()),
-                        static_cast<Eigen::Index>(active.size()));
-    for (std::size_t m = 0; m < d.methods.size(); ++m)
-      for (std::size_t k = 0; k < active.size(); ++k)
-        out(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(k)) = v[m][active[k]];
+    Eigen::MatrixXd out(static_cast<Eigen::Index>(active.size()),
+                        static_cast<Eigen::Index>(d.methods.size()));
+    for (std::size_t k = 0; k < active.size(); ++k)
+      for (std::size_t m = 0; m < d.methods.size(); ++m)
+        out(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(m)) = v[m][active[k]];
     return out;
   };
   section.figures.push_back(heatmap_figure(
       "basin_translation", "Translation basin radius per method and scene",
-      "Translation basin [" + d.offset_unit() + "]", "scene", "method", "radius [" + d.offset_unit() + "]",
-      scene_ticks, d.methods, radii(d.translation), d.offsets.empty() ? 1.0 : d.offsets.back(), 2));
-  section.figures.push_back(heatmap_figure("basin_yaw", "Yaw basin radius per method and scene",
-                                           "Yaw basin [deg]", "scene", "method", "radius [deg]", scene_ticks,
-                                           d.methods, radii(d.yaw), d.yaws.empty() ? 1.0 : d.yaws.back(), 0));
+      "Translation basin [" + d.offset_unit() + "]", "method", "scene", "radius [" + d.offset_unit() + "]",
+      d.methods, scene_ticks, radii(d.translation), d.offsets.empty() ? 1.0 : d.offsets.back(), 2));
+  section.figures.push_back(heatmap_figure(
+      "basin_yaw", "Yaw basin radius per method and scene", "Yaw basin [deg]", "method", "scene",
+      "radius [deg]", d.methods, scene_ticks, radii(d.yaw), d.yaws.empty() ? 1.0 : d.yaws.back(), 0));
   section.claims = basin_claims(d, params);
   return section;
 }
