@@ -67,7 +67,8 @@ TEST(E01, QuickProfileWritesEveryTableAndFigure) {
   const ReportSummary r = write_report({tmp / "results"}, tmp / "report");
   EXPECT_EQ(r.experiments, 1u);
   const auto folder = tmp / "report" / "e01_convergence_basin";
-  for (const char* table : {"basin", "basin_per_scene", "paired_vs_baseline", "scenes", "success_map"})
+  for (const char* table :
+       {"basin", "basin_ratios", "basin_per_scene", "paired_vs_baseline", "scenes", "success_map"})
     EXPECT_TRUE(std::filesystem::exists(folder / (std::string(table) + ".csv"))) << table;
   // Success map: one row per method × |yaw| value, columns method, |yaw| and the 4 offsets.
   const std::string map = test::read_text(folder / "success_map.csv");

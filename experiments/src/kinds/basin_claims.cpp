@@ -33,9 +33,9 @@ std::pair<std::size_t, std::size_t> at_cell(const BasinData& d, std::size_t m, d
 }
 
 /// Ratio of the methods' median basin radii over the scenes (bootstrap, scenes resampled).
-Claim ratio_claim(const BasinData& d, std::size_t p, std::size_t b, bool yaw, std::uint64_t seed) {
+Claim ratio_claim(const BasinData& d, std::size_t p, std::size_t b, bool yaw) {
   const auto& radii = yaw ? d.yaw : d.translation;
-  const Interval ratio = bootstrap_ratio_of_medians(finite(radii[p]), finite(radii[b]), seed);
+  const Interval ratio = basin_ratio(d, p, b, yaw);
   const auto band = yaw ? d.settings.yaw_band : d.settings.translation_band;
   const double thesis = yaw ? d.settings.mlndt_yaw / d.settings.ndt_yaw
                             : d.settings.mlndt_translation / d.settings.ndt_translation;
@@ -61,6 +61,11 @@ Claim sanity(const std::string& statement, Verdict v, const std::string& evidenc
 
 }  // namespace
 
+Interval basin_ratio(const BasinData& d, std::size_t p, std::size_t b, bool yaw) {
+  const auto& radii = yaw ? d.yaw : d.translation;
+  return bootstrap_ratio_of_medians(finite(radii[p]), finite(radii[b]), d.config->seed + (yaw ? 12 : 11));
+}
+
 std::vector<Claim> basin_claims(const BasinData& d, const RegistrationParams& params) {
   std::vector<Claim> out;
   const BasinReportSettings& s = d.settings;
@@ -69,8 +74,8 @@ std::vector<Claim> basin_claims(const BasinData& d, const RegistrationParams& pa
   const long n = d.method(s.newton), l = d.method(s.lm);
   const auto B = static_cast<std::size_t>(b), P = static_cast<std::size_t>(p);
   if (b >= 0 && p >= 0) {
-    out.push_back(ratio_claim(d, P, B, false, seed + 11));
-    out.push_back(ratio_claim(d, P, B, true, seed + 12));
+    out.push_back(ratio_claim(d, P, B, false));
+    out.push_back(ratio_claim(d, P, B, true));
     std::vector<bool> sp, sb;
     d.paired(P, B, sp, sb);
     const PairedRates r = compare_paired_successes(sp, sb);

@@ -21,6 +21,7 @@
 #include "basin_analysis.hpp"
 #include "registration_settings.hpp"
 #include "sextant/eval/html_report.hpp"
+#include "sextant/eval/verdict.hpp"
 
 namespace sextant {
 
@@ -63,6 +64,10 @@ struct BasinData {
 
 BasinData basin_data(const ExperimentConfig& config, const RegistrationParams& params,
                      const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows);
+
+/// Ratio of method p's median basin radius over the scenes to method b's (percentile bootstrap,
+/// the scenes resampled); the same seed gives the claim's and the table's interval.
+Interval basin_ratio(const BasinData& data, std::size_t p, std::size_t b, bool yaw);
 
 /// The thesis' claims and the sanity checks, with verdicts from the statistical model.
 std::vector<Claim> basin_claims(const BasinData& data, const RegistrationParams& params);

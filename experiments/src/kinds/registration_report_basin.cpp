@@ -171,6 +171,33 @@ Table map_table(const BasinData& d) {
   return t;
 }
 
+Table ratio_table(const BasinData& d, const RegistrationParams& params) {
+  Table t;
+  t.caption = "Basin width of each method relative to " + params.baseline +
+              ": ratio of median radii over the scenes [95 % bootstrap interval] | thesis";
+  t.label = "basin_ratios";
+  t.note = "Thesis: ML-NDT 25 vs NDT 10 units (2.5×) in translation, 15° vs 5° (3×) in yaw; accepted bands " +
+           format_number(d.settings.translation_band[0], 2) + "–" +
+           format_number(d.settings.translation_band[1], 2) + "× and " +
+           format_number(d.settings.yaw_band[0], 2) + "–" + format_number(d.settings.yaw_band[1], 2) + "×.";
+  t.add_column("method")
+      .add_column("translation ratio")
+      .add_column("yaw ratio")
+      .add_number_column("thesis translation", 1)
+      .add_number_column("thesis yaw", 1);
+  const long b = d.method(params.baseline);
+  if (b < 0) return t;
+  for (std::size_t m = 0; m < d.methods.size(); ++m) {
+    if (static_cast<long>(m) == b || d.method(d.methods[m]) < 0) continue;
+    t.add_row({Cell::text(d.methods[m]),
+               Cell::text(describe(basin_ratio(d, m, static_cast<std::size_t>(b), false), "×")),
+               Cell::text(describe(basin_ratio(d, m, static_cast<std::size_t>(b), true), "×")),
+               Cell::number(d.settings.mlndt_translation / d.settings.ndt_translation, 1),
+               Cell::number(d.settings.mlndt_yaw / d.settings.ndt_yaw, 1)});
+  }
+  return t;
+}
+
 /// The snapshot run of each method (the configured long-range offset), or null.
 std::vector<const RunRow*> snapshot_rows(const BasinData& d) {
   std::vector<const RunRow*> out(d.methods.size(), nullptr);
@@ -274,6 +301,7 @@ ReportSection basin_report(const ExperimentConfig& config, const RegistrationPar
       "iteration "
       "caps NDT 35, ML-NDT 50; (7) the thesis states no success criterion for E1 — ours is above.";
   section.tables.push_back(basin_table(d, params));
+  section.tables.push_back(ratio_table(d, params));
   section.tables.push_back(per_scene_table(d));
   section.tables.push_back(paired_table(d, params.baseline));
   section.tables.push_back(scene_table(d, settings));
@@ -291,22 +319,25 @@ ReportSection basin_report(const ExperimentConfig& config, const RegistrationPar
   const std::vector<std::size_t> active = d.active_scenes();
   std::vector<std::string> scene_ticks;
   for (const std::size_t s : active) scene_ticks.push_back(d.scenes[s]);
-  // Rows = scenes, columns = methods (method names fit under the columns, not beside the rows).
+  // Rows = methods (without the "mlndt_" prefix, so the labels fit beside the rows), columns = scenes.
+  std::vector<std::string> method_ticks;
+  for (const auto& m : d.methods) method_ticks.push_back(m.rfind("mlndt_", 0) == 0 ? m.substr(6) : m);
   const auto radii = [&](const std::vector<std::vector<double>>& v) {
-    Eigen::MatrixXd out(static_cast<Eigen::Index>(active.size()),
-                        static_cast<Eigen::Index>(d.methods.size()));
-    for (std::size_t k = 0; k < active.size(); ++k)
-      for (std::size_t m = 0; m < d.methods.size(); ++m)
-        out(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(m)) = v[m][active[k]];
+    Eigen::MatrixXd out(static_cast<Eigen::Index>(d.methods.size()),
+                        static_cast<Eigen::Index>(active.size()));
+    for (std::size_t m = 0; m < d.methods.size(); ++m)
+      for (std::size_t k = 0; k < active.size(); ++k)
+        out(static_cast<Eigen::Index>(m), static_cast<Eigen::Index>(k)) = v[m][active[k]];
     return out;
   };
+  const std::string note = " (rows: methods, \"mlndt_\" dropped)";
   section.figures.push_back(heatmap_figure(
-      "basin_translation", "Translation basin radius per method and scene",
-      "Translation basin [" + d.offset_unit() + "]", "method", "scene", "radius [" + d.offset_unit() + "]",
-      d.methods, scene_ticks, radii(d.translation), d.offsets.empty() ? 1.0 : d.offsets.back(), 2));
+      "basin_translation", "Translation basin radius per method and scene" + note,
+      "Translation basin [" + d.offset_unit() + "]", "scene", "method", "radius [" + d.offset_unit() + "]",
+      scene_ticks, method_ticks, radii(d.translation), d.offsets.empty() ? 1.0 : d.offsets.back(), 2));
   section.figures.push_back(heatmap_figure(
-      "basin_yaw", "Yaw basin radius per method and scene", "Yaw basin [deg]", "method", "scene",
-      "radius [deg]", d.methods, scene_ticks, radii(d.yaw), d.yaws.empty() ? 1.0 : d.yaws.back(), 0));
+      "basin_yaw", "Yaw basin radius per method and scene" + note, "Yaw basin [deg]", "scene", "method",
+      "radius [deg]", scene_ticks, method_ticks, radii(d.yaw), d.yaws.empty() ? 1.0 : d.yaws.back(), 0));
   section.claims = basin_claims(d, params);
   return section;
 }
