@@ -172,6 +172,8 @@ ReportFigure heatmap_figure(const std::string& id, const std::string& caption, c
   map.value_max = max_value > 0 ? max_value : 1.0;
   map.annotate = true;
   map.annotate_precision = precision;
+  // Wide enough that tick labels of ~10 characters do not run into each other.
+  map.width = std::max(640, 260 + 90 * static_cast<int>(values.cols()));
   return {id, caption, render_svg(map)};
 }
 
