@@ -88,7 +88,8 @@ TEST(E01, QuickProfileWritesEveryTableAndFigure) {
         "basin_translation", "basin_yaw"})
     EXPECT_TRUE(std::filesystem::exists(folder / (std::string(figure) + ".svg"))) << figure;
   const std::string html = test::read_text(r.index_html);
-  EXPECT_NE(html.find("Profile: quick"), std::string::npos);
+  EXPECT_NE(html.find("[quick, n = 480 runs]"), std::string::npos);
+  EXPECT_NE(html.find("n = 480 registrations"), std::string::npos);
   EXPECT_NE(html.find("McNemar"), std::string::npos);
   EXPECT_NE(html.find("basin is ≈ 2.5×"), std::string::npos);
 }

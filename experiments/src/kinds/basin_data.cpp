@@ -32,7 +32,6 @@ void read_thesis(const YAML::Node& node, const std::string& file, double& transl
 BasinReportSettings read_basin_report_settings(const ExperimentConfig& config) {
   BasinReportSettings s;
   SettingsReader in(config.reference, config.file);
-  in.read("profile", s.profile);
   {
     SettingsReader c(in.child("criterion"), config.file);
     c.read("translation_m", s.criterion.max_translation_m);

@@ -3,7 +3,6 @@
 // basin_claims.cpp: the verdicts): the report settings under `reference:` and the runs grouped.
 //
 //   reference:
-//     profile: full                                  # shown in the notes (quick: overrides it)
 //     criterion: {translation_m: 0.5, rotation_deg: 2}   # success (ours; §5.1.1.1 states none)
 //     basin_rate: 0.5                                # a grid value is inside the basin at ≥ this rate
 //     thesis:                                        # §5.1.1.1, in its unnamed "units"
@@ -26,7 +25,6 @@
 namespace sextant {
 
 struct BasinReportSettings {
-  std::string profile = "full";
   BasinCriterion criterion;
   double basin_rate = 0.5;
   double ndt_translation = 10, ndt_yaw = 5, ndt_settle = 25;

@@ -271,7 +271,7 @@ ReportSection basin_report(const ExperimentConfig& config, const RegistrationPar
             d.offset_unit() + ", direction " + format_number(settings.snapshot->direction, 0) + ", yaw " +
             format_number(settings.snapshot->yaw, 0) + "°";
   section.notes =
-      "Profile: " + d.settings.profile + "; " + std::to_string(d.runs.size()) + " registrations (" +
+      "n = " + std::to_string(d.runs.size()) + " registrations (profile in the heading; " +
       std::to_string(d.active_scenes().size()) + " scenes × " + std::to_string(d.offsets.size()) +
       " offsets × " + std::to_string(d.yaws.size()) + " |yaw| values × directions × " +
       std::to_string(d.methods.size()) +
