@@ -14,6 +14,7 @@
 #include "dataset_source.hpp"
 #include "kinds.hpp"
 #include "registration_report.hpp"
+#include "registration_scenes.hpp"
 #include "registration_settings.hpp"
 #include "sextant/core/dataset.hpp"
 #include "sextant/core/error.hpp"
@@ -23,9 +24,6 @@
 
 namespace sextant {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kDeg = kPi / 180.0;
 
 double point_value(const RunSpec& run, const std::string& axis, double fallback) {
   const auto it = run.point.find(axis);
@@ -46,6 +44,8 @@ class RegistrationSession : public KindSession {
       : params_(std::move(params)),
         methods_(std::move(methods)),
         dataset_(open_experiment_dataset(config, "registration")) {
+    if (params_.pairs == PairSource::kDisplaced)
+      scenes_ = std::make_unique<DisplacedScenes>(config, params_, *dataset_);
     const std::vector<std::size_t> indices = needed_scans(config, params_);
     for (const std::size_t i : indices) {
       if (i >= dataset_->size())
@@ -62,23 +62,28 @@ class RegistrationSession : public KindSession {
   void run(const RunSpec& run, RunRow& row) const override {
     const RegistrationMethod& method = methods_.at(run.method_index);
     const bool displaced = params_.pairs == PairSource::kDisplaced;
-    const std::size_t a = displaced ? params_.scan : static_cast<std::size_t>(point_value(run, "pair", 0));
-    const std::size_t b = displaced ? params_.second : a + 1;
-    const Eigen::Isometry3d truth_ab =
-        relative_pose(dataset_->ground_truth(a), dataset_->ground_truth(b), "ground truth");
+    const std::size_t a = displaced ? 0 : static_cast<std::size_t>(point_value(run, "pair", 0));
+    const std::size_t b = a + 1;
 
-    PointCloud input = scans_.at(b);
-    Eigen::Isometry3d truth = truth_ab;
+    PointCloud input;
+    const PointCloud* reference = nullptr;
+    Eigen::Isometry3d truth = Eigen::Isometry3d::Identity();
     Eigen::Isometry3d guess = Eigen::Isometry3d::Identity();
+    DisplacedCase scene;
     if (displaced) {
-      // Move the input so that the true transform becomes the offset D; the guess stays identity.
-      const Pose6 offset{point_value(run, "tx", 0), 0, 0, 0, 0, point_value(run, "yaw", 0) * kDeg};
-      const Eigen::Isometry3d D = to_isometry(offset);
-      input = input.transformed(D.inverse() * truth_ab);
-      truth = D;
-    } else if (params_.guess == GuessSource::kOdometry) {
+      // A scene whose input is moved so that the true transform is the run's offset (identity guess).
+      scene = scenes_->displace(run);
+      reference = scene.reference;
+      input = std::move(scene.input);
+      truth = scene.truth;
+    } else {
+      reference = &scans_.at(a);
+      input = scans_.at(b);
+      truth = relative_pose(dataset_->ground_truth(a), dataset_->ground_truth(b), "ground truth");
+    }
+    if (!displaced && params_.guess == GuessSource::kOdometry) {
       guess = relative_pose(dataset_->odometry(a), dataset_->odometry(b), "odometry");
-    } else if (params_.guess == GuessSource::kScaled) {
+    } else if (!displaced && params_.guess == GuessSource::kScaled) {
       guess = to_isometry(Pose6::from_vector(point_value(run, "f", 1.0) * to_pose6(truth).vector()));
     }
 
@@ -89,7 +94,7 @@ class RegistrationSession : public KindSession {
     const auto matcher = make_matcher(method.matcher, settings, "<" + method.name + ">");
     const auto sampler = make_sampler(method.sampler, method.sampler_settings, "<" + method.name + ">");
     Rng rng(run.seed);
-    const PairMatch m = match_pair(*matcher, *sampler, scans_.at(a), input, guess, rng);
+    const PairMatch m = match_pair(*matcher, *sampler, *reference, input, guess, rng);
 
     const RegistrationError error = registration_error(m.result.T, truth, params_.axes);
     const RegistrationError initial = registration_error(guess, truth, params_.axes);
@@ -113,7 +118,7 @@ class RegistrationSession : public KindSession {
                                               static_cast<double>(m.result.input_points)
                                         : NAN;
     row.values["kept_fraction"] = m.kept_fraction;
-    row.values["reference_scan"] = static_cast<double>(a);
+    if (!displaced) row.values["reference_scan"] = static_cast<double>(a);
     row.series["estimate"] = isometry_to_series(m.result.T);
     row.series["ground_truth"] = isometry_to_series(truth);
     row.series["initial"] = isometry_to_series(guess);
@@ -126,6 +131,7 @@ class RegistrationSession : public KindSession {
     }
     row.series["score"] = std::move(score);
     row.series["layer"] = std::move(layer);
+    if (displaced) record_displaced(scene, input, m.result, row);
   }
 
  private:
@@ -133,6 +139,24 @@ class RegistrationSession : public KindSession {
   std::vector<RegistrationMethod> methods_;
   std::unique_ptr<Dataset> dataset_;
   std::map<std::size_t, PointCloud> scans_;
+  std::unique_ptr<DisplacedScenes> scenes_;  ///< displaced pairs only
+
+  /// E1's extras: the scene and offset, the pose of every iteration, the clouds of the snapshot run.
+  void record_displaced(const DisplacedCase& c, const PointCloud& input, const RegistrationResult& r,
+                        RunRow& row) const {
+    row.values["scene"] = static_cast<double>(c.scene);
+    row.values["cell_edge_m"] = c.cell_edge;
+    row.values["offset_m"] = c.offset_m;
+    row.values["heading_deg"] = c.heading_deg;
+    row.values["yaw_deg"] = c.yaw_deg;
+    std::vector<double> xi;  // [tx ty tz α β γ] after each iteration, eq. (3.12)
+    for (const auto& t : r.trace) xi.insert(xi.end(), t.xi.data(), t.xi.data() + 6);
+    row.series["trace_xi"] = std::move(xi);
+    if (!c.snapshot) return;
+    const int count = scenes_->settings().snapshot_points;
+    row.series["snapshot_reference"] = snapshot_points(*c.reference, count);
+    row.series["snapshot_input"] = snapshot_points(input, count);
+  }
 };
 
 std::vector<RegistrationMethod> read_methods(const ExperimentConfig& config) {
@@ -149,6 +173,8 @@ class RegistrationKind : public RunKind {
     const RegistrationParams params = read_registration_params(config);
     (void)read_methods(config);
     check_registration_sweep(config, params);
+    if (params.pairs == PairSource::kDisplaced)
+      check_displaced_sweep(config, read_displaced_settings(config, params));
     check_experiment_dataset(config, "registration");
     check_registration_reference(config, params);
   }

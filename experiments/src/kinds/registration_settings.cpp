@@ -103,7 +103,10 @@ RegistrationParams read_registration_params(const ExperimentConfig& config) {
   }
   in.read("baseline", p.baseline);
   in.read("proposed", p.proposed);
+  p.displaced = in.child("displaced");
   in.finish();
+  if (p.displaced.IsDefined() && !p.displaced.IsNull() && p.pairs != PairSource::kDisplaced)
+    in.fail("displaced", "key 'displaced' is only used with pairs: displaced");
   std::string why;
   if (!p.valid(&why)) in.fail(why.find("'second'") != std::string::npos ? "second" : "guess", why);
   for (const auto* name : {&p.baseline, &p.proposed}) {
@@ -148,7 +151,9 @@ void check_registration_sweep(const ExperimentConfig& config, const Registration
   for (const auto& axis : config.sweep) {
     if (std::find(known.begin(), known.end(), axis.name) == known.end())
       axis_fail(config, axis.values.front(),
-                "sweep axis '" + axis.name + "' is not one of pair, tx, yaw, f, start_layer");
+                "sweep axis '" + axis.name +
+                    "' is not one of pair, tx, yaw, f, start_layer, scene, offset, direction");
+    if (axis.name == "scene") continue;  // scene names (registration_scenes.cpp)
     for (const auto& v : axis.values) {
       const double x = axis_number(config, axis, v);
       if ((axis.name == "pair" || axis.name == "start_layer") && (x < 0 || x != std::floor(x)))
@@ -164,7 +169,7 @@ void check_registration_sweep(const ExperimentConfig& config, const Registration
   if (!consecutive && find_axis(config, "pair"))
     axis_fail(config, find_axis(config, "pair")->values.front(),
               "sweep axis 'pair' is only used with pairs: consecutive");
-  for (const char* name : {"tx", "yaw"}) {
+  for (const char* name : {"tx", "yaw", "scene", "offset", "direction"}) {
     if (consecutive && find_axis(config, name))
       axis_fail(config, find_axis(config, name)->values.front(),
                 "sweep axis '" + std::string(name) + "' is only used with pairs: displaced");
@@ -195,7 +200,7 @@ void check_registration_sweep(const ExperimentConfig& config, const Registration
 std::vector<std::size_t> needed_scans(const ExperimentConfig& config, const RegistrationParams& params) {
   std::set<std::size_t> scans;
   if (params.pairs == PairSource::kDisplaced) {
-    scans = {params.scan, params.second};
+    // The displaced scenes load their own scans (registration_scenes.hpp).
   } else {
     for (const auto& axis : config.sweep) {
       if (axis.name != "pair") continue;

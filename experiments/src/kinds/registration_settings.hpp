@@ -19,6 +19,7 @@
 //     report: accuracy            # accuracy (E2) | basin (E1) | init_layer (E4)
 //     baseline: ndt               # report: the method compared against ...
 //     proposed: mlndt             # ... this one in the claims
+//     displaced: {...}            # displaced: several scenes, offsets in NDT cells (registration_scenes.hpp)
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -44,6 +45,7 @@ struct RegistrationParams {
   RegistrationLayout report = RegistrationLayout::kAccuracy;
   std::string baseline;  ///< method name (may be empty)
   std::string proposed;  ///< method name (may be empty)
+  YAML::Node displaced;  ///< displaced: scenes and offset unit (registration_scenes.hpp); may be null
 
   bool valid(std::string* why) const;
 };
@@ -58,7 +60,8 @@ struct RegistrationMethod {
 
 /// The sweep axes the kind understands.
 inline const std::vector<std::string>& registration_axes() {
-  static const std::vector<std::string> axes{"pair", "tx", "yaw", "f", "start_layer"};
+  static const std::vector<std::string> axes{"pair",        "tx",    "yaw",    "f",
+                                             "start_layer", "scene", "offset", "direction"};
   return axes;
 }
 
