@@ -5,6 +5,7 @@
 // guideline (good guess → layer 4, f = 0.3 → layer 3, no guess → layer 2 or 3) as claims decided
 // on paired tests.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -113,6 +114,8 @@ ReportSection init_layer_report(const ExperimentConfig& config, const Registrati
       methods.size(), std::vector<std::vector<CellRuns>>(fs.size(), std::vector<CellRuns>(layers.size())));
   std::vector<std::vector<std::map<int, int>>> adaptive_layers(methods.size(),
                                                                std::vector<std::map<int, int>>(fs.size()));
+  std::vector<std::vector<std::array<int, 3>>> rule_counts(
+      methods.size(), std::vector<std::array<int, 3>>(fs.size(), {0, 0, 0}));
   std::size_t pairs = 0;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     if (!rows[i] || !rows[i]->ok) continue;
@@ -126,11 +129,19 @@ ReportSection init_layer_report(const ExperimentConfig& config, const Registrati
       };
       const auto pair = series("adaptive_pair"), ok = series("adaptive_success"),
                  secs = series("adaptive_seconds_registration"), err = series("adaptive_translation_cm"),
-                 layer = series("adaptive_start_layer");
+                 layer = series("adaptive_start_layer"), rule = series("adaptive_rule_failure");
       for (std::size_t k = 0;
            k < pair.size() && k < ok.size() && k < secs.size() && k < err.size() && k < layer.size(); ++k) {
         cells[m][fi][0].add(pair[k], ok[k] > 0.5, secs[k], err[k]);
         adaptive_layers[m][fi][static_cast<int>(layer[k])] += 1;
+        if (k <
+            rule.size()) {  // the rule's odometry test against the truth: [flagged, flagged ∧ failed, failed]
+          auto& c = rule_counts[m][fi];
+          const bool flagged = rule[k] > 0.5, failed = ok[k] < 0.5;
+          c[0] += flagged ? 1 : 0;
+          c[1] += flagged && failed ? 1 : 0;
+          c[2] += failed ? 1 : 0;
+        }
       }
       continue;
     }
@@ -174,6 +185,10 @@ ReportSection init_layer_report(const ExperimentConfig& config, const Registrati
     t.caption = "Table 5.8: initial guess quality × starting layer, " + methods[m].name + " (ours | thesis)";
     t.label = methods.size() == 1 ? "table_5_8" : "table_5_8_" + methods[m].name;
     t.note = "time = sampling + reference model + alignment [s] (ours C++, the thesis MATLAB).";
+    if (methods[m].adaptive)
+      t.note +=
+          " Start layer: the layers the rule chose (layer: pairs). The rule's failure test compares the "
+          "estimate with the odometry (> 1 m or > 15°), so a poor odometry flags correct registrations:";
     t.add_column("f")
         .add_column("start layer")
         .add_compared_column("fail %", 0)
@@ -194,6 +209,12 @@ ReportSection init_layer_report(const ExperimentConfig& config, const Registrati
         const auto value = [&](std::size_t k) {
           return ref.IsSequence() && ref.size() == 3 ? Cell::number(ref[k].as<double>()) : Cell::missing();
         };
+        if (methods[m].adaptive) {
+          const auto& rc = rule_counts[m][fi];
+          t.note += " f = " + format_number(fs[fi], 1) + ": the rule flagged " + std::to_string(rc[0]) +
+                    " pairs, " + std::to_string(rc[1]) + " of them true failures (of " +
+                    std::to_string(rc[2]) + ") —";
+        }
         t.add_row({Cell::text(format_number(fs[fi], 1)), Cell::text(label),
                    number_or_missing(c.fail_percent()), value(0), number_or_missing(c.mean_seconds()),
                    value(1), number_or_missing(c.mean_error()), value(2)});
