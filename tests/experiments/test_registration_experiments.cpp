@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 
 #include "../../experiments/src/kinds/registration_adaptive.hpp"
 #include "sextant/core/error.hpp"
@@ -104,6 +105,26 @@ TEST(RegistrationExperiments, E4QuickProfile) {
     for (double l : row.series.at("adaptive_start_layer")) EXPECT_TRUE(l == 2 || l == 3 || l == 4) << l;
   }
   EXPECT_EQ(sequences, 2u * 4u);
+  // Pair k of an adaptive sequence reuses the seed of the fixed-layer run at (pair k, chosen layer),
+  // so it repeats that registration exactly: the same error, whatever --jobs did.
+  std::map<std::string, double> fixed;  // method/pair/f/layer → translation_cm
+  for (const auto& row : r.rows)
+    fixed[row.method + "/" + row.point.at("pair") + "/" + row.point.at("f") + "/" +
+          row.point.at("start_layer")] = row.value("translation_cm");
+  std::size_t compared = 0;
+  for (const auto& row : r.rows) {
+    if (row.method != "mlndt_adaptive" || row.value("skipped") > 0.5) continue;
+    const auto& pairs = row.series.at("adaptive_pair");
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      const std::string key = "mlndt/" + std::to_string(static_cast<int>(pairs[k])) + "/" +
+                              row.point.at("f") + "/" +
+                              std::to_string(static_cast<int>(row.series.at("adaptive_start_layer")[k]));
+      ASSERT_TRUE(fixed.count(key)) << key;
+      EXPECT_EQ(row.series.at("adaptive_translation_cm")[k], fixed.at(key)) << key;
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 4u * 15u);
   for (const char* m : {"mlndt", "mlndt_newton"}) {
     const std::string t = test::read_text(r.report / ("table_5_8_" + std::string(m) + ".md"));
     EXPECT_EQ(count(t, "\n| 0."), 12u) << t;  // 4 f × 3 start layers
