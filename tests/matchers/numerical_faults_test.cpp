@@ -30,7 +30,9 @@ TEST(MatcherNumericalFaults, NaNPointsInTheCloudsNeverGiveANaNResult) {
     EXPECT_TRUE(finite_pose(r.T)) << method << ": " << r.summary();
     EXPECT_TRUE(r.H.allFinite()) << method << ": " << r.summary();
     EXPECT_TRUE(std::isfinite(r.score)) << method << ": " << r.summary();
-    if (!r.converged) EXPECT_NE(r.why, Termination::kConverged) << method;
+    if (!r.converged) {
+      EXPECT_NE(r.why, Termination::kConverged) << method;
+    }
   }
 }
 
