@@ -20,7 +20,7 @@ namespace sextant {
 namespace {
 
 /// Mean and standard error of each parameter, and Jarque–Bera: "zero-mean Gaussian" is rejected
-/// for a parameter when |mean| > 1.96 · SE or JB's p < 0.05.
+/// for a parameter when the mean lies outside ±1.96 · SE or JB's p < 0.05.
 struct Normality {
   std::array<SampleStats, 6> stats;
   std::array<NormalityTest, 6> jb;
@@ -237,7 +237,7 @@ ReportSection strategies_report(const ExperimentConfig& config, const Registrati
       o_rejected = o_rejected || on.rejected(p);
     }
     section.claims.push_back(
-        Claim{"FbML-NDT's errors look zero-mean Gaussian (no parameter rejects |mean| ≤ 1.96·SE or "
+        Claim{"FbML-NDT's errors look zero-mean Gaussian (no parameter rejects mean within ±1.96·SE or "
               "Jarque–Bera at 5 %)",
               f_rejected ? Verdict::does_not_hold : Verdict::holds, normality_evidence(fn)});
     section.claims.push_back(
