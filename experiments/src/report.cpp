@@ -153,8 +153,11 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
   std::vector<OverviewEntry> overview;
   for (const auto& [name, folders] : find_experiments(results)) {
     const fs::path config_path = folders.front() / kEffectiveConfig;
-    const ExperimentConfig config =
+    ExperimentConfig config =
         parse_experiment_config(load_yaml_file(config_path.string()), config_path.string(), false);
+    // The profile the runs were made with (experiment.yaml already holds the quick overrides).
+    for (const auto& file : provenance_files(folders.front()))
+      config.quick = config.quick || read_text(file).find("\"profile\": \"quick\"") != std::string::npos;
     const std::string title = config.title.empty() ? name : config.title;
     const std::vector<RunSpec> runs = expand_runs(config);
     OverviewEntry& entry = overview.emplace_back();

@@ -54,6 +54,9 @@ MlndtSettings::MlndtSettings() {
   optimizer.iterations_per_stage = 3;
   optimizer.max_iterations = 50;
   optimizer.epsilon = 1e-4;
+  // Newton without step control oscillates or diverges in the last layer (issue 11: 160 cm off on
+  // the Velodyne pair with GBS); the thesis-faithful plain step stays available as step_control: none.
+  optimizer.step_control = StepControl::kTrustRegionLast;
 }
 
 bool MlndtSettings::valid(std::string* why) const {

@@ -34,7 +34,7 @@ class GaussianObjective final : public StagedObjective {
 NdtSettings::NdtSettings() {
   optimizer.iterations_per_stage = 1;
   optimizer.max_iterations = 35;
-  optimizer.line_search = true;
+  optimizer.step_control = StepControl::kLineSearch;
 }
 
 bool NdtSettings::valid(std::string* why) const {

@@ -42,17 +42,24 @@ struct Masked {
   }
 };
 
-/// Solves (H + γI)·Δ = −g with γ = 0 when H is safely positive definite (eq. 3.16 and the text
-/// after eq. 3.18); false when no finite step exists.
-bool newton_step(const Eigen::MatrixXd& H, const Eigen::VectorXd& g, Eigen::VectorXd& step) {
-  if (!H.allFinite() || !g.allFinite()) return false;
+/// γ that makes H safely positive definite (0 when it is); false when H has no scale.
+bool newton_shift(const Eigen::MatrixXd& H, double& gamma) {
   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(H);
   const Eigen::VectorXd l = eig.eigenvalues();
   const double largest = l.cwiseAbs().maxCoeff();
   if (!(largest > 0.0)) return false;
   const double wanted = 1e-6 * largest;  // "safely" positive definite
-  const double gamma = l.minCoeff() < wanted ? wanted - l.minCoeff() + 1e-3 * largest : 0.0;
-  const Eigen::MatrixXd damped = H + gamma * Eigen::MatrixXd::Identity(H.rows(), H.cols());
+  gamma = l.minCoeff() < wanted ? wanted - l.minCoeff() + 1e-3 * largest : 0.0;
+  return true;
+}
+
+/// Solves (H + (γ + extra)·I)·Δ = −g with γ = 0 when H is safely positive definite (eq. 3.16 and
+/// the text after eq. 3.18); `extra` is the trust region's damping. False when no finite step exists.
+bool newton_step(const Eigen::MatrixXd& H, const Eigen::VectorXd& g, double extra, Eigen::VectorXd& step) {
+  if (!H.allFinite() || !g.allFinite()) return false;
+  double gamma = 0.0;
+  if (!newton_shift(H, gamma)) return false;
+  const Eigen::MatrixXd damped = H + (gamma + extra) * Eigen::MatrixXd::Identity(H.rows(), H.cols());
   step = -damped.ldlt().solve(g);
   return step.allFinite();
 }
@@ -103,19 +110,24 @@ class Loop {
   /// Newton or LM iterations on one stage; true when the registration has ended.
   bool own_stage(int stage, int budget, bool last) {
     double lambda = -1.0;  // LM damping, reset per stage (the matrix scale changes with the layer)
+    trust_ = 0.0;          // trust-region damping (relative to mean |diag H|), reset per stage
     for (int k = 0; k < budget; ++k) {
       const ScoreEvaluation at = objective_.evaluate(stage, xi_, Derivatives::kHessian);
       if (at.matched < settings_.min_matched) return finish(Termination::kTooFewCorrespondences, stage);
       const Eigen::VectorXd g = mask_.vector(at.gradient);
       Eigen::VectorXd step;
       double score = at.score;
-      if (settings_.solver == SolverKind::kNewton) {
-        if (!newton_step(mask_.matrix(at.hessian), g, step))
+      if (settings_.solver == SolverKind::kNewton && damped_stage(last)) {
+        if (!trust_region_step(stage, at, mask_.matrix(at.hessian), g, trust_, step, score))
+          return finish(Termination::kSolverFailure, stage);
+        xi_ += mask_.expand(step);
+      } else if (settings_.solver == SolverKind::kNewton) {
+        if (!newton_step(mask_.matrix(at.hessian), g, 0.0, step))
           return finish(Termination::kSolverFailure, stage);
         Vector6d full = mask_.expand(step);
-        if (settings_.line_search)
+        if (settings_.step_control == StepControl::kLineSearch)
           full = backtrack(stage, at, full, score);
-        else
+        else  // eq. (3.16) as printed: the full step, whatever it does to the score
           score = objective_.evaluate(stage, xi_ + full, Derivatives::kScore).score;
         xi_ += full;
         step = mask_.vector(full);
@@ -148,6 +160,35 @@ class Loop {
       if (last && step.norm() < settings_.epsilon) return finish(Termination::kConverged, stage);
     }
     return false;
+  }
+
+  /// Whether this stage's Newton steps go through the trust region.
+  bool damped_stage(bool last) const {
+    return settings_.step_control == StepControl::kTrustRegion ||
+           (settings_.step_control == StepControl::kTrustRegionLast && last);
+  }
+
+  /// Damped Newton (StepControl::kTrustRegion): tries (H + γI + λ·d̄·I)Δ = −g from the current λ,
+  /// ×10 until the score drops (at most kMaxLmTries), then λ ÷ 10 for the next iteration. No
+  /// decrease at any damping gives Δ = 0 (a minimum of this stage). False on a non-finite step.
+  bool trust_region_step(int stage, const ScoreEvaluation& at, const Eigen::MatrixXd& H,
+                         const Eigen::VectorXd& g, double& lambda, Eigen::VectorXd& step,
+                         double& score) const {
+    const double scale = H.diagonal().cwiseAbs().mean();
+    for (int attempt = 0; attempt < kMaxLmTries; ++attempt) {
+      if (!newton_step(H, g, lambda * scale, step)) return false;
+      const ScoreEvaluation trial = objective_.evaluate(stage, xi_ + mask_.expand(step), Derivatives::kScore);
+      if (trial.matched >= settings_.min_matched && trial.score < at.score) {
+        score = trial.score;
+        lambda /= 10.0;
+        if (lambda < 1e-6) lambda = 0.0;
+        return true;
+      }
+      lambda = lambda > 0.0 ? 10.0 * lambda : 1e-3;
+    }
+    step.setZero();
+    score = at.score;
+    return true;
   }
 
   /// Armijo backtracking along a Newton direction; returns the accepted step.
@@ -220,6 +261,7 @@ class Loop {
   Masked mask_;
   Vector6d xi_ = Vector6d::Zero();
   int iterations_ = 0;
+  double trust_ = 0.0;  ///< trust-region damping λ of the current stage
   RegistrationResult result_;
 };
 
@@ -237,13 +279,45 @@ bool solver_from_name(const std::string& name, SolverKind& kind) {
   return true;
 }
 
+bool step_control_from_name(const std::string& name, StepControl& control) {
+  if (name == "none")
+    control = StepControl::kNone;
+  else if (name == "line_search")
+    control = StepControl::kLineSearch;
+  else if (name == "trust_region")
+    control = StepControl::kTrustRegion;
+  else if (name == "trust_region_last")
+    control = StepControl::kTrustRegionLast;
+  else
+    return false;
+  return true;
+}
+
+std::string to_string(StepControl control) {
+  switch (control) {
+    case StepControl::kNone: return "none";
+    case StepControl::kLineSearch: return "line_search";
+    case StepControl::kTrustRegion: return "trust_region";
+    case StepControl::kTrustRegionLast: return "trust_region_last";
+  }
+  return "unknown";
+}
+
 void read_optimizer_settings(SettingsReader& in, const std::string& known_solvers, OptimizerSettings& s) {
-  std::string solver;
+  std::string solver, control;
   if (in.read("solver", solver) && !solver_from_name(solver, s.solver))
     in.fail("solver", "unknown solver '" + solver + "' (known: " + known_solvers + ")");
   in.read("max_iterations", s.max_iterations);
   in.read("epsilon", s.epsilon);
-  in.read("line_search", s.line_search);
+  bool line_search = false;
+  const bool legacy = in.read("line_search", line_search);
+  if (legacy) s.step_control = line_search ? StepControl::kLineSearch : StepControl::kNone;
+  if (in.read("step_control", control)) {
+    if (legacy) in.fail("step_control", "give step_control or line_search, not both");
+    if (!step_control_from_name(control, s.step_control))
+      in.fail("step_control", "key 'step_control': '" + control +
+                                  "' is not none, line_search, trust_region or trust_region_last");
+  }
   read_dof_mask(in, "dof", s.dof);
 }
 

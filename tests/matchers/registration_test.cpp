@@ -57,7 +57,8 @@ RegistrationResult run(const std::string& method, const std::string& yaml, const
 TEST(Mlndt, RecoversKnownTransformWithEverySolver) {
   const Pair p = make_pair(pose(1.2, -0.8, 0.1, 1 * kDeg, -1 * kDeg, 8 * kDeg));
   std::vector<RegistrationResult> results;
-  for (const char* solver : {"newton", "lm", "ceres"}) {
+  // The plain Newton step (step_control: none) first, then LM, Ceres and the default Newton.
+  for (const char* solver : {"newton, step_control: none", "lm", "ceres", "newton"}) {
     const RegistrationResult r =
         run("mlndt", std::string("{solver: ") + solver + ", epsilon: 1.0e-7, max_iterations: 100}", p);
     EXPECT_TRUE(r.converged) << solver << ": " << r.summary();
@@ -69,11 +70,15 @@ TEST(Mlndt, RecoversKnownTransformWithEverySolver) {
     EXPECT_GT(r.H.trace(), 0.0);
     results.push_back(r);
   }
-  // All three solvers minimise the same objective: they agree to 1 mm / 0.01°.
-  for (std::size_t i = 1; i < results.size(); ++i) {
+  // The solvers minimise the same objective: plain Newton, LM and Ceres agree to 1 mm / 0.01°;
+  // Newton's default trust region stops where no damped step lowers the score any more, on a
+  // neighbouring piece of the piecewise objective (measured 1.8 mm from plain Newton).
+  for (std::size_t i = 1; i < 3; ++i) {
     EXPECT_LT(error_m(results[0].T, results[i].T), 1e-3) << i;
     EXPECT_LT(error_deg(results[0].T, results[i].T), 0.01) << i;
   }
+  EXPECT_LT(error_m(results[0].T, results[3].T), 3e-3);
+  EXPECT_LT(error_deg(results[0].T, results[3].T), 0.03);
 }
 
 // Known answers for the robust options: a point at the cell mean scores 0, so the whole score is

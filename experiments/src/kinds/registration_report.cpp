@@ -79,6 +79,25 @@ void check_guideline(const YAML::Node& node, const std::string& file) {
   }
 }
 
+/// table_5_7: sampling → {ndt: method name, mlndt: method name}.
+void check_sampling_row(const YAML::Node& node, const std::string& file) {
+  SettingsReader in(node, file);
+  std::string name;
+  in.read("ndt", name);
+  in.read("mlndt", name);
+  in.finish();
+}
+
+/// table_5_9: sampler → [iterations, matched %, time s, success %].
+void check_strategy_row(const YAML::Node& node, const std::string& file) {
+  try {
+    if (node.as<std::vector<double>>().size() == 4) return;
+  } catch (const YAML::Exception&) {
+  }
+  throw InputError(file, at_line(yaml_line(node)),
+                   "key 'table_5_9': expected sampler: [iterations, matched %, time s, success %]");
+}
+
 }  // namespace
 
 std::vector<double> isometry_to_series(const Eigen::Isometry3d& T) {
@@ -186,6 +205,27 @@ void check_registration_reference(const ExperimentConfig& config, const Registra
       check_map_of(in.child("table_5_8"), config.file, "table_5_8", check_layer_row);
       check_map_of(in.child("guideline"), config.file, "guideline", check_guideline);
       break;
+    case RegistrationLayout::kSampling: {
+      check_map_of(in.child("methods"), config.file, "methods", check_accuracy_method);
+      check_map_of(in.child("table_5_7"), config.file, "table_5_7", check_sampling_row);
+      break;
+    }
+    case RegistrationLayout::kStrategies: {
+      check_map_of(in.child("table_5_9"), config.file, "table_5_9", check_strategy_row);
+      SettingsReader sampling(in.child("sampling_seconds"), config.file);
+      SettingsReader below(in.child("mean_error_below"), config.file);
+      double x = 0;
+      for (const char* key : {"fbs", "gbs"}) sampling.read(key, x);
+      for (const char* key : {"translation_cm", "rotation_deg"}) below.read(key, x);
+      sampling.finish();
+      below.finish();
+      break;
+    }
+    case RegistrationLayout::kZeroGuess: {
+      double x = 0;
+      for (const char* key : {"iterations", "error_cm"}) in.read(key, x);
+      break;
+    }
   }
   in.finish();
 }

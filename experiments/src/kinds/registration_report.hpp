@@ -53,5 +53,11 @@ ReportSection basin_report(const ExperimentConfig& config, const RegistrationPar
                            const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows);
 ReportSection init_layer_report(const ExperimentConfig& config, const RegistrationParams& params,
                                 const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows);
+ReportSection sampling_report(const ExperimentConfig& config, const RegistrationParams& params,
+                              const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows);
+ReportSection strategies_report(const ExperimentConfig& config, const RegistrationParams& params,
+                                const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows);
+ReportSection zero_guess_report(const ExperimentConfig& config, const RegistrationParams& params,
+                                const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows);
 
 }  // namespace sextant

@@ -6,7 +6,9 @@
 
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/matchers/feature_based_sampler.hpp"
 #include "sextant/matchers/matcher.hpp"
+#include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/sampler.hpp"
 
 namespace sextant {
@@ -98,25 +100,35 @@ RegistrationParams read_registration_params(const ExperimentConfig& config) {
     p.report = RegistrationLayout::kBasin;
   } else if (report == "init_layer") {
     p.report = RegistrationLayout::kInitLayer;
+  } else if (report == "sampling") {
+    p.report = RegistrationLayout::kSampling;
+  } else if (report == "strategies") {
+    p.report = RegistrationLayout::kStrategies;
+  } else if (report == "zero_guess") {
+    p.report = RegistrationLayout::kZeroGuess;
   } else {
-    in.fail("report", "key 'report': '" + report + "' is not accuracy, basin or init_layer");
+    in.fail("report", "key 'report': '" + report +
+                          "' is not accuracy, basin, init_layer, sampling, strategies or zero_guess");
   }
   in.read("baseline", p.baseline);
   in.read("proposed", p.proposed);
   p.displaced = in.child("displaced");
+  in.read("thesis_baseline", p.thesis_baseline);
+  in.read("thesis_proposed", p.thesis_proposed);
   in.finish();
   if (p.displaced.IsDefined() && !p.displaced.IsNull() && p.pairs != PairSource::kDisplaced)
     in.fail("displaced", "key 'displaced' is only used with pairs: displaced");
   std::string why;
   if (!p.valid(&why)) in.fail(why.find("'second'") != std::string::npos ? "second" : "guess", why);
-  for (const auto* name : {&p.baseline, &p.proposed}) {
+  const std::pair<const char*, const std::string*> named[] = {{"baseline", &p.baseline},
+                                                              {"proposed", &p.proposed},
+                                                              {"thesis_baseline", &p.thesis_baseline},
+                                                              {"thesis_proposed", &p.thesis_proposed}};
+  for (const auto& [key, name] : named) {
     if (name->empty()) continue;
     const bool known = std::any_of(config.methods.begin(), config.methods.end(),
                                    [&](const MethodConfig& m) { return m.name == *name; });
-    if (!known)
-      in.fail(name == &p.baseline ? "baseline" : "proposed",
-              "key '" + std::string(name == &p.baseline ? "baseline" : "proposed") + "': no method named '" +
-                  *name + "'");
+    if (!known) in.fail(key, "key '" + std::string(key) + "': no method named '" + *name + "'");
   }
   return p;
 }
@@ -129,6 +141,10 @@ RegistrationMethod read_registration_method(const YAML::Node& node, const std::s
   m.settings = in.child("settings");
   in.read("sampler", m.sampler);
   m.sampler_settings = in.child("sampler_settings");
+  if (in.has("adaptive_start")) {
+    m.adaptive = true;
+    m.adaptive_start = read_adaptive_start(in.child("adaptive_start"), file);
+  }
   in.finish();
   if (!matcher_registry().contains(m.matcher)) {
     std::string names;
@@ -143,6 +159,17 @@ RegistrationMethod read_registration_method(const YAML::Node& node, const std::s
   // Building them checks the settings (InputError with the settings' own lines).
   (void)make_matcher(m.matcher, m.settings, file);
   (void)make_sampler(m.sampler, m.sampler_settings, file);
+  if (m.adaptive) {
+    if (m.matcher == "mlndt")
+      m.last_layer = read_mlndt_settings(m.settings, file).pyramid.layers;
+    else if (m.matcher == "fbmlndt")
+      m.last_layer = read_fbmlndt_settings(m.settings, file).mlndt.pyramid.layers;
+    else
+      in.fail("adaptive_start", "key 'adaptive_start': needs matcher mlndt or fbmlndt (a layer pyramid)");
+    if (m.adaptive_start.middle_layer > m.last_layer)
+      in.fail("adaptive_start",
+              "key 'adaptive_start': middle_layer is past the last layer " + std::to_string(m.last_layer));
+  }
   return m;
 }
 
@@ -173,6 +200,11 @@ void check_registration_sweep(const ExperimentConfig& config, const Registration
     if (consecutive && find_axis(config, name))
       axis_fail(config, find_axis(config, name)->values.front(),
                 "sweep axis '" + std::string(name) + "' is only used with pairs: displaced");
+  }
+  for (const auto& m : config.methods) {
+    if (!consecutive && read_registration_method(m.node, config.file).adaptive)
+      throw InputError(config.file, at_line(yaml_line(m.node)),
+                       "key 'adaptive_start': the adaptive starting layer needs pairs: consecutive");
   }
   const bool scaled = params.guess == GuessSource::kScaled;
   if (scaled != (find_axis(config, "f") != nullptr))

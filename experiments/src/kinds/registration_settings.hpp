@@ -10,22 +10,29 @@
 //     f: [0.9, 0.6, 0.3, 0]       # guess: scaled — Z_init = f · Z_gt in parameter space
 //     start_layer: [2, 3, 4]      # overrides the method's settings.start_layer
 //   params:
-//     pairs: consecutive          # or displaced (one pair: scan → second)
+//     pairs: consecutive          # or displaced (one pair: scan → second, or the scenes of `displaced`)
 //     guess: odometry             # odometry | identity | scaled (displaced: always identity)
-//     scan: 0                     # displaced: reference scan index
-//     second: 1                   # displaced: input scan index (default scan + 1)
+//     scan: 0                     # displaced without `displaced:` scenes: reference scan index
+//     second: 1                   # … and input scan index (default scan + 1)
 //     success: translation_50cm   # eval's thesis_success_criterion name
 //     axes: uos                   # uos (the thesis' tables) | internal
-//     report: accuracy            # accuracy (E2) | basin (E1) | init_layer (E4)
+//     report: accuracy            # accuracy (E2) | basin (E1) | init_layer (E4) | sampling (E3)
+//                                 # | strategies (E6) | zero_guess (E5)
 //     baseline: ndt               # report: the method compared against ...
 //     proposed: mlndt             # ... this one in the claims
 //     displaced: {...}            # displaced: several scenes, offsets in NDT cells (registration_scenes.hpp)
+//     thesis_baseline: ndt_plain  # optional: the thesis-faithful variants, compared the same way
+//     thesis_proposed: mlndt_newton
+//   A method with `adaptive_start: {...}` (registration_adaptive.hpp) runs the thesis' adaptive
+//   starting layer over the whole pair sequence in one run (the run at the first pair and first
+//   start_layer); its other runs are skipped (value `skipped` = 1).
 #include <cstddef>
 #include <string>
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
 
+#include "registration_adaptive.hpp"
 #include "sextant/eval/registration_metrics.hpp"
 #include "sextant/experiments/experiment_config.hpp"
 
@@ -33,7 +40,7 @@ namespace sextant {
 
 enum class PairSource { kConsecutive, kDisplaced };
 enum class GuessSource { kOdometry, kIdentity, kScaled };
-enum class RegistrationLayout { kAccuracy, kBasin, kInitLayer };
+enum class RegistrationLayout { kAccuracy, kBasin, kInitLayer, kSampling, kStrategies, kZeroGuess };
 
 struct RegistrationParams {
   PairSource pairs = PairSource::kConsecutive;
@@ -43,9 +50,11 @@ struct RegistrationParams {
   std::string success = "translation_50cm";
   AxisConvention axes = AxisConvention::uos;
   RegistrationLayout report = RegistrationLayout::kAccuracy;
-  std::string baseline;  ///< method name (may be empty)
-  std::string proposed;  ///< method name (may be empty)
-  YAML::Node displaced;  ///< displaced: scenes and offset unit (registration_scenes.hpp); may be null
+  std::string baseline;         ///< method name (may be empty)
+  std::string proposed;         ///< method name (may be empty)
+  std::string thesis_baseline;  ///< thesis-faithful variant of the baseline (may be empty)
+  std::string thesis_proposed;  ///< thesis-faithful variant of the proposed method (may be empty)
+  YAML::Node displaced;         ///< displaced: scenes and offset unit (registration_scenes.hpp); may be null
 
   bool valid(std::string* why) const;
 };
@@ -56,6 +65,9 @@ struct RegistrationMethod {
   YAML::Node settings;  ///< may be null (defaults)
   std::string sampler = "all";
   YAML::Node sampler_settings;
+  bool adaptive = false;  ///< `adaptive_start` given: the thesis' adaptive starting layer
+  AdaptiveStartSettings adaptive_start;
+  int last_layer = 0;  ///< adaptive: the pyramid's last layer (mlndt / fbmlndt `layers`)
 };
 
 /// The sweep axes the kind understands.

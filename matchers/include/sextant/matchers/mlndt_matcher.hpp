@@ -3,7 +3,8 @@
 // Mahalanobis score (eq. 3.11), start layer s, three iterations per layer, then the last layer
 // until ‖Δξ‖ < ε. YAML keys: division, layers, start_layer, solver (newton | lm | ceres),
 // iterations_per_layer, max_iterations, unmatched_penalty, max_distance, truncated_layers, epsilon,
-// line_search, min_points, max_eigen_ratio, min_spread, dof, threads.
+// step_control (newton: trust_region_last by default; none = eq. 3.16 as printed), min_points,
+// max_eigen_ratio, min_spread, dof, threads.
 #include <limits>
 #include <memory>
 #include <string>

@@ -2,8 +2,8 @@
 // Classic 3D P2D-NDT (eqs. 3.1–3.6): one fixed grid, Magnusson's Gaussian score with the
 // outlier-mixture constants, Newton with a backtracking line search; optional trilinear
 // interpolation over the 8 neighbouring cells. YAML keys: cell_size, volume_divisions,
-// outlier_ratio, trilinear, max_iterations, epsilon, line_search, min_points, max_eigen_ratio, dof,
-// threads.
+// outlier_ratio, trilinear, max_iterations, epsilon, step_control (line_search by default; none = the plain
+// Newton step), min_points, max_eigen_ratio, dof, threads.
 #include <memory>
 #include <string>
 

@@ -1,0 +1,143 @@
+#include "registration_claims.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace sextant {
+namespace {
+
+std::string point_key(const RunSpec& run) {
+  std::string key;
+  for (const auto& [axis, label] : run.point) key += axis + "=" + label + ";";
+  return key + "rep=" + std::to_string(run.repetition);
+}
+
+Claim not_comparable(const std::string& statement, const std::string& why) {
+  return Claim{statement, Verdict::not_comparable, why};
+}
+
+}  // namespace
+
+std::vector<MethodRuns> group_by_method(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
+                                        const std::vector<const RunRow*>& rows) {
+  std::vector<MethodRuns> out(config.methods.size());
+  for (std::size_t m = 0; m < out.size(); ++m) out[m].name = config.methods[m].name;
+  for (std::size_t i = 0; i < runs.size() && i < rows.size(); ++i) {
+    if (!rows[i] || !rows[i]->ok) continue;
+    MethodRuns& m = out.at(runs[i].method_index);
+    m.rows.push_back(rows[i]);
+    m.by_point[point_key(runs[i])] = rows[i];
+  }
+  return out;
+}
+
+const MethodRuns* find_method(const std::vector<MethodRuns>& methods, const std::string& name) {
+  for (const auto& m : methods) {
+    if (m.name == name && !m.rows.empty()) return &m;
+  }
+  return nullptr;
+}
+
+PairedRows pair_up(const MethodRuns& a, const MethodRuns& b) {
+  PairedRows p;
+  for (const auto& [key, row] : a.by_point) {
+    const auto it = b.by_point.find(key);
+    if (it == b.by_point.end()) continue;
+    p.a.push_back(row);
+    p.b.push_back(it->second);
+  }
+  return p;
+}
+
+std::vector<double> row_values(const std::vector<const RunRow*>& rows, const std::string& key) {
+  std::vector<double> v;
+  v.reserve(rows.size());
+  for (const RunRow* r : rows) v.push_back(r->value(key));
+  return v;
+}
+
+std::vector<bool> row_successes(const std::vector<const RunRow*>& rows) {
+  std::vector<bool> v;
+  v.reserve(rows.size());
+  for (const RunRow* r : rows) v.push_back(r->value("success") > 0.5);
+  return v;
+}
+
+std::uint64_t claim_seed(const ExperimentConfig& config, std::uint64_t k) {
+  return config.seed * 1000003ULL + 7919ULL * (k + 1);
+}
+
+Claim claim_more_successes(const std::string& statement, const MethodRuns* a, const MethodRuns* b) {
+  if (!a || !b) return not_comparable(statement, "a method has no runs");
+  const PairedRows p = pair_up(*a, *b);
+  const PairedRates r = compare_paired_successes(row_successes(p.a), row_successes(p.b));
+  return Claim{
+      statement, verdict_greater(r.difference, 0.0),
+      a->name + " vs " + b->name + ": " + describe(r) + " (paired, n = " + std::to_string(r.n) + ")"};
+}
+
+Claim claim_similar_successes(const std::string& statement, const MethodRuns* a, const MethodRuns* b,
+                              double margin) {
+  if (!a || !b) return not_comparable(statement, "a method has no runs");
+  const PairedRows p = pair_up(*a, *b);
+  const PairedRates r = compare_paired_successes(row_successes(p.a), row_successes(p.b));
+  return Claim{statement, verdict_in_band(r.difference, -margin, margin),
+               a->name + " vs " + b->name + ": " + describe(r) + "; band ±" + format_number(margin, 2)};
+}
+
+Claim claim_speedup(const std::string& statement, const MethodRuns* slow, const MethodRuns* fast, double lo,
+                    double hi, std::uint64_t seed) {
+  if (!slow || !fast) return not_comparable(statement, "a method has no runs");
+  const Interval ratio = bootstrap_ratio_of_medians(row_values(slow->rows, "seconds_registration"),
+                                                    row_values(fast->rows, "seconds_registration"), seed);
+  const Verdict v = std::isfinite(hi) ? verdict_in_band(ratio, lo, hi) : verdict_greater(ratio, lo);
+  const std::string band = std::isfinite(hi)
+                               ? "band [" + format_number(lo, 1) + ", " + format_number(hi, 1) + "]"
+                               : "needs > " + format_number(lo, 1);
+  return Claim{statement, v,
+               "median time " + slow->name + " / " + fast->name + " = " + describe(ratio, "×") + "; " + band};
+}
+
+Claim claim_smaller_on_solved(const std::string& statement, const MethodRuns* a, const MethodRuns* b,
+                              const std::string& key, const std::string& unit, std::uint64_t seed) {
+  if (!a || !b) return not_comparable(statement, "a method has no runs");
+  const PairedRows p = pair_up(*a, *b);
+  std::vector<double> va, vb;
+  for (std::size_t i = 0; i < p.a.size(); ++i) {
+    if (p.a[i]->value("success") > 0.5 && p.b[i]->value("success") > 0.5) {
+      va.push_back(p.a[i]->value(key));
+      vb.push_back(p.b[i]->value(key));
+    }
+  }
+  const Interval d = bootstrap_paired_mean_difference(va, vb, seed);
+  return Claim{
+      statement, verdict_less(d, 0.0),
+      "mean " + key + " of " + a->name + " − " + b->name + " on the pairs both solved: " + describe(d, unit)};
+}
+
+Claim claim_beats_guess(const MethodRuns* m, const std::string& guess_name, std::uint64_t seed) {
+  const std::string statement =
+      (m ? m->name : std::string("method")) + " improves on the " + guess_name + " guess (translation error)";
+  if (!m) return Claim{statement, Verdict::not_comparable, "no runs", ClaimKind::sanity};
+  // The median of the paired differences: a few diverged registrations (metres off) must not hide
+  // what the typical pair does.
+  std::vector<double> difference;
+  for (const RunRow* r : m->rows)
+    difference.push_back(r->value("translation_cm") - r->value("initial_translation_cm"));
+  const Interval d = bootstrap_median(difference, seed);
+  return Claim{statement, verdict_less(d, 0.0),
+               "median of (error − guess error) per pair: " + describe(d, " cm"), ClaimKind::sanity};
+}
+
+std::string profile_note(const ExperimentConfig& config, const std::vector<MethodRuns>& methods) {
+  std::size_t lo = std::numeric_limits<std::size_t>::max(), hi = 0;
+  for (const auto& m : methods) {
+    lo = std::min(lo, m.rows.size());
+    hi = std::max(hi, m.rows.size());
+  }
+  if (methods.empty()) lo = 0;
+  const std::string n = lo == hi ? std::to_string(hi) : std::to_string(lo) + "–" + std::to_string(hi);
+  return "Profile: " + std::string(config.quick ? "quick" : "full") + " (n = " + n + " runs per method).";
+}
+
+}  // namespace sextant

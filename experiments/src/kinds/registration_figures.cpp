@@ -1,0 +1,90 @@
+#include "registration_figures.hpp"
+
+#include <cmath>
+
+#include "sextant/eval/plots.hpp"
+
+namespace sextant {
+namespace {
+
+const char* const kColours[] = {"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
+                                "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22", "#17becf"};
+
+}  // namespace
+
+ReportFigure parameter_error_figure(const std::string& id, const std::string& caption,
+                                    const std::string& title, const std::vector<double>& scan,
+                                    const std::vector<RegistrationError>& errors, bool translation,
+                                    double limit) {
+  XYPlot plot;
+  plot.title = title;
+  plot.x_label = "reference scan index";
+  plot.y_label = translation ? "translation error [cm]" : "rotation error [deg]";
+  const std::size_t first = translation ? 0 : 3;
+  for (std::size_t k = first; k < first + 3; ++k) {
+    std::vector<double> x, y;
+    for (std::size_t i = 0; i < errors.size() && i < scan.size(); ++i) {
+      x.push_back(scan[i]);
+      y.push_back(errors[i].parameters[k]);
+    }
+    plot.add_line(parameter_names()[k], x, y);
+    plot.series.back().style = PlotSeries::Style::line_and_markers;
+    plot.series.back().color = kColours[k - first];
+  }
+  if (limit > 0 && !scan.empty()) {
+    double lo = scan.front(), hi = scan.front();
+    for (double s : scan) {
+      lo = std::min(lo, s);
+      hi = std::max(hi, s);
+    }
+    plot.add_line("±" + std::to_string(static_cast<int>(limit)) + " cm (success)", {lo, hi}, {limit, limit});
+    plot.series.back().color = "#555555";
+    plot.add_line("", {lo, hi}, {-limit, -limit});
+    plot.series.back().color = "#555555";
+  }
+  return {id, caption, render_svg(plot)};
+}
+
+ReportFigure mean_error_figure(const std::string& id, const std::string& caption, const std::string& title,
+                               const std::vector<std::string>& names,
+                               const std::vector<std::array<double, 6>>& means, bool translation) {
+  XYPlot plot;
+  plot.title = title;
+  plot.x_label = translation ? "parameter (1 = tx, 2 = ty, 3 = tz)" : "parameter (1 = α, 2 = β, 3 = γ)";
+  plot.y_label = translation ? "mean error [cm]" : "mean error [deg]";
+  plot.x_min = 0.5;
+  plot.x_max = 3.5;
+  const std::size_t first = translation ? 0 : 3;
+  const double width = 0.6 / static_cast<double>(std::max<std::size_t>(names.size(), 1));
+  for (std::size_t m = 0; m < names.size() && m < means.size(); ++m) {
+    const std::string colour = kColours[m % (sizeof kColours / sizeof kColours[0])];
+    std::vector<double> x, y;
+    for (std::size_t k = 0; k < 3; ++k) {
+      const double at = static_cast<double>(k + 1) - 0.3 + width * (static_cast<double>(m) + 0.5);
+      x.push_back(at);
+      y.push_back(means[m][first + k]);
+      plot.add_line("", {at, at}, {0.0, means[m][first + k]});  // the stem
+      plot.series.back().color = colour;
+    }
+    plot.add_scatter(names[m], x, y);
+    plot.series.back().color = colour;
+  }
+  plot.add_line("", {0.5, 3.5}, {0.0, 0.0});
+  plot.series.back().color = "#555555";
+  return {id, caption, render_svg(plot)};
+}
+
+std::array<double, 6> mean_parameters(const std::vector<RegistrationError>& errors) {
+  std::array<double, 6> sum{}, count{};
+  for (const auto& e : errors) {
+    for (std::size_t k = 0; k < 6; ++k) {
+      if (!std::isfinite(e.parameters[k])) continue;
+      sum[k] += e.parameters[k];
+      count[k] += 1;
+    }
+  }
+  for (std::size_t k = 0; k < 6; ++k) sum[k] = count[k] > 0 ? sum[k] / count[k] : NAN;
+  return sum;
+}
+
+}  // namespace sextant

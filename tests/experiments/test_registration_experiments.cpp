@@ -1,0 +1,199 @@
+// The registration experiments of chapter 5.1 (issue 11): the adaptive starting layer's rule with
+// known answers, and the quick profiles of E3, E4, E5 and E6 end to end (shipped config → rows →
+// report), checking the shape of what they write.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "../../experiments/src/kinds/registration_adaptive.hpp"
+#include "sextant/core/error.hpp"
+#include "sextant/experiments/report.hpp"
+#include "sextant/experiments/run_row.hpp"
+#include "sextant/experiments/runner.hpp"
+#include "test_helpers.hpp"
+
+namespace sextant {
+namespace {
+
+using test::TempDir;
+namespace fs = std::filesystem;
+
+// §5.1.1.3: start at the last layer; past 5 % failures start at layer 3, past 20 % at layer 2.
+TEST(AdaptiveStart, LayerFollowsTheRunningFailureRate) {
+  const AdaptiveStartSettings s;  // the thesis' values
+  EXPECT_EQ(adaptive_start_layer(s, 4, 0, 0), 4);
+  EXPECT_EQ(adaptive_start_layer(s, 4, 0, 10), 4);
+  EXPECT_EQ(adaptive_start_layer(s, 4, 1, 20), 4);  // exactly 5 %: not past it
+  EXPECT_EQ(adaptive_start_layer(s, 4, 2, 20), 3);  // 10 %
+  EXPECT_EQ(adaptive_start_layer(s, 4, 4, 20), 3);  // exactly 20 %
+  EXPECT_EQ(adaptive_start_layer(s, 4, 5, 20), 2);  // 25 %
+  EXPECT_EQ(adaptive_start_layer(s, 4, 1, 1), 2);
+  EXPECT_EQ(adaptive_start_layer(s, 6, 0, 3), 6);
+}
+
+TEST(AdaptiveStart, FailureIsADisagreementWithTheOdometry) {
+  const AdaptiveStartSettings s;
+  const Eigen::Isometry3d odometry =
+      Eigen::Translation3d(2.0, 0.5, 0.0) * Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitZ());
+  const auto moved = [&](double dx, double yaw_deg) {
+    return odometry * Eigen::Translation3d(dx, 0, 0) *
+           Eigen::AngleAxisd(yaw_deg * M_PI / 180, Eigen::Vector3d::UnitZ());
+  };
+  EXPECT_FALSE(adaptive_failure(s, odometry, odometry));
+  EXPECT_FALSE(adaptive_failure(s, moved(0.99, 0), odometry));
+  EXPECT_TRUE(adaptive_failure(s, moved(1.01, 0), odometry));
+  EXPECT_FALSE(adaptive_failure(s, moved(0, 14.9), odometry));
+  EXPECT_TRUE(adaptive_failure(s, moved(0, 15.1), odometry));
+  Eigen::Isometry3d nan = odometry;
+  nan.translation().x() = std::nan("");
+  EXPECT_TRUE(adaptive_failure(s, nan, odometry));
+}
+
+TEST(AdaptiveStart, SettingsAreChecked) {
+  EXPECT_EQ(read_adaptive_start(YAML::Load("{}"), "x").middle_layer, 3);
+  EXPECT_THROW(read_adaptive_start(YAML::Load("{middle_rate: 0.3, first_rate: 0.2}"), "x"), InputError);
+  EXPECT_THROW(read_adaptive_start(YAML::Load("{first_layer: 3, middle_layer: 2}"), "x"), InputError);
+  EXPECT_THROW(read_adaptive_start(YAML::Load("{max_translation: 1, typo: 2}"), "x"), InputError);
+}
+
+struct QuickRun {
+  TempDir tmp;
+  RunnerSummary summary;
+  std::vector<RunRow> rows;
+  fs::path report;
+  std::string markdown;
+
+  explicit QuickRun(const std::string& name) {
+    RunnerOptions o;
+    o.results_root = tmp / "results";
+    o.jobs = 2;
+    o.quick = true;
+    o.progress = false;
+    summary = run_experiment(fs::path(SEXTANT_SOURCE_DIR) / "experiments" / (name + ".yaml"), o);
+    rows = read_rows(summary.folder / kRunsJsonl).rows;
+    write_report({tmp / "results"}, tmp / "report");
+    report = tmp / "report" / name;
+    markdown = test::read_text(report / (name + ".md"));
+  }
+};
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = 0; (at = text.find(what, at)) != std::string::npos; at += what.size()) ++n;
+  return n;
+}
+
+TEST(RegistrationExperiments, E4QuickProfile) {
+  const QuickRun r("e04_init_vs_layer");
+  ASSERT_EQ(r.summary.failed, 0u);
+  // 4 methods × 15 pairs × 4 f × 3 start layers; the adaptive methods execute one run per f.
+  ASSERT_EQ(r.rows.size(), 4u * 15u * 4u * 3u);
+  std::size_t sequences = 0;
+  for (const auto& row : r.rows) {
+    if (row.method.find("adaptive") == std::string::npos) {
+      EXPECT_EQ(row.values.count("skipped"), 0u);
+      continue;
+    }
+    if (row.value("skipped") > 0.5) continue;
+    ++sequences;
+    EXPECT_EQ(row.point.at("pair"), "0");
+    EXPECT_EQ(row.point.at("start_layer"), "2");
+    EXPECT_EQ(row.value("adaptive_pairs"), 15.0);
+    ASSERT_EQ(row.series.at("adaptive_start_layer").size(), 15u);
+    EXPECT_EQ(row.series.at("adaptive_start_layer").front(), 4.0);  // starts at the last layer
+    for (double l : row.series.at("adaptive_start_layer")) EXPECT_TRUE(l == 2 || l == 3 || l == 4) << l;
+  }
+  EXPECT_EQ(sequences, 2u * 4u);
+  // Pair k of an adaptive sequence reuses the seed of the fixed-layer run at (pair k, chosen layer),
+  // so it repeats that registration exactly: the same error, whatever --jobs did.
+  std::map<std::string, double> fixed;  // method/pair/f/layer → translation_cm
+  for (const auto& row : r.rows)
+    fixed[row.method + "/" + row.point.at("pair") + "/" + row.point.at("f") + "/" +
+          row.point.at("start_layer")] = row.value("translation_cm");
+  std::size_t compared = 0;
+  for (const auto& row : r.rows) {
+    if (row.method != "mlndt_adaptive" || row.value("skipped") > 0.5) continue;
+    const auto& pairs = row.series.at("adaptive_pair");
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      const std::string key = "mlndt/" + std::to_string(static_cast<int>(pairs[k])) + "/" +
+                              row.point.at("f") + "/" +
+                              std::to_string(static_cast<int>(row.series.at("adaptive_start_layer")[k]));
+      ASSERT_TRUE(fixed.count(key)) << key;
+      EXPECT_EQ(row.series.at("adaptive_translation_cm")[k], fixed.at(key)) << key;
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 4u * 15u);
+  for (const char* m : {"mlndt", "mlndt_newton"}) {
+    const std::string t = test::read_text(r.report / ("table_5_8_" + std::string(m) + ".md"));
+    EXPECT_EQ(count(t, "\n| 0."), 12u) << t;  // 4 f × 3 start layers
+    EXPECT_TRUE(fs::exists(r.report / ("heatmap_fail_" + std::string(m) + ".svg")));
+    EXPECT_TRUE(fs::exists(r.report / ("heatmap_time_" + std::string(m) + ".svg")));
+  }
+  const std::string adaptive = test::read_text(r.report / "table_5_8_mlndt_adaptive.md");
+  EXPECT_EQ(count(adaptive, "| adaptive ("), 4u) << adaptive;
+  EXPECT_NE(r.markdown.find("Profile: quick (n = 15"), std::string::npos);
+  EXPECT_NE(r.markdown.find("Deviations from the thesis"), std::string::npos);
+  EXPECT_EQ(count(r.markdown, "is best (fewest failures, then fastest)"), 8u);  // 2 fixed methods × 4 f
+  EXPECT_EQ(count(r.markdown, "the adaptive starting layer (§5.1.1.3, proposed)"), 2u);
+}
+
+TEST(RegistrationExperiments, E3QuickProfile) {
+  const QuickRun r("e03_random_sampling");
+  ASSERT_EQ(r.summary.failed, 0u);
+  ASSERT_EQ(r.rows.size(), 4u * 30u);
+  for (const char* t : {"table_5_5.md", "table_5_6.md", "table_5_7.md", "sampling_summary.md"})
+    EXPECT_TRUE(fs::exists(r.report / t)) << t;
+  const std::string t57 = test::read_text(r.report / "table_5_7.md");
+  EXPECT_NE(t57.find("| random | ndt_random: "), std::string::npos) << t57;
+  EXPECT_NE(t57.find("| gbs | ndt_gbs: "), std::string::npos) << t57;
+  EXPECT_NE(test::read_text(r.report / "table_5_5.md").find("303.22"), std::string::npos);
+  EXPECT_TRUE(fs::exists(r.report / "fig_5_11_translation.svg"));
+  EXPECT_EQ(count(r.markdown, "| Table 5.7: "), 4u);
+  // Failures are excluded from the error statistics (tables 5.5, 5.6): with success = ‖t‖ < 50 cm
+  // every reported tx (mean, std aside) lies within ±50 cm.
+  for (const char* t : {"table_5_5.md", "table_5_6.md"}) {
+    const std::string text = test::read_text(r.report / t);
+    const std::size_t at = text.find("| Max | ");
+    ASSERT_NE(at, std::string::npos) << text;
+    EXPECT_LT(std::abs(std::stod(text.substr(at + 8))), 50.0) << text;
+  }
+  for (const auto& row : r.rows) {  // random keeps 28 % of the points, GBS about as many
+    EXPECT_GT(row.value("kept_fraction"), 0.2) << row.method;
+    EXPECT_LT(row.value("kept_fraction"), 0.4) << row.method;
+  }
+}
+
+TEST(RegistrationExperiments, E5QuickProfile) {
+  const QuickRun r("e05_fbmlndt_zero_guess");
+  ASSERT_EQ(r.summary.failed, 0u);
+  ASSERT_EQ(r.rows.size(), 3u);
+  for (const auto& row : r.rows) {
+    EXPECT_NEAR(row.value("initial_translation_cm"), 200.0, 1e-6);  // 2 m from the identity
+    EXPECT_EQ(row.series.at("trace_xi").size(), 6u * static_cast<std::size_t>(row.value("iterations")));
+    EXPECT_LT(row.value("translation_cm"), 50.0) << row.method;
+  }
+  EXPECT_TRUE(fs::exists(r.report / "zero_guess.md"));
+  EXPECT_EQ(count(r.markdown, "Fig. 5.12"), 3u);
+  EXPECT_NE(r.markdown.find("converges from a zero guess"), std::string::npos);
+}
+
+TEST(RegistrationExperiments, E6QuickProfile) {
+  const QuickRun r("e06_sampling_strategies");
+  ASSERT_EQ(r.summary.failed, 0u);
+  ASSERT_EQ(r.rows.size(), 4u * 20u);
+  const std::string t59 = test::read_text(r.report / "table_5_9.md");
+  for (const char* s : {"| regular |", "| random |", "| gbs |", "| fbs |"})
+    EXPECT_NE(t59.find(s), std::string::npos) << s;
+  EXPECT_NE(t59.find("44.700"), std::string::npos) << t59;
+  EXPECT_EQ(count(test::read_text(r.report / "mean_errors.md"), "\n| "), 7u);  // header, rule, odometry + 4
+  for (const char* f : {"fig_5_13_translation.svg", "fig_5_14_translation.svg", "fig_5_14_rotation.svg"})
+    EXPECT_TRUE(fs::exists(r.report / f)) << f;
+  EXPECT_NE(r.markdown.find("zero-mean Gaussian"), std::string::npos);
+  EXPECT_NE(r.markdown.find("Jarque"), std::string::npos);
+  for (const auto& row : r.rows) EXPECT_GE(row.value("seconds_sampling"), 0.0);
+}
+
+}  // namespace
+}  // namespace sextant
