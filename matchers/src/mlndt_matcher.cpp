@@ -1,5 +1,7 @@
 #include "sextant/matchers/mlndt_matcher.hpp"
 
+#include <chrono>
+
 #include "sextant/core/settings_reader.hpp"
 
 namespace sextant {
@@ -61,6 +63,7 @@ MlndtSettings::MlndtSettings() {
 
 bool MlndtSettings::valid(std::string* why) const {
   if (!pyramid.valid(why) || !optimizer.valid(why)) return false;
+  if (wide_basin.enabled && !wide_basin.valid(why)) return false;
   const char* problem = nullptr;
   if (start_layer < 1 || start_layer > pyramid.layers)
     problem = "start_layer must lie in [1, layers]";
@@ -90,6 +93,7 @@ MlndtSettings read_mlndt_settings(const YAML::Node& node, const std::string& fil
   read_cell_stats_settings(in, s.pyramid.cells);
   read_optimizer_settings(in, "newton lm ceres", s.optimizer);
   in.read("iterations_per_layer", s.optimizer.iterations_per_stage);
+  if (in.has("wide_basin")) s.wide_basin = read_wide_basin_settings(in.child("wide_basin"), file);
   in.finish();
   std::string why;
   if (!s.valid(&why)) in.fail("", why);
@@ -106,7 +110,22 @@ RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Iso
   if (layers_.empty() || layers_.back().empty())
     return not_started(Termination::kEmptyInput, input.size(), initial);
   const LayerObjective objective(layers_, settings_, input);
-  return optimize(objective, initial, settings_.optimizer);
+  if (!settings_.wide_basin.enabled) return optimize(objective, initial, settings_.optimizer);
+  // Wide basin: refine the initial guess and the best coarse-layer hypotheses; keep the lowest
+  // final score (same input, same last layer, so the scores compare directly).
+  const auto start = std::chrono::steady_clock::now();
+  RegistrationResult best;
+  bool have = false;
+  for (const Eigen::Isometry3d& from : wide_basin_starts(layers_, input, initial, settings_.wide_basin)) {
+    RegistrationResult r = optimize(objective, from, settings_.optimizer);
+    const bool usable = r.why == Termination::kConverged || r.why == Termination::kMaxIterations;
+    if (!have || (usable && r.score < best.score)) {
+      best = std::move(r);
+      have = usable;
+    }
+  }
+  best.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return best;
 }
 
 std::unique_ptr<Matcher> create_mlndt_matcher(const YAML::Node& settings, const std::string& file) {

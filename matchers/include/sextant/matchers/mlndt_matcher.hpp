@@ -4,13 +4,15 @@
 // until ‖Δξ‖ < ε. YAML keys: division, layers, start_layer, solver (newton | lm | ceres),
 // iterations_per_layer, max_iterations, unmatched_penalty, max_distance, truncated_layers, epsilon,
 // step_control (newton: trust_region_last by default; none = eq. 3.16 as printed), min_points,
-// max_eigen_ratio, min_spread, dof, threads.
+// max_eigen_ratio, min_spread, dof, threads, wide_basin (a map, absent = off: the global
+// initialisation of mlndt_global_init.hpp; `wide_basin: {}` uses its defaults).
 #include <limits>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "sextant/matchers/matcher.hpp"
+#include "sextant/matchers/mlndt_global_init.hpp"
 #include "sextant/matchers/ndt_grid.hpp"
 #include "sextant/matchers/optimizer.hpp"
 
@@ -35,6 +37,8 @@ struct MlndtSettings {
   /// every value [count, ≥ 0]
   int threads = 1;
   OptimizerSettings optimizer;  ///< solver, iterations per layer (3), cap, ε, DOF mask
+  /// Off by default: hypotheses over yaw × x/y scored at a coarse layer, the best refined
+  WideBasinSettings wide_basin;
   MlndtSettings();
   bool valid(std::string* why) const;
 };

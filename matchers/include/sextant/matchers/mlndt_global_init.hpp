@@ -1,0 +1,53 @@
+#pragma once
+// A wider basin for ML-NDT (issue 14; beyond §5's "up to 25 units and 15°, sometimes 45°"): a
+// global initialisation stage before the layer pyramid. Pose hypotheses around the initial guess,
+// yaw every `yaw_step_deg` over ±`yaw_range_deg` × a square grid of x/y offsets every
+// `translation_step` over ±`translation_range`, are scored by the truncated Mahalanobis score
+// (eq. 3.11, each term min(eᵀC⁻¹e, τ), τ charged for points without a Gaussian) of a fixed,
+// evenly strided subsample of the input at one coarse layer: the finest layer whose cell edge is
+// at least the translation step, so that every true pose lies within one cell of a hypothesis. The
+// `candidates` best hypotheses that differ by more than one grid step (plus the initial guess) are
+// refined by the full ML-NDT registration; the lowest final score wins.
+//
+// YAML (key `wide_basin:` of mlndt and fbmlndt; absent = off, the thesis' registration):
+//   wide_basin: {yaw_step_deg: 15, yaw_range_deg: 180, translation_step: 4,
+//                translation_range: 16, sample_points: 512, candidates: 4, max_distance: 16}
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+#include <Eigen/Geometry>
+
+#include "sextant/core/point_cloud.hpp"
+#include "sextant/matchers/ndt_grid.hpp"
+
+namespace sextant {
+
+struct WideBasinSettings {
+  bool enabled = false;             ///< set by the presence of the `wide_basin` key
+  double yaw_step_deg = 15.0;       ///< spacing of the yaw hypotheses [°, > 0]
+  double yaw_range_deg = 180.0;     ///< hypotheses over ±range around the guess [°, 0..180]
+  double translation_step = 4.0;    ///< spacing of the x/y offset grid [m, > 0]
+  double translation_range = 16.0;  ///< offsets over ±range in x and y around the guess [m, ≥ 0]
+  int sample_points = 512;          ///< input points scored per hypothesis (evenly strided) [count]
+  int candidates = 4;               ///< best hypotheses refined by the full registration [count]
+  double max_distance = 16.0;       ///< τ of the hypothesis score [Mahalanobis units]
+  bool valid(std::string* why) const;
+  /// Hypotheses scored per registration.
+  long hypotheses() const;
+};
+
+/// Reads the `wide_basin` map (enabled = true); unknown keys are InputErrors.
+WideBasinSettings read_wide_basin_settings(const YAML::Node& node, const std::string& file);
+
+/// The scoring layer: the finest of `layers` whose cell edge is ≥ `translation_step` (layer 1
+/// when none is).
+std::size_t wide_basin_layer(const std::vector<NdtGrid>& layers, double translation_step);
+
+/// Starting poses for the refinement, best first: the initial guess, then up to `candidates`
+/// mutually distinct hypotheses in order of score.
+std::vector<Eigen::Isometry3d> wide_basin_starts(const std::vector<NdtGrid>& layers, const PointCloud& input,
+                                                 const Eigen::Isometry3d& initial,
+                                                 const WideBasinSettings& settings);
+
+}  // namespace sextant

@@ -1,0 +1,145 @@
+// The wide-basin initialisation of ML-NDT (mlndt_global_init.hpp): hypotheses scored at a coarse
+// layer by the truncated Mahalanobis score of eq. (3.11).
+#include "sextant/matchers/mlndt_global_init.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+#include "sextant/core/pose.hpp"
+#include "sextant/core/settings_reader.hpp"
+#include "sextant/matchers/ndt_score.hpp"
+
+namespace sextant {
+
+namespace {
+
+constexpr double kDegree = M_PI / 180.0;
+
+struct Hypothesis {
+  double score = 0.0;
+  int yaw = 0, x = 0, y = 0;  ///< grid indices (steps from the guess)
+};
+
+/// At most `count` input points, evenly strided (deterministic, no random choice).
+PointCloud strided_subsample(const PointCloud& input, int count) {
+  const std::size_t n = input.size(), want = static_cast<std::size_t>(count);
+  if (n <= want) return input;
+  std::vector<std::size_t> indices;
+  indices.reserve(want);
+  for (std::size_t k = 0; k < want; ++k) indices.push_back(k * n / want);
+  return input.subset(indices);
+}
+
+/// min(eᵀC⁻¹e, τ) summed over the sample, τ for every point without a Gaussian (eq. 3.11 truncated).
+double truncated_score(const NdtGrid& grid, const PointCloud& sample, const Eigen::Isometry3d& T,
+                       double tau) {
+  const ScoreEvaluation e = mahalanobis_score(grid, sample, to_pose6(T).vector(), Derivatives::kScore, tau);
+  return e.score + tau * static_cast<double>(sample.size() - e.matched);
+}
+
+Eigen::Isometry3d hypothesis_pose(const Eigen::Isometry3d& initial, double yaw, double dx, double dy) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix() * initial.linear();
+  T.translation() = initial.translation() + Eigen::Vector3d(dx, dy, 0.0);
+  return T;
+}
+
+}  // namespace
+
+bool WideBasinSettings::valid(std::string* why) const {
+  const char* problem = nullptr;
+  if (!(yaw_step_deg > 0.0 && yaw_step_deg <= 360.0))
+    problem = "wide_basin.yaw_step_deg must lie in (0, 360]";
+  else if (!(yaw_range_deg >= 0.0 && yaw_range_deg <= 180.0))
+    problem = "wide_basin.yaw_range_deg must lie in [0, 180]";
+  else if (!(translation_step > 0.0))
+    problem = "wide_basin.translation_step must be positive";
+  else if (!(translation_range >= 0.0 && translation_range / translation_step <= 64.0))
+    problem = "wide_basin.translation_range must lie in [0, 64 · translation_step]";
+  else if (sample_points < 1)
+    problem = "wide_basin.sample_points must be ≥ 1";
+  else if (candidates < 1)
+    problem = "wide_basin.candidates must be ≥ 1";
+  else if (!(max_distance > 0.0 && std::isfinite(max_distance)))
+    problem = "wide_basin.max_distance must be positive and finite";
+  if (problem && why) *why = problem;
+  return problem == nullptr;
+}
+
+long WideBasinSettings::hypotheses() const {
+  const long yaws = 2 * static_cast<long>(std::floor(yaw_range_deg / yaw_step_deg + 1e-9)) + 1;
+  const long side = 2 * static_cast<long>(std::floor(translation_range / translation_step + 1e-9)) + 1;
+  return yaws * side * side;
+}
+
+WideBasinSettings read_wide_basin_settings(const YAML::Node& node, const std::string& file) {
+  SettingsReader in(node, file);
+  WideBasinSettings s;
+  s.enabled = true;
+  in.read("yaw_step_deg", s.yaw_step_deg);
+  in.read("yaw_range_deg", s.yaw_range_deg);
+  in.read("translation_step", s.translation_step);
+  in.read("translation_range", s.translation_range);
+  in.read("sample_points", s.sample_points);
+  in.read("candidates", s.candidates);
+  in.read("max_distance", s.max_distance);
+  in.finish();
+  std::string why;
+  if (!s.valid(&why)) in.fail("", why);
+  return s;
+}
+
+std::size_t wide_basin_layer(const std::vector<NdtGrid>& layers, double translation_step) {
+  std::size_t chosen = 0;
+  for (std::size_t i = 0; i < layers.size(); ++i)
+    if (layers[i].cell_edge() >= translation_step && !layers[i].empty()) chosen = i;
+  return chosen;
+}
+
+std::vector<Eigen::Isometry3d> wide_basin_starts(const std::vector<NdtGrid>& layers, const PointCloud& input,
+                                                 const Eigen::Isometry3d& initial,
+                                                 const WideBasinSettings& settings) {
+  std::vector<Eigen::Isometry3d> starts{initial};
+  if (layers.empty() || input.empty()) return starts;
+  const NdtGrid& grid = layers[wide_basin_layer(layers, settings.translation_step)];
+  const PointCloud sample = strided_subsample(input, settings.sample_points);
+  const int yaws = static_cast<int>(std::floor(settings.yaw_range_deg / settings.yaw_step_deg + 1e-9));
+  const int side =
+      static_cast<int>(std::floor(settings.translation_range / settings.translation_step + 1e-9));
+  const double full_turn_steps = 360.0 / settings.yaw_step_deg;
+  std::vector<Hypothesis> all;
+  all.reserve(static_cast<std::size_t>(settings.hypotheses()));
+  for (int k = -yaws; k <= yaws; ++k) {
+    const double yaw = k * settings.yaw_step_deg;
+    if (yaw <= -180.0 + 1e-9 && yaws * settings.yaw_step_deg >= 180.0 - 1e-9) continue;  // = +180°
+    for (int i = -side; i <= side; ++i)
+      for (int j = -side; j <= side; ++j) {
+        const Eigen::Isometry3d T = hypothesis_pose(initial, yaw * kDegree, i * settings.translation_step,
+                                                    j * settings.translation_step);
+        all.push_back({truncated_score(grid, sample, T, settings.max_distance), k, i, j});
+      }
+  }
+  // Best first; ties by grid index so that the order never depends on the sort's implementation.
+  std::sort(all.begin(), all.end(), [](const Hypothesis& a, const Hypothesis& b) {
+    if (a.score != b.score) return a.score < b.score;
+    return std::tie(a.yaw, a.x, a.y) < std::tie(b.yaw, b.x, b.y);
+  });
+  // Keep hypotheses more than one grid step (in yaw or x or y) from every kept one.
+  std::vector<Hypothesis> kept;
+  for (const Hypothesis& h : all) {
+    if (static_cast<int>(kept.size()) >= settings.candidates) break;
+    const bool near = std::any_of(kept.begin(), kept.end(), [&](const Hypothesis& o) {
+      double dyaw = std::fabs(static_cast<double>(h.yaw - o.yaw));
+      dyaw = std::min(dyaw, std::fabs(full_turn_steps - dyaw));  // yaw wraps around
+      return dyaw <= 1.0 + 1e-9 && std::abs(h.x - o.x) <= 1 && std::abs(h.y - o.y) <= 1;
+    });
+    if (!near) kept.push_back(h);
+  }
+  for (const Hypothesis& h : kept)
+    starts.push_back(hypothesis_pose(initial, h.yaw * settings.yaw_step_deg * kDegree,
+                                     h.x * settings.translation_step, h.y * settings.translation_step));
+  return starts;
+}
+
+}  // namespace sextant
