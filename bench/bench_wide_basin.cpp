@@ -6,7 +6,7 @@
 // T' = D·T, D = translation (offset, 0, 0) · yaw about z. Success: ‖t error‖ < 10 cm and rotation
 // error < 0.5°. Cells read plain/wide ("+" success, "." failure); the time is per registration.
 //
-//   build/bench/bench_wide_basin [pair substring] > basin.md
+//   build/bench/bench_wide_basin [pair substring] [wide_basin settings, default {}] > basin.md
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -25,7 +25,6 @@ using namespace sextant;
 
 constexpr double kDegree = M_PI / 180.0;
 const char* const kPlain = "{solver: lm, layers: 6, max_distance: 16, unmatched_penalty: 16}";
-const char* const kWide = "{solver: lm, layers: 6, max_distance: 16, unmatched_penalty: 16, wide_basin: {}}";
 
 struct Pair {
   std::string name;
@@ -97,13 +96,16 @@ PointCloud transformed(const PointCloud& cloud, const Eigen::Isometry3d& M) {
 
 int main(int argc, char** argv) {
   const std::string filter = argc > 1 ? argv[1] : "";
+  const std::string wide_basin = argc > 2 ? argv[2] : "{}";
+  std::string wide_settings = kPlain;
+  wide_settings.insert(wide_settings.size() - 1, ", wide_basin: " + wide_basin);
   const std::vector<double> offsets = {0, 4, 8, 12, 16}, yaws = {0, 15, 30, 45, 60, 75, 90};
   std::printf(
-      "Success (< 10 cm, < 0.5°) from the identity, plain / wide basin; ML-NDT %s; wide: wide_basin: {}\n\n",
-      kPlain);
+      "Success (< 10 cm, < 0.5°) from the identity, plain / wide basin; ML-NDT %s; wide: wide_basin: %s\n\n",
+      kPlain, wide_basin.c_str());
   for (const Pair& pair : pairs(filter)) {
     const auto plain = make_matcher("mlndt", YAML::Load(kPlain), "bench");
-    const auto wide = make_matcher("mlndt", YAML::Load(kWide), "bench");
+    const auto wide = make_matcher("mlndt", YAML::Load(wide_settings), "bench");
     const auto gbs = make_sampler("gbs", YAML::Node());
     Rng rng(1);
     const PointCloud sample = pair.input.subset(gbs->select(pair.input, rng));

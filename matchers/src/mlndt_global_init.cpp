@@ -90,10 +90,10 @@ WideBasinSettings read_wide_basin_settings(const YAML::Node& node, const std::st
   return s;
 }
 
-std::size_t wide_basin_layer(const std::vector<NdtGrid>& layers, double translation_step) {
+std::size_t wide_basin_layer(const std::vector<NdtGrid>& layers, double min_edge) {
   std::size_t chosen = 0;
   for (std::size_t i = 0; i < layers.size(); ++i)
-    if (layers[i].cell_edge() >= translation_step && !layers[i].empty()) chosen = i;
+    if (layers[i].cell_edge() >= min_edge && !layers[i].empty()) chosen = i;
   return chosen;
 }
 
@@ -102,7 +102,7 @@ std::vector<Eigen::Isometry3d> wide_basin_starts(const std::vector<NdtGrid>& lay
                                                  const WideBasinSettings& settings) {
   std::vector<Eigen::Isometry3d> starts{initial};
   if (layers.empty() || input.empty()) return starts;
-  const NdtGrid& grid = layers[wide_basin_layer(layers, settings.translation_step)];
+  const NdtGrid& grid = layers[wide_basin_layer(layers, 2.0 * settings.translation_step)];
   const PointCloud sample = strided_subsample(input, settings.sample_points);
   const int yaws = static_cast<int>(std::floor(settings.yaw_range_deg / settings.yaw_step_deg + 1e-9));
   const int side =

@@ -55,10 +55,10 @@ Outcome yard_case(const Eigen::Isometry3d& truth) {
 
 TEST(WideBasin, SettingsAreOffByDefaultAndValidated) {
   EXPECT_FALSE(read_mlndt_settings(YAML::Load("{}"), "t").wide_basin.enabled);
-  const MlndtSettings s = read_mlndt_settings(YAML::Load("{wide_basin: {yaw_step_deg: 10}}"), "t");
+  const MlndtSettings s = read_mlndt_settings(YAML::Load("{wide_basin: {yaw_step_deg: 15}}"), "t");
   EXPECT_TRUE(s.wide_basin.enabled);
-  EXPECT_EQ(s.wide_basin.yaw_step_deg, 10.0);
-  EXPECT_EQ(s.wide_basin.hypotheses(), 37L * 9 * 9);
+  EXPECT_EQ(s.wide_basin.yaw_step_deg, 15.0);
+  EXPECT_EQ(s.wide_basin.hypotheses(), 25L * 17 * 17);
   EXPECT_THROW(read_mlndt_settings(YAML::Load("{wide_basin: {yaw_stp: 10}}"), "t"), InputError);
   EXPECT_THROW(read_mlndt_settings(YAML::Load("{wide_basin: {translation_step: 0}}"), "t"), InputError);
   EXPECT_THROW(read_mlndt_settings(YAML::Load("{wide_basin: {candidates: 0}}"), "t"), InputError);

@@ -5,12 +5,14 @@
 // `translation_step` over ±`translation_range`, are scored by the truncated Mahalanobis score
 // (eq. 3.11, each term min(eᵀC⁻¹e, τ), τ charged for points without a Gaussian) of a fixed,
 // evenly strided subsample of the input at one coarse layer: the finest layer whose cell edge is
-// at least the translation step, so that every true pose lies within one cell of a hypothesis. The
+// at least twice the translation step, so that the nearest hypothesis to the true pose (≤ half a
+// step off in x and y, ≤ half a yaw step in rotation) still puts most points in their own cell or
+// a neighbour (measured in bench_wide_basin: one translation step gave a too narrow score peak). The
 // `candidates` best hypotheses that differ by more than one grid step (plus the initial guess) are
 // refined by the full ML-NDT registration; the lowest final score wins.
 //
 // YAML (key `wide_basin:` of mlndt and fbmlndt; absent = off, the thesis' registration):
-//   wide_basin: {yaw_step_deg: 15, yaw_range_deg: 180, translation_step: 4,
+//   wide_basin: {yaw_step_deg: 10, yaw_range_deg: 180, translation_step: 2,
 //                translation_range: 16, sample_points: 512, candidates: 4, max_distance: 16}
 #include <string>
 #include <vector>
@@ -25,9 +27,9 @@ namespace sextant {
 
 struct WideBasinSettings {
   bool enabled = false;             ///< set by the presence of the `wide_basin` key
-  double yaw_step_deg = 15.0;       ///< spacing of the yaw hypotheses [°, > 0]
+  double yaw_step_deg = 10.0;       ///< spacing of the yaw hypotheses [°, > 0]
   double yaw_range_deg = 180.0;     ///< hypotheses over ±range around the guess [°, 0..180]
-  double translation_step = 4.0;    ///< spacing of the x/y offset grid [m, > 0]
+  double translation_step = 2.0;    ///< spacing of the x/y offset grid [m, > 0]
   double translation_range = 16.0;  ///< offsets over ±range in x and y around the guess [m, ≥ 0]
   int sample_points = 512;          ///< input points scored per hypothesis (evenly strided) [count]
   int candidates = 4;               ///< best hypotheses refined by the full registration [count]
@@ -40,9 +42,9 @@ struct WideBasinSettings {
 /// Reads the `wide_basin` map (enabled = true); unknown keys are InputErrors.
 WideBasinSettings read_wide_basin_settings(const YAML::Node& node, const std::string& file);
 
-/// The scoring layer: the finest of `layers` whose cell edge is ≥ `translation_step` (layer 1
-/// when none is).
-std::size_t wide_basin_layer(const std::vector<NdtGrid>& layers, double translation_step);
+/// The scoring layer: index of the finest of `layers` whose cell edge is ≥ `min_edge` (0, layer
+/// 1, when none is); wide_basin_starts() asks for 2 × translation_step.
+std::size_t wide_basin_layer(const std::vector<NdtGrid>& layers, double min_edge);
 
 /// Starting poses for the refinement, best first: the initial guess, then up to `candidates`
 /// mutually distinct hypotheses in order of score.
