@@ -111,8 +111,11 @@ int main(int argc, char** argv) {
     const PointCloud sample = pair.input.subset(gbs->select(pair.input, rng));
     plain->set_reference(pair.reference);
     wide->set_reference(pair.reference);
-    std::printf("### %s (%zu reference points, %zu sampled input points)\n\n| offset m \\ yaw ° |",
-                pair.name.c_str(), pair.reference.size(), sample.size());
+    std::printf(
+        "### %s (%zu reference points, %zu GBS input points; reference pose T: %.2f m, %.1f°, under D)\n\n"
+        "| offset m \\ yaw ° |",
+        pair.name.c_str(), pair.reference.size(), sample.size(), translation_norm(pair.truth),
+        rotation_angle(pair.truth) / kDegree);
     for (double yaw : yaws) std::printf(" %.0f |", yaw);
     std::printf("\n|---|");
     for (std::size_t k = 0; k < yaws.size(); ++k) std::printf("---|");

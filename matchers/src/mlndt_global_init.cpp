@@ -45,6 +45,14 @@ Eigen::Isometry3d hypothesis_pose(const Eigen::Isometry3d& initial, double yaw, 
   return T;
 }
 
+/// Best first; ties by grid index so that the order never depends on the sort's implementation.
+void sort_best_first(std::vector<Hypothesis>& all) {
+  std::sort(all.begin(), all.end(), [](const Hypothesis& a, const Hypothesis& b) {
+    if (a.score != b.score) return a.score < b.score;
+    return std::tie(a.yaw, a.x, a.y) < std::tie(b.yaw, b.x, b.y);
+  });
+}
+
 }  // namespace
 
 bool WideBasinSettings::valid(std::string* why) const {
@@ -61,6 +69,10 @@ bool WideBasinSettings::valid(std::string* why) const {
     problem = "wide_basin.sample_points must be ≥ 1";
   else if (candidates < 1)
     problem = "wide_basin.candidates must be ≥ 1";
+  else if (prescreen_points < 0)
+    problem = "wide_basin.prescreen_points must be ≥ 0 (0: off)";
+  else if (prescreen_keep < candidates)
+    problem = "wide_basin.prescreen_keep must be ≥ candidates";
   else if (!(max_distance > 0.0 && std::isfinite(max_distance)))
     problem = "wide_basin.max_distance must be positive and finite";
   if (problem && why) *why = problem;
@@ -83,6 +95,8 @@ WideBasinSettings read_wide_basin_settings(const YAML::Node& node, const std::st
   in.read("translation_range", s.translation_range);
   in.read("sample_points", s.sample_points);
   in.read("candidates", s.candidates);
+  in.read("prescreen_points", s.prescreen_points);
+  in.read("prescreen_keep", s.prescreen_keep);
   in.read("max_distance", s.max_distance);
   in.finish();
   std::string why;
@@ -108,6 +122,13 @@ std::vector<Eigen::Isometry3d> wide_basin_starts(const std::vector<NdtGrid>& lay
   const int side =
       static_cast<int>(std::floor(settings.translation_range / settings.translation_step + 1e-9));
   const double full_turn_steps = 360.0 / settings.yaw_step_deg;
+  const auto pose_of = [&](const Hypothesis& h) {
+    return hypothesis_pose(initial, h.yaw * settings.yaw_step_deg * kDegree, h.x * settings.translation_step,
+                           h.y * settings.translation_step);
+  };
+  // Prescreen every hypothesis with a smaller strided sample when asked, rescore the best.
+  const bool prescreen = settings.prescreen_points > 0 && settings.prescreen_points < settings.sample_points;
+  const PointCloud first_sample = prescreen ? strided_subsample(sample, settings.prescreen_points) : sample;
   std::vector<Hypothesis> all;
   all.reserve(static_cast<std::size_t>(settings.hypotheses()));
   for (int k = -yaws; k <= yaws; ++k) {
@@ -115,16 +136,17 @@ std::vector<Eigen::Isometry3d> wide_basin_starts(const std::vector<NdtGrid>& lay
     if (yaw <= -180.0 + 1e-9 && yaws * settings.yaw_step_deg >= 180.0 - 1e-9) continue;  // = +180°
     for (int i = -side; i <= side; ++i)
       for (int j = -side; j <= side; ++j) {
-        const Eigen::Isometry3d T = hypothesis_pose(initial, yaw * kDegree, i * settings.translation_step,
-                                                    j * settings.translation_step);
-        all.push_back({truncated_score(grid, sample, T, settings.max_distance), k, i, j});
+        Hypothesis h{0.0, k, i, j};
+        h.score = truncated_score(grid, first_sample, pose_of(h), settings.max_distance);
+        all.push_back(h);
       }
   }
-  // Best first; ties by grid index so that the order never depends on the sort's implementation.
-  std::sort(all.begin(), all.end(), [](const Hypothesis& a, const Hypothesis& b) {
-    if (a.score != b.score) return a.score < b.score;
-    return std::tie(a.yaw, a.x, a.y) < std::tie(b.yaw, b.x, b.y);
-  });
+  sort_best_first(all);
+  if (prescreen) {
+    all.resize(std::min(all.size(), static_cast<std::size_t>(settings.prescreen_keep)));
+    for (Hypothesis& h : all) h.score = truncated_score(grid, sample, pose_of(h), settings.max_distance);
+    sort_best_first(all);
+  }
   // Keep hypotheses more than one grid step (in yaw or x or y) from every kept one.
   std::vector<Hypothesis> kept;
   for (const Hypothesis& h : all) {
@@ -136,9 +158,7 @@ std::vector<Eigen::Isometry3d> wide_basin_starts(const std::vector<NdtGrid>& lay
     });
     if (!near) kept.push_back(h);
   }
-  for (const Hypothesis& h : kept)
-    starts.push_back(hypothesis_pose(initial, h.yaw * settings.yaw_step_deg * kDegree,
-                                     h.x * settings.translation_step, h.y * settings.translation_step));
+  for (const Hypothesis& h : kept) starts.push_back(pose_of(h));
   return starts;
 }
 

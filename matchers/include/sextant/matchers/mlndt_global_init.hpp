@@ -13,7 +13,8 @@
 //
 // YAML (key `wide_basin:` of mlndt and fbmlndt; absent = off, the thesis' registration):
 //   wide_basin: {yaw_step_deg: 10, yaw_range_deg: 180, translation_step: 2,
-//                translation_range: 16, sample_points: 512, candidates: 4, max_distance: 16}
+//                translation_range: 16, sample_points: 512, prescreen_points: 128,
+//                prescreen_keep: 512, candidates: 4, max_distance: 16}
 #include <string>
 #include <vector>
 
@@ -32,8 +33,12 @@ struct WideBasinSettings {
   double translation_step = 2.0;    ///< spacing of the x/y offset grid [m, > 0]
   double translation_range = 16.0;  ///< offsets over ±range in x and y around the guess [m, ≥ 0]
   int sample_points = 512;          ///< input points scored per hypothesis (evenly strided) [count]
-  int candidates = 4;               ///< best hypotheses refined by the full registration [count]
-  double max_distance = 16.0;       ///< τ of the hypothesis score [Mahalanobis units]
+  /// Every hypothesis is first scored with this many points (a strided subset of the sample),
+  /// the best `prescreen_keep` are rescored with all `sample_points`; 0 scores all with all [count]
+  int prescreen_points = 128;
+  int prescreen_keep = 512;    ///< hypotheses rescored after the prescreen [count, ≥ candidates]
+  int candidates = 4;          ///< best hypotheses refined by the full registration [count]
+  double max_distance = 16.0;  ///< τ of the hypothesis score [Mahalanobis units]
   bool valid(std::string* why) const;
   /// Hypotheses scored per registration.
   long hypotheses() const;
