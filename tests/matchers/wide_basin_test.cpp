@@ -104,5 +104,26 @@ TEST(WideBasin, RecoversACampusPairDisplaced12MetresAnd60Degrees) {
   EXPECT_LT(o.wide_rad, 0.3 * kDeg);
 }
 
+TEST(WideBasin, KeepsTheAnswerWherePlainMlndtConverges) {
+  const Eigen::Isometry3d truth = test::pose(0.6, -0.4, 0, 0, 0, 4);
+  const Outcome o = yard_case(truth);
+  EXPECT_LT(o.plain_m, 0.03);
+  EXPECT_LT(o.wide_m, 0.03);
+  EXPECT_NEAR(o.wide_m, o.plain_m, 0.005);
+  EXPECT_NEAR(o.wide_rad, o.plain_rad, 0.05 * kDeg);
+}
+
+TEST(WideBasin, FbmlndtForwardsTheOptionAndRecovers60Degrees) {
+  const Eigen::Isometry3d truth = test::pose(6, -4, 0, 0, 0, 60);
+  Rng a(3), b(4);
+  const PointCloud reference = test::yard(a);
+  const PointCloud input = transformed(test::yard(b), truth.inverse());
+  const auto fb = make_matcher("fbmlndt", YAML::Load("{solver: lm, wide_basin: {}}"), "test");
+  fb->set_reference(reference);
+  const RegistrationResult r = fb->align(input, Eigen::Isometry3d::Identity());
+  EXPECT_LT(test::translation_error(truth, r.T), 0.03) << r.summary();
+  EXPECT_LT(test::rotation_error(truth, r.T), 0.2 * kDeg) << r.summary();
+}
+
 }  // namespace
 }  // namespace sextant
