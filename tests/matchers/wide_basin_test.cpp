@@ -104,6 +104,18 @@ TEST(WideBasin, RecoversACampusPairDisplaced12MetresAnd60Degrees) {
   EXPECT_LT(o.wide_rad, 0.3 * kDeg);
 }
 
+TEST(WideBasin, Recovers10MetresAnd60DegreesWithTheDefaultSolver) {
+  const Eigen::Isometry3d truth = test::pose(-10, 0, 0, 0, 0, -60);
+  Rng a(3), b(4);
+  const PointCloud reference = test::yard(a);
+  const PointCloud input = every_fourth(transformed(test::yard(b), truth.inverse()));
+  const auto wide = make_matcher("mlndt", YAML::Load("{wide_basin: {}}"), "test");
+  wide->set_reference(reference);
+  const RegistrationResult r = wide->align(input, Eigen::Isometry3d::Identity());
+  EXPECT_LT(test::translation_error(truth, r.T), 0.03) << r.summary();
+  EXPECT_LT(test::rotation_error(truth, r.T), 0.2 * kDeg) << r.summary();
+}
+
 TEST(WideBasin, KeepsTheAnswerWherePlainMlndtConverges) {
   const Eigen::Isometry3d truth = test::pose(0.6, -0.4, 0, 0, 0, 4);
   const Outcome o = yard_case(truth);
