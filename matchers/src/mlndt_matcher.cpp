@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/matchers/mlndt_presets.hpp"
 
 namespace sextant {
 
@@ -80,7 +81,8 @@ bool MlndtSettings::valid(std::string* why) const {
 }
 
 MlndtSettings read_mlndt_settings(const YAML::Node& node, const std::string& file) {
-  SettingsReader in(node, file);
+  const YAML::Node settings = expand_mlndt_preset(node, file);  // `preset:` first, other keys override
+  SettingsReader in(settings, file);
   MlndtSettings s;
   in.read("division", s.pyramid.division);
   in.read("layers", s.pyramid.layers);

@@ -1,4 +1,5 @@
-// `sextant match` end to end: runs the CLI binary on the Velodyne pair and checks the JSON.
+// `sextant match` end to end: runs the CLI binary on the shared real pairs and checks the JSON; with
+// no options it must register every shared pair from the guess a user has (docs/matcher_defaults.md).
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
@@ -7,7 +8,10 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <string>
+
+#include "sextant/core/io/uos.hpp"
 
 namespace {
 
@@ -60,6 +64,75 @@ TEST_P(MatchCli, JsonOnVelodynePairFromNearGuess) {
 
 INSTANTIATE_TEST_SUITE_P(Methods, MatchCli, ::testing::Values("icp_p2l", "pcl_ndt"),
                          [](const auto& info) { return std::string(info.param); });
+
+/// Element (row, col) of the JSON "transform" (4×4, row-major); NaN when absent.
+double transform_element(const std::string& json, int row, int col) {
+  auto at = json.find("\"transform\": [[");
+  if (at == std::string::npos) return NAN;
+  const char* p = json.c_str() + at + 15;
+  for (int k = 0; k < 4 * row + col; ++k) {
+    while (*p && *p != ',') ++p;
+    if (*p) ++p;
+    while (*p == ' ' || *p == '[' || *p == ']') ++p;
+  }
+  return std::strtod(p, nullptr);
+}
+
+std::string last_json(const CliRun& r) {
+  const auto at = r.output.rfind("{\"method\"");
+  return at == std::string::npos ? std::string() : r.output.substr(at);
+}
+
+const std::string kData = std::string(SEXTANT_DATA_DIR) + "/";
+
+// The defaults on every shared pair, from the identity: the Velodyne pair (ground truth), the uos
+// scans 000/001 (3DTK's .frames), the KITTI pair (cross-method consensus ≈ 0.68 m forward, its derived
+// ground truth is withdrawn) and PCL's room scans from the tutorial's guess (no ground truth: PCL's NDT
+// and our ICP agree on x ≈ 1.97 m, y ≈ 0.06 m).
+TEST(MatchCliDefaults, NoOptionsRegistersEverySharedPair) {
+  const CliRun velodyne = run_cli("match " + kPair + " --json");
+  ASSERT_EQ(velodyne.exit_code, 0) << velodyne.output;
+  EXPECT_LT(json_number(last_json(velodyne), "error_cm"), 5.0) << velodyne.output;
+  EXPECT_LT(json_number(last_json(velodyne), "error_deg"), 0.5) << velodyne.output;
+
+  const std::string gt = ::testing::TempDir() + "uos_000_001_gt.txt";
+  {
+    const auto frame = [](const char* f) { return sextant::read_uos_frames(kData + "uos_3dtk/" + f).back(); };
+    const Eigen::Matrix4d T = (frame("scan000.frames").inverse() * frame("scan001.frames")).matrix();
+    std::ofstream out(gt);
+    out.precision(12);
+    out << T << "\n";
+  }
+  const CliRun uos = run_cli("match " + kData + "uos_3dtk/scan000.3d " + kData + "uos_3dtk/scan001.3d --gt " +
+                             gt + " --json");
+  ASSERT_EQ(uos.exit_code, 0) << uos.output;
+  EXPECT_LT(json_number(last_json(uos), "error_cm"), 5.0) << uos.output;
+  EXPECT_LT(json_number(last_json(uos), "error_deg"), 0.5) << uos.output;
+
+  const CliRun kitti = run_cli("match " + kData + "kitti00_pair/000000.xyz32.bin " + kData +
+                               "kitti00_pair/000001.xyz32.bin --json");
+  ASSERT_EQ(kitti.exit_code, 0) << kitti.output;
+  EXPECT_NEAR(transform_element(last_json(kitti), 0, 3), 0.68, 0.05) << kitti.output;
+
+  const CliRun room = run_cli("match " + kData + "pcl_room_scan/room_scan1.pcd " + kData +
+                              "pcl_room_scan/room_scan2.pcd --init 1.79387,0.720047,0,0,0,39.7121 --json");
+  ASSERT_EQ(room.exit_code, 0) << room.output;
+  EXPECT_NE(last_json(room).find("\"converged\": true"), std::string::npos) << room.output;
+  EXPECT_NEAR(transform_element(last_json(room), 0, 3), 1.97, 0.1) << room.output;
+  EXPECT_NEAR(transform_element(last_json(room), 1, 3), 0.06, 0.1) << room.output;
+}
+
+// The outdoor preset meets the bar on the Velodyne pair (< 3 cm, < 0.25°); the thesis preset is
+// the reproduction's setting and is worse here (measured 73.8 cm on this pair with Newton as printed).
+TEST(MatchCliDefaults, PresetsAreSelectable) {
+  const CliRun outdoor = run_cli("match " + kPair + " --preset outdoor --json");
+  ASSERT_EQ(outdoor.exit_code, 0) << outdoor.output;
+  EXPECT_LT(json_number(last_json(outdoor), "error_cm"), 3.0) << outdoor.output;
+  EXPECT_LT(json_number(last_json(outdoor), "error_deg"), 0.25) << outdoor.output;
+  const CliRun thesis = run_cli("match " + kPair + " --preset thesis");
+  ASSERT_EQ(thesis.exit_code, 0) << thesis.output;
+  EXPECT_NE(thesis.output.find("mlndt (preset thesis)"), std::string::npos) << thesis.output;
+}
 
 TEST(MatchCliErrors, BadInputIsAnErrorWithExitCode1) {
   for (const std::string& arguments :

@@ -1,7 +1,8 @@
-// `sextant match <reference> <input> --method mlndt [--solver lm] [--sampling gbs]
-// [--init x,y,z,a,b,g] [--gt FILE] [--config settings.yaml] [--out aligned.pcd] [--json]`:
+// `sextant match <reference> <input> [--method mlndt] [--preset default|thesis|outdoor] [--solver lm]
+// [--sampling gbs] [--init x,y,z,a,b,g] [--gt FILE] [--config settings.yaml] [--out aligned.pcd] [--json]`:
 // one registration of a pair with any registered matcher, its transform, iterations, time and
-// the error against a ground-truth matrix (p_ref = T·p_input).
+// the error against a ground-truth matrix (p_ref = T·p_input). With no options: ML-NDT with the
+// `default` preset on a GBS sample, the measured best on real scans (docs/matcher_defaults.md).
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -28,8 +29,9 @@ constexpr double kDegPerRad = 180.0 / M_PI;
 struct MatchOptions {
   std::string reference, input;
   std::string method = "mlndt";
-  std::string solver;  ///< empty: the matcher's default
-  std::string sampling = "all";
+  std::string preset;  ///< mlndt / fbmlndt settings preset; empty: "default" (mlndt_presets.hpp)
+  std::string solver;  ///< empty: the preset's
+  std::string sampling = "gbs";
   std::string init;  ///< "x,y,z,alpha,beta,gamma" [m, deg]
   std::string gt, config, out;
   std::uint64_t seed = 1;
@@ -110,6 +112,12 @@ MatchConfig read_config(const MatchOptions& o) {
   }
   if (!config.matcher.IsDefined() || config.matcher.IsNull())
     config.matcher = YAML::Node(YAML::NodeType::Map);
+  const bool ndt_family = o.method == "mlndt" || o.method == "fbmlndt";
+  if (!o.preset.empty() && !ndt_family)
+    throw InputError("--preset", "", "presets are settings of mlndt and fbmlndt, not of '" + o.method + "'");
+  // The --config file's own `preset:` wins over --preset; its other keys override the preset's.
+  if (ndt_family && config.matcher.IsMap() && !config.matcher["preset"].IsDefined())
+    config.matcher["preset"] = o.preset.empty() ? "default" : o.preset;
   if (!o.solver.empty()) config.matcher["solver"] = o.solver;
   return config;
 }
@@ -159,7 +167,9 @@ void print_json(const MatchOptions& o, const PairMatch& m, const std::optional<P
 void print_text(const MatchOptions& o, const PairMatch& m, const std::optional<PoseError>& error) {
   const RegistrationResult& r = m.result;
   const Pose6 p = to_pose6(r.T);
+  const bool ndt_family = o.method == "mlndt" || o.method == "fbmlndt";
   std::cout << std::fixed << std::setprecision(6) << "method:      " << o.method
+            << (ndt_family ? " (preset " + (o.preset.empty() ? std::string("default") : o.preset) + ")" : "")
             << (o.solver.empty() ? "" : " (solver " + o.solver + ")") << ", sampling " << o.sampling << ": "
             << r.input_points << " points (" << std::setprecision(1) << 100.0 * m.kept_fraction << "%)\n"
             << std::setprecision(6) << "transform:   (p_reference = T · p_input)\n";
@@ -212,6 +222,9 @@ void add_match_command(CLI::App& app, int& exit_code) {
   cmd->add_option("input", o->input, "Input cloud file, aligned into the reference frame")->required();
   cmd->add_option("--method", o->method, "Matcher name (mlndt, ndt, icp_p2p, icp_p2l, pcl_ndt, ...)")
       ->capture_default_str();
+  cmd->add_option("--preset", o->preset,
+                  "mlndt/fbmlndt settings: default (measured best on real scans), thesis (the thesis' exact "
+                  "settings), outdoor (6 layers for large outdoor scans)");
   cmd->add_option("--solver", o->solver, "Solver for the NDT family (newton, lm, ceres)");
   cmd->add_option("--sampling", o->sampling, "Input sampler (all, regular, random, gbs, ...)")
       ->capture_default_str();

@@ -1,0 +1,61 @@
+#include "sextant/matchers/mlndt_presets.hpp"
+
+#include <algorithm>
+
+#include "sextant/core/error.hpp"
+#include "sextant/core/settings_reader.hpp"
+
+namespace sextant {
+namespace {
+
+struct Preset {
+  const char* name;
+  const char* settings;
+};
+
+// docs/matcher_defaults.md has the table these come from.
+constexpr Preset kPresets[] = {
+    {"default", "{solver: lm, layers: 4, start_layer: 2, max_distance: 16, unmatched_penalty: 16}"},
+    {"thesis",
+     "{solver: newton, step_control: none, division: 8, layers: 4, start_layer: 2, "
+     "iterations_per_layer: 3}"},
+    {"outdoor", "{solver: lm, layers: 6, start_layer: 2, max_distance: 16, unmatched_penalty: 16}"},
+};
+
+std::string known_names() {
+  std::string known;
+  for (const Preset& p : kPresets) known += (known.empty() ? "" : ", ") + std::string(p.name);
+  return known;
+}
+
+}  // namespace
+
+std::vector<std::string> mlndt_preset_names() {
+  std::vector<std::string> names;
+  for (const Preset& p : kPresets) names.emplace_back(p.name);
+  return names;
+}
+
+YAML::Node mlndt_preset(const std::string& name, const std::string& file) {
+  for (const Preset& p : kPresets)
+    if (name == p.name) return YAML::Load(p.settings);
+  throw InputError(file, "", "key 'preset': unknown preset '" + name + "' (known: " + known_names() + ")");
+}
+
+YAML::Node expand_mlndt_preset(const YAML::Node& settings, const std::string& file) {
+  if (!settings.IsDefined() || !settings.IsMap() || !settings["preset"].IsDefined()) return settings;
+  const YAML::Node preset_node = settings["preset"];
+  if (!preset_node.IsScalar())
+    throw InputError(file, at_line(yaml_line(preset_node)), "key 'preset': expected a preset name");
+  const auto known = mlndt_preset_names();
+  if (std::find(known.begin(), known.end(), preset_node.Scalar()) == known.end())
+    throw InputError(
+        file, at_line(yaml_line(preset_node)),
+        "key 'preset': unknown preset '" + preset_node.Scalar() + "' (known: " + known_names() + ")");
+  YAML::Node expanded = mlndt_preset(preset_node.Scalar(), file);
+  for (const auto& entry : settings)
+    if (entry.first.as<std::string>() != "preset") expanded[entry.first.as<std::string>()] = entry.second;
+  return expanded;
+}
+
+}  // namespace sextant
