@@ -85,7 +85,7 @@ void put_benchmarks(const PoseList& estimate, const PoseList& truth, const std::
 
 /// The estimated vertical planes as top-down segments over their true landmark's extent: each
 /// polygon vertex projected onto the estimated plane's trace (x, y, z̄) → 4 numbers per segment.
-std::vector<double> map_segments(const SequenceRun& r, const synth::Campus& campus) {
+std::vector<double> map_segments(const FilterSequenceRun& r, const synth::Campus& campus) {
   std::vector<double> out;
   for (std::size_t i = 0; i < r.map.size() && i < r.map_truth.size(); ++i) {
     if (r.map_truth[i] < 0) continue;
@@ -109,7 +109,8 @@ std::vector<double> map_segments(const SequenceRun& r, const synth::Campus& camp
   return out;
 }
 
-void fill_row(const SequenceRun& r, const synth::Campus& campus, const PlaneSlamParams& params, RunRow& row) {
+void fill_row(const FilterSequenceRun& r, const synth::Campus& campus, const PlaneSlamParams& params,
+              RunRow& row) {
   const std::size_t n = r.steps.size();
   const double bound = chi_square_quantile(params.nees_probability, 6.0);
   auto& s = row.series;

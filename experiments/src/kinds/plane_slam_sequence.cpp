@@ -24,7 +24,7 @@ std::vector<Eigen::Isometry3d> odometry_poses(const synth::Campus& campus, const
 
 class Recorder {
  public:
-  Recorder(const PlaneSlamParams& params, SequenceRun& run) : params_(params), run_(run) {
+  Recorder(const PlaneSlamParams& params, FilterSequenceRun& run) : params_(params), run_(run) {
     pending_ = params.information_at;
   }
 
@@ -62,11 +62,11 @@ class Recorder {
   }
 
   const PlaneSlamParams& params_;
-  SequenceRun& run_;
+  FilterSequenceRun& run_;
   std::vector<std::size_t> pending_;
 };
 
-void final_map(const Filter& filter, SequenceRun& run) {
+void final_map(const Filter& filter, FilterSequenceRun& run) {
   const Eigen::VectorXd x = filter.mean();
   const PlaneSlamModel model;
   for (int i = 0; i < filter.num_landmarks(); ++i)
@@ -75,7 +75,7 @@ void final_map(const Filter& filter, SequenceRun& run) {
 
 // True planes, true association: the observation model (4.64) from the true pose plus N(0, R).
 void run_true(const SequenceData& data, const PlaneSlamParams& params, const PlaneSlamSettings& s,
-              const std::vector<Vector6d>& u, std::size_t scans, Rng& noise, SequenceRun& run) {
+              const std::vector<Vector6d>& u, std::size_t scans, Rng& noise, FilterSequenceRun& run) {
   const synth::Campus& c = *data.campus;
   const auto model = std::make_shared<PlaneSlamModel>();
   auto filter = make_filter(s.filter, model, s.filter_settings);
@@ -137,7 +137,7 @@ void run_true(const SequenceData& data, const PlaneSlamParams& params, const Pla
 // Extraction, semantic association and the χ² gate (filters/plane_slam.hpp).
 void run_extracted(const SequenceData& data, const PlaneSlamParams& params, const PlaneSlamSettings& s,
                    const std::vector<Eigen::Isometry3d>& odometry, std::size_t scans, std::uint64_t seed,
-                   SequenceRun& run) {
+                   FilterSequenceRun& run) {
   const synth::Campus& c = *data.campus;
   PlaneSlam slam(s, to_pose6(c.ground_truth[0]), seed);
   Recorder recorder(params, run);
@@ -159,8 +159,8 @@ void run_extracted(const SequenceData& data, const PlaneSlamParams& params, cons
 
 }  // namespace
 
-SequenceRun run_sequence(const SequenceData& data, const PlaneSlamParams& params,
-                         const PlaneSlamSettings& settings, std::size_t scans, std::uint64_t seed) {
+FilterSequenceRun run_sequence(const SequenceData& data, const PlaneSlamParams& params,
+                               const PlaneSlamSettings& settings, std::size_t scans, std::uint64_t seed) {
   const synth::Campus& c = *data.campus;
   if (scans < 2 || scans > c.size()) throw std::invalid_argument("run_sequence: bad scan count");
   Rng rng(seed);
@@ -168,7 +168,7 @@ SequenceRun run_sequence(const SequenceData& data, const PlaneSlamParams& params
   const std::vector<Eigen::Isometry3d> odometry = odometry_poses(c, params, scans, odometry_rng);
   // Increments u_k = o(k−1) ⊖ o(k) (eq. 4.72) and the dead reckoning they give from the true start.
   const PlaneSlamModel model;
-  SequenceRun run;
+  FilterSequenceRun run;
   std::vector<Vector6d> u(scans, Vector6d::Zero());
   run.odometry.push_back(to_pose6(c.ground_truth[0]));
   for (std::size_t k = 1; k < scans; ++k) {

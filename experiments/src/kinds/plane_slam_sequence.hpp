@@ -45,7 +45,7 @@ struct InformationPattern {
   std::vector<double> links;  ///< flat (i, j) pairs, i < j, of linked variables
 };
 
-struct SequenceRun {
+struct FilterSequenceRun {
   std::vector<SequenceStep> steps;
   std::vector<Pose6> odometry;  ///< dead reckoning from the true start with the filters' increments
   FilterSummary summary;
@@ -55,7 +55,7 @@ struct SequenceRun {
 };
 
 /// Runs `scans` scans. `seed` draws the resampled odometry and the observation noise.
-SequenceRun run_sequence(const SequenceData& data, const PlaneSlamParams& params,
-                         const PlaneSlamSettings& settings, std::size_t scans, std::uint64_t seed);
+FilterSequenceRun run_sequence(const SequenceData& data, const PlaneSlamParams& params,
+                               const PlaneSlamSettings& settings, std::size_t scans, std::uint64_t seed);
 
 }  // namespace sextant
