@@ -99,46 +99,6 @@ void draw_axes(svg::Document& doc, const Axis& x, const Axis& y, const std::stri
   if (!y_label.empty()) doc.text(18, (top + bottom) / 2, y_label, 13, "middle", -90);
 }
 
-using LegendEntries = std::vector<std::pair<std::string, std::string>>;  // name, colour
-
-constexpr double kLegendRow = 18;  // [px]
-
-/// Width of one legend entry: swatch, gap, text (about 7 px per character, capped).
-double legend_entry_width(const std::string& name) {
-  return 34 + 7.0 * static_cast<double>(std::min<std::size_t>(name.size(), 60));
-}
-
-/// Rows needed to flow the entries left to right within `width` px.
-int legend_rows(const LegendEntries& entries, double width) {
-  if (entries.empty()) return 0;
-  int rows = 1;
-  double x = 0;
-  for (const auto& e : entries) {
-    const double w = legend_entry_width(e.first);
-    if (x > 0 && x + w > width) {
-      ++rows;
-      x = 0;
-    }
-    x += w + 12;
-  }
-  return rows;
-}
-
-/// The legend below the plot area, outside the data: entries flow left to right from (left, top).
-void draw_legend(svg::Document& doc, const LegendEntries& entries, double left, double top, double width) {
-  double x = 0, y = top + 12;
-  for (const auto& [name, color] : entries) {
-    const double w = legend_entry_width(name);
-    if (x > 0 && x + w > width) {
-      x = 0;
-      y += kLegendRow;
-    }
-    doc.line(left + x, y - 4, left + x + 18, y - 4, color, 2.5);
-    doc.text(left + x + 24, y, name, 11);
-    x += w + 12;
-  }
-}
-
 /// Interpolates between two "#rrggbb" colours' components.
 int channel(const char* hex) {
   return std::stoi(std::string(hex, 2), nullptr, 16);
@@ -223,15 +183,15 @@ std::string render_svg(const XYPlot& plot) {
   y.px_lo = plot.height - kBottom;
   y.px_hi = kTop;
 
-  LegendEntries legend;
+  svg::LegendEntries legend;
   for (std::size_t k = 0; k < plot.series.size(); ++k)
     if (!plot.series[k].name.empty())
       legend.emplace_back(plot.series[k].name,
                           plot.series[k].color.empty() ? svg::palette(k) : plot.series[k].color);
   if (!plot.legend) legend.clear();
   const double legend_width = plot.width - kLeft - kRight;
-  const int rows = legend_rows(legend, legend_width);
-  svg::Document doc(plot.width, plot.height + static_cast<int>(rows * kLegendRow));
+  const int rows = svg::legend_rows(legend, legend_width);
+  svg::Document doc(plot.width, plot.height + static_cast<int>(rows * svg::kLegendRow));
   draw_title(doc, plot.width, plot.title);
   draw_axes(doc, x, y, plot.x_label, plot.y_label);
   for (std::size_t k = 0; k < plot.series.size(); ++k) {
@@ -257,7 +217,7 @@ std::string render_svg(const XYPlot& plot) {
     }
     flush();
   }
-  draw_legend(doc, legend, kLeft, plot.height - 4, legend_width);
+  svg::draw_legend(doc, legend, kLeft, plot.height - 4, legend_width);
   return doc.finish();
 }
 
@@ -343,13 +303,13 @@ std::string render_svg(const TrajectoryPlot& plot) {
   y.px_lo = bottom;
   y.px_hi = top;
 
-  LegendEntries legend;
+  svg::LegendEntries legend;
   for (std::size_t k = 0; k < plot.trajectories.size(); ++k)
     if (!plot.trajectories[k].name.empty())
       legend.emplace_back(plot.trajectories[k].name,
                           plot.trajectories[k].color.empty() ? svg::palette(k) : plot.trajectories[k].color);
-  const int rows = legend_rows(legend, right - left);
-  svg::Document doc(plot.width, plot.height + static_cast<int>(rows * kLegendRow));
+  const int rows = svg::legend_rows(legend, right - left);
+  svg::Document doc(plot.width, plot.height + static_cast<int>(rows * svg::kLegendRow));
   draw_title(doc, plot.width, plot.title);
   draw_axes(doc, x, y, "x [m]", second == 1 ? "y [m]" : "z [m]");
   for (std::size_t k = 0; k < plot.trajectories.size(); ++k) {
@@ -396,7 +356,7 @@ std::string render_svg(const TrajectoryPlot& plot) {
       doc.polyline(ex, ey, color, 0.8, true);
     }
   }
-  draw_legend(doc, legend, left, plot.height - 4, right - left);
+  svg::draw_legend(doc, legend, left, plot.height - 4, right - left);
   return doc.finish();
 }
 

@@ -1,5 +1,6 @@
 #include "svg_document.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <locale>
 
@@ -83,6 +84,44 @@ const std::string& palette(std::size_t index) {
   static const std::vector<std::string> colors{"#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd",
                                                "#8c564b", "#e377c2", "#17becf", "#7f7f7f", "#bcbd22"};
   return colors[index % colors.size()];
+}
+
+namespace {
+
+/// Width of one legend entry: swatch, gap, text (about 7 px per character, capped).
+double legend_entry_width(const std::string& name) {
+  return 34 + 7.0 * static_cast<double>(std::min<std::size_t>(name.size(), 60));
+}
+
+}  // namespace
+
+int legend_rows(const LegendEntries& entries, double width) {
+  if (entries.empty()) return 0;
+  int rows = 1;
+  double x = 0;
+  for (const auto& e : entries) {
+    const double w = legend_entry_width(e.first);
+    if (x > 0 && x + w > width) {
+      ++rows;
+      x = 0;
+    }
+    x += w + 12;
+  }
+  return rows;
+}
+
+void draw_legend(Document& doc, const LegendEntries& entries, double left, double top, double width) {
+  double x = 0, y = top + 12;
+  for (const auto& [name, color] : entries) {
+    const double w = legend_entry_width(name);
+    if (x > 0 && x + w > width) {
+      x = 0;
+      y += kLegendRow;
+    }
+    doc.line(left + x, y - 4, left + x + 18, y - 4, color, 2.5);
+    doc.text(left + x + 24, y, name, 11);
+    x += w + 12;
+  }
 }
 
 }  // namespace sextant::svg

@@ -3,6 +3,7 @@
 // and formatting numbers with the classic locale so the output is well-formed XML.
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sextant::svg {
@@ -34,6 +35,15 @@ class Document {
   std::ostringstream body_;
   int width_, height_;
 };
+
+/// Legend entries: name, colour.
+using LegendEntries = std::vector<std::pair<std::string, std::string>>;
+constexpr double kLegendRow = 18;  ///< height of one legend row [px]
+
+/// Rows needed to flow the entries left to right within `width` px.
+int legend_rows(const LegendEntries& entries, double width);
+/// A legend outside the data, below the plot area: entries flow left to right from (left, top).
+void draw_legend(Document& doc, const LegendEntries& entries, double left, double top, double width);
 
 /// The series palette.
 const std::string& palette(std::size_t index);

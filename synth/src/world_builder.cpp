@@ -6,30 +6,13 @@
 
 #include <Eigen/Geometry>
 
+#include "world_geometry.hpp"
+
 namespace sextant::synth {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kSidewalk = 3.0;            ///< lots start this far behind the kerb [m]
-constexpr double kCrossingClearance = 14.0;  ///< no roadside objects this close to a crossing [m]
-
-struct Rect {
-  double x0, y0, x1, y1;
-  double width() const { return x1 - x0; }
-  double height() const { return y1 - y0; }
-};
-
-/// A building's local frame: origin and yaw in the world.
-struct LocalFrame {
-  Eigen::Vector2d origin;
-  double yaw = 0.0;
-  Eigen::Vector3d to_world(double x, double y, double z) const {
-    const double c = std::cos(yaw), s = std::sin(yaw);
-    return {origin.x() + c * x - s * y, origin.y() + s * x + c * y, z};
-  }
-};
-
-enum class RoofType { kFlat, kShed, kGabled };
+using namespace detail;  // NOLINT: the builder's own geometry helpers
 
 class Builder {
  public:
