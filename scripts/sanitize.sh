@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer (SEXTANT_SANITIZE=ON),
-# in its own build folder (build-asan/, RelWithDebInfo, no benchmarks). Installs what is missing
+# in its own build folder (build-asan/, RelWithDebInfo at -O1 -g1, no benchmarks). Installs what is missing
 # through scripts/setup.sh's package list first. CI (.ci/run) runs it after scripts/test.sh.
 # Usage: scripts/sanitize.sh [extra cmake -D options...]
 set -euo pipefail
@@ -10,8 +10,10 @@ scripts/ensure_packages.sh build-essential cmake pkg-config git libeigen3-dev li
 jobs=$(nproc 2>/dev/null || echo 2)
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
-cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSEXTANT_SANITIZE=ON -DSEXTANT_WERROR=ON \
-  -DSEXTANT_BUILD_BENCHMARKS=OFF "${launcher[@]}" "$@"
+# -O1 -g1 (ASan's recommended optimisation, line tables for the reports): about half the compile
+# time of -O2 -g per file and a third of the object size, which keeps .ci/run within its budget.
+cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
+  -DSEXTANT_SANITIZE=ON -DSEXTANT_WERROR=ON -DSEXTANT_BUILD_BENCHMARKS=OFF "${launcher[@]}" "$@"
 cmake --build build-asan -j"$jobs"
 # Any ASan/LSan/UBSan report fails its test (UBSan: -fno-sanitize-recover, see CompilerOptions.cmake).
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
