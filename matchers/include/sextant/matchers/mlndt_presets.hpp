@@ -7,7 +7,8 @@
 //             s = 2, last-layer terms truncated at 16 (unmatched points charged 16), with GBS input
 //   thesis  — the thesis' exact settings (Table 3.1, §5.1): Newton with the step as printed (eq. 3.16
 //             with H + γI, no step control), q = 8, n = 4, s = 2, three iterations per layer, the
-//             plain sum of eq. 3.11; the experiment configs use it
+//             plain sum of eq. 3.11 (the experiment configs spell these settings out method by
+//             method, with each deliberate deviation named in their report sections)
 //   outdoor — large outdoor scans: the default with n = 6 (finest cells ≈ 0.6–1 m on 100 m scenes)
 #include <string>
 #include <vector>
