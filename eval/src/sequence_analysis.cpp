@@ -85,15 +85,7 @@ Interval bootstrap_slope(const std::vector<double>& x, const std::vector<double>
     if (f.defined()) draws.push_back(f.slope);
   }
   if (draws.empty()) return {whole.slope, whole.slope, whole.slope, confidence, p.x.size()};
-  std::sort(draws.begin(), draws.end());
-  const double tail = 0.5 * (1.0 - confidence);
-  const auto at = [&](double q) {
-    const double pos = q * static_cast<double>(draws.size() - 1);
-    const auto i = static_cast<std::size_t>(std::floor(pos));
-    const std::size_t j = std::min(i + 1, draws.size() - 1);
-    return draws[i] + (pos - static_cast<double>(i)) * (draws[j] - draws[i]);
-  };
-  return {whole.slope, at(tail), at(1.0 - tail), confidence, p.x.size()};
+  return percentile_interval(whole.slope, draws, confidence, p.x.size());
 }
 
 std::vector<std::size_t> robust_spikes(const std::vector<double>& values, double threshold,

@@ -43,19 +43,6 @@ double median_copy(std::vector<double> v) {
   return median_of(v);
 }
 
-/// Percentile interval of `draws` (sorted in place) around `estimate`.
-Interval percentile_interval(double estimate, std::vector<double>& draws, double confidence, std::size_t n) {
-  std::sort(draws.begin(), draws.end());
-  const double tail = 0.5 * (1.0 - confidence);
-  const auto at = [&](double q) {
-    const double pos = q * static_cast<double>(draws.size() - 1);
-    const auto i = static_cast<std::size_t>(std::floor(pos));
-    const std::size_t j = std::min(i + 1, draws.size() - 1);
-    return draws[i] + (pos - static_cast<double>(i)) * (draws[j] - draws[i]);
-  };
-  return {estimate, at(tail), at(1.0 - tail), confidence, n};
-}
-
 void resample(const std::vector<double>& from, std::vector<double>& into, Rng& rng) {
   into.resize(from.size());
   for (double& v : into) v = from[rng.index(from.size())];
@@ -69,6 +56,18 @@ std::string number(double v, int precision) {
 }
 
 }  // namespace
+
+Interval percentile_interval(double estimate, std::vector<double>& draws, double confidence, std::size_t n) {
+  std::sort(draws.begin(), draws.end());
+  const double tail = 0.5 * (1.0 - confidence);
+  const auto at = [&](double q) {
+    const double pos = q * static_cast<double>(draws.size() - 1);
+    const auto i = static_cast<std::size_t>(std::floor(pos));
+    const std::size_t j = std::min(i + 1, draws.size() - 1);
+    return draws[i] + (pos - static_cast<double>(i)) * (draws[j] - draws[i]);
+  };
+  return {estimate, at(tail), at(1.0 - tail), confidence, n};
+}
 
 bool Interval::defined() const {
   return std::isfinite(estimate) && std::isfinite(lo) && std::isfinite(hi);

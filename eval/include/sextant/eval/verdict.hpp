@@ -35,6 +35,8 @@ struct Interval {
 
 // --- intervals ----------------------------------------------------------------------------------
 
+/// The percentile interval of bootstrap `draws` (sorted in place, non-empty) around `estimate`.
+Interval percentile_interval(double estimate, std::vector<double>& draws, double confidence, std::size_t n);
 /// Wilson score interval of a proportion k / n (estimate k / n; NaN for n = 0).
 Interval wilson_interval(std::size_t successes, std::size_t n, double confidence = 0.95);
 /// Mean with a normal-approximation interval (mean ± z·s/√n); NaN for fewer than 2 finite values.
