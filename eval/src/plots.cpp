@@ -182,6 +182,12 @@ std::string render_svg(const XYPlot& plot) {
   x.px_hi = plot.width - kRight;
   y.px_lo = plot.height - kBottom;
   y.px_hi = kTop;
+  if (plot.equal_aspect && !plot.log_x && !plot.log_y) {
+    const double per_px = std::max((x.hi - x.lo) / (x.px_hi - x.px_lo), (y.hi - y.lo) / (y.px_lo - y.px_hi));
+    const double cx = 0.5 * (x.lo + x.hi), cy = 0.5 * (y.lo + y.hi);
+    x.lo = cx - 0.5 * per_px * (x.px_hi - x.px_lo), x.hi = cx + 0.5 * per_px * (x.px_hi - x.px_lo);
+    y.lo = cy - 0.5 * per_px * (y.px_lo - y.px_hi), y.hi = cy + 0.5 * per_px * (y.px_lo - y.px_hi);
+  }
 
   svg::LegendEntries legend;
   for (std::size_t k = 0; k < plot.series.size(); ++k)

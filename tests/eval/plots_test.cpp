@@ -62,6 +62,19 @@ TEST(Plots, LogAxisSkipsNonPositiveValues) {
   EXPECT_EQ(count(svg, "<polyline"), 1);  // (1,1000)–(2,10); (4,0.1) alone after the gap
 }
 
+TEST(Plots, EqualAspectWidensTheNarrowerRange) {
+  XYPlot plot;
+  plot.add_line("wall", {0, 100}, {0, 1});
+  plot.equal_aspect = true;
+  // x: 108 units over 544 px; y: the same scale over 324 px is about 64 units around 0.5.
+  const std::string svg = render_svg(plot);
+  ASSERT_TRUE(check_xml(svg).ok);
+  EXPECT_NE(svg.find(">-30</text>"), std::string::npos);
+  EXPECT_NE(svg.find(">30</text>"), std::string::npos);
+  plot.equal_aspect = false;
+  EXPECT_EQ(render_svg(plot).find(">30</text>"), std::string::npos);
+}
+
 TEST(Plots, EmptyPlotStillRenders) {
   const auto xml = check_xml(render_svg(XYPlot{}));
   EXPECT_TRUE(xml.ok) << xml.error;

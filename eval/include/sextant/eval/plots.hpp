@@ -27,7 +27,8 @@ struct XYPlot {
   bool log_x = false;  ///< log10 axis; values ≤ 0 are skipped
   bool log_y = false;
   int width = 640, height = 420;  ///< [px]
-  bool legend = true;  ///< legend below the plot area, outside the data (the figure grows by its rows)
+  bool legend = true;         ///< legend below the plot area, outside the data (the figure grows by its rows)
+  bool equal_aspect = false;  ///< a unit as long on x as on y (the narrower range widens; linear axes)
   /// Optional fixed ranges; NaN = automatic from the data.
   double x_min = std::numeric_limits<double>::quiet_NaN(), x_max = std::numeric_limits<double>::quiet_NaN();
   double y_min = std::numeric_limits<double>::quiet_NaN(), y_max = std::numeric_limits<double>::quiet_NaN();

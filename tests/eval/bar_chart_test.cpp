@@ -1,0 +1,79 @@
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "sextant/eval/bar_chart.hpp"
+#include "xml_check.hpp"
+
+namespace sextant {
+namespace {
+
+using sextant::testing::check_xml;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// Heights of the <rect>s filled with `color`.
+std::vector<double> bar_heights(const std::string& svg, const std::string& color) {
+  std::vector<double> h;
+  const std::regex rect("<rect [^>]*height=\"([-0-9.e]+)\" fill=\"" + color + "\"");
+  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), rect); it != std::sregex_iterator(); ++it)
+    h.push_back(std::stod((*it)[1]));
+  return h;
+}
+
+TEST(BarChart, OneBarPerSeriesAndCategoryWithHeightsToScale) {
+  BarChart chart;
+  chart.title = "Fig. 5.10 (a): mean <translation> error";
+  chart.y_label = "mean error [cm]";
+  chart.categories = {"tx", "ty", "tz"};
+  chart.series.push_back({"odometry", {5, 2.5, kNaN}, "#111111"});  // NaN: no bar
+  chart.series.push_back({"ML-NDT", {1, 10, 0}, "#222222"});
+  chart.y_min = 0;
+  chart.y_max = 10;
+  const std::string svg = render_svg(chart);
+  const auto xml = check_xml(svg);
+  ASSERT_TRUE(xml.ok) << xml.error;
+  // Plot area 420 − 56 − 40 = 324 px tall for 10 units: 32.4 px per unit.
+  const std::vector<double> odometry = bar_heights(svg, "#111111");
+  ASSERT_EQ(odometry.size(), 2u);
+  EXPECT_NEAR(odometry[0], 162.0, 1e-6);
+  EXPECT_NEAR(odometry[1], 81.0, 1e-6);
+  const std::vector<double> mlndt = bar_heights(svg, "#222222");
+  ASSERT_EQ(mlndt.size(), 3u);
+  EXPECT_NEAR(mlndt[0], 32.4, 1e-6);
+  EXPECT_NEAR(mlndt[1], 324.0, 1e-6);
+  EXPECT_NEAR(mlndt[2], 0.0, 1e-9);
+  for (const char* label : {">tx</text>", ">ty</text>", ">tz</text>", ">odometry</text>", ">ML-NDT</text>",
+                            ">mean error [cm]</text>", "mean &lt;translation&gt; error"})
+    EXPECT_NE(svg.find(label), std::string::npos) << label;
+}
+
+TEST(BarChart, LegendIsBelowThePlotAreaAndNegativeBarsGoDown) {
+  BarChart chart;
+  chart.categories = {"α", "β"};
+  chart.series.push_back({"a", {-2, 1}, "#333333"});
+  chart.series.push_back({"b", {1, 1}, ""});
+  const std::string svg = render_svg(chart);
+  ASSERT_TRUE(check_xml(svg).ok);
+  // The legend row grows the figure below the 420 px of the chart.
+  EXPECT_NE(svg.find("height=\"438\""), std::string::npos);
+  const std::regex legend_text("<text x=\"[0-9.]+\" y=\"([0-9.]+)\"[^>]*>a</text>");
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(svg, m, legend_text));
+  EXPECT_GT(std::stod(m[1]), 420.0 - 56.0);
+  // Range [−2, 1] padded by 5 % of 3 on both sides: the −2 bar is twice the +1 bar.
+  const std::vector<double> a = bar_heights(svg, "#333333");
+  ASSERT_EQ(a.size(), 2u);
+  EXPECT_NEAR(a[0], 2.0 * a[1], 1e-6);
+  EXPECT_NE(svg.find("stroke-width=\"1.2\""), std::string::npos);  // the zero line
+}
+
+TEST(BarChart, EmptyChartStillRenders) {
+  const auto xml = check_xml(render_svg(BarChart{}));
+  EXPECT_TRUE(xml.ok) << xml.error;
+}
+
+}  // namespace
+}  // namespace sextant
