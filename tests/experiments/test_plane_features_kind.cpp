@@ -1,7 +1,10 @@
 // The `plane_features` kind: E10 (table 4.1) with its exact values for the fixed seed, and E11's
 // quick profile (extraction, association, precision/recall on the campus) — outputs and shapes.
 #include <cmath>
+#include <filesystem>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -41,6 +44,19 @@ std::size_t markdown_rows(const std::string& text) {
       ++rows;
   }
   return rows;
+}
+
+/// Each figure's SVG exists and the summary lists them in this order.
+void expect_figures_in_order(const std::filesystem::path& folder, const std::string& summary,
+                             const std::vector<std::string>& ids) {
+  std::size_t last = 0;
+  for (const std::string& id : ids) {
+    EXPECT_TRUE(std::filesystem::exists(folder / (id + ".svg"))) << id;
+    const std::size_t at = summary.find("(" + id + ".svg)");
+    ASSERT_NE(at, std::string::npos) << id;
+    EXPECT_GE(at, last) << id << " is out of order";
+    last = at;
+  }
 }
 
 // Repetition 0 draws the planes from seed 1, exactly as tests/features/merging_test.cpp's seed 1
@@ -84,10 +100,11 @@ TEST(E10, QuickProfileGivesTheFixedSeedValuesAndTheReport) {
       std::string::npos)
       << t41;
   EXPECT_EQ(markdown_rows(test::read_text(folder / "merging_repetitions.md")), 4u);
-  EXPECT_TRUE(std::filesystem::exists(folder / "generated_planes_case1.svg"));
-  EXPECT_TRUE(std::filesystem::exists(folder / "generated_planes_case2.svg"));
-  EXPECT_TRUE(std::filesystem::exists(folder / "cp_against_dc.svg"));
   const std::string summary = test::read_text(folder / "e10_merging_tests.md");
+  // Figs 4.1, 4.2 (a), 4.2 (b) in the thesis' order, then ours.
+  expect_figures_in_order(
+      folder, summary,
+      {"merging_problem", "generated_planes_case1", "generated_planes_case2", "cp_against_dc"});
   // d_c does not separate the cases, C_p does: computed verdicts on the 30 quick repetitions.
   EXPECT_NE(summary.find("cannot tell the cases apart (case 2 / case 1 within ±10 %) | holds"),
             std::string::npos)
@@ -122,8 +139,12 @@ TEST(E11, QuickProfileWritesExtractionAssociationAndPrecisionRecall) {
   EXPECT_EQ(markdown_rows(test::read_text(folder / "association_first_pairs.md")), 5u);
   EXPECT_GE(markdown_rows(test::read_text(folder / "table_5_10_truth.md")), 4u);
   EXPECT_EQ(markdown_rows(test::read_text(folder / "precision_recall.md")), 8u);
-  for (const char* svg : {"features_scan_0.svg", "features_scan_1.svg", "precision_recall_per_scan.svg"})
-    EXPECT_TRUE(std::filesystem::exists(folder / svg)) << svg;
+  // Figs 5.21, 5.22, 5.23, 5.24 (across the turn 3 → 4), 5.25, then ours.
+  expect_figures_in_order(folder, test::read_text(folder / "e11_extraction_association.md"),
+                          {"cell_segments_scan_0", "features_scan_0", "features_scan_1",
+                           "correspondence_scans_3_4", "feature_map", "precision_recall_per_scan"});
+  const std::string map = test::read_text(folder / "feature_map.svg");
+  EXPECT_NE(map.find(">robot poses</text>"), std::string::npos);
 }
 
 TEST(PlaneFeaturesKind, RejectsAnUnknownStudyAndKeys) {

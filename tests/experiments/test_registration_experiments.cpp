@@ -190,6 +190,10 @@ TEST(RegistrationExperiments, E6QuickProfile) {
   EXPECT_EQ(count(test::read_text(r.report / "mean_errors.md"), "\n| "), 7u);  // header, rule, odometry + 4
   for (const char* f : {"fig_5_13_translation.svg", "fig_5_14_translation.svg", "fig_5_14_rotation.svg"})
     EXPECT_TRUE(fs::exists(r.report / f)) << f;
+  // Fig. 5.14 is a grouped bar chart: one group per parameter, a legend entry per method.
+  const std::string bars = test::read_text(r.report / "fig_5_14_rotation.svg");
+  for (const char* label : {">α</text>", ">β</text>", ">γ</text>", ">odometry</text>", "Fig. 5.14 (b)"})
+    EXPECT_NE(bars.find(label), std::string::npos) << label;
   EXPECT_NE(r.markdown.find("zero-mean Gaussian"), std::string::npos);
   EXPECT_NE(r.markdown.find("Jarque"), std::string::npos);
   for (const auto& row : r.rows) EXPECT_GE(row.value("seconds_sampling"), 0.0);

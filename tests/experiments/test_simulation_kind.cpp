@@ -47,10 +47,19 @@ TEST(E8, QuickProfileTracksTheRoomLoopsAndMeasuresTheLag) {
   const ReportSummary rep = write_report({tmp / "results"}, tmp / "report");
   ASSERT_TRUE(rep.failed.empty()) << rep.failed.front();
   const auto folder = tmp / "report" / "e08_ekf_mlndt_2d";
-  for (const char* f :
-       {"room_trajectory.svg", "room_errors.svg", "lag_alignment_ekf_mlndt.svg", "room_errors_ekf_mlndt.md"})
+  for (const char* f : {"scan_match.svg", "room_trajectory.svg", "room_errors.svg",
+                        "lag_alignment_ekf_mlndt.svg", "room_errors_ekf_mlndt.md"})
     EXPECT_TRUE(std::filesystem::exists(folder / f)) << f;
   const std::string summary = test::read_text(folder / "e08_ekf_mlndt_2d.md");
+  EXPECT_LT(summary.find("(scan_match.svg)"), summary.find("(room_trajectory.svg)"));  // fig. 5.17, then 5.18
+  // Fig. 5.17's match (repetition 0 only): a converged ML-NDT match closer to the truth than its guess.
+  for (const auto& r : rows) {
+    EXPECT_EQ(r.series.count("match_reference_x"), r.repetition == 0 ? 1u : 0u);
+    if (r.repetition != 0) continue;
+    EXPECT_EQ(r.value("match_converged"), 1.0);
+    EXPECT_EQ(r.series.at("match_guess_x").size(), r.series.at("match_matched_x").size());
+    EXPECT_LT(r.value("match_error_m"), r.value("match_guess_error_m"));
+  }
   EXPECT_NE(summary.find("visibly trails the true position"), std::string::npos);
   EXPECT_NE(summary.find("tracks the truth far better than dead reckoning of the same controls | holds"),
             std::string::npos)

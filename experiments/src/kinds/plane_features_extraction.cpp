@@ -127,6 +127,7 @@ class ExtractionSession : public KindSession {
     row.values["association_possible"] = static_cast<double>(possible);
     const std::map<std::string, Eigen::Isometry3d> poses{
         {"none", Eigen::Isometry3d::Identity()}, {"odometry", odometry}, {"truth", truth}};
+    AssociationResult predicted;  // fig. 5.24
     for (const std::string& name : association_poses()) {
       const AssociationResult r =
           associate_landmarks(transform_landmarks(b.extraction.landmarks, poses.at(name)),
@@ -145,19 +146,51 @@ class ExtractionSession : public KindSession {
       row.values["assoc_" + name + "_correct"] = static_cast<double>(correct);
       row.series["crit_" + name + "_co"] = co, row.series["crit_" + name + "_ct"] = ct;
       row.series["crit_" + name + "_cp"] = cp, row.series["crit_" + name + "_correct"] = ok;
+      if (name == "odometry") predicted = r;
     }
-    if (std::find(p_.figure_scans.begin(), p_.figure_scans.end(), i) != p_.figure_scans.end()) {
-      std::vector<double> hx, hy;  // hulls in the sensor frame, NaN between features
-      for (const PlaneLandmark& l : a.extraction.landmarks) {
-        for (std::size_t k = 0; k <= l.hull.size() && !l.hull.empty(); ++k)
-          hx.push_back(l.hull[k % l.hull.size()].x()), hy.push_back(l.hull[k % l.hull.size()].y());
-        hx.push_back(NAN), hy.push_back(NAN);
-      }
-      row.series["hull_x"] = hx, row.series["hull_y"] = hy;
-    }
+    record_figures(i, a, b, odometry, predicted, row);
   }
 
  private:
+  /// The outlines of figs 5.21–5.25 (plane_features_extraction_figures.cpp draws them).
+  void record_figures(std::size_t i, const ScanFeatures& a, const ScanFeatures& b,
+                      const Eigen::Isometry3d& odometry, const AssociationResult& predicted,
+                      RunRow& row) const {
+    const Eigen::Isometry3d identity = Eigen::Isometry3d::Identity();
+    if (!p_.figure_scans.empty() && i == p_.figure_scans.front()) {  // fig. 5.21: cell segments
+      std::vector<PlaneLandmark> ground, other;
+      for (const PlaneLandmark& l : a.extraction.cell_planes)
+        (tilt_from_horizontal_deg(l.plane) < p_.extraction.horizontal_max_tilt_deg ? ground : other)
+            .push_back(l);
+      store_hulls(ground, identity, "cell_ground_hull", row);
+      store_hulls(other, identity, "cell_hull", row);
+    }
+    if (std::find(p_.figure_scans.begin(), p_.figure_scans.end(), i) != p_.figure_scans.end())
+      store_hulls(a.extraction.landmarks, identity, "hull", row);  // figs 5.22–5.23
+    if (i == p_.turn_scan) {                                       // fig. 5.24
+      const std::vector<PlaneLandmark> moved = transform_landmarks(b.extraction.landmarks, odometry);
+      store_hulls(a.extraction.landmarks, identity, "turn_map_hull", row);
+      store_hulls(moved, identity, "turn_obs_hull", row);
+      std::vector<double>&lx = row.series["turn_links_x"], &ly = row.series["turn_links_y"];
+      const auto correct = [&](const LandmarkMatch& m) {
+        return b.truth[m.observed] >= 0 && b.truth[m.observed] == a.truth[m.map];
+      };
+      const LandmarkMatch* shown = nullptr;  // the first correct pair, else the first pair
+      for (const LandmarkMatch& m : predicted.matches) {
+        const Eigen::Vector3d c = moved[m.observed].centroid, d = a.extraction.landmarks[m.map].centroid;
+        lx.insert(lx.end(), {c.x(), d.x(), NAN}), ly.insert(ly.end(), {c.y(), d.y(), NAN});
+        if (!shown || (correct(m) && !correct(*shown))) shown = &m;
+      }
+      if (shown) {
+        store_hulls({a.extraction.landmarks[shown->map]}, identity, "turn_pair_map", row);
+        store_hulls({moved[shown->observed]}, identity, "turn_pair_obs", row);
+      }
+    }
+    const Eigen::Isometry3d& pose = campus_->ground_truth[i];  // fig. 5.25
+    store_hulls(a.extraction.landmarks, pose, "world_hull", row);
+    row.values["pose_x"] = pose.translation().x(), row.values["pose_y"] = pose.translation().y();
+  }
+
   ScanFeatures features(std::size_t scan) const {
     ScanFeatures f;
     f.sim = campus_->scan(scan);

@@ -1,7 +1,8 @@
 #pragma once
-// E11's params and report layout (plane_features_extraction.cpp runs; the layout of figs
-// 5.21–5.25 and table 5.10 is in plane_features_extraction_report.cpp).
+// E11's params and report layout (plane_features_extraction.cpp runs; the layout of table 5.10
+// is in plane_features_extraction_report.cpp, figs 5.21–5.25 in plane_features_extraction_figures.cpp).
 #include <cstddef>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,14 @@ inline const std::vector<std::string>& association_poses() {
   static const std::vector<std::string> poses{"none", "odometry", "truth"};
   return poses;
 }
+
+/// Appends the convex hulls of `landmarks` moved by T to series name_x, name_y (NaN between hulls).
+void store_hulls(const std::vector<PlaneLandmark>& landmarks, const Eigen::Isometry3d& T,
+                 const std::string& name, RunRow& row);
+
+/// Figs 5.21–5.25 in the thesis' order from the outlines the runs stored (figures without data are left out).
+std::vector<ReportFigure> extraction_figures(const ExtractionStudyParams& params,
+                                             const std::map<std::size_t, const RunRow*>& by_scan);
 
 ReportSection extraction_report(const ExperimentConfig& config, const ExtractionStudyParams& params,
                                 const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows);

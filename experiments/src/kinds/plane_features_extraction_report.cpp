@@ -98,7 +98,8 @@ ReportSection extraction_report(const ExperimentConfig& config, const Extraction
       " cm of it; recall counts true planes with ≥ " + std::to_string(p.min_visible_points) +
       " points in the scan. Scans are 0-based (the thesis' 1st scan is our "
       "0). Deviations: synthetic scans instead of hannover1, so counts differ; C_p is unitless (the thesis "
-      "prints c3 in cm); figs 5.21 (cell segments), 5.24 and 5.25 are not drawn.";
+      "prints c3 in cm); the figures are top views (x against y), not the thesis' 3D renderings, and fig. "
+      "5.25 places each scan's features by the true pose (no map merging across scans).";
 
   Table first;
   first.caption = "Figs 5.21–5.23: extraction on the first scans (ours | thesis)";
@@ -175,21 +176,7 @@ ReportSection extraction_report(const ExperimentConfig& config, const Extraction
   }
   section.tables.push_back(totals);
 
-  for (std::size_t scan : p.figure_scans) {
-    const auto it = by_scan.find(scan);
-    if (it == by_scan.end()) continue;
-    XYPlot hulls{"Merged plane features of scan " + std::to_string(scan) + " (top view, sensor frame)",
-                 "x [m]",
-                 "y [m]",
-                 {}};
-    hulls.legend = false;
-    hulls.add_line("hulls", series_of(*it->second, "hull_x"), series_of(*it->second, "hull_y"));
-    section.figures.push_back({"features_scan_" + std::to_string(scan),
-                               "Figs 5.22–5.23: convex hulls of the merged features of scan " +
-                                   std::to_string(scan) + " after ground removal (" +
-                                   format_number(it->second->value("landmarks"), 0) + " features)",
-                               render_svg(hulls)});
-  }
+  section.figures = extraction_figures(p, by_scan);
   section.figures.push_back(
       {"precision_recall_per_scan", "Extraction precision and recall per scan", render_svg(per_scan)});
 

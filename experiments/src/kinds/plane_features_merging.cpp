@@ -15,6 +15,7 @@
 #include <cmath>
 
 #include "plane_features.hpp"
+#include "plane_features_merging.hpp"
 #include "registration_report.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/rng.hpp"
@@ -25,17 +26,6 @@
 
 namespace sextant {
 namespace {
-
-struct Grid {
-  double from = 0, to = 0, step = 1;
-};
-
-struct MergingParams {
-  double noise_variance = 0.2;
-  std::vector<std::pair<Grid, Grid>> planes;  ///< (x, z) grids of planes 1, 2, 3
-  double case2_shift = 5.0;
-  MergeThresholds thresholds;
-};
 
 Grid read_grid(SettingsReader& in, const std::string& key) {
   std::vector<double> v;
@@ -64,34 +54,6 @@ MergingParams read_merging_params(const ExperimentConfig& config) {
   in.finish();
   if (!(p.noise_variance >= 0)) in.fail("noise_variance", "key 'noise_variance' must be >= 0");
   return p;
-}
-
-/// One plane of §4.1: points (x, shift + N(0, σ²), z) on the grid, fitted by PCA (as merging_test).
-PlaneLandmark thesis_plane(const std::pair<Grid, Grid>& grid, double y_shift, double variance, Rng& rng,
-                           std::vector<Eigen::Vector3f>* points) {
-  std::vector<Eigen::Vector3f> pts;
-  for (double x = grid.first.from; x <= grid.first.to + 1e-9; x += grid.first.step)
-    for (double z = grid.second.from; z <= grid.second.to + 1e-9; z += grid.second.step)
-      pts.emplace_back(float(x), float(y_shift + rng.normal(0.0, std::sqrt(variance))), float(z));
-  std::vector<std::size_t> idx(pts.size());
-  for (std::size_t i = 0; i < idx.size(); ++i) idx[i] = i;
-  const PlaneFit fit = fit_plane(pts, idx, PlaneRefit::pca);
-  if (points) points->insert(points->end(), pts.begin(), pts.end());
-  return make_landmark(pts, idx, fit, Eigen::Vector3d(0, -100, 0));
-}
-
-/// Planes 1–3 of one case; case 2 shifts planes 2 and 3 (fig. 4.2).
-std::vector<PlaneLandmark> make_case(const MergingParams& p, int which, std::uint64_t seed,
-                                     std::vector<std::vector<Eigen::Vector3f>>* points = nullptr) {
-  Rng rng(seed);
-  std::vector<PlaneLandmark> planes;
-  if (points) points->assign(3, {});
-  for (std::size_t i = 0; i < 3; ++i) {
-    const double shift = which == 2 && i > 0 ? p.case2_shift : 0.0;
-    planes.push_back(
-        thesis_plane(p.planes[i], shift, p.noise_variance, rng, points ? &(*points)[i] : nullptr));
-  }
-  return planes;
 }
 
 const char* const kPairs[2] = {"12", "13"};
@@ -169,28 +131,6 @@ class MergingStudy : public PlaneFeaturesStudy {
                        const std::vector<const RunRow*>& rows) const override;
 };
 
-/// Fig. 4.2: the generated points of both cases seen along z (x against y), repetition 0.
-ReportFigure planes_figure(const MergingParams& p, int which, std::uint64_t seed) {
-  XYPlot plot{"Fig. 4.2 (" + std::string(which == 1 ? "a" : "b") + "): case " + std::to_string(which) +
-                  ", generated planes (top view, x against y)",
-              "x",
-              "y",
-              {}};
-  std::vector<std::vector<Eigen::Vector3f>> points;
-  (void)make_case(p, which, seed, &points);
-  for (std::size_t i = 0; i < 3; ++i) {
-    std::vector<double> x, y;
-    for (const auto& q : points[i]) x.push_back(q.x()), y.push_back(q.y());
-    plot.series.push_back({"plane " + std::to_string(i + 1), x, y, PlotSeries::Style::markers, ""});
-  }
-  return {"generated_planes_case" + std::to_string(which),
-          "Fig. 4.2 (" + std::string(which == 1 ? "a" : "b") + "): the three planes of case " +
-              std::to_string(which) +
-              (which == 2 ? " (planes 2 and 3 shifted along y)" : " (one infinite plane)") + ", seed " +
-              std::to_string(seed) + "; planes 2 and 3 overlap for x = 15 … 25",
-          render_svg(plot)};
-}
-
 ReportSection MergingStudy::report(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
                                    const std::vector<const RunRow*>& rows) const {
   const MergingParams p = read_merging_params(config);
@@ -253,6 +193,7 @@ ReportSection MergingStudy::report(const ExperimentConfig& config, const std::ve
   }
   section.tables.push_back(t41);
   section.tables.push_back(spread);
+  section.figures.push_back(merging_problem_figure(p, config.seed));
   section.figures.push_back(planes_figure(p, 1, config.seed));
   section.figures.push_back(planes_figure(p, 2, config.seed));
 

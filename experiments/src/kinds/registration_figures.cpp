@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "sextant/eval/bar_chart.hpp"
 #include "sextant/eval/plots.hpp"
 
 namespace sextant {
@@ -48,30 +49,18 @@ ReportFigure parameter_error_figure(const std::string& id, const std::string& ca
 ReportFigure mean_error_figure(const std::string& id, const std::string& caption, const std::string& title,
                                const std::vector<std::string>& names,
                                const std::vector<std::array<double, 6>>& means, bool translation) {
-  XYPlot plot;
-  plot.title = title;
-  plot.x_label = translation ? "parameter (1 = tx, 2 = ty, 3 = tz)" : "parameter (1 = α, 2 = β, 3 = γ)";
-  plot.y_label = translation ? "mean error [cm]" : "mean error [deg]";
-  plot.x_min = 0.5;
-  plot.x_max = 3.5;
+  // Figs 5.10 and 5.14 are grouped bar charts: one group per parameter, one bar per method.
+  BarChart chart;
+  chart.title = title;
+  chart.x_label = translation ? "translation parameter" : "rotation parameter";
+  chart.y_label = translation ? "mean error [cm]" : "mean error [deg]";
   const std::size_t first = translation ? 0 : 3;
-  const double width = 0.6 / static_cast<double>(std::max<std::size_t>(names.size(), 1));
-  for (std::size_t m = 0; m < names.size() && m < means.size(); ++m) {
-    const std::string colour = kColours[m % (sizeof kColours / sizeof kColours[0])];
-    std::vector<double> x, y;
-    for (std::size_t k = 0; k < 3; ++k) {
-      const double at = static_cast<double>(k + 1) - 0.3 + width * (static_cast<double>(m) + 0.5);
-      x.push_back(at);
-      y.push_back(means[m][first + k]);
-      plot.add_line("", {at, at}, {0.0, means[m][first + k]});  // the stem
-      plot.series.back().color = colour;
-    }
-    plot.add_scatter(names[m], x, y);
-    plot.series.back().color = colour;
-  }
-  plot.add_line("", {0.5, 3.5}, {0.0, 0.0});
-  plot.series.back().color = "#555555";
-  return {id, caption, render_svg(plot)};
+  for (std::size_t k = first; k < first + 3; ++k) chart.categories.push_back(parameter_names()[k]);
+  for (std::size_t m = 0; m < names.size() && m < means.size(); ++m)
+    chart.series.push_back({names[m],
+                            {means[m][first], means[m][first + 1], means[m][first + 2]},
+                            kColours[m % (sizeof kColours / sizeof kColours[0])]});
+  return {id, caption, render_svg(chart)};
 }
 
 std::array<double, 6> mean_parameters(const std::vector<RegistrationError>& errors) {

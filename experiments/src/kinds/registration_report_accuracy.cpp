@@ -242,7 +242,8 @@ ReportSection accuracy_report(const ExperimentConfig& config, const Registration
         std::string("Fig. 5.10") + (translation ? " (a)" : " (b)") + ": mean " +
             (translation ? "translation" : "rotation") +
             " error per parameter: the odometry over all pairs, each method over its successful pairs",
-        translation ? "Mean translation error" : "Mean rotation error", names, means, translation));
+        std::string("Fig. 5.10 (") + (translation ? "a): mean translation error" : "b): mean rotation error"),
+        names, means, translation));
 
   // Claims: improved and thesis-faithful variants; the trilinear citation; sanity checks.
   add_pair_claims(config, grouped, params.baseline, params.proposed, "our improved variants", 0,

@@ -154,7 +154,8 @@ ReportSection strategies_report(const ExperimentConfig& config, const Registrati
         std::string("Fig. 5.14") + (translation ? " (a)" : " (b)") + ": mean " +
             (translation ? "translation" : "rotation") +
             " error per parameter, odometry and each sampling strategy",
-        translation ? "Mean translation error" : "Mean rotation error", names, means, translation));
+        std::string("Fig. 5.14 (") + (translation ? "a): mean translation error" : "b): mean rotation error"),
+        names, means, translation));
 
   const std::size_t fbs = by_sampler("fbs");
   if (fbs < grouped.size()) {
