@@ -7,6 +7,7 @@
 #include <map>
 
 #include "../../experiments/src/kinds/registration_adaptive.hpp"
+#include "../../experiments/src/kinds/registration_figures.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/experiments/report.hpp"
 #include "sextant/experiments/run_row.hpp"
@@ -177,6 +178,21 @@ TEST(RegistrationExperiments, E5QuickProfile) {
   EXPECT_TRUE(fs::exists(r.report / "zero_guess.md"));
   EXPECT_EQ(count(r.markdown, "Fig. 5.12"), 3u);
   EXPECT_NE(r.markdown.find("converges from a zero guess"), std::string::npos);
+}
+
+// Figs 5.10 and 5.14: one bar per method in each parameter's group, NaN means left out.
+TEST(RegistrationFigures, MeanErrorFigureIsAGroupedBarChart) {
+  const std::vector<std::array<double, 6>> means{{50, 3, 1, 0.5, 0.2, 0.1}, {1, 2, NAN, 0.1, 0.1, 0.1}};
+  const ReportFigure f = mean_error_figure("fig_5_10_translation", "caption", "Fig. 5.10 (a)",
+                                           {"odometry", "ML-NDT"}, means, true);
+  std::size_t bars = 0;
+  for (std::size_t at = f.svg.find("<rect"); at != std::string::npos; at = f.svg.find("<rect", at + 1))
+    ++bars;
+  EXPECT_EQ(bars, 2u + 5u);  // background and frame, and 3 + 2 bars
+  for (const char* label : {">tx</text>", ">ty</text>", ">tz</text>", ">odometry</text>", ">ML-NDT</text>",
+                            ">mean error [cm]</text>", ">Fig. 5.10 (a)</text>"})
+    EXPECT_NE(f.svg.find(label), std::string::npos) << label;
+  EXPECT_EQ(f.svg.find(">α</text>"), std::string::npos);
 }
 
 TEST(RegistrationExperiments, E6QuickProfile) {
