@@ -1,7 +1,7 @@
 #pragma once
 // Figures shared by the registration layouts: the per-parameter error of every pair against the
 // scan index (figs 5.7–5.9, 5.11, 5.13) and the mean error per parameter of several methods
-// (figs 5.10, 5.14, drawn as stems: one stem per method and parameter).
+// (figs 5.10, 5.14, grouped bar charts: one group per parameter, one bar per method).
 #include <array>
 #include <string>
 #include <vector>
