@@ -76,7 +76,7 @@ std::string render_svg(const BarChart& chart) {
   doc.rect(left, top, right - left, bottom - top, "none", "#444");
   if (!chart.x_label.empty()) doc.text((left + right) / 2, bottom + 40, chart.x_label, 13, "middle");
   if (!chart.y_label.empty()) doc.text(18, (top + bottom) / 2, chart.y_label, 13, "middle", -90);
-  svg::draw_legend(doc, legend, left, chart.height - 4, right - left);
+  svg::draw_legend(doc, legend, left, chart.height - 4, right - left, /*squares=*/true);
   return doc.finish();
 }
 

@@ -110,7 +110,8 @@ int legend_rows(const LegendEntries& entries, double width) {
   return rows;
 }
 
-void draw_legend(Document& doc, const LegendEntries& entries, double left, double top, double width) {
+void draw_legend(Document& doc, const LegendEntries& entries, double left, double top, double width,
+                 bool squares) {
   double x = 0, y = top + 12;
   for (const auto& [name, color] : entries) {
     const double w = legend_entry_width(name);
@@ -118,7 +119,10 @@ void draw_legend(Document& doc, const LegendEntries& entries, double left, doubl
       x = 0;
       y += kLegendRow;
     }
-    doc.line(left + x, y - 4, left + x + 18, y - 4, color, 2.5);
+    if (squares)
+      doc.rect(left + x + 4, y - 10, 12, 12, color);
+    else
+      doc.line(left + x, y - 4, left + x + 18, y - 4, color, 2.5);
     doc.text(left + x + 24, y, name, 11);
     x += w + 12;
   }

@@ -43,7 +43,9 @@ constexpr double kLegendRow = 18;  ///< height of one legend row [px]
 /// Rows needed to flow the entries left to right within `width` px.
 int legend_rows(const LegendEntries& entries, double width);
 /// A legend outside the data, below the plot area: entries flow left to right from (left, top).
-void draw_legend(Document& doc, const LegendEntries& entries, double left, double top, double width);
+/// Each entry's sample is a short line, or a filled square (`squares`, for bar charts).
+void draw_legend(Document& doc, const LegendEntries& entries, double left, double top, double width,
+                 bool squares = false);
 
 /// The series palette.
 const std::string& palette(std::size_t index);

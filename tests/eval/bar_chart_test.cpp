@@ -14,12 +14,18 @@ namespace {
 using sextant::testing::check_xml;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-/// Heights of the <rect>s filled with `color`.
+/// Heights of the bars filled with `color`: the <rect>s of that colour but the last, the legend's
+/// 12 px square.
 std::vector<double> bar_heights(const std::string& svg, const std::string& color) {
   std::vector<double> h;
   const std::regex rect("<rect [^>]*height=\"([-0-9.e]+)\" fill=\"" + color + "\"");
   for (auto it = std::sregex_iterator(svg.begin(), svg.end(), rect); it != std::sregex_iterator(); ++it)
     h.push_back(std::stod((*it)[1]));
+  EXPECT_FALSE(h.empty());
+  if (!h.empty()) {
+    EXPECT_EQ(h.back(), 12.0);  // the legend sample
+    h.pop_back();
+  }
   return h;
 }
 

@@ -188,7 +188,7 @@ TEST(RegistrationFigures, MeanErrorFigureIsAGroupedBarChart) {
   std::size_t bars = 0;
   for (std::size_t at = f.svg.find("<rect"); at != std::string::npos; at = f.svg.find("<rect", at + 1))
     ++bars;
-  EXPECT_EQ(bars, 2u + 5u);  // background and frame, and 3 + 2 bars
+  EXPECT_EQ(bars, 2u + 5u + 2u);  // background and frame, 3 + 2 bars, two legend squares
   for (const char* label : {">tx</text>", ">ty</text>", ">tz</text>", ">odometry</text>", ">ML-NDT</text>",
                             ">mean error [cm]</text>", ">Fig. 5.10 (a)</text>"})
     EXPECT_NE(f.svg.find(label), std::string::npos) << label;
