@@ -13,12 +13,14 @@ namespace sextant {
 
 namespace {
 
-/// Running sums of one occupied cell, relative to the grid origin (double precision).
+/// Running sums of one occupied cell, relative to the grid origin (double precision): Σp and
+/// the upper triangle of Σppᵀ (xx xy xz yy yz zz; p(i)·p(j) = p(j)·p(i) exactly, so the lower
+/// triangle is the same numbers). 80 bytes, for fewer cache misses in the splitting pass.
 struct CellSums {
   std::int32_t cell = 0;
   std::int32_t count = 0;
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d sum_sq = Eigen::Matrix3d::Zero();
+  double sum[3] = {0.0, 0.0, 0.0};
+  double sum_sq[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 };
 
 /// Mean (eq. 3.2), covariance (eq. 3.3) with eigenvalues raised to λmax / ratio; false when the
@@ -27,8 +29,11 @@ bool cell_gaussian(const CellSums& s, const Eigen::Vector3d& origin, const CellS
                    CellGaussian& out, Eigen::Matrix3d& covariance, Eigen::Matrix3f& sqrt_info) {
   const double max_ratio = settings.max_eigen_ratio;
   const double n = s.count;
-  const Eigen::Vector3d mean = s.sum / n;
-  Eigen::Matrix3d C = (s.sum_sq - n * mean * mean.transpose()) / (n - 1.0);
+  const Eigen::Vector3d mean = Eigen::Vector3d(s.sum[0], s.sum[1], s.sum[2]) / n;
+  Eigen::Matrix3d sum_sq;
+  sum_sq << s.sum_sq[0], s.sum_sq[1], s.sum_sq[2], s.sum_sq[1], s.sum_sq[3], s.sum_sq[4], s.sum_sq[2],
+      s.sum_sq[4], s.sum_sq[5];
+  Eigen::Matrix3d C = (sum_sq - n * mean * mean.transpose()) / (n - 1.0);
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
   eig.computeDirect(C);
   Eigen::Vector3d l = eig.eigenvalues();  // ascending
@@ -88,33 +93,40 @@ NdtGrid NdtGrid::build(const PointCloud& reference, const Eigen::Vector3d& origi
 
   // Splitting process: one pass, sums per occupied cell in order of first appearance.
   std::vector<CellSums> sums;
+  sums.reserve(std::min(reference.size(), static_cast<std::size_t>(cells)));
   const double inv_edge = 1.0 / cell_edge;
+  const double ox = origin.x(), oy = origin.y(), oz = origin.z();
+  const int nx = dims.x(), ny = dims.y(), nz = dims.z();
+  // Points on the far face of the box belong to the last cell (the box is closed).
+  const double fx_max = nx + 1e-9, fy_max = ny + 1e-9, fz_max = nz + 1e-9;
+  std::int32_t* index = grid.index_.data();
   for (const Eigen::Vector3f& pf : reference.points()) {
-    const Eigen::Vector3d p = pf.cast<double>() - origin;
-    const Eigen::Vector3d f = p * inv_edge;
-    if (!f.allFinite() || (f.array() < 0.0).any()) continue;
-    // Points on the far face of the box belong to the last cell (the box is closed).
-    Eigen::Vector3i c;
-    bool inside = true;
-    for (int a = 0; a < 3; ++a) {
-      if (f(a) > dims(a) + 1e-9) inside = false;
-      c(a) = std::min(static_cast<int>(f(a)), dims(a) - 1);
-    }
-    if (!inside) continue;
-    std::int32_t& slot = grid.index_[grid.cell_index(c.x(), c.y(), c.z())];
+    const double px = static_cast<double>(pf.x()) - ox, py = static_cast<double>(pf.y()) - oy,
+                 pz = static_cast<double>(pf.z()) - oz;
+    const double fx = px * inv_edge, fy = py * inv_edge, fz = pz * inv_edge;
+    // Outside (or not finite: NaN fails every comparison, ∞ exceeds the far face).
+    if (!(fx >= 0.0 && fy >= 0.0 && fz >= 0.0 && fx <= fx_max && fy <= fy_max && fz <= fz_max)) continue;
+    const int cx = std::min(static_cast<int>(fx), nx - 1), cy = std::min(static_cast<int>(fy), ny - 1),
+              cz = std::min(static_cast<int>(fz), nz - 1);
+    const std::size_t cell = grid.cell_index(cx, cy, cz);
+    std::int32_t& slot = index[cell];
     if (slot < 0) {
       slot = static_cast<std::int32_t>(sums.size());
-      CellSums fresh;
-      fresh.cell = static_cast<std::int32_t>(grid.cell_index(c.x(), c.y(), c.z()));
-      sums.push_back(fresh);
+      sums.emplace_back();
+      sums.back().cell = static_cast<std::int32_t>(cell);
     }
     CellSums& s = sums[static_cast<std::size_t>(slot)];
     ++s.count;
-    s.sum += p;
-    s.sum_sq.noalias() += p * p.transpose();
+    s.sum[0] += px, s.sum[1] += py, s.sum[2] += pz;
+    s.sum_sq[0] += px * px, s.sum_sq[1] += px * py, s.sum_sq[2] += px * pz;
+    s.sum_sq[3] += py * py, s.sum_sq[4] += py * pz, s.sum_sq[5] += pz * pz;
   }
 
   // Generative process: a Gaussian for every cell with enough points.
+  grid.gaussians_.reserve(sums.size());
+  grid.covariances_.reserve(sums.size());
+  grid.sqrt_info_.reserve(sums.size());
+  grid.cell_of_gaussian_.reserve(sums.size());
   for (const CellSums& s : sums) {
     std::int32_t& slot = grid.index_[static_cast<std::size_t>(s.cell)];
     slot = -1;
