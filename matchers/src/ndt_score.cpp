@@ -162,6 +162,16 @@ inline void accumulate(const CellGaussian& cell, const Eigen::Vector3d& u, const
   }
 }
 
+/// Multiplies the derivative sums by `factor`. With factor 2 this is exact (a power of two), so
+/// 2·Σx is bit-identical to Σ2x: the Mahalanobis kernel sums unweighted terms and doubles once.
+void scale_derivatives(Sums& s, double factor) {
+  s.g_t *= factor;
+  s.N *= factor;
+  s.P *= factor;
+  s.Q *= factor;
+  s.S *= factor;
+}
+
 /// Maps the sums to ξ: g = Bᵀ·g', H = Bᵀ·H'·B + second-order terms, B = blockdiag(I, A).
 ScoreEvaluation finish(Sums& s, const PoseTerms& pose, Derivatives derivatives, bool mahalanobis) {
   ScoreEvaluation out;
@@ -208,8 +218,9 @@ void mahalanobis_loop(const NdtGrid& grid, const Eigen::Vector3f* begin, const E
     const int g = grid.lookup(static_cast<float>(u.x() + tx), static_cast<float>(u.y() + ty),
                               static_cast<float>(u.z() + tz));
     if (g < 0) continue;
-    // s_k = eᵀC⁻¹e, g_k = 2eᵀC⁻¹∂e/∂ξ, H_k = 2(∂eᵀC⁻¹∂e + eᵀC⁻¹∂²e): weight 2, eqs. (3.13)–(3.15).
-    accumulate<kGradient, kHessian, false>(grid.gaussian(g), u, pose.t, 2.0, 0.0, 1.0, false, 0.0, max_q, s);
+    // s_k = eᵀC⁻¹e, g_k = 2eᵀC⁻¹∂e/∂ξ, H_k = 2(∂eᵀC⁻¹∂e + eᵀC⁻¹∂²e), eqs. (3.13)–(3.15): the
+    // factor 2 is applied once to the sums (scale_derivatives), not per point.
+    accumulate<kGradient, kHessian, false>(grid.gaussian(g), u, pose.t, 1.0, 0.0, 1.0, false, 0.0, max_q, s);
   }
 }
 
@@ -324,6 +335,7 @@ ScoreEvaluation mahalanobis_score(const NdtGrid& grid, const PointCloud& input, 
         break;
     }
   });
+  scale_derivatives(s, 2.0);
   return finish(s, pose, derivatives, true);
 }
 
