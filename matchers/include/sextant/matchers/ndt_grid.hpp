@@ -128,7 +128,10 @@ struct LayerPyramidSettings {
   bool valid(std::string* why) const;
 };
 
-/// Layers 1..n of Table 3.1 ("splitting" and "generative" processes); element 0 is layer 1.
+/// Layers 1..n of Table 3.1 ("splitting" and "generative" processes); element 0 is layer 1. With
+/// q = 8 over a volume the cells nest (the edge halves): the points are split once into layer n
+/// and every coarser layer sums its 2 × 2 × 2 children, with edges exactly 2^(n−i) × layer n's
+/// (layer_geometry's to rounding). Otherwise every layer is split from the points.
 std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const LayerPyramidSettings& settings);
 
 }  // namespace sextant
