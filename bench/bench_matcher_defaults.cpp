@@ -8,76 +8,22 @@
 //   build/bench/bench_matcher_defaults [solvers=newton,lm] > table.md
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "sextant/core/io/cloud_io.hpp"
-#include "sextant/core/io/uos.hpp"
-#include "sextant/core/rng.hpp"
-#include "sextant/matchers/match_pair.hpp"
+#include "bench_pairs.hpp"
 #include "sextant/matchers/samplers.hpp"
-#include "sextant/synth/campus.hpp"
 
 namespace {
 
 using namespace sextant;
-
-struct Pair {
-  std::string name;
-  PointCloud reference, input;
-  Eigen::Isometry3d guess = Eigen::Isometry3d::Identity();
-  Eigen::Isometry3d truth = Eigen::Isometry3d::Identity();  ///< p_ref = truth · p_input
-};
-
-std::string data(const std::string& path) {
-  return std::string(SEXTANT_DATA_DIR) + "/" + path;
-}
-
-Eigen::Isometry3d read_matrix(const std::string& file) {
-  std::ifstream in(file);
-  Eigen::Matrix4d M = Eigen::Matrix4d::Identity();
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) in >> M(r, c);
-  if (!in) throw std::runtime_error("cannot read the 4×4 matrix in " + file);
-  return Eigen::Isometry3d(M);
-}
-
-/// Point-to-plane ICP from `guess`: the consensus reference pose of pairs without ground truth.
-Eigen::Isometry3d consensus(const Pair& pair) {
-  Rng rng(1);
-  const auto icp = make_matcher("icp_p2l", YAML::Load("{max_correspondence_distance: 1.0}"), "bench");
-  const auto gbs = make_sampler("gbs", YAML::Load("{cell_size: 0.3, max_per_cell: 3}"));
-  return match_pair(*icp, *gbs, pair.reference, pair.input, pair.guess, rng).result.T;
-}
+using bench::Pair;
 
 std::vector<Pair> pairs() {
-  std::vector<Pair> out;
-  out.push_back({"Velodyne", read_cloud(data("velodyne_pair/fast_gicp_251370668.pcd")),
-                 read_cloud(data("velodyne_pair/fast_gicp_251371071.pcd")), Eigen::Isometry3d::Identity(),
-                 read_matrix(data("velodyne_pair/fast_gicp_relative.txt"))});
-  Pair kitti{"KITTI*", read_cloud(data("kitti00_pair/000000.xyz32.bin")),
-             read_cloud(data("kitti00_pair/000001.xyz32.bin"))};
-  kitti.truth = consensus(kitti);
-  out.push_back(kitti);
-  const auto frame = [](const char* scan) {
-    return read_uos_frames(data(std::string("uos_3dtk/") + scan)).back();
-  };
-  out.push_back({"uos 000-001", read_uos_scan(data("uos_3dtk/scan000.3d")),
-                 read_uos_scan(data("uos_3dtk/scan001.3d")), Eigen::Isometry3d::Identity(),
-                 frame("scan000.frames").inverse() * frame("scan001.frames")});
-  Pair room{"room*", read_cloud(data("pcl_room_scan/room_scan1.pcd")),
-            read_cloud(data("pcl_room_scan/room_scan2.pcd")),
-            Eigen::Translation3d(1.79387, 0.720047, 0) * Eigen::AngleAxisd(0.6931, Eigen::Vector3d::UnitZ())};
-  room.truth = consensus(room);
-  out.push_back(room);
-  const synth::Campus campus = synth::generate_campus(synth::CampusSettings{}, 7);
-  for (std::size_t i : {20u, 150u, 300u}) {
-    out.push_back({"campus " + std::to_string(i), campus.scan(i).cloud, campus.scan(i + 1).cloud,
-                   Eigen::Isometry3d::Identity(),
-                   relative(campus.ground_truth[i], campus.ground_truth[i + 1])});
-  }
+  std::vector<Pair> out = bench::real_pairs();
+  for (Pair& p : bench::campus_pairs({20, 150, 300})) out.push_back(std::move(p));
   return out;
 }
 

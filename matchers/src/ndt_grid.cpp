@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <Eigen/Eigenvalues>
 
@@ -11,15 +12,24 @@
 
 namespace sextant {
 
-namespace {
+namespace ndt_detail {
 
-/// Running sums of one occupied cell, relative to the grid origin (double precision).
+/// Running sums of one occupied cell, relative to the grid origin (double precision): Σp and
+/// the upper triangle of Σppᵀ (xx xy xz yy yz zz; p(i)·p(j) = p(j)·p(i) exactly, so the lower
+/// triangle is the same numbers), with the cell's index along each axis.
 struct CellSums {
   std::int32_t cell = 0;
   std::int32_t count = 0;
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d sum_sq = Eigen::Matrix3d::Zero();
+  std::int32_t x = 0, y = 0, z = 0;
+  double sum[3] = {0.0, 0.0, 0.0};
+  double sum_sq[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 };
+
+}  // namespace ndt_detail
+
+namespace {
+
+using ndt_detail::CellSums;
 
 /// Mean (eq. 3.2), covariance (eq. 3.3) with eigenvalues raised to λmax / ratio; false when the
 /// cell has (almost) no spread: λmax below `min_spread` (repeated points).
@@ -27,8 +37,11 @@ bool cell_gaussian(const CellSums& s, const Eigen::Vector3d& origin, const CellS
                    CellGaussian& out, Eigen::Matrix3d& covariance, Eigen::Matrix3f& sqrt_info) {
   const double max_ratio = settings.max_eigen_ratio;
   const double n = s.count;
-  const Eigen::Vector3d mean = s.sum / n;
-  Eigen::Matrix3d C = (s.sum_sq - n * mean * mean.transpose()) / (n - 1.0);
+  const Eigen::Vector3d mean = Eigen::Vector3d(s.sum[0], s.sum[1], s.sum[2]) / n;
+  Eigen::Matrix3d sum_sq;
+  sum_sq << s.sum_sq[0], s.sum_sq[1], s.sum_sq[2], s.sum_sq[1], s.sum_sq[3], s.sum_sq[4], s.sum_sq[2],
+      s.sum_sq[4], s.sum_sq[5];
+  Eigen::Matrix3d C = (sum_sq - n * mean * mean.transpose()) / (n - 1.0);
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
   eig.computeDirect(C);
   Eigen::Vector3d l = eig.eigenvalues();  // ascending
@@ -63,72 +76,113 @@ bool CellStatsSettings::valid(std::string* why) const {
   return problem == nullptr;
 }
 
-NdtGrid NdtGrid::build(const PointCloud& reference, const Eigen::Vector3d& origin, double cell_edge,
-                       const Eigen::Vector3i& dims, const CellStatsSettings& settings,
-                       std::size_t max_cells) {
-  NdtGrid grid;
-  grid.origin_ = origin;
-  grid.cell_edge_ = cell_edge;
+bool NdtGrid::init(const Eigen::Vector3d& origin, double cell_edge, const Eigen::Vector3i& dims,
+                   std::size_t max_cells) {
+  origin_ = origin;
+  cell_edge_ = cell_edge;
   if (!(cell_edge > 0.0) || !std::isfinite(cell_edge) || (dims.array() < 1).any() || !origin.allFinite())
-    return grid;
+    return false;
   const double cells = static_cast<double>(dims.x()) * dims.y() * dims.z();
   if (cells > static_cast<double>(max_cells)) {
-    grid.too_large_ = true;
-    return grid;
+    too_large_ = true;
+    return false;
   }
-  grid.dims_ = dims;
-  grid.ox_ = static_cast<float>(origin.x());
-  grid.oy_ = static_cast<float>(origin.y());
-  grid.oz_ = static_cast<float>(origin.z());
-  grid.inv_edge_ = static_cast<float>(1.0 / cell_edge);
-  grid.fdx_ = static_cast<float>(dims.x());
-  grid.fdy_ = static_cast<float>(dims.y());
-  grid.fdz_ = static_cast<float>(dims.z());
-  grid.index_.assign(static_cast<std::size_t>(cells), -1);
+  dims_ = dims;
+  ox_ = static_cast<float>(origin.x());
+  oy_ = static_cast<float>(origin.y());
+  oz_ = static_cast<float>(origin.z());
+  inv_edge_ = static_cast<float>(1.0 / cell_edge);
+  fdx_ = static_cast<float>(dims.x());
+  fdy_ = static_cast<float>(dims.y());
+  fdz_ = static_cast<float>(dims.z());
+  index_.assign(static_cast<std::size_t>(cells), -1);
+  return true;
+}
 
-  // Splitting process: one pass, sums per occupied cell in order of first appearance.
+std::vector<CellSums> NdtGrid::split(const PointCloud& reference) {
+  // One pass, sums per occupied cell in order of first appearance.
   std::vector<CellSums> sums;
-  const double inv_edge = 1.0 / cell_edge;
+  sums.reserve(std::min(reference.size(), index_.size()));
+  const double inv_edge = 1.0 / cell_edge_;
+  const double ox = origin_.x(), oy = origin_.y(), oz = origin_.z();
+  const int nx = dims_.x(), ny = dims_.y(), nz = dims_.z();
+  // Points on the far face of the box belong to the last cell (the box is closed).
+  const double fx_max = nx + 1e-9, fy_max = ny + 1e-9, fz_max = nz + 1e-9;
+  std::int32_t* index = index_.data();
   for (const Eigen::Vector3f& pf : reference.points()) {
-    const Eigen::Vector3d p = pf.cast<double>() - origin;
-    const Eigen::Vector3d f = p * inv_edge;
-    if (!f.allFinite() || (f.array() < 0.0).any()) continue;
-    // Points on the far face of the box belong to the last cell (the box is closed).
-    Eigen::Vector3i c;
-    bool inside = true;
-    for (int a = 0; a < 3; ++a) {
-      if (f(a) > dims(a) + 1e-9) inside = false;
-      c(a) = std::min(static_cast<int>(f(a)), dims(a) - 1);
-    }
-    if (!inside) continue;
-    std::int32_t& slot = grid.index_[grid.cell_index(c.x(), c.y(), c.z())];
+    const double px = static_cast<double>(pf.x()) - ox, py = static_cast<double>(pf.y()) - oy,
+                 pz = static_cast<double>(pf.z()) - oz;
+    const double fx = px * inv_edge, fy = py * inv_edge, fz = pz * inv_edge;
+    // Outside (or not finite: NaN fails every comparison, ∞ exceeds the far face).
+    if (!(fx >= 0.0 && fy >= 0.0 && fz >= 0.0 && fx <= fx_max && fy <= fy_max && fz <= fz_max)) continue;
+    const int cx = std::min(static_cast<int>(fx), nx - 1), cy = std::min(static_cast<int>(fy), ny - 1),
+              cz = std::min(static_cast<int>(fz), nz - 1);
+    const std::size_t cell = cell_index(cx, cy, cz);
+    std::int32_t& slot = index[cell];
     if (slot < 0) {
       slot = static_cast<std::int32_t>(sums.size());
-      CellSums fresh;
-      fresh.cell = static_cast<std::int32_t>(grid.cell_index(c.x(), c.y(), c.z()));
-      sums.push_back(fresh);
+      CellSums& fresh = sums.emplace_back();
+      fresh.cell = static_cast<std::int32_t>(cell);
+      fresh.x = cx, fresh.y = cy, fresh.z = cz;
     }
     CellSums& s = sums[static_cast<std::size_t>(slot)];
     ++s.count;
-    s.sum += p;
-    s.sum_sq.noalias() += p * p.transpose();
+    s.sum[0] += px, s.sum[1] += py, s.sum[2] += pz;
+    s.sum_sq[0] += px * px, s.sum_sq[1] += px * py, s.sum_sq[2] += px * pz;
+    s.sum_sq[3] += py * py, s.sum_sq[4] += py * pz, s.sum_sq[5] += pz * pz;
   }
+  return sums;
+}
 
-  // Generative process: a Gaussian for every cell with enough points.
+std::vector<CellSums> NdtGrid::merge_children(const std::vector<CellSums>& children) {
+  // The sums of eqs. (3.2)–(3.3) are additive over the children; children come in order of their
+  // first point, so the cells here keep the order of their first point too.
+  std::vector<CellSums> sums;
+  sums.reserve(children.size());
+  for (const CellSums& child : children) {
+    const int x = child.x >> 1, y = child.y >> 1, z = child.z >> 1;
+    const std::size_t cell = cell_index(x, y, z);
+    std::int32_t& slot = index_[cell];
+    if (slot < 0) {
+      slot = static_cast<std::int32_t>(sums.size());
+      CellSums& fresh = sums.emplace_back();
+      fresh.cell = static_cast<std::int32_t>(cell);
+      fresh.x = x, fresh.y = y, fresh.z = z;
+    }
+    CellSums& s = sums[static_cast<std::size_t>(slot)];
+    s.count += child.count;
+    for (int i = 0; i < 3; ++i) s.sum[i] += child.sum[i];
+    for (int i = 0; i < 6; ++i) s.sum_sq[i] += child.sum_sq[i];
+  }
+  return sums;
+}
+
+void NdtGrid::generate(const std::vector<CellSums>& sums, const CellStatsSettings& settings) {
+  gaussians_.reserve(sums.size());
+  covariances_.reserve(sums.size());
+  sqrt_info_.reserve(sums.size());
+  cell_of_gaussian_.reserve(sums.size());
   for (const CellSums& s : sums) {
-    std::int32_t& slot = grid.index_[static_cast<std::size_t>(s.cell)];
+    std::int32_t& slot = index_[static_cast<std::size_t>(s.cell)];
     slot = -1;
     if (static_cast<std::size_t>(s.count) < settings.min_points) continue;
     CellGaussian g{};
     Eigen::Matrix3d covariance;
     Eigen::Matrix3f sqrt_info;
-    if (!cell_gaussian(s, origin, settings, g, covariance, sqrt_info)) continue;
-    slot = static_cast<std::int32_t>(grid.gaussians_.size());
-    grid.gaussians_.push_back(g);
-    grid.covariances_.push_back(covariance);
-    grid.sqrt_info_.push_back(sqrt_info);
-    grid.cell_of_gaussian_.push_back(s.cell);
+    if (!cell_gaussian(s, origin_, settings, g, covariance, sqrt_info)) continue;
+    slot = static_cast<std::int32_t>(gaussians_.size());
+    gaussians_.push_back(g);
+    covariances_.push_back(covariance);
+    sqrt_info_.push_back(sqrt_info);
+    cell_of_gaussian_.push_back(s.cell);
   }
+}
+
+NdtGrid NdtGrid::build(const PointCloud& reference, const Eigen::Vector3d& origin, double cell_edge,
+                       const Eigen::Vector3i& dims, const CellStatsSettings& settings,
+                       std::size_t max_cells) {
+  NdtGrid grid;
+  if (grid.init(origin, cell_edge, dims, max_cells)) grid.generate(grid.split(reference), settings);
   return grid;
 }
 
@@ -180,14 +234,51 @@ bool LayerPyramidSettings::valid(std::string* why) const {
   return cells.valid(why);
 }
 
-std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const LayerPyramidSettings& settings) {
-  std::vector<NdtGrid> layers;
-  const Bounds bounds = reference.bounds();
-  for (int i = 1; i <= settings.layers; ++i) {
-    const LayerGeometry g = layer_geometry(bounds, settings.division, i);
-    layers.push_back(
-        NdtGrid::build(reference, bounds.min.cast<double>(), g.cell_edge, g.dims, settings.cells));
+namespace {
+
+/// True when every layer's cells split exactly into 2 × 2 × 2 of the next one: q = 8 over a volume
+/// (the edge halves from layer to layer) and room in each layer for the parents of the next.
+bool layers_nest(const std::vector<LayerGeometry>& g, int q) {
+  if (q != 8) return false;
+  for (std::size_t i = 0; i + 1 < g.size(); ++i) {
+    if (!(g[i + 1].cell_edge > 0.0) ||
+        std::abs(g[i].cell_edge - 2.0 * g[i + 1].cell_edge) > 1e-9 * g[i].cell_edge)
+      return false;
+    if (((g[i + 1].dims.array() + 1) / 2 > g[i].dims.array()).any()) return false;
   }
+  return true;
+}
+
+constexpr std::size_t kMaxCells = std::size_t{1} << 27;  // NdtGrid::build's default
+
+}  // namespace
+
+std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const LayerPyramidSettings& settings) {
+  const Bounds bounds = reference.bounds();
+  const Eigen::Vector3d origin = bounds.min.cast<double>();
+  const auto n = static_cast<std::size_t>(std::max(settings.layers, 0));
+  std::vector<LayerGeometry> g;
+  for (int i = 1; i <= settings.layers; ++i) g.push_back(layer_geometry(bounds, settings.division, i));
+  std::vector<NdtGrid> layers(n);
+  // Nested layers: one pass over the points for the finest layer, each coarser layer from its
+  // children's sums, with edge 2^(n−i) times the finest one (the geometry's edge up to rounding)
+  // so that a point's cell there is exactly the parent of its finest cell.
+  if (n > 1 && layers_nest(g, settings.division) &&
+      layers[n - 1].init(origin, g[n - 1].cell_edge, g[n - 1].dims, kMaxCells)) {
+    std::vector<CellSums> sums = layers[n - 1].split(reference);
+    double edge = g[n - 1].cell_edge;
+    for (std::size_t i = n - 1; i-- > 0;) {
+      edge *= 2.0;
+      layers[i].init(origin, edge, g[i].dims, kMaxCells);  // fewer cells than layer n
+      std::vector<CellSums> parents = layers[i].merge_children(sums);
+      layers[i + 1].generate(sums, settings.cells);
+      sums = std::move(parents);
+    }
+    layers[0].generate(sums, settings.cells);
+    return layers;
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    layers[i] = NdtGrid::build(reference, origin, g[i].cell_edge, g[i].dims, settings.cells);
   return layers;
 }
 

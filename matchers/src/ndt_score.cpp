@@ -4,6 +4,9 @@
 // only adds to sums (C⁻¹, C⁻¹[u]×, [u]×ᵀC⁻¹[u]×, C⁻¹e·uᵀ) and A is applied once at the end.
 #include "sextant/matchers/ndt_score.hpp"
 
+#include "mahalanobis_kernel.hpp"
+#include "score_sums.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -43,31 +46,8 @@ struct PoseTerms {
   }
 };
 
-/// Weighted sums in "pre-A" coordinates, where the point Jacobian is J' = [I, −[u]×].
-struct Sums {
-  double score = 0.0;
-  Eigen::Vector3d g_t = Eigen::Vector3d::Zero();  ///< Σ w·C⁻¹e
-  Eigen::Matrix3d N = Eigen::Matrix3d::Zero();  ///< Σ w·C⁻¹e·uᵀ (gives Σ w·u × C⁻¹e and 2nd-order terms)
-  Eigen::Matrix3d P = Eigen::Matrix3d::Zero();  ///< Σ w·C⁻¹
-  Eigen::Matrix3d Q = Eigen::Matrix3d::Zero();  ///< Σ w·C⁻¹[u]×
-  Eigen::Matrix3d S = Eigen::Matrix3d::Zero();  ///< Σ w·[u]×ᵀC⁻¹[u]×
-  Matrix6d outer = Matrix6d::Zero();  ///< Σ v·m·mᵀ, m = [C⁻¹e; u × C⁻¹e] (Gaussian score)
-  std::size_t matched = 0;
-  std::size_t rejected = 0;
-};
-
-/// total += block, term by term.
-void add(Sums& total, const Sums& block) {
-  total.score += block.score;
-  total.g_t += block.g_t;
-  total.N += block.N;
-  total.P += block.P;
-  total.Q += block.Q;
-  total.S += block.S;
-  total.outer += block.outer;
-  total.matched += block.matched;
-  total.rejected += block.rejected;
-}
+using score_detail::add;
+using score_detail::Sums;
 
 /// Runs `block(begin, end, sums)` over the fixed blocks [b·K, min((b+1)·K, n)), K =
 /// kScoreBlockPoints, each into its own zeroed Sums, and adds the block sums in block order on
@@ -162,6 +142,16 @@ inline void accumulate(const CellGaussian& cell, const Eigen::Vector3d& u, const
   }
 }
 
+/// Multiplies the derivative sums by `factor`. With factor 2 this is exact (a power of two), so
+/// 2·Σx is bit-identical to Σ2x: the Mahalanobis kernel sums unweighted terms and doubles once.
+void scale_derivatives(Sums& s, double factor) {
+  s.g_t *= factor;
+  s.N *= factor;
+  s.P *= factor;
+  s.Q *= factor;
+  s.S *= factor;
+}
+
 /// Maps the sums to ξ: g = Bᵀ·g', H = Bᵀ·H'·B + second-order terms, B = blockdiag(I, A).
 ScoreEvaluation finish(Sums& s, const PoseTerms& pose, Derivatives derivatives, bool mahalanobis) {
   ScoreEvaluation out;
@@ -195,22 +185,6 @@ ScoreEvaluation finish(Sums& s, const PoseTerms& pose, Derivatives derivatives, 
   out.hessian = first + second + B.transpose() * s.outer * B;
   if (mahalanobis) out.gauss_newton = first;
   return out;
-}
-
-template <bool kGradient, bool kHessian>
-void mahalanobis_loop(const NdtGrid& grid, const Eigen::Vector3f* begin, const Eigen::Vector3f* end,
-                      const PoseTerms& pose, double max_q, Sums& s) {
-  const Eigen::Matrix3d& R = pose.R;
-  const double tx = pose.t.x(), ty = pose.t.y(), tz = pose.t.z();
-  for (const Eigen::Vector3f* p = begin; p != end; ++p) {
-    const Eigen::Vector3f& pf = *p;
-    const Eigen::Vector3d u = R * pf.cast<double>();
-    const int g = grid.lookup(static_cast<float>(u.x() + tx), static_cast<float>(u.y() + ty),
-                              static_cast<float>(u.z() + tz));
-    if (g < 0) continue;
-    // s_k = eᵀC⁻¹e, g_k = 2eᵀC⁻¹∂e/∂ξ, H_k = 2(∂eᵀC⁻¹∂e + eᵀC⁻¹∂²e): weight 2, eqs. (3.13)–(3.15).
-    accumulate<kGradient, kHessian, false>(grid.gaussian(g), u, pose.t, 2.0, 0.0, 1.0, false, 0.0, max_q, s);
-  }
 }
 
 template <bool kGradient, bool kHessian>
@@ -311,19 +285,13 @@ ScoreEvaluation mahalanobis_score(const NdtGrid& grid, const PointCloud& input, 
     return finish(none, pose, Derivatives::kScore, true);
   }
   const Eigen::Vector3f* points = input.points().data();
+  // s_k = eᵀC⁻¹e, g_k = 2eᵀC⁻¹∂e/∂ξ, H_k = 2(∂eᵀC⁻¹∂e + eᵀC⁻¹∂²e), eqs. (3.13)–(3.15): the
+  // kernel sums unweighted terms, the factor 2 is applied once to the sums (exact).
   Sums s = blocked_sum(input.size(), threads, [&](std::size_t begin, std::size_t end, Sums& block) {
-    switch (derivatives) {
-      case Derivatives::kScore:
-        mahalanobis_loop<false, false>(grid, points + begin, points + end, pose, max_distance, block);
-        break;
-      case Derivatives::kGradient:
-        mahalanobis_loop<true, false>(grid, points + begin, points + end, pose, max_distance, block);
-        break;
-      case Derivatives::kHessian:
-        mahalanobis_loop<true, true>(grid, points + begin, points + end, pose, max_distance, block);
-        break;
-    }
+    score_detail::mahalanobis_block(grid, points + begin, points + end, pose.R, pose.t, max_distance,
+                                    derivatives, block);
   });
+  scale_derivatives(s, 2.0);
   return finish(s, pose, derivatives, true);
 }
 

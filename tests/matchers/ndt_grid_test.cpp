@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include <Eigen/Eigenvalues>
 
 #include "sextant/matchers/ndt_grid.hpp"
@@ -89,6 +92,38 @@ TEST(NdtGrid, PyramidLayerSizesGrowByQ) {
     EXPECT_NEAR(layers[i - 1].cell_edge() / layers[i].cell_edge(), 2.0, 1e-9);  // q = 8 → edge halves
     EXPECT_GT(layers[i].gaussian_count(), layers[i - 1].gaussian_count());
   }
+}
+
+// With q = 8 the pyramid builds its finest layer from the points and every coarser layer from
+// its children's sums: the same cells and Gaussians as building each layer from the points, up
+// to the rounding of the summation order.
+TEST(NdtGrid, NestedPyramidMatchesLayerByLayerBuild) {
+  Rng rng(3);
+  const PointCloud cloud = test::yard(rng, 2);
+  LayerPyramidSettings settings;
+  settings.layers = 5;
+  const auto layers = build_layer_pyramid(cloud, settings);
+  ASSERT_EQ(layers.size(), 5u);
+  const Bounds b = cloud.bounds();
+  std::size_t compared = 0;
+  for (int i = 1; i <= 5; ++i) {
+    const LayerGeometry g = layer_geometry(b, 8, i);
+    const NdtGrid direct = NdtGrid::build(cloud, b.min.cast<double>(), g.cell_edge, g.dims);
+    const NdtGrid& nested = layers[static_cast<std::size_t>(i - 1)];
+    EXPECT_NEAR(nested.cell_edge(), g.cell_edge, 1e-12 * g.cell_edge) << i;
+    EXPECT_EQ(nested.dims(), g.dims) << i;
+    ASSERT_EQ(nested.gaussian_count(), direct.gaussian_count()) << i;
+    for (int k = 0; k < static_cast<int>(direct.gaussian_count()); ++k) {
+      ASSERT_EQ(nested.cell_of(k), direct.cell_of(k)) << i << " " << k;
+      const CellGaussian &n = nested.gaussian(k), &d = direct.gaussian(k);
+      for (int m = 0; m < 3; ++m) EXPECT_NEAR(n.mean[m], d.mean[m], 1e-5f * (1.0f + std::abs(d.mean[m])));
+      float scale = 0.0f;
+      for (const float v : d.inv_cov) scale = std::max(scale, std::abs(v));
+      for (int m = 0; m < 6; ++m) EXPECT_NEAR(n.inv_cov[m], d.inv_cov[m], 1e-4f * scale) << i << " " << k;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 100u);
 }
 
 TEST(NdtGrid, EmptyAndDegenerateInputGiveEmptyGrids) {

@@ -3,6 +3,7 @@
 // and with them whole registrations — are bit-identical for every thread count. Checked with
 // EXPECT_EQ on doubles, not NEAR, on the fast_gicp Velodyne pair (69,088 points: 34 blocks).
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <fstream>
 #include <limits>
@@ -218,6 +219,27 @@ TEST(ParallelScore, MlndtRegistrationIsBitIdenticalForOneAndFourThreads) {
   EXPECT_EQ(results[0].matched_points, results[1].matched_points);
   for (int i = 0; i < 6; ++i)
     for (int j = 0; j < 6; ++j) EXPECT_EQ(results[0].H(i, j), results[1].H(i, j)) << i << "," << j;
+}
+
+// The whole registration with `threads: 0` (all TBB allows) under a process-wide TBB limit of one
+// and of two threads (tbb::global_control), with the library's default preset: the same bits.
+TEST(ParallelScore, MlndtRegistrationIsBitIdenticalUnderTbbLimitsOneAndTwo) {
+  const VelodynePair& p = velodyne();
+  std::vector<RegistrationResult> results;
+  std::vector<int> concurrency;
+  for (const std::size_t limit : {std::size_t{1}, std::size_t{2}}) {
+    const tbb::global_control control(tbb::global_control::max_allowed_parallelism, limit);
+    concurrency.push_back(ScoreThreads(0).concurrency());
+    auto matcher = make_matcher("mlndt", YAML::Load("{preset: default, threads: 0}"));
+    matcher->set_reference(p.ref);
+    results.push_back(matcher->align(p.in, Eigen::Isometry3d::Identity()));
+  }
+  EXPECT_EQ(concurrency[0], 1);
+  ASSERT_TRUE(results[0].converged) << results[0].summary();
+  expect_identical(results[0].T, results[1].T, "mlndt under TBB limits 1 and 2");
+  EXPECT_EQ(results[0].iterations, results[1].iterations);
+  EXPECT_EQ(results[0].score, results[1].score);
+  EXPECT_EQ(results[0].matched_points, results[1].matched_points);
 }
 
 TEST(ParallelScore, NdtRegistrationIsBitIdenticalForOneAndTwoThreads) {

@@ -26,6 +26,11 @@ class SettingsReader;
 /// Reads min_points, max_eigen_ratio and min_spread at the reader's level.
 void read_cell_stats_settings(SettingsReader& in, CellStatsSettings& s);
 
+namespace ndt_detail {
+struct CellSums;  ///< running sums of one occupied cell (ndt_grid.cpp)
+}
+struct LayerPyramidSettings;
+
 /// One cell's normal distribution in the hot-loop layout: mean and the upper triangle of C⁻¹.
 struct CellGaussian {
   float mean[3];
@@ -75,6 +80,19 @@ class NdtGrid {
   Eigen::Vector3i cell_of(int g) const;
 
  private:
+  friend std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference,
+                                                  const LayerPyramidSettings& settings);
+  /// Geometry and an empty index; false (an empty grid) for a bad geometry or too many cells.
+  bool init(const Eigen::Vector3d& origin, double cell_edge, const Eigen::Vector3i& dims,
+            std::size_t max_cells);
+  /// Splitting process: the sums of every occupied cell (index_ holds their positions).
+  std::vector<ndt_detail::CellSums> split(const PointCloud& reference);
+  /// The sums of this grid's cells from those of a grid with half its edge and the same origin
+  /// (cell (x, y, z) there lies in cell (x/2, y/2, z/2) here).
+  std::vector<ndt_detail::CellSums> merge_children(const std::vector<ndt_detail::CellSums>& children);
+  /// Generative process: a Gaussian for every cell of `sums` with enough points.
+  void generate(const std::vector<ndt_detail::CellSums>& sums, const CellStatsSettings& settings);
+
   std::size_t cell_index(int ix, int iy, int iz) const {
     return (static_cast<std::size_t>(iz) * static_cast<std::size_t>(dims_.y()) +
             static_cast<std::size_t>(iy)) *
@@ -110,7 +128,10 @@ struct LayerPyramidSettings {
   bool valid(std::string* why) const;
 };
 
-/// Layers 1..n of Table 3.1 ("splitting" and "generative" processes); element 0 is layer 1.
+/// Layers 1..n of Table 3.1 ("splitting" and "generative" processes); element 0 is layer 1. With
+/// q = 8 over a volume the cells nest (the edge halves): the points are split once into layer n
+/// and every coarser layer sums its 2 × 2 × 2 children, with edges exactly 2^(n−i) × layer n's
+/// (layer_geometry's to rounding). Otherwise every layer is split from the points.
 std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const LayerPyramidSettings& settings);
 
 }  // namespace sextant
