@@ -76,9 +76,9 @@ std::string queued_state(const std::string& job) {
   return c.output.substr(0, c.output.find('\n'));
 }
 
-std::string resume_command(const Args& a) {
-  std::string s = "sextant slurm " + a.target + " --array-size " + std::to_string(a.array_size);
-  if (a.quick) s += " --quick";
+std::string resume_command(const Args& a, const fs::path& sextant) {
+  std::string s = sextant.string() + " slurm " + a.target + (a.quick ? " --quick" : "") + " --array-size " +
+                  std::to_string(a.array_size);
   if (!a.partition.empty()) s += " --partition " + a.partition;
   if (!a.time.empty()) s += " --time " + a.time;
   if (!a.mem.empty()) s += " --mem " + a.mem;
@@ -143,8 +143,11 @@ int slurm_main(const Args& a) {
   if (a.resume) {
     std::cout << "resume:  "
               << (shards.empty() ? "every shard is complete; only the merge job is needed"
-                                 : "shards " + array_indices(shards) +
-                                       " are missing or incomplete; only they are re-run")
+                  : shards.size() == 1
+                      ? "shard " + array_indices(shards) + " of " + std::to_string(o.array_size) +
+                            " is missing or incomplete; only it is re-run"
+                      : "shards " + array_indices(shards) + " of " + std::to_string(o.array_size) +
+                            " are missing or incomplete; only they are re-run")
               << "\n";
   }
   const std::string indices = shards.empty() ? "" : array_indices(shards);
@@ -200,7 +203,7 @@ int slurm_main(const Args& a) {
             << ")\n"
             << "logs:    " << (folder / "logs").string() << "/\n"
             << "results: " << o.results.string() << " (merged), report: " << o.report.string() << "\n"
-            << "resume:  " << resume_command(a) << "\n"
+            << "resume:  " << resume_command(a, o.sextant) << "\n"
             << "         (after a failed or cancelled task: re-submits only the shards whose results are "
                "missing or "
                "incomplete)\n";
