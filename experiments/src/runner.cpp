@@ -231,4 +231,23 @@ RunnerPlan plan_experiment(const std::filesystem::path& config_file, const Runne
   return plan;
 }
 
+std::vector<RunnerPlan> plan_shards(const std::filesystem::path& config_file, const RunnerOptions& options,
+                                    const std::function<std::filesystem::path(const Shard&)>& results_root) {
+  const Loaded loaded = load_and_expand(config_file, options);  // read, validated and expanded once
+  std::vector<RunnerPlan> plans;
+  for (std::size_t k = 0; k < options.shard.count; ++k) {
+    const Shard shard{k, options.shard.count};
+    RunnerPlan& plan = plans.emplace_back();
+    plan.experiment = loaded.config.name;
+    plan.folder = results_root(shard) / loaded.config.name;
+    plan.total = loaded.runs.size();
+    const std::unordered_set<std::string> finished = finished_keys(read_rows(plan.folder / kRunsJsonl));
+    for (const auto& run : select_shard(loaded.runs, shard)) {
+      ++plan.in_shard;
+      plan.finished += finished.count(run.key);
+    }
+  }
+  return plans;
+}
+
 }  // namespace sextant

@@ -119,20 +119,19 @@ std::string merge_script(const SlurmOptions& o) {
 std::vector<ShardState> shard_states(const SlurmOptions& options) {
   std::string why;
   if (!options.valid(&why)) throw InputError("options", "", why);
-  std::vector<ShardState> states;
-  for (std::size_t k = 1; k <= options.array_size; ++k) {
-    ShardState state;
-    state.shard = k;
-    RunnerOptions runner;
-    runner.results_root = shard_root(options, k);
-    runner.shard = Shard{k - 1, options.array_size};
-    runner.quick = options.quick;
-    for (const auto& config : options.configs) {
-      const RunnerPlan plan = plan_experiment(config, runner);
-      state.runs += plan.in_shard;
-      state.finished += plan.finished;
+  std::vector<ShardState> states(options.array_size);
+  for (std::size_t k = 0; k < states.size(); ++k) states[k].shard = k + 1;
+  RunnerOptions runner;
+  runner.results_root = options.results;
+  runner.shard = Shard{0, options.array_size};
+  runner.quick = options.quick;
+  for (const auto& config : options.configs) {
+    const auto plans =
+        plan_shards(config, runner, [&](const Shard& shard) { return shard_root(options, shard.index + 1); });
+    for (std::size_t k = 0; k < states.size(); ++k) {
+      states[k].runs += plans[k].in_shard;
+      states[k].finished += plans[k].finished;
     }
-    states.push_back(state);
   }
   return states;
 }

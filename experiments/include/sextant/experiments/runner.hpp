@@ -5,6 +5,7 @@
 // loses at most the runs in flight; the next invocation completes the rest.
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,10 @@ struct RunnerPlan {
   bool complete() const { return finished == in_shard; }
 };
 RunnerPlan plan_experiment(const std::filesystem::path& config_file, const RunnerOptions& options);
+/// plan_experiment for every shard k/n, n = options.shard.count, the config read and expanded once;
+/// shard k's results are looked up under results_root(shard k).
+std::vector<RunnerPlan> plan_shards(const std::filesystem::path& config_file, const RunnerOptions& options,
+                                    const std::function<std::filesystem::path(const Shard&)>& results_root);
 
 /// File names inside results/<experiment>/.
 inline constexpr const char* kRunsJsonl = "runs.jsonl";
