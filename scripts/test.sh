@@ -3,7 +3,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # The report tests render every generated page and figure in headless Chromium: install it too.
-SEXTANT_EXTRA_PACKAGES="chromium ${SEXTANT_EXTRA_PACKAGES:-}" scripts/setup.sh -DSEXTANT_WERROR=ON "$@"
+# The slurm_cluster test stands up a one-node Slurm cluster: slurm-wlm (slurmctld, slurmd, sbatch) and munge.
+SEXTANT_EXTRA_PACKAGES="chromium slurm-wlm munge ${SEXTANT_EXTRA_PACKAGES:-}" scripts/setup.sh -DSEXTANT_WERROR=ON "$@"
 jobs=$(nproc 2>/dev/null || echo 2)
 cd build
 ctest --output-on-failure -j"$jobs"

@@ -278,7 +278,12 @@ std::size_t merge_results(const std::vector<fs::path>& inputs, const fs::path& o
   std::size_t written = 0;
   for (const auto& [name, folders] : find_experiments(inputs)) {
     const fs::path dir = out / name;
-    const std::vector<RunRow> rows = union_rows(folders);
+    // Rows in the expansion order of the config they were run with: the merged files do not depend
+    // on how many shards there were or in which order their runs finished.
+    const fs::path config_path = folders.front() / kEffectiveConfig;
+    const std::vector<RunRow> rows = in_expansion_order(
+        union_rows(folders), expand_runs(parse_experiment_config(load_yaml_file(config_path.string()),
+                                                                 config_path.string(), false)));
     std::string text;
     for (const auto& row : rows) text += to_json_line(row) + "\n";
     write_file_atomically(dir / kRunsJsonl, text);

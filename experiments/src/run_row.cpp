@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "sextant/core/atomic_file.hpp"
 #include "sextant/experiments/json.hpp"
@@ -130,6 +131,21 @@ std::vector<std::string> bad_line_messages(const std::filesystem::path& jsonl, c
   for (long n : file.bad_line_numbers) {
     out.push_back(jsonl.string() + ":" + std::to_string(n) +
                   ": unreadable line skipped (truncated or corrupted); its run, if any, counts as missing");
+  }
+  return out;
+}
+
+std::vector<RunRow> in_expansion_order(const std::vector<RunRow>& rows, const std::vector<RunSpec>& runs) {
+  std::unordered_map<std::string, const RunRow*> by_key;
+  for (const auto& r : rows) by_key[r.key] = &r;
+  std::vector<RunRow> out;
+  std::unordered_set<std::string> placed;
+  for (const auto& run : runs) {
+    const auto it = by_key.find(run.key);
+    if (it != by_key.end() && placed.insert(run.key).second) out.push_back(*it->second);
+  }
+  for (const auto& r : rows) {
+    if (placed.insert(r.key).second) out.push_back(r);
   }
   return out;
 }

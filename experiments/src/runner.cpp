@@ -79,20 +79,34 @@ std::string provenance_json(const ProvenanceInput& p) {
   return out;
 }
 
-std::vector<RunRow> rows_in_expansion_order(const std::vector<RunRow>& rows,
-                                            const std::vector<RunSpec>& runs) {
-  std::unordered_map<std::string, const RunRow*> by_key;
-  for (const auto& r : rows) by_key[r.key] = &r;
-  std::vector<RunRow> out;
-  std::unordered_set<std::string> placed;
-  for (const auto& run : runs) {
-    const auto it = by_key.find(run.key);
-    if (it != by_key.end() && placed.insert(run.key).second) out.push_back(*it->second);
+struct Loaded {
+  ExperimentConfig config;
+  std::vector<RunSpec> runs;  ///< the whole expansion
+  std::vector<RunSpec> mine;  ///< this shard's runs
+};
+
+Loaded load_and_expand(const std::filesystem::path& config_file, const RunnerOptions& options) {
+  std::string why;
+  if (!options.valid(&why)) throw InputError("options", "", why);
+  Loaded out{read_experiment_config(config_file, options.quick), {}, {}};
+  const ExperimentConfig& config = out.config;
+  if (!run_kind_registry().contains(config.kind)) {
+    throw InputError(config.file, at_line(yaml_line(config.effective["kind"])),
+                     "key 'kind': " + run_kind_registry().unknown(config.kind));
   }
-  for (const auto& r : rows) {  // rows of other profiles or older configs stay, after the current ones
-    if (placed.insert(r.key).second) out.push_back(r);
-  }
+  run_kind_registry().create(config.kind)->validate(config);
+  out.runs = expand_runs(config);
+  out.mine = select_shard(out.runs, options.shard);
   return out;
+}
+
+/// Keys of the successful rows of runs.jsonl: what resume skips (a failed row is retried).
+std::unordered_set<std::string> finished_keys(const RowFile& existing) {
+  std::unordered_set<std::string> finished;
+  for (const auto& row : existing.rows) {
+    if (row.ok) finished.insert(row.key);
+  }
+  return finished;
 }
 
 }  // namespace
@@ -115,19 +129,12 @@ std::string provenance_file_name(const Shard& shard) {
 }
 
 RunnerSummary run_experiment(const std::filesystem::path& config_file, const RunnerOptions& options) {
-  std::string why;
-  if (!options.valid(&why)) throw InputError("options", "", why);
   const auto start = Clock::now();
-  const ExperimentConfig config = read_experiment_config(config_file, options.quick);
-  if (!run_kind_registry().contains(config.kind)) {
-    throw InputError(config.file, at_line(yaml_line(config.effective["kind"])),
-                     "key 'kind': " + run_kind_registry().unknown(config.kind));
-  }
+  const Loaded loaded = load_and_expand(config_file, options);
+  const ExperimentConfig& config = loaded.config;
   const auto kind = run_kind_registry().create(config.kind);
-  kind->validate(config);
-
-  const std::vector<RunSpec> runs = expand_runs(config);
-  const std::vector<RunSpec> mine = select_shard(runs, options.shard);
+  const std::vector<RunSpec>& runs = loaded.runs;
+  const std::vector<RunSpec>& mine = loaded.mine;
 
   RunnerSummary summary;
   summary.experiment = config.name;
@@ -138,11 +145,8 @@ RunnerSummary run_experiment(const std::filesystem::path& config_file, const Run
   const detail::ResultsLock lock(summary.folder);  // one runner per results folder
   terminate_partial_line(jsonl);
 
-  std::unordered_set<std::string> finished;
   const RowFile existing = read_rows(jsonl);
-  for (const auto& row : existing.rows) {
-    if (row.ok) finished.insert(row.key);
-  }
+  const std::unordered_set<std::string> finished = finished_keys(existing);
   summary.warnings = bad_line_messages(jsonl, existing);
   for (const auto& warning : summary.warnings) log_warning(warning);
   std::vector<const RunSpec*> todo;
@@ -208,11 +212,42 @@ RunnerSummary run_experiment(const std::filesystem::path& config_file, const Run
     summary.failed = failed;
   }
 
-  write_rows_csv(summary.folder / kRunsCsv, rows_in_expansion_order(read_rows(jsonl).rows, runs));
+  write_rows_csv(summary.folder / kRunsCsv, in_expansion_order(read_rows(jsonl).rows, runs));
   summary.seconds = seconds_since(start);
   provenance.end = iso_time_now();
   write_file_atomically(summary.folder / provenance_file_name(options.shard), provenance_json(provenance));
   return summary;
+}
+
+RunnerPlan plan_experiment(const std::filesystem::path& config_file, const RunnerOptions& options) {
+  const Loaded loaded = load_and_expand(config_file, options);
+  RunnerPlan plan;
+  plan.experiment = loaded.config.name;
+  plan.folder = options.results_root / loaded.config.name;
+  plan.total = loaded.runs.size();
+  plan.in_shard = loaded.mine.size();
+  const std::unordered_set<std::string> finished = finished_keys(read_rows(plan.folder / kRunsJsonl));
+  for (const auto& run : loaded.mine) plan.finished += finished.count(run.key);
+  return plan;
+}
+
+std::vector<RunnerPlan> plan_shards(const std::filesystem::path& config_file, const RunnerOptions& options,
+                                    const std::function<std::filesystem::path(const Shard&)>& results_root) {
+  const Loaded loaded = load_and_expand(config_file, options);  // read, validated and expanded once
+  std::vector<RunnerPlan> plans;
+  for (std::size_t k = 0; k < options.shard.count; ++k) {
+    const Shard shard{k, options.shard.count};
+    RunnerPlan& plan = plans.emplace_back();
+    plan.experiment = loaded.config.name;
+    plan.folder = results_root(shard) / loaded.config.name;
+    plan.total = loaded.runs.size();
+    const std::unordered_set<std::string> finished = finished_keys(read_rows(plan.folder / kRunsJsonl));
+    for (const auto& run : select_shard(loaded.runs, shard)) {
+      ++plan.in_shard;
+      plan.finished += finished.count(run.key);
+    }
+  }
+  return plans;
 }
 
 }  // namespace sextant

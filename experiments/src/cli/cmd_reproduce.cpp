@@ -9,14 +9,11 @@
 #include "sextant/experiments/runner.hpp"
 
 namespace sextant::cli {
-namespace {
 
 std::filesystem::path default_experiments_folder() {
   if (std::filesystem::is_directory("experiments")) return "experiments";
   return std::filesystem::path(SEXTANT_SOURCE_DIR) / "experiments";
 }
-
-}  // namespace
 
 void add_reproduce_command(CLI::App& app, int& exit_code) {
   auto* cmd =

@@ -2,6 +2,7 @@
 // Each `sextant` subcommand lives in its own file cli/cmd_<name>.cpp and registers itself with
 // one add_<name>_command(app, exit_code) function declared here and called from main.cpp.
 // The subcommand's callback sets exit_code = guarded([&] { ... return 0; }).
+#include <filesystem>
 #include <functional>
 
 #include <CLI/CLI.hpp>
@@ -11,6 +12,9 @@ namespace sextant::cli {
 /// Runs a subcommand body: an exception becomes "sextant: error: <message>" on stderr and exit code 1.
 int guarded(const std::function<int()>& body);
 
+/// ./experiments when it exists, else the source tree's experiments/ (`reproduce`, `slurm reproduce`).
+std::filesystem::path default_experiments_folder();
+
 // One line per subcommand (keep sorted).
 void add_convert_command(CLI::App& app, int& exit_code);
 void add_info_command(CLI::App& app, int& exit_code);
@@ -19,6 +23,7 @@ void add_merge_command(CLI::App& app, int& exit_code);
 void add_report_command(CLI::App& app, int& exit_code);
 void add_reproduce_command(CLI::App& app, int& exit_code);
 void add_run_command(CLI::App& app, int& exit_code);
+void add_slurm_command(CLI::App& app, int& exit_code);
 void add_synth_command(CLI::App& app, int& exit_code);
 void add_version_command(CLI::App& app, int& exit_code);
 

@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   add_report_command(app, exit_code);
   add_reproduce_command(app, exit_code);
   add_run_command(app, exit_code);
+  add_slurm_command(app, exit_code);
   add_synth_command(app, exit_code);
   add_version_command(app, exit_code);
   CLI11_PARSE(app, argc, argv);

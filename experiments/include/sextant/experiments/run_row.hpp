@@ -47,6 +47,11 @@ std::vector<std::string> bad_line_messages(const std::filesystem::path& jsonl, c
 
 /// Reads runs.jsonl (missing file = no rows); keeps only the last row of each key.
 RowFile read_rows(const std::filesystem::path& jsonl);
+/// The rows in the order of `runs` (the expansion order: the same whatever the shards or threads
+/// that produced them), then the rows of keys not in `runs` (older configs, the other profile) in
+/// their given order. One row per key.
+std::vector<RunRow> in_expansion_order(const std::vector<RunRow>& rows, const std::vector<RunSpec>& runs);
+
 /// Writes rows as CSV atomically: key, method, point.<axis>..., repetition, seed, ok, seconds, <values>...
 void write_rows_csv(const std::filesystem::path& csv, const std::vector<RunRow>& rows);
 

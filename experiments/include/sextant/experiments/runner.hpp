@@ -5,6 +5,7 @@
 // loses at most the runs in flight; the next invocation completes the rest.
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,23 @@ struct RunnerSummary {
 
 /// Runs one experiment config. Throws InputError for a bad config or option.
 RunnerSummary run_experiment(const std::filesystem::path& config_file, const RunnerOptions& options);
+
+/// What run_experiment would do now, without running or writing anything: how many runs of the
+/// shard are already finished in <results_root>/<experiment>/runs.jsonl (the same test its resume
+/// uses: a successful row with the run's key). `sextant slurm --resume` asks this per shard.
+struct RunnerPlan {
+  std::string experiment;
+  std::filesystem::path folder;  ///< results/<experiment>
+  std::size_t total = 0;         ///< runs in the expansion
+  std::size_t in_shard = 0;      ///< runs of this shard
+  std::size_t finished = 0;      ///< of those, finished successfully
+  bool complete() const { return finished == in_shard; }
+};
+RunnerPlan plan_experiment(const std::filesystem::path& config_file, const RunnerOptions& options);
+/// plan_experiment for every shard k/n, n = options.shard.count, the config read and expanded once;
+/// shard k's results are looked up under results_root(shard k).
+std::vector<RunnerPlan> plan_shards(const std::filesystem::path& config_file, const RunnerOptions& options,
+                                    const std::function<std::filesystem::path(const Shard&)>& results_root);
 
 /// File names inside results/<experiment>/.
 inline constexpr const char* kRunsJsonl = "runs.jsonl";

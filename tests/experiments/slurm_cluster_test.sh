@@ -1,0 +1,131 @@
+#!/usr/bin/env bash
+# ctest `slurm_cluster`: a one-node Slurm cluster on localhost (scripts/slurm_cluster.sh), the
+# README's "Running on a cluster" commands verbatim on the quick profile of E4 (a 4-task array plus
+# the merge job), then:
+#   1. one array task is cancelled before it runs; the merge job is stranded; the README's resume
+#      line re-submits only that shard, and the other shards' results are not touched;
+#   2. the merged runs.jsonl / runs.csv / experiment.yaml equal a single-process run's byte for
+#      byte, except the measured wall times (every value, series or column named *seconds*);
+#   3. one shard's results are deleted; the resume line re-runs only that shard; equal again.
+# The daemons are stopped by their PIDs on exit. Exit 77 (skip) only when Slurm is not installed.
+# Usage: slurm_cluster_test.sh <sextant binary> <source dir>
+set -euo pipefail
+sextant=$1
+source_dir=$(cd "$2" && pwd)
+start_time=$SECONDS
+tmp=$(mktemp -d /tmp/sextant-slurm.XXXXXX)
+cluster="$tmp/cluster"
+cleanup() {
+  "$source_dir/scripts/slurm_cluster.sh" stop "$cluster" || true
+  rm -rf "$tmp"
+}
+trap cleanup EXIT
+fail() {
+  echo "slurm_cluster_test: FAIL: $*" >&2
+  tail -n 5 "$tmp"/work/results/_slurm/logs/* 2>/dev/null >&2 || true
+  exit 1
+}
+
+status=0
+"$source_dir/scripts/slurm_cluster.sh" start "$cluster" || status=$?
+if ((status == 77)); then
+  echo "slurm_cluster_test: SKIP: Slurm (slurm-wlm) or munge is not installed; scripts/test.sh installs them"
+  exit 77
+fi
+((status == 0)) || fail "the test cluster did not start"
+# shellcheck disable=SC1091
+source "$cluster/env"
+
+# The README's commands, verbatim: the `sextant slurm` lines of the block after the marker.
+mapfile -t commands < <(awk '/<!-- slurm-test:/ {on = 1; next} on && /^```$/ && seen {exit}
+                             on && /^```/ {seen = 1; next} on && /^build\/experiments\/sextant slurm / {print}' \
+  "$source_dir/README.md")
+((${#commands[@]} == 2)) || fail "expected 2 'sextant slurm' lines in README.md's cluster block, found ${#commands[@]}"
+submit_line=${commands[0]}
+resume_line=${commands[1]}
+[[ $resume_line == *--resume* && $submit_line != *--resume* ]] || fail "README: submit line, then resume line"
+
+# The README runs from the source folder after the build: the same layout, with this build's binary.
+work="$tmp/work"
+mkdir -p "$work/build/experiments"
+ln -s "$(realpath "$sextant")" "$work/build/experiments/sextant"
+ln -s "$source_dir/experiments" "$work/experiments"
+cd "$work"
+exp=e04_init_vs_layer
+
+# The single-process reference (it also fills the dataset cache the tasks share).
+"$sextant" run "experiments/$exp.yaml" --quick --jobs 2 --no-progress --results single \
+  --cache results/_cache >/dev/null || fail "single-process run"
+
+wait_gone() {  # wait until squeue no longer lists the jobs (120 s at most)
+  for _ in $(seq 600); do
+    [ -z "$(squeue -h -o %i -j "$1" 2>/dev/null)" ] && return 0
+    sleep 0.2
+  done
+  squeue >&2
+  fail "jobs $1 still queued after 120 s"
+}
+job_id() {  # job_id array|merge <output>
+  sed -n "s/^submitted: $1 job \([0-9]*\).*/\1/p" <<<"$2"
+}
+# Wall times are measured, not computed: every value, series or column named *seconds* is masked.
+masked_jsonl() { sed -E 's/"([A-Za-z0-9_]*seconds[A-Za-z0-9_]*)": (\[[^]]*\]|[^,}]*)/"\1": T/g' "$1" | sort; }
+masked_csv() {
+  awk -F, 'NR == 1 {for (i = 1; i <= NF; i++) t[i] = ($i ~ /seconds/)} {for (i = 1; i <= NF; i++) if (NR > 1 && t[i]) $i = "T"} 1' OFS=, "$1"
+}
+check_equal_to_single() {
+  local merged="results/$exp" single="single/$exp"
+  cmp "$merged/experiment.yaml" "$single/experiment.yaml" || fail "experiment.yaml differs"
+  cmp <(masked_csv "$merged/runs.csv") <(masked_csv "$single/runs.csv") || fail "runs.csv differs (timings masked)"
+  cmp <(masked_jsonl "$merged/runs.jsonl") <(masked_jsonl "$single/runs.jsonl") || fail "runs.jsonl differs"
+  # The merged file lists its rows in expansion order: the same order as the single run's runs.csv.
+  cmp <(sed -E 's/^\{"key": "([0-9a-f]*)".*/\1/' "$merged/runs.jsonl") <(tail -n +2 "$single/runs.csv" | cut -d, -f1) ||
+    fail "merged runs.jsonl is not in expansion order"
+  grep -q "<section id=\"$exp\">" report/index.html || fail "the merge job wrote no report section for $exp"
+}
+shard_sums() { for k in "$@"; do md5sum "results/_shards/$k-of-4/$exp/runs.jsonl"; done; }
+
+echo "slurm_cluster_test: single-process reference done after $((SECONDS - start_time)) s"
+
+# 1. Submit; cancel task 3 at once (2 CPUs: tasks 3 and 4 wait for 1 and 2, so 3 has not started).
+out=$(eval "$submit_line") || fail "submit: $out"
+echo "$out"
+array=$(job_id array "$out")
+# The resume command it prints is the README's resume line (with this binary's path).
+grep -qxF "resume:  $(realpath "$sextant") ${resume_line#build/experiments/sextant }" <<<"$out" ||
+  fail "the printed resume command is not the README's resume line"
+merge=$(job_id merge "$out")
+[[ -n $array && -n $merge ]] || fail "no job ids in the output"
+scancel "${array}_3"
+wait_gone "$array"
+echo "slurm_cluster_test: array done (task 3 cancelled) after $((SECONDS - start_time)) s"
+[ -n "$(squeue -h -o %i -j "$merge")" ] || fail "the merge job ran although task 3 was cancelled"
+[ ! -s "results/_shards/3-of-4/$exp/runs.jsonl" ] || fail "task 3 ran although it was cancelled"
+before=$(shard_sums 1 2 4)
+out=$(eval "$resume_line") || fail "resume: $out"
+echo "$out"
+grep -q "^resume:  shard 3 of 4 is missing or incomplete" <<<"$out" || fail "resume did not select shard 3 alone"
+grep -q "cancelled the previous merge job $merge " <<<"$out" || fail "the stranded merge job was not cancelled"
+array2=$(job_id array "$out")
+merge2=$(job_id merge "$out")
+grep -q "^submitted: array job $array2 (tasks 3)" <<<"$out" || fail "not exactly task 3 re-submitted"
+wait_gone "$array2,$merge2"
+[ "$(shard_sums 1 2 4)" = "$before" ] || fail "a finished shard was redone"
+grep -q "runs executed, 0 already done" results/_slurm/logs/*-"${array2}"_3.out ||
+  fail "task 3's log shows no run"
+check_equal_to_single
+echo "slurm_cluster_test: cancelled task re-run alone, merged = single-process run ($((SECONDS - start_time)) s)"
+
+# 3. Delete one shard's results (a lost disk, a task killed by hand); resume re-runs only it.
+rm -rf "results/_shards/2-of-4/$exp" "results/$exp" report
+before=$(shard_sums 1 3 4)
+out=$(eval "$resume_line") || fail "second resume: $out"
+echo "$out"
+array3=$(job_id array "$out")
+merge3=$(job_id merge "$out")
+grep -q "^submitted: array job $array3 (tasks 2)" <<<"$out" || fail "not exactly task 2 re-submitted"
+wait_gone "$array3,$merge3"
+[ "$(shard_sums 1 3 4)" = "$before" ] || fail "a finished shard was redone"
+check_equal_to_single
+echo "slurm_cluster_test: deleted shard re-run alone, merged = single-process run"
+echo "slurm_cluster_test: passed in $((SECONDS - start_time)) s"
