@@ -1,6 +1,7 @@
 #include <cstdint>
 
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/filters/eseif.hpp"
 #include "sextant/filters/gaussian_filters.hpp"
 #include "sextant/filters/seif.hpp"
 
@@ -79,6 +80,21 @@ void fill(FilterRegistry& r) {
           check(in, s);
           in.finish();
           return std::make_unique<Seif>("seif", std::move(model), s);
+        });
+  r.add("eseif", "exactly sparse extended information filter (Walter, Eustice, Leonard 2007): relocalization",
+        [](std::shared_ptr<const SlamModel> model, const YAML::Node& node, const std::string& file) {
+          SettingsReader in(node, file);
+          EseifSettings s;
+          in.read("max_active_landmarks", s.max_active_landmarks);
+          in.read("relocation_landmarks", s.relocation_landmarks);
+          in.read("relocation_prior", s.relocation_prior);
+          in.read("mean_recovery", s.mean_recovery);
+          check(in, s);
+          if (!s.relocation_prior.empty() && static_cast<int>(s.relocation_prior.size()) != model->pose_dim())
+            in.fail("relocation_prior", "relocation_prior needs one sigma per pose entry (" +
+                                            std::to_string(model->pose_dim()) + ")");
+          in.finish();
+          return std::make_unique<Eseif>("eseif", std::move(model), s);
         });
   r.add("eif", "extended information filter: SEIF without sparsification, exact mean recovery",
         [](std::shared_ptr<const SlamModel> model, const YAML::Node& node, const std::string& file) {

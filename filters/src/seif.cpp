@@ -5,6 +5,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 
+#include "information_ops.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/filters/covariance.hpp"
 #include "step_checks.hpp"
@@ -13,29 +14,9 @@ namespace sextant {
 namespace {
 
 constexpr int kPose = 0;
-
-// Row/column offsets of each variable inside a gathered dense block.
-std::vector<Eigen::Index> local_offsets(const BlockInformationMatrix& omega, const std::vector<int>& vars) {
-  std::vector<Eigen::Index> off(vars.size() + 1, 0);
-  for (std::size_t i = 0; i < vars.size(); ++i) off[i + 1] = off[i] + omega.dim(vars[i]);
-  return off;
-}
-
-Eigen::VectorXd gather_vector(const BlockInformationMatrix& omega, const Eigen::VectorXd& v,
-                              const std::vector<int>& vars) {
-  const auto off = local_offsets(omega, vars);
-  Eigen::VectorXd out(off.back());
-  for (std::size_t i = 0; i < vars.size(); ++i)
-    out.segment(off[i], omega.dim(vars[i])) = v.segment(omega.offset(vars[i]), omega.dim(vars[i]));
-  return out;
-}
-
-void scatter_add_vector(const BlockInformationMatrix& omega, const Eigen::VectorXd& local,
-                        const std::vector<int>& vars, Eigen::VectorXd* v) {
-  const auto off = local_offsets(omega, vars);
-  for (std::size_t i = 0; i < vars.size(); ++i)
-    v->segment(omega.offset(vars[i]), omega.dim(vars[i])) += local.segment(off[i], omega.dim(vars[i]));
-}
+using detail::gather_vector;
+using detail::local_offsets;
+using detail::scatter_add_vector;
 
 // Selection of the rows of a gathered block that belong to `subset` (a subset of vars).
 std::vector<Eigen::Index> rows_of(const BlockInformationMatrix& omega, const std::vector<int>& vars,
@@ -189,21 +170,11 @@ void Seif::activate(int landmark) {
 }
 
 void Seif::shift_mean(int var, const Eigen::VectorXd& delta) {
-  if (delta.isZero(0.0)) return;
-  mu_.segment(omega_.offset(var), omega_.dim(var)) += delta;
-  xi_.segment(omega_.offset(var), omega_.dim(var)) += omega_.block(var, var) * delta;
-  for (int j : omega_.neighbours(var))
-    xi_.segment(omega_.offset(j), omega_.dim(j)) += omega_.block(j, var) * delta;
+  detail::shift_mean(omega_, xi_, mu_, var, delta);
 }
 
 void Seif::normalize_variable(int var) {
-  Eigen::VectorXd value = mu_.segment(omega_.offset(var), omega_.dim(var));
-  const Eigen::VectorXd before = value;
-  if (var == kPose)
-    wrap_entries(value, model_->pose_angles());
-  else
-    model_->normalize_landmark(value);
-  shift_mean(var, value - before);
+  detail::normalize_variable(*model_, omega_, xi_, mu_, var);
 }
 
 StepResult Seif::initialize(const Eigen::VectorXd& x0, const Eigen::MatrixXd& P0) {
@@ -229,39 +200,12 @@ StepResult Seif::initialize(const Eigen::VectorXd& x0, const Eigen::MatrixXd& P0
   return finish(StepStatus::kOk, clock.seconds());
 }
 
-// eq. (4.109) in the constant-time form of the header comment.
+// eq. (4.109) in the constant-time form of the header comment (information_ops.hpp).
 StepResult Seif::predict(const Eigen::VectorXd& u, const Eigen::MatrixXd& Q) {
   detail::StepClock clock;
   if (!detail::valid_control(*model_, u, Q)) return finish(StepStatus::kInvalidInput, clock.seconds());
-  const int p = model_->pose_dim();
-  const Eigen::VectorXd pose = mu_.head(p);
-  const Eigen::MatrixXd F = model_->process_jacobian_pose(pose, u);
-  const Eigen::MatrixXd G = model_->process_jacobian_control(pose, u);
-  const Eigen::MatrixXd U = G * Q * G.transpose();
-  Eigen::VectorXd delta = model_->process(pose, u) - pose;
-  wrap_entries(delta, model_->pose_angles());
-  Eigen::FullPivLU<Eigen::MatrixXd> lu(F);
-  if (!lu.isInvertible()) return finish(StepStatus::kCholeskyFailed, clock.seconds());
-  const Eigen::MatrixXd M = lu.inverse();
-
-  std::vector<int> vars{kPose};
-  for (int j : omega_.neighbours(kPose)) vars.push_back(j);
-  const Eigen::MatrixXd omega = omega_.gather(vars);
-  const Eigen::Index k = omega.rows();
-  Eigen::MatrixXd T = Eigen::MatrixXd::Identity(k, k);
-  T.topLeftCorner(p, p) = M;
-  const Eigen::MatrixXd phi = T.transpose() * omega * T;  // Φ = (I+A)⁻ᵀ Ω (I+A)⁻¹
-  Eigen::MatrixXd inner = Eigen::MatrixXd::Identity(p, p) + phi.topLeftCorner(p, p) * U;
-  Eigen::FullPivLU<Eigen::MatrixXd> inner_lu(inner);
-  if (!inner_lu.isInvertible()) return finish(StepStatus::kSingularInnovation, clock.seconds());
-  const Eigen::MatrixXd W = U * inner_lu.inverse();  // U (I + Φ_vv U)⁻¹
-  Eigen::MatrixXd omega_bar = phi - phi.leftCols(p) * W * phi.topRows(p);
-  omega_bar = symmetrized(omega_bar);
-  const Eigen::VectorXd mu_local = gather_vector(omega_, mu_, vars);
-  const Eigen::VectorXd dxi = (omega_bar - omega) * mu_local + omega_bar.leftCols(p) * delta;
-  omega_.scatter(vars, omega_bar);
-  scatter_add_vector(omega_, dxi, vars, &xi_);
-  mu_.head(p) += delta;
+  const StepStatus status = detail::information_motion_update(*model_, omega_, xi_, mu_, u, Q);
+  if (status != StepStatus::kOk) return finish(status, clock.seconds());
   normalize_variable(kPose);
   return finish(StepStatus::kOk, clock.seconds());
 }
@@ -276,22 +220,8 @@ StepResult Seif::update(const std::vector<Eigen::VectorXd>& zs, const Eigen::Mat
   Eigen::LLT<Eigen::MatrixXd> llt(symmetrized(R));
   if (llt.info() != Eigen::Success) return finish(StepStatus::kSingularInnovation, clock.seconds());
   const Eigen::MatrixXd Rinv = llt.solve(Eigen::MatrixXd::Identity(R.rows(), R.cols()));
-  const int p = model_->pose_dim(), l = model_->landmark_dim();
-  const Eigen::VectorXd pose = mu_.head(p);
   for (std::size_t j = 0; j < zs.size(); ++j) {
-    const int var = associations[j] + 1;
-    const Eigen::VectorXd landmark = mu_.segment(omega_.offset(var), l);
-    const Eigen::VectorXd predicted = model_->observe(pose, landmark);
-    Eigen::VectorXd nu = model_->align_observation(zs[j], predicted) - predicted;
-    wrap_entries(nu, model_->observation_angles());
-    const Eigen::MatrixXd Hp = model_->observe_jacobian_pose(pose, landmark);
-    const Eigen::MatrixXd Hl = model_->observe_jacobian_landmark(pose, landmark);
-    const Eigen::VectorXd target = Rinv * (nu + Hp * pose + Hl * landmark);
-    omega_.add(kPose, kPose, Hp.transpose() * Rinv * Hp);
-    omega_.add(kPose, var, Hp.transpose() * Rinv * Hl);
-    omega_.add(var, var, Hl.transpose() * Rinv * Hl);
-    xi_.head(p) += Hp.transpose() * target;
-    xi_.segment(omega_.offset(var), l) += Hl.transpose() * target;
+    detail::information_measurement(*model_, omega_, xi_, mu_, zs[j], Rinv, associations[j]);
     activate(associations[j]);
   }
   if (!recover_mean()) return finish(StepStatus::kNotPositiveDefinite, clock.seconds());
@@ -307,24 +237,8 @@ StepResult Seif::update(const std::vector<Eigen::VectorXd>& zs, const Eigen::Mat
 StepResult Seif::augment(const Eigen::VectorXd& z, const Eigen::MatrixXd& R) {
   detail::StepClock clock;
   if (!detail::valid_observation(*model_, z, R)) return finish(StepStatus::kInvalidInput, clock.seconds());
-  const int p = model_->pose_dim(), l = model_->landmark_dim();
-  const Eigen::VectorXd pose = mu_.head(p);
-  const Eigen::MatrixXd Gv = model_->augment_jacobian_pose(pose, z);
-  const Eigen::MatrixXd Gz = model_->augment_jacobian_observation(pose, z);
-  Eigen::LLT<Eigen::MatrixXd> llt(symmetrized(Gz * R * Gz.transpose()));
-  if (llt.info() != Eigen::Success) return finish(StepStatus::kSingularInnovation, clock.seconds());
-  const Eigen::MatrixXd Sinv = llt.solve(Eigen::MatrixXd::Identity(l, l));
-  const Eigen::VectorXd m = model_->augment(pose, z);
-  const Eigen::VectorXd c = m - Gv * pose;
-  const int var = omega_.add_variable(l);
-  omega_.add(var, var, Sinv);
-  omega_.add(var, kPose, -Sinv * Gv);
-  omega_.add(kPose, kPose, Gv.transpose() * Sinv * Gv);
-  xi_.conservativeResize(omega_.size());
-  mu_.conservativeResize(omega_.size());
-  xi_.tail(l) = Sinv * c;
-  xi_.head(p) -= Gv.transpose() * Sinv * c;
-  mu_.tail(l) = m;
+  const int var = detail::information_augment(*model_, omega_, xi_, mu_, z, R);
+  if (var < 0) return finish(StepStatus::kSingularInnovation, clock.seconds());
   activate(var - 1);
   normalize_variable(var);
   if (!sparsify()) return finish(StepStatus::kSingularInnovation, clock.seconds());

@@ -123,9 +123,13 @@ TEST(LinearGaussian, EveryFilterMatchesTheExactKalmanFilter) {
   YAML::Node seif_unbounded = YAML::Load("{max_active_landmarks: 0, mean_recovery: exact}");
   YAML::Node seif_wide = YAML::Load("{max_active_landmarks: 10, mean_recovery: exact}");
   YAML::Node joseph = YAML::Load("{joseph_form: true}");
+  // ESEIF with its active bound never reached is the EIF (tests/filters/eseif_test.cpp: beyond it).
+  YAML::Node eseif_wide = YAML::Load("{max_active_landmarks: 10, mean_recovery: exact}");
+  YAML::Node eseif_off = YAML::Load("{max_active_landmarks: 0, mean_recovery: exact}");
   const std::vector<std::pair<std::string, YAML::Node>> cases{
       {"ekf", YAML::Node()},   {"ekf", joseph},       {"ukf", YAML::Node()},    {"ckf", YAML::Node()},
-      {"rspkf", YAML::Node()}, {"eif", YAML::Node()}, {"seif", seif_unbounded}, {"seif", seif_wide}};
+      {"rspkf", YAML::Node()}, {"eif", YAML::Node()}, {"seif", seif_unbounded}, {"seif", seif_wide},
+      {"eseif", eseif_wide},   {"eseif", eseif_off}};
   for (const auto& [name, node] : cases) {
     auto filter = make_filter(name, s.model, node);
     const double worst = worst_difference(*filter, s);

@@ -56,7 +56,7 @@ TEST_P(FilterNumericalFaults, EachFaultIsAStatusAndTheStateStaysFinite) {
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryFilter, FilterNumericalFaults,
-                         ::testing::Values("ekf", "ukf", "ckf", "rspkf", "seif", "eif"));
+                         ::testing::Values("ekf", "ukf", "ckf", "rspkf", "seif", "eif", "eseif"));
 
 }  // namespace
 }  // namespace sextant

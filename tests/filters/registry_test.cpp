@@ -9,7 +9,7 @@ namespace {
 
 TEST(FilterRegistry, KnowsEveryFilter) {
   auto model = std::make_shared<RangeBearingModel>();
-  for (const std::string name : {"ekf", "ukf", "ckf", "rspkf", "seif", "eif"}) {
+  for (const std::string name : {"ekf", "ukf", "ckf", "rspkf", "seif", "eif", "eseif"}) {
     ASSERT_TRUE(filter_registry().contains(name)) << name;
     EXPECT_EQ(make_filter(name, model)->name(), name);
   }

@@ -1,4 +1,4 @@
-// `plane_slam` (E12–E14, E16, E17, E19): one run = one filter over the first scans of the
+// `plane_slam` (E12–E14, E16, E17, E19, E22): one run = one filter over the first scans of the
 // synthetic campus at one sweep point (p0_scale) and repetition (plane_slam_sequence.hpp). Each
 // row holds per scan the position / rotation error against the ground truth, the NEES of the
 // pose, the motion- and measurement-update times and the map size; the estimated, true and
@@ -127,12 +127,15 @@ void fill_row(const FilterSequenceRun& r, const synth::Campus& campus, const Pla
     s["odometry_rotation_error_deg"].push_back(rotation_error(o, t) * kDeg);
     const double nees = pose_nees(st.pose, t, st.covariance);
     s["nees"].push_back(nees);
+    if (st.has_marginal) s["nees_marginal"].push_back(pose_nees(st.pose, t, st.marginal));
+    if (st.active >= 0) s["active_landmarks"].push_back(st.active);
     if (std::isfinite(nees)) {
       ++judged;
       if (nees > bound) ++inconsistent;
     }
     s["motion_ms"].push_back(1e3 * st.motion_seconds);
     s["measurement_ms"].push_back(1e3 * st.measurement_seconds);
+    s["step_ms"].push_back(1e3 * (st.motion_seconds + st.measurement_seconds));
     s["map_size"].push_back(static_cast<double>(st.map_size));
     for (int i = 0; i < 6; ++i) {
       s["trajectory"].push_back(st.pose[i]);
@@ -173,6 +176,10 @@ void fill_row(const FilterSequenceRun& r, const synth::Campus& campus, const Pla
   v["odometry_final_error_m"] = s["odometry_error_m"].back();
   v["odometry_mean_error_m"] = mean_of(s["odometry_error_m"]);
   v["mean_nees"] = mean_of(s["nees"]);
+  if (s.count("nees_marginal")) v["mean_nees_marginal"] = mean_of(s["nees_marginal"]);
+  if (s.count("active_landmarks")) put_max(s["active_landmarks"], row, "max_active_landmarks", "");
+  v["relocations"] = static_cast<double>(r.relocations);
+  v["skipped_relocations"] = static_cast<double>(r.skipped_relocations);
   v["nees_bound"] = bound;
   v["inconsistent_fraction"] =
       judged ? static_cast<double>(inconsistent) / static_cast<double>(judged) : kNaN;
@@ -283,6 +290,7 @@ class PlaneSlamKind : public RunKind {
     switch (params.report) {
       case PlaneSlamLayout::kSeif: return seif_report(config, params, data);
       case PlaneSlamLayout::kBenchmark: return benchmark_report(config, params, data);
+      case PlaneSlamLayout::kEseif: return eseif_report(config, params, data);
       case PlaneSlamLayout::kAccuracy: break;
     }
     return accuracy_report(config, params, data);

@@ -4,7 +4,10 @@
 //                                     failures per P0 scale, the map with pose ellipses
 //   plane_slam_report_seif.cpp      — E17: update times against the map size, information images
 //   plane_slam_report_benchmark.cpp — E19: Wulf and Kümmerle per filter, spikes at loop closures
+//   plane_slam_report_eseif.cpp     — E22: ESEIF vs SEIF: NEES, update cost against the map, error
 // and the thesis' comparative claims declared in params.claims (plane_slam_claims.cpp).
+#include <cmath>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,6 +17,7 @@
 #include "plane_slam_settings.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/table.hpp"
+#include "sextant/eval/verdict.hpp"
 #include "sextant/experiments/report_model.hpp"
 #include "sextant/experiments/run_plan.hpp"
 #include "sextant/experiments/run_row.hpp"
@@ -74,6 +78,23 @@ ReportFigure error_figure(const PlaneSlamRows& data, const std::string& point, c
 ReportFigure map_figure(const ExperimentConfig& config, const PlaneSlamParams& params, const RunRow& row,
                         const std::string& method, const std::string& id);
 
+/// How a per-scan time grows with the map (E17, E22): least-squares slope of `time` against
+/// map_size over every repetition's scans (scan 0 left out: no motion update), with a bootstrap
+/// interval; growth = slope · (map range) / median time (plane_slam_report_seif.cpp).
+struct TimeGrowth {
+  Interval slope;   ///< ms per landmark
+  Interval growth;  ///< slope · (map range) / median time
+  double median_ms = NAN;
+  double map_lo = NAN, map_hi = NAN;
+};
+TimeGrowth time_growth(const PlaneSlamGroup& g, const std::string& time, std::uint64_t seed);
+/// `time` per scan, or against the map size (repetition 1 of every method; log scale).
+ReportFigure time_figure(const PlaneSlamRows& data, const std::string& time, const std::string& id,
+                         const std::string& what, bool against_map);
+
+/// Ω's block pattern of every information filter's first repetition, one image per map size asked for.
+std::vector<ReportFigure> information_figures(const PlaneSlamRows& data);
+
 /// Sanity checks: every filter's maximum and final error below the odometry's (paired over repetitions).
 std::vector<Claim> beats_odometry_claims(const PlaneSlamRows& data, std::uint64_t seed);
 
@@ -87,6 +108,8 @@ ReportSection accuracy_report(const ExperimentConfig& config, const PlaneSlamPar
                               const PlaneSlamRows& data);
 ReportSection seif_report(const ExperimentConfig& config, const PlaneSlamParams& params,
                           const PlaneSlamRows& data);
+ReportSection eseif_report(const ExperimentConfig& config, const PlaneSlamParams& params,
+                           const PlaneSlamRows& data);
 ReportSection benchmark_report(const ExperimentConfig& config, const PlaneSlamParams& params,
                                const PlaneSlamRows& data);
 

@@ -25,15 +25,9 @@ double median_of(std::vector<double> v) {
   return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
 
-struct Growth {
-  Interval slope;   ///< ms per landmark
-  Interval growth;  ///< slope · (map range) / median time
-  double median_ms = NAN;
-  double map_lo = NAN, map_hi = NAN;
-};
+}  // namespace
 
-/// Time against map size over every repetition's scans (the first scan has no motion update).
-Growth growth_of(const PlaneSlamGroup& g, const std::string& time, std::uint64_t seed) {
+TimeGrowth time_growth(const PlaneSlamGroup& g, const std::string& time, std::uint64_t seed) {
   std::vector<double> x, y;
   for (const RunRow* r : g.rows) {
     const auto& t = series(*r, time);
@@ -43,7 +37,7 @@ Growth growth_of(const PlaneSlamGroup& g, const std::string& time, std::uint64_t
       y.push_back(t[k]);
     }
   }
-  Growth out;
+  TimeGrowth out;
   out.slope = bootstrap_slope(x, y, seed);
   if (x.empty()) return out;
   std::vector<double> sorted = y;
@@ -118,7 +112,9 @@ std::vector<ReportFigure> information_figures(const PlaneSlamRows& data) {
   return out;
 }
 
-Claim growth_claim(const std::string& method, const std::string& what, const Growth& g, bool flat) {
+namespace {
+
+Claim growth_claim(const std::string& method, const std::string& what, const TimeGrowth& g, bool flat) {
   Claim c;
   c.statement = method + "'s " + what + " time " +
                 (flat ? "stays flat as the map grows (changes by < " + number_text(100 * kFlatGrowth, 0) +
@@ -160,9 +156,9 @@ ReportSection seif_report(const ExperimentConfig& config, const PlaneSlamParams&
       .add_compared_column("map size", 0)
       .add_compared_column("final error m", 2);
   std::uint64_t seed = config.seed * 7919u;
-  std::map<std::string, std::pair<Growth, Growth>> growth;
+  std::map<std::string, std::pair<TimeGrowth, TimeGrowth>> growth;
   for (const PlaneSlamGroup* g : data.at(data.points.front())) {
-    const Growth m = growth_of(*g, "measurement_ms", ++seed), p = growth_of(*g, "motion_ms", ++seed);
+    const TimeGrowth m = time_growth(*g, "measurement_ms", ++seed), p = time_growth(*g, "motion_ms", ++seed);
     growth[g->method] = {m, p};
     t.add_row({Cell::text(g->method), cell_or_missing(m.median_ms), cell_or_missing(m.slope.estimate),
                cell_or_missing(p.median_ms), cell_or_missing(p.slope.estimate),

@@ -4,6 +4,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "sextant/filters/eseif.hpp"
 #include "sextant/filters/plane_slam.hpp"
 #include "sextant/filters/plane_slam_model.hpp"
 #include "sextant/filters/seif.hpp"
@@ -37,13 +38,29 @@ class Recorder {
       step.covariance.setConstant(std::numeric_limits<double>::quiet_NaN());
     }
     const auto* seif = dynamic_cast<const Seif*>(&filter);
-    for (auto it = pending_.begin(); seif && it != pending_.end();) {
+    const auto* eseif = dynamic_cast<const Eseif*>(&filter);
+    const BlockInformationMatrix* info = seif    ? &seif->information()
+                                         : eseif ? &eseif->information()
+                                                 : nullptr;
+    if (info) step.active = static_cast<double>(info->neighbours(0).size());
+    if (params_.marginal_nees) {
+      step.has_marginal = true;
+      step.marginal = step.covariance;
+      if (seif) {
+        const Eigen::MatrixXd M = information_marginal(*info, {0});
+        if (M.size() == 36)
+          step.marginal = M;
+        else
+          step.marginal.setConstant(std::numeric_limits<double>::quiet_NaN());
+      }
+    }
+    for (auto it = pending_.begin(); info && it != pending_.end();) {
       const bool due = *it == 0 ? last : step.map_size >= *it;
       if (!due) {
         ++it;
         continue;
       }
-      run_.information.push_back(pattern(seif->information(), scan, step.map_size));
+      run_.information.push_back(pattern(*info, scan, step.map_size));
       it = pending_.erase(it);
     }
     run_.steps.push_back(step);
@@ -131,6 +148,10 @@ void run_true(const SequenceData& data, const PlaneSlamParams& params, const Pla
     recorder.record(*filter, step, k, k + 1 == scans);
   }
   run.summary = filter->summary();
+  if (const auto* eseif = dynamic_cast<const Eseif*>(filter.get())) {
+    run.relocations = eseif->relocations();
+    run.skipped_relocations = eseif->skipped_relocations();
+  }
   final_map(*filter, run);
 }
 

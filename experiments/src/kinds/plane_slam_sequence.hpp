@@ -36,6 +36,11 @@ struct SequenceStep {
   std::size_t map_size = 0;
   std::size_t updated = 0, augmented = 0, gated = 0;
   bool ok = true;  ///< every filter step of the scan reported kOk
+  /// params.marginal_nees: the pose block of the exact marginal (SEIF: (Ω⁻¹)_vv, not its
+  /// Markov-blanket covariance; the other filters: `covariance`).
+  bool has_marginal = false;
+  Matrix6d marginal = Matrix6d::Zero();
+  double active = -1.0;  ///< information filters: landmarks linked to the pose (−1: other filters)
 };
 
 /// Ω's block pattern: variable 0 = pose (6 rows), variable k = landmark k−1 (4 rows).
@@ -52,6 +57,7 @@ struct FilterSequenceRun {
   std::vector<Eigen::Vector4d> map;  ///< final landmarks (n, d)
   std::vector<int> map_truth;        ///< true landmark id per map landmark (−1: unknown)
   std::vector<InformationPattern> information;
+  std::size_t relocations = 0, skipped_relocations = 0;  ///< ESEIF
 };
 
 /// Runs `scans` scans. `seed` draws the resampled odometry and the observation noise.

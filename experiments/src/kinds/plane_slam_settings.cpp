@@ -58,7 +58,8 @@ PlaneSlamParams read_plane_slam_params(const ExperimentConfig& config) {
   p.report = read_choice<PlaneSlamLayout>(in, "report", PlaneSlamLayout::kAccuracy,
                                           {{"accuracy", PlaneSlamLayout::kAccuracy},
                                            {"seif", PlaneSlamLayout::kSeif},
-                                           {"benchmark", PlaneSlamLayout::kBenchmark}});
+                                           {"benchmark", PlaneSlamLayout::kBenchmark},
+                                           {"eseif", PlaneSlamLayout::kEseif}});
   p.scans = read_count(in, "scans", 0);
   p.min_points = read_count(in, "min_points", p.min_points);
   p.ellipse_every = read_count(in, "ellipse_every", p.ellipse_every);
@@ -77,6 +78,7 @@ PlaneSlamParams read_plane_slam_params(const ExperimentConfig& config) {
     p.information_at.push_back(static_cast<std::size_t>(a));
   }
   in.read("nees_probability", p.nees_probability);
+  in.read("marginal_nees", p.marginal_nees);
   in.read("revisit_radius", p.revisit_radius);
   in.read("spike_threshold", p.spike_threshold);
   if (in.has("claims")) p.claims = in.child("claims");
@@ -101,7 +103,8 @@ PlaneSlamMethod read_plane_slam_method(const YAML::Node& node, const std::string
   m.scans = read_count(in, "scans", 0);
   in.finish();
   if (!filter_registry().contains(m.filter))
-    in.fail("filter", "key 'filter': '" + m.filter + "' is not a filter (ekf, ukf, ckf, rspkf, seif, eif)");
+    in.fail("filter",
+            "key 'filter': '" + m.filter + "' is not a filter (ekf, ukf, ckf, rspkf, seif, eif, eseif)");
   (void)make_filter(m.filter, std::make_shared<PlaneSlamModel>(), m.filter_settings, file);
   m.filter_settings = YAML::Clone(m.filter_settings);
   return m;

@@ -15,7 +15,8 @@
 //     odometry: resample       # campus: the dataset's odometry; resample: drawn per run from the
 //                              # run seed with the campus' odometry model (Monte Carlo repetitions)
 //     slam: {sigma_xy: 0.5, …} # PlaneSlamSettings keys (filters/plane_slam.hpp) except filter
-//     report: accuracy         # accuracy (E12–E14, E16) | seif (E17) | benchmark (E19)
+//     report: accuracy         # accuracy (E12–E14, E16) | seif (E17) | benchmark (E19) | eseif (E22)
+//     marginal_nees: false     # also the NEES from the exact marginal of SEIF's Ω (nees_marginal)
 //     information_at: [118, 0] # information filters: block pattern of Ω when the map first
 //                              # reaches these sizes (0: after the last scan)
 //     nees_probability: 0.99   # a step is inconsistent when NEES > χ²₆ quantile of this
@@ -35,7 +36,7 @@ namespace sextant {
 
 enum class LandmarkSource { kTrue, kExtracted };
 enum class OdometrySource { kCampus, kResample };
-enum class PlaneSlamLayout { kAccuracy, kSeif, kBenchmark };
+enum class PlaneSlamLayout { kAccuracy, kSeif, kBenchmark, kEseif };
 
 struct PlaneSlamParams {
   LandmarkSource landmarks = LandmarkSource::kTrue;
@@ -46,6 +47,7 @@ struct PlaneSlamParams {
   PlaneSlamLayout report = PlaneSlamLayout::kAccuracy;
   std::vector<std::size_t> information_at;
   double nees_probability = 0.99;
+  bool marginal_nees = false;      ///< also record the NEES from the exact marginal (SEIF: of Ω)
   std::size_t ellipse_every = 10;  ///< report: one pose ellipse every N scans
   // E19: loop closures on the route and spikes of the relative errors (sequence_analysis.hpp).
   double revisit_radius = 12.0;   ///< [m]
