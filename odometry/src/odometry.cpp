@@ -217,9 +217,16 @@ OdometryResult run_odometry(const Dataset& dataset, const OdometrySettings& sett
                      "scans " + std::to_string(first) + "–" + std::to_string(first + count - 1) +
                          " go past the dataset's " + std::to_string(dataset.size()) + " scans");
   const std::vector<Eigen::Isometry3d> odometry = odometry_poses(dataset, settings, first, count);
-  Rng master(settings.seed);
-  std::vector<std::uint64_t> seeds(count);
-  for (auto& seed : seeds) seed = master.bits();
+  std::vector<std::uint64_t> seeds = settings.seeds;
+  if (seeds.empty()) {
+    Rng master(settings.seed);
+    seeds.resize(count);
+    for (auto& seed : seeds) seed = master.bits();
+  } else if (seeds.size() < count) {
+    throw InputError("odometry settings", "",
+                     "the given seeds are " + std::to_string(seeds.size()) + ", fewer than the " +
+                         std::to_string(count) + " scans");
+  }
 
   StepCounter counter(progress, count - 1);
   OdometryResult result;

@@ -152,6 +152,9 @@ TEST(Odometry, BadRangesAndSettingsAreErrors) {
   s = mlndt_settings();
   s.odometry = {Eigen::Isometry3d::Identity()};  // fewer poses than scans
   EXPECT_THROW(run_odometry(campus(), s, 0, 3), InputError);
+  s = mlndt_settings();
+  s.seeds = {1, 2};  // fewer seeds than scans
+  EXPECT_THROW(run_odometry(campus(), s, 0, 3), InputError);
   EXPECT_THROW(parse_odometry_guess("gps"), InputError);
   EXPECT_THROW(parse_odometry_map("global"), InputError);
   EXPECT_EQ(parse_odometry_guess("constant_velocity"), OdometryGuess::constant_velocity);

@@ -108,7 +108,8 @@ class SequenceSession : public KindSession {
     chain_settings.map = OdometryMap::scan;
     chain_settings.odometry = odometry;
     chain_settings.initial_pose = truth_.front();
-    chain_settings.seed = master.bits();
+    chain_settings.seeds.resize(params_.scans);  // the sampler seeds this kind has always used
+    for (auto& seed : chain_settings.seeds) seed = master.bits();
     const PreloadedDataset scans(*dataset_, params_.first_scan, scans_);
     const OdometryResult chain = run_odometry(scans, chain_settings, params_.first_scan, params_.scans);
     const std::vector<OdometryStep>& steps = chain.steps;  // steps[k − 1]: scan k in scan k − 1's frame

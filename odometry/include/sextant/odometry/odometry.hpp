@@ -59,6 +59,9 @@ struct OdometrySettings {
   /// vehicle's own body moves with the sensor and pulls registrations towards no motion) [m]; 0 keeps all.
   double min_range = 0.0;
   std::uint64_t seed = 1;  ///< per-step sampler seeds derive from it
+  /// Per-scan sampler seeds (index k: the registration of scan first + k, k ≥ 1) instead of the
+  /// ones derived from `seed`; empty = derived. Lets a caller keep its own seed sequence.
+  std::vector<std::uint64_t> seeds;
   /// World ← scan poses used instead of the dataset's odometry (e.g. simulated odometry), indexed
   /// from `first`; empty = the dataset's. Only their increments are used.
   std::vector<Eigen::Isometry3d> odometry;
