@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "matcher_options.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/cloud_io.hpp"
-#include "sextant/core/settings_reader.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/sampler.hpp"
@@ -26,14 +26,10 @@ namespace {
 
 constexpr double kDegPerRad = 180.0 / M_PI;
 
-struct MatchOptions {
+struct MatchOptions : MatcherOptions {
   std::string reference, input;
-  std::string method = "mlndt";
-  std::string preset;  ///< mlndt / fbmlndt settings preset; empty: "default" (mlndt_presets.hpp)
-  std::string solver;  ///< empty: the preset's
-  std::string sampling = "gbs";
   std::string init;  ///< "x,y,z,alpha,beta,gamma" [m, deg]
-  std::string gt, config, out;
+  std::string gt, out;
   std::uint64_t seed = 1;
   bool json = false;
 };
@@ -96,32 +92,6 @@ Eigen::Isometry3d read_ground_truth(const std::string& file) {
   return T;
 }
 
-struct MatchConfig {
-  YAML::Node matcher;
-  YAML::Node sampler;
-};
-
-/// The optional --config file: `matcher:` and `sampler:` settings maps.
-MatchConfig read_config(const MatchOptions& o) {
-  MatchConfig config;
-  if (!o.config.empty()) {
-    SettingsReader in(load_yaml_file(o.config), o.config);
-    config.matcher = in.child("matcher");
-    config.sampler = in.child("sampler");
-    in.finish();
-  }
-  if (!config.matcher.IsDefined() || config.matcher.IsNull())
-    config.matcher = YAML::Node(YAML::NodeType::Map);
-  const bool ndt_family = o.method == "mlndt" || o.method == "fbmlndt";
-  if (!o.preset.empty() && !ndt_family)
-    throw InputError("--preset", "", "presets are settings of mlndt and fbmlndt, not of '" + o.method + "'");
-  // The --config file's own `preset:` wins over --preset; its other keys override the preset's.
-  if (ndt_family && config.matcher.IsMap() && !config.matcher["preset"].IsDefined())
-    config.matcher["preset"] = o.preset.empty() ? "default" : o.preset;
-  if (!o.solver.empty()) config.matcher["solver"] = o.solver;
-  return config;
-}
-
 PoseError pose_error(const Eigen::Isometry3d& truth, const Eigen::Isometry3d& estimate) {
   const Eigen::Isometry3d E = inverse(truth) * estimate;
   return {100.0 * translation_norm(E), kDegPerRad * rotation_angle(E)};
@@ -167,11 +137,9 @@ void print_json(const MatchOptions& o, const PairMatch& m, const std::optional<P
 void print_text(const MatchOptions& o, const PairMatch& m, const std::optional<PoseError>& error) {
   const RegistrationResult& r = m.result;
   const Pose6 p = to_pose6(r.T);
-  const bool ndt_family = o.method == "mlndt" || o.method == "fbmlndt";
-  std::cout << std::fixed << std::setprecision(6) << "method:      " << o.method
-            << (ndt_family ? " (preset " + (o.preset.empty() ? std::string("default") : o.preset) + ")" : "")
-            << (o.solver.empty() ? "" : " (solver " + o.solver + ")") << ", sampling " << o.sampling << ": "
-            << r.input_points << " points (" << std::setprecision(1) << 100.0 * m.kept_fraction << "%)\n"
+  std::cout << std::fixed << std::setprecision(6) << "method:      " << describe_matcher(o) << ", sampling "
+            << o.sampling << ": " << r.input_points << " points (" << std::setprecision(1)
+            << 100.0 * m.kept_fraction << "%)\n"
             << std::setprecision(6) << "transform:   (p_reference = T · p_input)\n";
   for (int i = 0; i < 4; ++i) {
     std::cout << "  ";
@@ -188,7 +156,7 @@ void print_text(const MatchOptions& o, const PairMatch& m, const std::optional<P
 }
 
 int run_match(const MatchOptions& o) {
-  const MatchConfig config = read_config(o);
+  const MatcherConfig config = read_matcher_config(o);
   const auto matcher =
       make_matcher(o.method, config.matcher, o.config.empty() ? "matcher settings (--solver)" : o.config);
   const auto sampler =

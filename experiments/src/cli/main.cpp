@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   add_info_command(app, exit_code);
   add_match_command(app, exit_code);
   add_merge_command(app, exit_code);
+  add_odometry_command(app, exit_code);
   add_report_command(app, exit_code);
   add_reproduce_command(app, exit_code);
   add_run_command(app, exit_code);

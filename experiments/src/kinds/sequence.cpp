@@ -1,8 +1,9 @@
 // `sequence` (E7, E9): one run = one method over consecutive scans first_scan … first_scan +
-// scans − 1. Each registration i−1 ← i starts from the odometry increment; the relative poses are
-// chained from the true first pose (dead reckoning, §5.1.3, fig 5.15) or fused with the odometry
-// by Table 3.3's linear KF (§3.4.2, §5.1.3.2). The row holds the trajectories (truth, odometry,
-// estimate, and for the KF the matcher alone and the position covariance) and per-step status.
+// scans − 1. Each registration i−1 ← i starts from the odometry increment (run_odometry of
+// odometry.hpp, the library behind `sextant odometry`); the relative poses are chained from the true first
+// pose (dead reckoning, §5.1.3, fig 5.15) or fused with the odometry by Table 3.3's linear KF (§3.4.2,
+// §5.1.3.2). The row holds the trajectories (truth, odometry, estimate, and for the KF the matcher alone and
+// the position covariance) and per-step status.
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -18,7 +19,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/settings_reader.hpp"
-#include "sextant/matchers/match_pair.hpp"
+#include "sextant/odometry/odometry.hpp"
 #include "sextant/synth/campus.hpp"
 #include "sextant/synth/odometry.hpp"
 
@@ -27,13 +28,27 @@ namespace {
 
 constexpr char kKind[] = "sequence";
 
-/// One registration of the sequence: scan i in the frame of scan i − 1.
-struct Step {
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  Matrix6d H = Matrix6d::Zero();
-  bool converged = false;
-  int iterations = 0;
-  double seconds = 0;
+/// The session's scans, loaded once in prepare(), through the Dataset interface: every run reads
+/// them from memory instead of generating (campus) or reading (folder) them again.
+class PreloadedDataset : public Dataset {
+ public:
+  PreloadedDataset(const Dataset& inner, std::size_t first, const std::vector<PointCloud>& scans)
+      : inner_(inner), first_(first), scans_(scans) {}
+  const DatasetMetadata& metadata() const override { return inner_.metadata(); }
+  PointCloud scan(std::size_t i, ScanLoadReport* report) const override {
+    if (i >= first_ && i - first_ < scans_.size()) return scans_[i - first_];
+    return inner_.scan(i, report);
+  }
+  std::optional<Eigen::Isometry3d> odometry(std::size_t i) const override { return inner_.odometry(i); }
+  std::optional<Eigen::Isometry3d> ground_truth(std::size_t i) const override {
+    return inner_.ground_truth(i);
+  }
+  std::optional<double> stamp(std::size_t i) const override { return inner_.stamp(i); }
+
+ private:
+  const Dataset& inner_;
+  std::size_t first_;
+  const std::vector<PointCloud>& scans_;
 };
 
 /// Table 3.3 takes R = H⁻¹ of a world-frame pose; the matcher's H is over ξ of the relative pose in
@@ -81,27 +96,24 @@ class SequenceSession : public KindSession {
     const RegistrationMethod& method = methods_.at(run.method_index);
     Rng master(run.seed);
     Rng odometry_rng = master.split();
-    std::vector<std::uint64_t> seeds(params_.scans);
-    for (auto& s : seeds) s = master.bits();
     const PoseList odometry = params_.odometry == SequenceOdometry::kDataset
                                   ? odometry_
                                   : synth::simulate_odometry(truth_, odometry_model_, odometry_rng);
 
-    // The registrations do not depend on each other (each starts from the odometry increment).
-    std::vector<Step> steps(params_.scans);
-    tbb::parallel_for(std::size_t{1}, params_.scans, [&](std::size_t k) {
-      const auto matcher = make_matcher(method.matcher, method.settings, "<" + method.name + ">");
-      const auto sampler = make_sampler(method.sampler, method.sampler_settings, "<" + method.name + ">");
-      Rng rng(seeds[k]);
-      const PairMatch m = match_pair(*matcher, *sampler, scans_[k - 1], scans_[k],
-                                     relative(odometry[k - 1], odometry[k]), rng);
-      steps[k] = {m.result.T, m.result.H, m.result.converged, m.result.iterations,
-                  m.result.seconds + m.reference_seconds + m.sampling_seconds};
-    });
-
-    // Dead reckoning by the matcher alone, from the true first pose (fig 5.15).
-    PoseList chained{truth_.front()};
-    for (std::size_t k = 1; k < params_.scans; ++k) chained.push_back(chained.back() * steps[k].T);
+    // Dead reckoning by the matcher alone, from the true first pose (fig 5.15): each registration
+    // starts from the odometry increment, so run_odometry runs them in parallel.
+    OdometrySettings chain_settings;
+    chain_settings.method = {method.matcher, method.settings, method.sampler, method.sampler_settings};
+    chain_settings.guess = OdometryGuess::odometry;
+    chain_settings.map = OdometryMap::scan;
+    chain_settings.odometry = odometry;
+    chain_settings.initial_pose = truth_.front();
+    chain_settings.seeds.resize(params_.scans);  // the sampler seeds this kind has always used
+    for (auto& seed : chain_settings.seeds) seed = master.bits();
+    const PreloadedDataset scans(*dataset_, params_.first_scan, scans_);
+    const OdometryResult chain = run_odometry(scans, chain_settings, params_.first_scan, params_.scans);
+    const std::vector<OdometryStep>& steps = chain.steps;  // steps[k − 1]: scan k in scan k − 1's frame
+    const PoseList& chained = chain.poses;
     PoseList estimate = chained;
     std::vector<double> alarms(params_.scans, 0.0), covariance;
     if (params_.filter == SequenceFilter::kKf) estimate = run_kf(steps, odometry, alarms, covariance);
@@ -115,12 +127,12 @@ class SequenceSession : public KindSession {
     }
     std::vector<double> converged, iterations, seconds;
     double total_seconds = 0, failures = 0;
-    for (std::size_t k = 1; k < params_.scans; ++k) {
-      converged.push_back(steps[k].converged ? 1.0 : 0.0);
-      iterations.push_back(steps[k].iterations);
-      seconds.push_back(steps[k].seconds);
-      total_seconds += steps[k].seconds;
-      failures += steps[k].converged ? 0 : 1;
+    for (const OdometryStep& step : steps) {
+      converged.push_back(step.converged ? 1.0 : 0.0);
+      iterations.push_back(step.iterations);
+      seconds.push_back(step.seconds);
+      total_seconds += step.seconds;
+      failures += step.converged ? 0 : 1;
     }
     row.series["converged"] = std::move(converged);
     row.series["iterations"] = std::move(iterations);
@@ -149,8 +161,8 @@ class SequenceSession : public KindSession {
 
  private:
   /// Table 3.3 over the sequence; alarms[k] = 1 when step k kept the odometry prediction.
-  PoseList run_kf(const std::vector<Step>& steps, const PoseList& odometry, std::vector<double>& alarms,
-                  std::vector<double>& covariance) const {
+  PoseList run_kf(const std::vector<OdometryStep>& steps, const PoseList& odometry,
+                  std::vector<double>& alarms, std::vector<double>& covariance) const {
     const Matrix6d P0 = Matrix6d::Identity() * params_.initial_sigma * params_.initial_sigma;
     ScanMatchingKf3d kf(params_.kf, to_pose6(truth_.front()), P0);
     PoseList estimate{truth_.front()};
@@ -162,9 +174,10 @@ class SequenceSession : public KindSession {
     for (std::size_t k = 1; k < params_.scans; ++k) {
       const Vector6d u = to_pose6(odometry[k]).vector() - to_pose6(odometry[k - 1]).vector();  // u(k)
       const Eigen::Isometry3d previous = estimate.back();
-      const Pose6 z = chain_pose(to_pose6(previous), steps[k].T);  // the matcher's pose
+      const OdometryStep& step = steps[k - 1];
+      const Pose6 z = chain_pose(to_pose6(previous), step.relative);  // the matcher's pose
       const ScanMatchingKfStep s = kf.step(
-          u, z, world_hessian(steps[k].H, previous, params_.measurement_noise_scale), steps[k].converged);
+          u, z, world_hessian(step.hessian, previous, params_.measurement_noise_scale), step.converged);
       alarms[k] = s.alarm ? 1.0 : 0.0;
       estimate.push_back(to_isometry(s.pose));
       push_covariance(s.P);

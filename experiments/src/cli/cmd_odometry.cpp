@@ -1,0 +1,227 @@
+// `sextant odometry <dataset> [--method mlndt] [--preset …] [--guess odometry|constant_velocity|identity]
+// [--map scan|local_map] [--first N] [--scans N] --out DIR`: chains registrations over a sequence
+// (§5.1.3's dead reckoning by a matcher) of a uos folder, a KITTI odometry sequence folder or the
+// built-in campus (`campus`), writes the trajectory as TUM and KITTI files, steps.csv, metrics.json
+// and provenance.json, and prints ATE / RPE / KITTI drift against the dataset's ground truth.
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include <oneapi/tbb/global_control.h>
+
+#include "commands.hpp"
+#include "matcher_options.hpp"
+#include "odometry_output.hpp"
+#include "sextant/core/atomic_file.hpp"
+#include "sextant/core/error.hpp"
+#include "sextant/core/progress.hpp"
+#include "sextant/experiments/json.hpp"
+#include "sextant/experiments/provenance.hpp"
+#include "sextant/matchers/matcher.hpp"
+#include "sextant/matchers/sampler.hpp"
+#include "sextant/odometry/odometry.hpp"
+#include "sextant/synth/campus.hpp"
+
+namespace sextant::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct OdometryOptions : MatcherOptions {
+  std::string dataset, out;
+  std::string guess;  ///< empty: odometry when the dataset has it, else constant_velocity
+  std::string map = "scan";
+  std::size_t first = 0;
+  std::size_t scans = 0;  ///< 0: to the end of the dataset
+  std::size_t local_map_scans = 5;
+  double min_range = 0.0;
+  std::uint64_t seed = 1;
+  std::uint64_t campus_seed = 1;
+  int jobs = 0;
+  bool no_progress = false;
+};
+
+std::unique_ptr<Dataset> open_cli_dataset(const OdometryOptions& o) {
+  if (o.dataset == "campus" || o.dataset == "synthetic")
+    return std::make_unique<synth::CampusDataset>(
+        synth::generate_campus(synth::CampusSettings{}, o.campus_seed));
+  const fs::path folder(o.dataset);
+  if (!fs::exists(folder))
+    throw InputError(o.dataset, "",
+                     "no such dataset folder (expected a uos folder, a KITTI sequence folder, or 'campus')");
+  if (!fs::is_directory(folder))
+    throw InputError(o.dataset, "", "is a file, expected a dataset folder (uos or KITTI) or 'campus'");
+  return open_dataset(folder);
+}
+
+std::string yes_no(bool b) {
+  return b ? "yes" : "no";
+}
+
+std::string provenance_json(const OdometryOptions& o, const MatcherConfig& config,
+                            const DatasetMetadata& meta, const OdometrySettings& s, std::size_t scans,
+                            const std::string& start, double seconds) {
+  const GitState git = current_git_state();
+  std::ostringstream out;
+  out << "{\n  \"command\": \"odometry\",\n  \"dataset\": {\"argument\": " << json_string(o.dataset)
+      << ", \"name\": " << json_string(meta.name) << ", \"format\": " << json_string(meta.format)
+      << ", \"path\": " << json_string(meta.path.string()) << ", \"scans\": " << meta.scan_count
+      << ", \"campus_seed\": " << o.campus_seed << "},\n  \"first\": " << o.first
+      << ",\n  \"scans\": " << scans << ",\n  \"method\": " << json_string(o.method)
+      << ",\n  \"preset\": " << json_string(o.preset) << ",\n  \"solver\": " << json_string(o.solver)
+      << ",\n  \"sampling\": " << json_string(o.sampling) << ",\n  \"config_file\": " << json_string(o.config)
+      << ",\n  \"matcher_settings\": " << to_json(config.matcher) << ",\n  \"sampler_settings\": "
+      << (config.sampler.IsDefined() && !config.sampler.IsNull() ? to_json(config.sampler) : "null")
+      << ",\n  \"guess\": " << json_string(to_string(s.guess))
+      << ",\n  \"map\": " << json_string(to_string(s.map))
+      << ",\n  \"local_map_scans\": " << s.local_map_scans
+      << ",\n  \"min_range\": " << json_number(s.min_range) << ",\n  \"seed\": " << s.seed
+      << ",\n  \"jobs\": " << o.jobs << ",\n  \"git\": {\"sha\": " << json_string(git.sha)
+      << ", \"dirty\": " << (git.dirty ? "true" : "false") << ", \"source\": " << json_string(git.source)
+      << "},\n  \"libraries\": " << library_versions_json() << ",\n  \"host\": " << json_string(host_name())
+      << ",\n  \"start\": " << json_string(start) << ",\n  \"end\": " << json_string(iso_time_now())
+      << ",\n  \"seconds\": " << json_number(seconds) << "\n}\n";
+  return out.str();
+}
+
+int run_odometry_command(const OdometryOptions& o) {
+  const std::string start = iso_time_now();
+  // Arguments first (cheap), then the dataset.
+  OdometrySettings s;
+  s.map = parse_odometry_map(o.map, "--map");
+  std::optional<OdometryGuess> guess;
+  if (!o.guess.empty()) guess = parse_odometry_guess(o.guess, "--guess");
+  const MatcherConfig config = read_matcher_config(o);
+  const std::string where = o.config.empty() ? "matcher settings (--method, --preset, --solver)" : o.config;
+  (void)make_matcher(o.method, config.matcher, where);  // unknown names and bad settings stop here
+  (void)make_sampler(o.sampling, config.sampler,
+                     o.config.empty() ? "sampler settings (--sampling)" : o.config);
+  s.method = {o.method, config.matcher, o.sampling, config.sampler};
+  s.local_map_scans = o.local_map_scans;
+  s.min_range = o.min_range;
+  s.seed = o.seed;
+  if (const std::string why = s.problem(); !why.empty()) throw InputError("arguments", "", why);
+  std::optional<tbb::global_control> threads;
+  if (o.jobs > 0)
+    threads.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(o.jobs));
+
+  const std::unique_ptr<Dataset> dataset = open_cli_dataset(o);
+  const DatasetMetadata& meta = dataset->metadata();
+  if (o.first >= dataset->size())
+    throw InputError(
+        "--first", "",
+        std::to_string(o.first) + " is past the dataset's " + std::to_string(dataset->size()) + " scans");
+  const std::size_t scans = o.scans == 0 ? dataset->size() - o.first : o.scans;
+  if (scans > dataset->size() - o.first)
+    throw InputError("--scans", "",
+                     "scans " + std::to_string(o.first) + "–" + std::to_string(o.first + scans - 1) +
+                         " go past the dataset's " + std::to_string(dataset->size()) + " scans");
+  if (guess == OdometryGuess::odometry && !meta.has_odometry)
+    throw InputError(o.dataset, "",
+                     "this " + meta.format +
+                         " dataset has no odometry, which --guess odometry needs; use --guess "
+                         "constant_velocity (or identity)");
+  s.guess = guess.value_or(meta.has_odometry ? OdometryGuess::odometry : OdometryGuess::constant_velocity);
+
+  std::cout << "dataset:  " << (meta.path.empty() ? meta.name : meta.path.string()) << " (" << meta.format
+            << ", " << dataset->size() << " scans; odometry " << yes_no(meta.has_odometry)
+            << ", ground truth " << yes_no(meta.has_ground_truth) << "), scans " << o.first << "–"
+            << o.first + scans - 1 << "\n"
+            << "method:   " << describe_matcher(o) << ", sampling " << o.sampling << ", guess "
+            << to_string(s.guess) << (o.guess.empty() ? " (default for this dataset)" : "") << ", map "
+            << to_string(s.map)
+            << (s.map == OdometryMap::local_map ? " of " + std::to_string(s.local_map_scans) + " scans" : "")
+            << "\n"
+            << std::flush;
+
+  const auto t0 = std::chrono::steady_clock::now();
+  std::optional<Progress> progress;  // drawn only on a terminal
+  if (o.no_progress) {
+    progress.emplace(scans - 1, "odometry", nullptr);
+  } else {
+    progress.emplace(scans - 1, "odometry");
+  }
+  const OdometryResult result =
+      run_odometry(*dataset, s, o.first, scans, [&](std::size_t, std::size_t) { progress->tick(); });
+  progress->finish();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  std::size_t not_converged = 0;
+  for (const auto& step : result.steps) not_converged += step.converged ? 0 : 1;
+  const auto truth = ground_truth_of(*dataset, o.first, scans);
+  std::optional<TrajectoryAccuracy> estimate_accuracy, odometry_accuracy;
+  if (truth && scans >= 2) {
+    estimate_accuracy = trajectory_accuracy(result.poses, *truth);
+    if (const auto odometry = odometry_of(*dataset, o.first, scans))
+      odometry_accuracy = trajectory_accuracy(*odometry, *truth);
+  }
+
+  const fs::path out(o.out);
+  write_trajectories(out, *dataset, o.first, result.poses, truth);
+  write_steps_csv(out / "steps.csv", o.first, result, truth);
+  write_metrics_json(out / "metrics.json", estimate_accuracy, odometry_accuracy, scans, not_converged,
+                     seconds);
+  write_file_atomically(out / "provenance.json", provenance_json(o, config, meta, s, scans, start, seconds));
+
+  std::cout << std::fixed << std::setprecision(1) << "registered " << result.steps.size() << " pairs in "
+            << seconds << " s (" << std::setprecision(3)
+            << (result.steps.empty() ? 0.0 : seconds / static_cast<double>(result.steps.size()))
+            << " s per pair), " << not_converged << " not converged\n";
+  if (estimate_accuracy) {
+    std::cout << "estimate: " << accuracy_line(*estimate_accuracy) << "\n";
+    if (odometry_accuracy)
+      std::cout << "odometry: " << accuracy_line(*odometry_accuracy) << " (the dataset's)\n";
+  } else {
+    std::cout << "no ground truth for these scans: no ATE, RPE or drift\n";
+  }
+  std::cout << "wrote:    " << (out / "trajectory.tum").string() << ", trajectory.kitti.txt"
+            << (truth ? ", groundtruth.tum, groundtruth.kitti.txt" : "")
+            << ", steps.csv, metrics.json, provenance.json\n";
+  return 0;
+}
+
+}  // namespace
+
+void add_odometry_command(CLI::App& app, int& exit_code) {
+  auto* cmd = app.add_subcommand(
+      "odometry",
+      "Chain registrations over a sequence (uos folder, KITTI sequence folder or 'campus'), "
+      "write the trajectory (TUM, KITTI) and score it against the ground truth");
+  auto o = std::make_shared<OdometryOptions>();
+  cmd->add_option("dataset", o->dataset,
+                  "uos folder (scanNNN.3d + .pose/.frames), KITTI sequence folder (velodyne/, calib.txt, "
+                  "poses), or 'campus' (the built-in synthetic campus)")
+      ->required();
+  cmd->add_option("--out", o->out, "Output folder")->required();
+  cmd->add_option("--method", o->method, "Matcher (mlndt, fbmlndt, ndt, icp_p2p, icp_p2l, pcl_ndt, ...)")
+      ->capture_default_str();
+  cmd->add_option("--preset", o->preset, "mlndt/fbmlndt settings: default, thesis, outdoor");
+  cmd->add_option("--solver", o->solver, "Solver for the NDT family (newton, lm, ceres)");
+  cmd->add_option("--sampling", o->sampling, "Input sampler (all, regular, random, gbs, ...)")
+      ->capture_default_str();
+  cmd->add_option("--config", o->config, "YAML file with optional 'matcher:' and 'sampler:' settings maps");
+  cmd->add_option("--guess", o->guess,
+                  "Initial guess: odometry, constant_velocity, identity (default: odometry when the dataset "
+                  "has it, else constant_velocity)");
+  cmd->add_option("--map", o->map, "Register against the previous scan or a local map: scan, local_map")
+      ->capture_default_str();
+  cmd->add_option("--local-map-scans", o->local_map_scans, "Scans in the local map")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--min-range", o->min_range, "Drop points closer than this to the sensor [m] (self-hits)")
+      ->capture_default_str();
+  cmd->add_option("--first", o->first, "First scan index")->capture_default_str();
+  cmd->add_option("--scans", o->scans, "Number of scans (0: to the end)")->capture_default_str();
+  cmd->add_option("--seed", o->seed, "Seed of the samplers' random choices")->capture_default_str();
+  cmd->add_option("--campus-seed", o->campus_seed, "Seed of the built-in campus")->capture_default_str();
+  cmd->add_option("--jobs,-j", o->jobs, "Worker threads (0 = all)")->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--no-progress", o->no_progress, "No progress bar");
+  cmd->callback([&exit_code, o] { exit_code = guarded([o] { return run_odometry_command(*o); }); });
+}
+
+}  // namespace sextant::cli

@@ -1,0 +1,30 @@
+#pragma once
+// The matcher choice shared by `sextant match` and `sextant odometry`: --method, --preset,
+// --solver, --sampling and an optional --config YAML file with `matcher:` and `sampler:` maps.
+#include <string>
+
+#include <yaml-cpp/yaml.h>
+
+namespace sextant::cli {
+
+struct MatcherOptions {
+  std::string method = "mlndt";
+  std::string preset;  ///< mlndt / fbmlndt settings preset; empty: "default" (mlndt_presets.hpp)
+  std::string solver;  ///< empty: the preset's
+  std::string sampling = "gbs";
+  std::string config;  ///< YAML file with optional `matcher:` and `sampler:` maps
+};
+
+struct MatcherConfig {
+  YAML::Node matcher;  ///< a map (mlndt/fbmlndt: with `preset:`)
+  YAML::Node sampler;  ///< may be null
+};
+
+/// Reads --config, applies --preset (the file's own `preset:` wins; its other keys override the
+/// preset's) and --solver. InputError for --preset on a matcher without presets.
+MatcherConfig read_matcher_config(const MatcherOptions& o);
+
+/// "mlndt (preset default)", "icp_p2l (solver lm)", …
+std::string describe_matcher(const MatcherOptions& o);
+
+}  // namespace sextant::cli

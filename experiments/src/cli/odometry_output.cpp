@@ -1,0 +1,156 @@
+#include "odometry_output.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "sextant/core/atomic_file.hpp"
+#include "sextant/core/io/kitti.hpp"
+#include "sextant/core/io/trajectory_io.hpp"
+#include "sextant/eval/trajectory_metrics.hpp"
+#include "sextant/experiments/json.hpp"
+
+namespace sextant::cli {
+namespace {
+
+constexpr double kDegPerRad = 180.0 / M_PI;
+
+Trajectory stamped(const Dataset& dataset, std::size_t first, const std::vector<Eigen::Isometry3d>& poses) {
+  Trajectory t;
+  for (std::size_t i = 0; i < poses.size(); ++i)
+    t.push_back({dataset.stamp(first + i).value_or(static_cast<double>(first + i)), poses[i]});
+  return t;
+}
+
+/// KITTI datasets: the devkit's camera-0 frame, Tr · T · Tr⁻¹ (the inverse of kitti_velodyne_poses).
+Trajectory kitti_frame(const Dataset& dataset, Trajectory t) {
+  if (dataset.metadata().format != "kitti") return t;
+  const auto calib = dataset.metadata().path / "calib.txt";
+  if (!std::filesystem::exists(calib)) return t;
+  const Eigen::Isometry3d Tr = read_kitti_calib_tr(calib);
+  for (auto& p : t) p.pose = Tr * p.pose * Tr.inverse();
+  return t;
+}
+
+std::string accuracy_json(const TrajectoryAccuracy& a) {
+  std::ostringstream out;
+  out << "{\"ate_m\": " << json_number(a.ate_translation)
+      << ", \"ate_deg\": " << json_number(a.ate_rotation * kDegPerRad)
+      << ", \"rpe_m\": " << json_number(a.rpe_translation)
+      << ", \"rpe_deg\": " << json_number(a.rpe_rotation * kDegPerRad)
+      << ", \"drift_segments\": " << a.drift_segments
+      << ", \"drift_percent\": " << (a.drift_segments ? json_number(a.drift_percent) : "null")
+      << ", \"drift_deg_per_100m\": " << (a.drift_segments ? json_number(a.drift_deg_per_100m) : "null")
+      << "}";
+  return out.str();
+}
+
+std::optional<std::vector<Eigen::Isometry3d>> poses_of_dataset(
+    std::size_t first, std::size_t count,
+    const std::function<std::optional<Eigen::Isometry3d>(std::size_t)>& pose) {
+  std::vector<Eigen::Isometry3d> poses;
+  for (std::size_t i = first; i < first + count; ++i) {
+    const auto p = pose(i);
+    if (!p) return std::nullopt;
+    poses.push_back(*p);
+  }
+  return poses;
+}
+
+}  // namespace
+
+std::optional<std::vector<Eigen::Isometry3d>> ground_truth_of(const Dataset& dataset, std::size_t first,
+                                                              std::size_t count) {
+  return poses_of_dataset(first, count, [&](std::size_t i) { return dataset.ground_truth(i); });
+}
+
+std::optional<std::vector<Eigen::Isometry3d>> odometry_of(const Dataset& dataset, std::size_t first,
+                                                          std::size_t count) {
+  return poses_of_dataset(first, count, [&](std::size_t i) { return dataset.odometry(i); });
+}
+
+TrajectoryAccuracy trajectory_accuracy(const std::vector<Eigen::Isometry3d>& estimate,
+                                       const std::vector<Eigen::Isometry3d>& truth) {
+  TrajectoryAccuracy a;
+  const AteResult ate = absolute_trajectory_error(estimate, truth, Alignment::se3);
+  a.ate_translation = ate.translation.rms;
+  a.ate_rotation = ate.rotation.rms;
+  const RpeResult rpe = relative_pose_error(estimate, truth);  // consecutive scans
+  a.rpe_translation = rpe.translation.rms;
+  a.rpe_rotation = rpe.rotation.rms;
+  const KittiDriftResult drift = kitti_drift(estimate, truth);
+  if (drift.status.ok && drift.segments > 0) {
+    a.drift_segments = drift.segments;
+    a.drift_percent = 100.0 * drift.translation;
+    a.drift_deg_per_100m = 100.0 * kDegPerRad * drift.rotation;
+  }
+  return a;
+}
+
+std::string accuracy_line(const TrajectoryAccuracy& a) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(3) << "ATE " << a.ate_translation << " m / " << std::setprecision(2)
+      << a.ate_rotation * kDegPerRad << "°, RPE " << std::setprecision(3) << a.rpe_translation << " m / "
+      << std::setprecision(2) << a.rpe_rotation * kDegPerRad << "° per scan, drift ";
+  if (a.drift_segments == 0) {
+    out << "n/a (path shorter than 100 m)";
+  } else {
+    out << a.drift_percent << " % / " << std::setprecision(3) << a.drift_deg_per_100m << "°/100 m ("
+        << a.drift_segments << " segments)";
+  }
+  return out.str();
+}
+
+void write_trajectories(const std::filesystem::path& out, const Dataset& dataset, std::size_t first,
+                        const std::vector<Eigen::Isometry3d>& poses,
+                        const std::optional<std::vector<Eigen::Isometry3d>>& truth) {
+  const Trajectory estimate = stamped(dataset, first, poses);
+  write_tum_trajectory(out / "trajectory.tum", estimate);
+  write_kitti_trajectory(out / "trajectory.kitti.txt", kitti_frame(dataset, estimate));
+  if (!truth) return;
+  const Trajectory reference = stamped(dataset, first, *truth);
+  write_tum_trajectory(out / "groundtruth.tum", reference);
+  write_kitti_trajectory(out / "groundtruth.kitti.txt", kitti_frame(dataset, reference));
+}
+
+void write_steps_csv(const std::filesystem::path& file, std::size_t first, const OdometryResult& result,
+                     const std::optional<std::vector<Eigen::Isometry3d>>& truth) {
+  std::ostringstream out;
+  out << "step,from_scan,to_scan,x_m,y_m,z_m,roll_deg,pitch_deg,yaw_deg,guess_x_m,guess_y_m,guess_yaw_deg,"
+         "converged,iterations,score,matched_points,reference_points,seconds,error_m,error_deg,status,"
+         "fallback\n";
+  out << std::setprecision(9);
+  for (std::size_t i = 0; i < result.steps.size(); ++i) {
+    const OdometryStep& s = result.steps[i];
+    const Pose6 p = to_pose6(s.relative);
+    const Pose6 g = to_pose6(s.guess);
+    out << i << "," << first + i << "," << first + i + 1 << "," << p.x << "," << p.y << "," << p.z << ","
+        << p.alpha * kDegPerRad << "," << p.beta * kDegPerRad << "," << p.gamma * kDegPerRad << "," << g.x
+        << "," << g.y << "," << g.gamma * kDegPerRad << "," << (s.converged ? 1 : 0) << "," << s.iterations
+        << "," << s.score << "," << s.matched_points << "," << s.reference_points << "," << s.seconds << ",";
+    if (truth) {
+      const Eigen::Isometry3d E = relative(relative((*truth)[i], (*truth)[i + 1]), s.relative);
+      out << translation_norm(E) << "," << rotation_angle(E) * kDegPerRad;
+    } else {
+      out << ",";
+    }
+    std::string fallback = s.fallback;  // CSV: no commas or quotes inside the free text
+    for (char& c : fallback)
+      if (c == ',' || c == '"') c = ';';
+    out << "," << s.status << "," << fallback << "\n";
+  }
+  write_file_atomically(file, out.str());
+}
+
+void write_metrics_json(const std::filesystem::path& file, const std::optional<TrajectoryAccuracy>& estimate,
+                        const std::optional<TrajectoryAccuracy>& odometry, std::size_t scans,
+                        std::size_t not_converged, double seconds) {
+  std::ostringstream out;
+  out << "{\"scans\": " << scans << ", \"not_converged\": " << not_converged
+      << ", \"seconds\": " << json_number(seconds)
+      << ", \"estimate\": " << (estimate ? accuracy_json(*estimate) : "null")
+      << ", \"odometry\": " << (odometry ? accuracy_json(*odometry) : "null") << "}\n";
+  write_file_atomically(file, out.str());
+}
+
+}  // namespace sextant::cli

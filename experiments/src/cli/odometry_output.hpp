@@ -1,0 +1,56 @@
+#pragma once
+// What `sextant odometry` writes and prints: the trajectory as TUM and KITTI files, per-step
+// steps.csv, metrics.json and provenance.json (all written atomically), and the accuracy against
+// the dataset's ground truth (ATE after SE(3) Umeyama alignment, RPE per step, KITTI drift).
+#include <filesystem>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "sextant/core/dataset.hpp"
+#include "sextant/odometry/odometry.hpp"
+
+namespace sextant::cli {
+
+/// Accuracy of a trajectory against the ground truth (translations in m, rotations in rad).
+struct TrajectoryAccuracy {
+  double ate_translation = 0, ate_rotation = 0;  ///< RMS after SE(3) Umeyama alignment
+  double rpe_translation = 0, rpe_rotation = 0;  ///< RMS over consecutive scans
+  std::size_t drift_segments = 0;                ///< KITTI segments (0: path shorter than 100 m)
+  double drift_percent = 0, drift_deg_per_100m = 0;
+};
+
+/// The poses of scans first … first + count − 1 with the dataset's ground truth, or nothing when
+/// any of them lacks it.
+std::optional<std::vector<Eigen::Isometry3d>> ground_truth_of(const Dataset& dataset, std::size_t first,
+                                                              std::size_t count);
+/// Same for the dataset's odometry.
+std::optional<std::vector<Eigen::Isometry3d>> odometry_of(const Dataset& dataset, std::size_t first,
+                                                          std::size_t count);
+
+TrajectoryAccuracy trajectory_accuracy(const std::vector<Eigen::Isometry3d>& estimate,
+                                       const std::vector<Eigen::Isometry3d>& truth);
+
+/// "ATE 0.123 m / 0.45°, RPE 0.012 m / 0.10° per scan, drift 1.23 % / 0.45°/100 m".
+std::string accuracy_line(const TrajectoryAccuracy& a);
+
+/// Writes trajectory.tum and trajectory.kitti.txt (and groundtruth.* when `truth` is given) into
+/// `out`. Stamps: the dataset's clock, else the scan index. For a KITTI dataset the KITTI files are
+/// in the devkit's camera-0 frame (Tr · T · Tr⁻¹, calib.txt), the TUM files in the Velodyne frame.
+void write_trajectories(const std::filesystem::path& out, const Dataset& dataset, std::size_t first,
+                        const std::vector<Eigen::Isometry3d>& poses,
+                        const std::optional<std::vector<Eigen::Isometry3d>>& truth);
+
+/// steps.csv: one line per registration (relative pose, guess, convergence, time, error vs truth).
+void write_steps_csv(const std::filesystem::path& file, std::size_t first, const OdometryResult& result,
+                     const std::optional<std::vector<Eigen::Isometry3d>>& truth);
+
+/// metrics.json: the estimate's accuracy and, when the dataset has odometry, the odometry's.
+void write_metrics_json(const std::filesystem::path& file, const std::optional<TrajectoryAccuracy>& estimate,
+                        const std::optional<TrajectoryAccuracy>& odometry, std::size_t scans,
+                        std::size_t not_converged, double seconds);
+
+}  // namespace sextant::cli
