@@ -1,0 +1,111 @@
+#pragma once
+// Scan-matching odometry: registrations chained over consecutive scans of a dataset (§5.1.3's
+// dead reckoning by a matcher, and the relative poses a pose graph is built from, §7.2):
+//
+//   OdometrySettings s;                       // ML-NDT on a GBS sample (s.method)
+//   s.guess = OdometryGuess::constant_velocity;
+//   const OdometryResult r = run_odometry(dataset, s, /*first=*/0, /*count=*/100);
+//   r.poses[i];                                // world ← scan first + i
+//   r.steps[i].relative;                       // scan first + i + 1 in the frame of scan first + i
+//   r.steps[i].hessian;                        // information of that relative pose, R = H⁻¹ (eq. 3.50)
+//
+// poses[i + 1] = poses[i] · steps[i].relative. Each registration i ← i + 1 starts from the guess
+// mode's relative pose; with the dataset's odometry and scan-to-scan matching the registrations do
+// not depend on each other and run in parallel (identical results for any thread count).
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+#include <Eigen/Geometry>
+
+#include "sextant/core/dataset.hpp"
+#include "sextant/core/pose.hpp"
+
+namespace sextant {
+
+/// Where each registration starts from.
+enum class OdometryGuess {
+  odometry,           ///< the odometry increment (dataset odometry, or OdometrySettings::odometry)
+  constant_velocity,  ///< the previous estimated relative motion (identity for the first step)
+  identity,           ///< no motion
+};
+
+/// What scan i is registered against.
+enum class OdometryMap {
+  scan,       ///< scan i − 1
+  local_map,  ///< the last `local_map_scans` scans, in the frame of scan i − 1 (voxel-filtered when large)
+};
+
+/// The matcher and sampler of a registration, by registry name (matcher.hpp, sampler.hpp).
+struct OdometryMethod {
+  std::string matcher = "mlndt";
+  YAML::Node settings;  ///< matcher settings (may say `preset:`, mlndt_presets.hpp); null = defaults
+  std::string sampler = "gbs";
+  YAML::Node sampler_settings;  ///< null = defaults
+};
+
+struct OdometrySettings {
+  OdometryMethod method;
+  OdometryGuess guess = OdometryGuess::odometry;
+  OdometryMap map = OdometryMap::scan;
+  std::size_t local_map_scans = 5;            ///< local_map: scans in the map (k ≥ 1)
+  std::size_t local_map_max_points = 150000;  ///< local_map: voxel-filter the map above this size
+  double local_map_voxel = 0.2;               ///< local_map: voxel edge [m] (centroid per voxel)
+  /// Points closer than this to the sensor are dropped from every scan before matching (the
+  /// vehicle's own body moves with the sensor and pulls registrations towards no motion) [m]; 0 keeps all.
+  double min_range = 0.0;
+  std::uint64_t seed = 1;  ///< per-step sampler seeds derive from it
+  /// World ← scan poses used instead of the dataset's odometry (e.g. simulated odometry), indexed
+  /// from `first`; empty = the dataset's. Only their increments are used.
+  std::vector<Eigen::Isometry3d> odometry;
+  /// Pose of scan `first`; unset = its ground truth, else its odometry, else identity.
+  std::optional<Eigen::Isometry3d> initial_pose;
+  /// Guess odometry + map scan: run the independent registrations on all cores.
+  bool parallel = true;
+
+  /// Empty when valid, else what is wrong.
+  std::string problem() const;
+};
+
+/// One registration: scan i in the frame of scan i − 1.
+struct OdometryStep {
+  Eigen::Isometry3d relative = Eigen::Isometry3d::Identity();  ///< p_{i−1} = relative · p_i
+  Eigen::Isometry3d guess = Eigen::Isometry3d::Identity();     ///< where the registration started
+  Matrix6d hessian = Matrix6d::Zero();  ///< the matcher's Hessian over ξ of `relative`; R = H⁻¹ (eq. 3.50)
+  bool converged = false;
+  int iterations = 0;
+  double score = 0.0;
+  std::size_t matched_points = 0;
+  std::size_t reference_points = 0;  ///< points of the scan or local map registered against
+  double seconds = 0.0;              ///< registration + reference model + sampling [s]
+  std::string status;                ///< termination reason (registration_result.hpp)
+  std::string fallback;              ///< empty, or what the matcher fell back to and why
+};
+
+struct OdometryResult {
+  std::vector<Eigen::Isometry3d> poses;  ///< world ← scan first + i, i = 0 … count − 1
+  std::vector<OdometryStep> steps;  ///< count − 1 registrations; steps[i] links poses[i] and poses[i + 1]
+};
+
+/// Called after each finished registration with (done, total); never concurrently.
+using OdometryProgress = std::function<void(std::size_t done, std::size_t total)>;
+
+/// Chains count − 1 registrations over scans first … first + count − 1. Throws InputError when the
+/// range leaves the dataset, count < 1, the settings are invalid or the guess mode needs odometry the
+/// dataset lacks (the message suggests constant_velocity). A registration that fails is kept as the
+/// matcher returned it (converged = false, status says why) and the chain goes on.
+OdometryResult run_odometry(const Dataset& dataset, const OdometrySettings& settings, std::size_t first,
+                            std::size_t count, const OdometryProgress& progress = {});
+
+/// "odometry" | "constant_velocity" | "identity"; InputError(`what`) naming the choices otherwise.
+OdometryGuess parse_odometry_guess(const std::string& text, const std::string& what = "guess");
+std::string to_string(OdometryGuess guess);
+/// "scan" | "local_map"; InputError(`what`) naming the choices otherwise.
+OdometryMap parse_odometry_map(const std::string& text, const std::string& what = "map");
+std::string to_string(OdometryMap map);
+
+}  // namespace sextant

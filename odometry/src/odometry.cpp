@@ -1,0 +1,237 @@
+// Chained registrations over a sequence (§5.1.3: dead reckoning by a matcher). Each step
+// registers scan i (sampled) against scan i − 1 or the local map in scan i − 1's frame, from the
+// guess mode's start, and chains the result: pose_i = pose_{i−1} · relative_i.
+#include <algorithm>
+#include <deque>
+#include <memory>
+#include <mutex>
+
+#include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
+
+#include "sextant/core/error.hpp"
+#include "sextant/core/rng.hpp"
+#include "sextant/matchers/match_pair.hpp"
+#include "sextant/odometry/local_map.hpp"
+#include "sextant/odometry/odometry.hpp"
+
+namespace sextant {
+namespace {
+
+/// Scans loaded and registered together on the parallel path (bounds the memory held).
+constexpr std::size_t kChunk = 16;
+
+std::string dataset_label(const Dataset& dataset) {
+  const DatasetMetadata& m = dataset.metadata();
+  if (!m.path.empty()) return m.path.string();
+  return m.name.empty() ? std::string("<dataset>") : m.name;
+}
+
+/// Scan i without the points closer than `min_range` to the sensor.
+PointCloud load_scan(const Dataset& dataset, std::size_t i, double min_range) {
+  PointCloud scan = dataset.scan(i);
+  if (!(min_range > 0.0)) return scan;
+  const float squared = static_cast<float>(min_range * min_range);
+  std::vector<std::size_t> keep;
+  keep.reserve(scan.size());
+  for (std::size_t j = 0; j < scan.size(); ++j)
+    if (scan[j].squaredNorm() >= squared) keep.push_back(j);
+  return scan.subset(keep);
+}
+
+/// The odometry poses the guess mode needs (empty unless guess = odometry).
+std::vector<Eigen::Isometry3d> odometry_poses(const Dataset& dataset, const OdometrySettings& s,
+                                              std::size_t first, std::size_t count) {
+  if (s.guess != OdometryGuess::odometry) return {};
+  if (!s.odometry.empty()) {
+    if (s.odometry.size() < count)
+      throw InputError("odometry settings", "",
+                       "the given odometry has " + std::to_string(s.odometry.size()) +
+                           " poses, fewer than the " + std::to_string(count) + " scans");
+    return {s.odometry.begin(), s.odometry.begin() + static_cast<std::ptrdiff_t>(count)};
+  }
+  std::vector<Eigen::Isometry3d> poses;
+  for (std::size_t k = 0; k < count; ++k) {
+    const auto pose = dataset.odometry(first + k);
+    if (!pose)
+      throw InputError(dataset_label(dataset), "",
+                       "scan " + std::to_string(first + k) + " has no odometry (this " +
+                           dataset.metadata().format +
+                           " dataset has none): the odometry guess needs it; use the constant_velocity "
+                           "guess (or identity) instead");
+    poses.push_back(*pose);
+  }
+  return poses;
+}
+
+Eigen::Isometry3d start_pose(const Dataset& dataset, const OdometrySettings& s, std::size_t first) {
+  if (s.initial_pose) return *s.initial_pose;
+  if (const auto truth = dataset.ground_truth(first)) return *truth;
+  if (const auto odometry = dataset.odometry(first)) return *odometry;
+  return Eigen::Isometry3d::Identity();
+}
+
+/// The matcher and sampler of one worker.
+struct Worker {
+  std::unique_ptr<Matcher> matcher;
+  std::unique_ptr<Sampler> sampler;
+
+  explicit Worker(const OdometryMethod& m)
+      : matcher(make_matcher(m.matcher, m.settings, "<odometry matcher>")),
+        sampler(make_sampler(m.sampler, m.sampler_settings, "<odometry sampler>")) {}
+
+  OdometryStep register_scan(const PointCloud& reference, const PointCloud& input,
+                             const Eigen::Isometry3d& guess, std::uint64_t seed) const {
+    Rng rng(seed);
+    const PairMatch m = match_pair(*matcher, *sampler, reference, input, guess, rng);
+    OdometryStep step;
+    step.relative = m.result.T;
+    step.guess = guess;
+    step.hessian = m.result.H;
+    step.converged = m.result.converged;
+    step.iterations = m.result.iterations;
+    step.score = m.result.score;
+    step.matched_points = m.result.matched_points;
+    step.reference_points = reference.size();
+    step.seconds = m.result.seconds + m.reference_seconds + m.sampling_seconds;
+    step.status = to_string(m.result.why);
+    step.fallback = m.result.fallback;
+    if (!step.relative.matrix().allFinite()) {  // never chain NaN: keep the guess, say so
+      step.relative = guess;
+      step.converged = false;
+      step.status += " (non-finite result replaced by the guess)";
+    }
+    return step;
+  }
+};
+
+/// Calls the progress callback one finished step at a time.
+class StepCounter {
+ public:
+  StepCounter(const OdometryProgress& progress, std::size_t total) : progress_(progress), total_(total) {}
+  void tick() {
+    if (!progress_) return;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    progress_(++done_, total_);
+  }
+
+ private:
+  const OdometryProgress& progress_;
+  std::size_t total_;
+  std::size_t done_ = 0;
+  std::mutex mutex_;
+};
+
+/// Guess odometry + map scan: the registrations are independent; scans are loaded and registered
+/// kChunk at a time, in parallel. Per-step seeds make the result independent of the thread count.
+std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometrySettings& s, std::size_t first,
+                                         std::size_t count, const std::vector<Eigen::Isometry3d>& odometry,
+                                         const std::vector<std::uint64_t>& seeds, StepCounter& counter) {
+  std::vector<OdometryStep> steps(count - 1);
+  PointCloud previous = load_scan(dataset, first, s.min_range);
+  for (std::size_t begin = 1; begin < count; begin += kChunk) {
+    const std::size_t end = std::min(count, begin + kChunk);
+    std::vector<PointCloud> chunk(end - begin);
+    tbb::parallel_for(begin, end,
+                      [&](std::size_t k) { chunk[k - begin] = load_scan(dataset, first + k, s.min_range); });
+    tbb::parallel_for(begin, end, [&](std::size_t k) {
+      const PointCloud& reference = k == begin ? previous : chunk[k - 1 - begin];
+      const Worker worker(s.method);
+      steps[k - 1] =
+          worker.register_scan(reference, chunk[k - begin], relative(odometry[k - 1], odometry[k]), seeds[k]);
+      counter.tick();
+    });
+    previous = std::move(chunk.back());
+  }
+  return steps;
+}
+
+/// Waits for a prefetch on every way out, so that an exception never destroys a running task_group.
+struct WaitOnExit {
+  tbb::task_group& group;
+  ~WaitOnExit() {
+    try {
+      group.wait();
+    } catch (...) {  // the exception that is already on its way matters more
+    }
+  }
+};
+
+/// Any guess and map: one registration after the other (the guess or the map needs the previous
+/// result); the next scan is loaded while the current one is registered.
+std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const OdometrySettings& s,
+                                           std::size_t first, std::size_t count,
+                                           const std::vector<Eigen::Isometry3d>& odometry,
+                                           const std::vector<std::uint64_t>& seeds, StepCounter& counter) {
+  const Worker worker(s.method);
+  std::vector<OdometryStep> steps;
+  std::deque<PointCloud> window;               // the last scans, oldest first
+  std::deque<Eigen::Isometry3d> window_poses;  // their chained poses (frame of the sequence's first scan)
+  window.push_back(load_scan(dataset, first, s.min_range));
+  window_poses.push_back(Eigen::Isometry3d::Identity());
+  PointCloud next;
+  if (count > 1) next = load_scan(dataset, first + 1, s.min_range);
+  for (std::size_t k = 1; k < count; ++k) {
+    PointCloud input = std::move(next);
+    tbb::task_group prefetch;
+    const WaitOnExit wait_on_exit{prefetch};
+    if (k + 1 < count) prefetch.run([&] { next = load_scan(dataset, first + k + 1, s.min_range); });
+    Eigen::Isometry3d guess = Eigen::Isometry3d::Identity();
+    if (s.guess == OdometryGuess::odometry) guess = relative(odometry[k - 1], odometry[k]);
+    if (s.guess == OdometryGuess::constant_velocity && !steps.empty()) guess = steps.back().relative;
+    const Eigen::Isometry3d& previous_pose = window_poses.back();
+    if (s.map == OdometryMap::local_map && window.size() > 1) {
+      std::vector<const PointCloud*> clouds;
+      std::vector<Eigen::Isometry3d> poses;  // scan i − 1 ← scan j
+      for (std::size_t j = 0; j < window.size(); ++j) {
+        clouds.push_back(&window[j]);
+        poses.push_back(relative(previous_pose, window_poses[j]));
+      }
+      const PointCloud map = merge_local_map(clouds, poses, s.local_map_max_points, s.local_map_voxel);
+      steps.push_back(worker.register_scan(map, input, guess, seeds[k]));
+    } else {
+      steps.push_back(worker.register_scan(window.back(), input, guess, seeds[k]));
+    }
+    const std::size_t keep = s.map == OdometryMap::local_map ? s.local_map_scans : 1;
+    window_poses.push_back(previous_pose * steps.back().relative);
+    window.push_back(std::move(input));
+    while (window.size() > keep) {
+      window.pop_front();
+      window_poses.pop_front();
+    }
+    counter.tick();
+    prefetch.wait();
+  }
+  return steps;
+}
+
+}  // namespace
+
+OdometryResult run_odometry(const Dataset& dataset, const OdometrySettings& settings, std::size_t first,
+                            std::size_t count, const OdometryProgress& progress) {
+  if (const std::string why = settings.problem(); !why.empty())
+    throw InputError("odometry settings", "", why);
+  if (count < 1) throw InputError(dataset_label(dataset), "", "an odometry run needs at least one scan");
+  if (first >= dataset.size() || count > dataset.size() - first)
+    throw InputError(dataset_label(dataset), "",
+                     "scans " + std::to_string(first) + "–" + std::to_string(first + count - 1) +
+                         " go past the dataset's " + std::to_string(dataset.size()) + " scans");
+  const std::vector<Eigen::Isometry3d> odometry = odometry_poses(dataset, settings, first, count);
+  Rng master(settings.seed);
+  std::vector<std::uint64_t> seeds(count);
+  for (auto& seed : seeds) seed = master.bits();
+
+  StepCounter counter(progress, count - 1);
+  OdometryResult result;
+  if (count > 1) {
+    const bool independent =
+        settings.parallel && settings.guess == OdometryGuess::odometry && settings.map == OdometryMap::scan;
+    result.steps = independent ? parallel_steps(dataset, settings, first, count, odometry, seeds, counter)
+                               : sequential_steps(dataset, settings, first, count, odometry, seeds, counter);
+  }
+  result.poses.push_back(start_pose(dataset, settings, first));
+  for (const OdometryStep& step : result.steps) result.poses.push_back(result.poses.back() * step.relative);
+  return result;
+}
+
+}  // namespace sextant
