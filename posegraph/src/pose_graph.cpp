@@ -100,10 +100,9 @@ PoseGraphReport PoseGraph::optimize(const PoseGraphSettings& settings) {
   for (std::size_t k = 0; k < edges_.size(); ++k) {
     const PoseGraphEdge& e = edges_[k];
     ceres::LossFunction* loss = nullptr;  // the Problem takes ownership
-    if (e.kind == EdgeKind::loop_closure && settings.loss == RobustLoss::huber)
-      loss = new ceres::HuberLoss(settings.loss_scale);
-    if (e.kind == EdgeKind::loop_closure && settings.loss == RobustLoss::cauchy)
-      loss = new ceres::CauchyLoss(settings.loss_scale);
+    const bool robust = e.kind == EdgeKind::loop_closure || settings.robust_odometry;
+    if (robust && settings.loss == RobustLoss::huber) loss = new ceres::HuberLoss(settings.loss_scale);
+    if (robust && settings.loss == RobustLoss::cauchy) loss = new ceres::CauchyLoss(settings.loss_scale);
     problem.AddResidualBlock(make_relative_pose_cost(e.measured, sqrt_info[k]), loss, t[e.i].data(),
                              q[e.i].coeffs().data(), t[e.j].data(), q[e.j].coeffs().data());
     problem.SetManifold(q[e.i].coeffs().data(), &quaternion_manifold);

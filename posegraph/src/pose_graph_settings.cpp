@@ -32,6 +32,7 @@ PoseGraphSettings read_pose_graph_settings(const YAML::Node& node, const std::st
     if (!ok) in.fail("loss", "key 'loss': unknown robust loss '" + loss + "' (known: none, huber, cauchy)");
   }
   in.read("loss_scale", s.loss_scale);
+  in.read("robust_odometry", s.robust_odometry);
   in.read("max_iterations", s.max_iterations);
   in.read("function_tolerance", s.function_tolerance);
   in.read("threads", s.threads);

@@ -38,8 +38,11 @@ struct PoseGraphEdge {
 };
 
 struct PoseGraphSettings {
-  RobustLoss loss = RobustLoss::cauchy;  ///< on loop-closure edges only
+  RobustLoss loss = RobustLoss::cauchy;  ///< on loop-closure edges (and odometry edges if robust_odometry)
   double loss_scale = 3.0;               ///< c, in units of the Mahalanobis error √(eᵀΩe)
+  /// The loss on odometry edges too: one registration that converged to a wrong pose with a
+  /// confident Hessian otherwise holds the whole loop against every true closure.
+  bool robust_odometry = false;
   int max_iterations = 100;
   double function_tolerance = 1e-10;  ///< Ceres: relative cost change that ends the solve
   int threads = 1;
@@ -47,7 +50,7 @@ struct PoseGraphSettings {
   bool valid(std::string* why) const;
 };
 
-/// Reads PoseGraphSettings keys (loss: none|huber|cauchy, loss_scale, max_iterations,
+/// Reads PoseGraphSettings keys (loss: none|huber|cauchy, loss_scale, robust_odometry, max_iterations,
 /// function_tolerance, threads) from a YAML map (may be null); InputError naming file, line, key.
 PoseGraphSettings read_pose_graph_settings(const YAML::Node& node, const std::string& file);
 RobustLoss robust_loss_from_string(const std::string& name, bool* ok);
