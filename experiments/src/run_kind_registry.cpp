@@ -14,6 +14,9 @@ const RunKindRegistry& run_kind_registry() {
           [] { return make_plane_features_kind(); });
     r.add("plane_slam", "E12-E14, E16, E17, E19: plane SLAM over a campus scan sequence, any filter",
           [] { return make_plane_slam_kind(); });
+    r.add("pose_graph",
+          "E20: chained scan matching, a pose graph with loop closures, and the plane-SLAM filters",
+          [] { return make_pose_graph_kind(); });
     r.add("registration", "E1, E2, E4: scan pairs with an initial guess, any matcher × sampler",
           [] { return make_registration_kind(); });
     r.add("sequence", "E7, E9: a matcher over a sequence of scans, chained or fused with odometry by a KF",
