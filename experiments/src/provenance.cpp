@@ -12,24 +12,7 @@
 
 #include "sextant/experiments/json.hpp"
 
-#ifndef SEXTANT_GIT_SHA
-#define SEXTANT_GIT_SHA "unknown"
-#endif
-#ifndef SEXTANT_GIT_DIRTY
-#define SEXTANT_GIT_DIRTY 0
-#endif
-#ifndef SEXTANT_SOURCE_DIR
-#define SEXTANT_SOURCE_DIR "."
-#endif
-#ifndef SEXTANT_PCL_VERSION
-#define SEXTANT_PCL_VERSION "unknown"
-#endif
-#ifndef SEXTANT_YAMLCPP_VERSION
-#define SEXTANT_YAMLCPP_VERSION "unknown"
-#endif
-#ifndef SEXTANT_FMT_VERSION
-#define SEXTANT_FMT_VERSION "unknown"
-#endif
+#include "sextant_build_info.hpp"
 
 namespace sextant {
 namespace {
