@@ -152,7 +152,7 @@ TEST(HybridSlam, QuickProfileOutputShape) {
   ASSERT_EQ(rows.size(), 6u);  // 3 filters × {odometry, fbmlndt}, 1 repetition
   for (const RunRow& row : rows) {
     const bool hybrid = row.method.find("_fbmlndt") != std::string::npos;
-    const std::size_t n = row.method.rfind("ukf", 0) == 0 ? 20u : 40u;
+    const std::size_t n = row.method.rfind("ukf", 0) == 0 ? 15u : 30u;
     EXPECT_EQ(row.series.at("error_m").size(), n) << row.method;
     EXPECT_EQ(row.series.at("registration_ms").size(), n) << row.method;
     EXPECT_EQ(row.series.at("extraction_ms").size(), n) << row.method;

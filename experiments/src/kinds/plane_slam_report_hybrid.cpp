@@ -53,7 +53,8 @@ std::vector<Pair> pairs(const ExperimentConfig& config, const PlaneSlamRows& dat
   return out;
 }
 
-/// Per-scan sums of a and b in moving blocks of `length` scans within each repetition; the
+/// Per-scan sums of a and b in circular moving blocks of `length` scans within each repetition
+/// (circular, so that the first and last scans weigh as much as the others); the
 /// statistic is `ratio` ? Σa / Σb : (Σa − Σb) / n over the pairs where both are finite.
 Interval block_bootstrap(const std::vector<std::vector<double>>& a, const std::vector<std::vector<double>>& b,
                          std::size_t length, bool ratio, std::uint64_t seed) {
@@ -65,10 +66,12 @@ Interval block_bootstrap(const std::vector<std::vector<double>>& a, const std::v
   for (std::size_t r = 0; r < a.size() && r < b.size(); ++r) {
     const std::size_t n = std::min(a[r].size(), b[r].size());
     const std::size_t l = std::min(length, n);
-    for (std::size_t start = 0; l > 0 && start + l <= n; ++start) {
+    for (std::size_t start = 0; l > 0 && start < n; ++start) {  // circular: every scan in l blocks
       Sums s;
-      for (std::size_t k = start; k < start + l; ++k)
+      for (std::size_t j = start; j < start + l; ++j) {
+        const std::size_t k = j % n;
         if (std::isfinite(a[r][k]) && std::isfinite(b[r][k])) s.a += a[r][k], s.b += b[r][k], ++s.n;
+      }
       blocks.push_back(s);
     }
     for (std::size_t k = 0; k < n; ++k)
