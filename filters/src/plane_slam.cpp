@@ -123,34 +123,49 @@ void PlaneSlam::sync_map_planes() {
 
 PlaneSlamStep PlaneSlam::step(const PointCloud& scan, const Pose6& odometry_pose) {
   const auto t_step = Clock::now();
+  // 1. The odometry increment (eq. 4.72); 2. the extraction (it does not depend on the prediction).
+  const Vector6d u = started_ ? odometry_increment(last_odometry_, odometry_pose) : Vector6d::Zero();
+  last_odometry_ = odometry_pose;
+  extract(scan);
+  PlaneSlamStep out = step(u, s_.process_noise());
+  out.seconds = since(t_step);
+  return out;
+}
+
+const PlaneExtraction& PlaneSlam::extract(const PointCloud& scan) {
+  const auto t0 = Clock::now();
+  extraction_ = extract_planes(scan, s_.extraction, rng_);
+  extraction_seconds_ = since(t0);
+  return extraction_;
+}
+
+PlaneSlamStep PlaneSlam::step(const Vector6d& u, const Matrix6d& Q) {
+  const auto t_step = Clock::now();
   PlaneSlamStep out;
   SlamStepRecord& rec = out.filter;
+  const std::vector<PlaneLandmark>& observed = extraction_.landmarks;
 
-  // 1. Prediction with the odometry increment (eq. 4.72).
+  // 1. Prediction with the control u and its covariance Q (eq. 4.72).
   if (started_) {
-    const StepResult r =
-        filter_->predict(odometry_increment(last_odometry_, odometry_pose), s_.process_noise());
+    const StepResult r = filter_->predict(u, Q);
     rec.predict_status = r.status;
     rec.predict_seconds = r.seconds;
   }
   started_ = true;
-  last_odometry_ = odometry_pose;
 
-  // 2.–4. Extraction, transformation with the predicted pose, semantic association (§4.2.5).
+  // 3.–4. Transformation of the extracted planes with the predicted pose, association (§4.2.5).
+  out.extraction_seconds = extraction_seconds_;
+  out.extracted = observed.size();
   auto t0 = Clock::now();
-  observed_ = extract_planes(scan, s_.extraction, rng_).landmarks;
-  out.extraction_seconds = since(t0);
-  out.extracted = observed_.size();
-  t0 = Clock::now();
-  const std::vector<PlaneLandmark> predicted_world = transform_landmarks(observed_, to_isometry(pose()));
+  const std::vector<PlaneLandmark> predicted_world = transform_landmarks(observed, to_isometry(pose()));
   const AssociationResult assoc = associate_landmarks(predicted_world, map_, s_.association);
   out.candidates_tested = assoc.candidates_tested;
-  out.observation_landmark.assign(observed_.size(), -1);
+  out.observation_landmark.assign(observed.size(), -1);
   const Eigen::Matrix4d R = s_.observation_noise();
   std::vector<Eigen::VectorXd> zs;
   std::vector<int> associations;
   for (const LandmarkMatch& m : assoc.matches) {
-    const Eigen::Vector4d z = plane_vector(observed_[m.observed].plane);
+    const Eigen::Vector4d z = plane_vector(observed[m.observed].plane);
     const int j = static_cast<int>(m.map);
     if (gate_ > 0.0 && !(innovation_distance(*filter_, z, R, j) <= gate_)) {
       ++out.gated;
@@ -172,19 +187,19 @@ PlaneSlamStep PlaneSlam::step(const PointCloud& scan, const Pose6& odometry_pose
   }
   for (std::size_t i : assoc.new_landmarks) {
     const int before = filter_->num_landmarks();
-    const StepResult r = filter_->augment(plane_vector(observed_[i].plane), R);
+    const StepResult r = filter_->augment(plane_vector(observed[i].plane), R);
     keep_first_failure(rec.augment_status, r.status);
     rec.augment_seconds += r.seconds;
     if (filter_->num_landmarks() != before + 1) continue;
     out.observation_landmark[i] = before;
     map_.push_back(PlaneLandmark{});
-    map_.back().plane = observed_[i].plane;  // side only; sync_map_planes sets (n, d)
+    map_.back().plane = observed[i].plane;  // side only; sync_map_planes sets (n, d)
     ++rec.augmented;
   }
 
   // 6. Semantics in the world frame of the updated pose; merged into the associated landmarks.
   sync_map_planes();
-  const std::vector<PlaneLandmark> in_world = transform_landmarks(observed_, to_isometry(pose()));
+  const std::vector<PlaneLandmark> in_world = transform_landmarks(observed, to_isometry(pose()));
   for (std::size_t i = 0; i < in_world.size(); ++i) {
     const int j = out.observation_landmark[i];
     if (j < 0) continue;
@@ -202,7 +217,7 @@ PlaneSlamStep PlaneSlam::step(const PointCloud& scan, const Pose6& odometry_pose
   rec.pose = filter_->pose();
   if (s_.record_pose_covariance) rec.pose_covariance = filter_->covariance().topLeftCorner(6, 6);
   out.map_size = map_.size();
-  out.seconds = since(t_step);
+  out.seconds = extraction_seconds_ + since(t_step);
   return out;
 }
 

@@ -83,6 +83,24 @@ void put_benchmarks(const PoseList& estimate, const PoseList& truth, const std::
   row.values[prefix + "kummerle_rotation_deg"] = k.status.ok ? k.rotation_rms * kDeg : kNaN;
 }
 
+/// Extracted landmarks: the mean per-scan times of extraction, association, filter (predict +
+/// update + augment) and registration (hybrid SLAM), and the registration's share of the rest
+/// (`registration_extra`: 0.2 = a step costs 20 % more than without the registration).
+void put_step_costs(RunRow& row) {
+  auto& s = row.series;
+  auto& v = row.values;
+  v["extraction_ms_mean"] = mean_of(s["extraction_ms"]);
+  v["association_ms_mean"] = mean_of(s["association_ms"]);
+  v["filter_ms_mean"] = v["motion_ms_mean"] + v["measurement_ms_mean"];
+  v["registration_ms_mean"] = mean_of(s["registration_ms"]);
+  v["registration_extra"] =
+      v["registration_ms_mean"] / (v["extraction_ms_mean"] + v["association_ms_mean"] + v["filter_ms_mean"]);
+  double matched = 0.0, judged = 0.0;
+  for (double m : s["matched_motion"])
+    if (m >= 0.0) matched += m, ++judged;
+  v["motion_matched_fraction"] = judged > 0.0 ? matched / judged : kNaN;
+}
+
 /// The estimated vertical planes as top-down segments over their true landmark's extent: each
 /// polygon vertex projected onto the estimated plane's trace (x, y, z̄) → 4 numbers per segment.
 std::vector<double> map_segments(const FilterSequenceRun& r, const synth::Campus& campus) {
@@ -137,6 +155,12 @@ void fill_row(const FilterSequenceRun& r, const synth::Campus& campus, const Pla
     s["measurement_ms"].push_back(1e3 * st.measurement_seconds);
     s["step_ms"].push_back(1e3 * (st.motion_seconds + st.measurement_seconds));
     s["map_size"].push_back(static_cast<double>(st.map_size));
+    if (params.landmarks == LandmarkSource::kExtracted) {
+      s["extraction_ms"].push_back(1e3 * st.extraction_seconds);
+      s["association_ms"].push_back(1e3 * st.association_seconds);
+      s["registration_ms"].push_back(1e3 * st.registration_seconds);
+      s["matched_motion"].push_back(st.matched_motion);
+    }
     for (int i = 0; i < 6; ++i) {
       s["trajectory"].push_back(st.pose[i]);
       s["truth"].push_back(t[i]);
@@ -193,6 +217,7 @@ void fill_row(const FilterSequenceRun& r, const synth::Campus& campus, const Pla
   v["gated"] = static_cast<double>(gated);
   v["motion_ms_mean"] = mean_of(s["motion_ms"]);
   v["measurement_ms_mean"] = mean_of(s["measurement_ms"]);
+  if (params.landmarks == LandmarkSource::kExtracted) put_step_costs(row);
   put_benchmarks(estimate, truth, "", row);
   put_benchmarks(odometry, truth, "odometry_", row);
   const KummerleResult k = kummerle_metric(estimate, truth);
@@ -239,7 +264,7 @@ class PlaneSlamSession : public KindSession {
     const double p0 = it == run.point.end() ? kNaN : std::stod(it->second);
     const PlaneSlamSettings settings = plane_slam_settings(params_, method, p0, file_);
     const std::size_t scans = method.scans ? std::min(method.scans, sequence_scans()) : sequence_scans();
-    fill_row(run_sequence(data_, params_, settings, scans, run.seed), campus_, params_, row);
+    fill_row(run_sequence(data_, params_, settings, scans, run.seed, method), campus_, params_, row);
   }
 
  private:
@@ -265,8 +290,14 @@ class PlaneSlamKind : public RunKind {
 
   void validate(const ExperimentConfig& config) const override {
     const PlaneSlamParams params = read_plane_slam_params(config);
-    for (const PlaneSlamMethod& m : read_methods(config))
+    for (const PlaneSlamMethod& m : read_methods(config)) {
       (void)plane_slam_settings(params, m, kNaN, config.file);
+      if (m.motion == MotionSource::kFbmlndt && params.landmarks != LandmarkSource::kExtracted)
+        throw InputError(config.file, "",
+                         "method '" + m.name +
+                             "': motion: fbmlndt shares the plane extraction, it needs "
+                             "params.landmarks: extracted");
+    }
     check_plane_slam_sweep(config);
     if (config.dataset.source != DatasetSource::kSynthetic)
       throw InputError(config.file, "", "key 'dataset': the plane_slam kind needs source: synthetic");
@@ -291,6 +322,7 @@ class PlaneSlamKind : public RunKind {
       case PlaneSlamLayout::kSeif: return seif_report(config, params, data);
       case PlaneSlamLayout::kBenchmark: return benchmark_report(config, params, data);
       case PlaneSlamLayout::kEseif: return eseif_report(config, params, data);
+      case PlaneSlamLayout::kHybrid: return hybrid_report(config, params, data);
       case PlaneSlamLayout::kAccuracy: break;
     }
     return accuracy_report(config, params, data);

@@ -5,6 +5,7 @@
 //   plane_slam_report_seif.cpp      — E17: update times against the map size, information images
 //   plane_slam_report_benchmark.cpp — E19: Wulf and Kümmerle per filter, spikes at loop closures
 //   plane_slam_report_eseif.cpp     — E22: ESEIF vs SEIF: NEES, update cost against the map, error
+//   plane_slam_report_hybrid.cpp    — E21: odometry- vs FbML-NDT-driven filters, accuracy and cost
 // and the thesis' comparative claims declared in params.claims (plane_slam_claims.cpp).
 #include <cmath>
 #include <cstdint>
@@ -112,5 +113,7 @@ ReportSection eseif_report(const ExperimentConfig& config, const PlaneSlamParams
                            const PlaneSlamRows& data);
 ReportSection benchmark_report(const ExperimentConfig& config, const PlaneSlamParams& params,
                                const PlaneSlamRows& data);
+ReportSection hybrid_report(const ExperimentConfig& config, const PlaneSlamParams& params,
+                            const PlaneSlamRows& data);
 
 }  // namespace sextant

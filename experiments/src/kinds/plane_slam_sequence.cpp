@@ -2,8 +2,10 @@
 
 #include <limits>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
+#include "plane_slam_hybrid.hpp"
 #include "sextant/filters/eseif.hpp"
 #include "sextant/filters/plane_slam.hpp"
 #include "sextant/filters/plane_slam_model.hpp"
@@ -155,18 +157,32 @@ void run_true(const SequenceData& data, const PlaneSlamParams& params, const Pla
   final_map(*filter, run);
 }
 
-// Extraction, semantic association and the χ² gate (filters/plane_slam.hpp).
+// Extraction, semantic association and the χ² gate (filters/plane_slam.hpp); the prediction from
+// the odometry or, motion: fbmlndt, from FbML-NDT on the same extraction (plane_slam_hybrid.hpp).
 void run_extracted(const SequenceData& data, const PlaneSlamParams& params, const PlaneSlamSettings& s,
-                   const std::vector<Eigen::Isometry3d>& odometry, std::size_t scans, std::uint64_t seed,
-                   FilterSequenceRun& run) {
+                   const std::vector<Vector6d>& u, std::size_t scans, std::uint64_t seed,
+                   const PlaneSlamMethod& method, FilterSequenceRun& run) {
   const synth::Campus& c = *data.campus;
   PlaneSlam slam(s, to_pose6(c.ground_truth[0]), seed);
+  std::optional<FbmlndtMotion> hybrid;
+  if (method.motion == MotionSource::kFbmlndt)
+    hybrid.emplace(method.matcher, params.hybrid, "<" + method.name + ">");
   Recorder recorder(params, run);
   for (std::size_t k = 0; k < scans; ++k) {
-    const PlaneSlamStep r = slam.step(data.clouds.at(k), to_pose6(odometry[k]));
+    const PlaneExtraction& extraction = slam.extract(data.clouds.at(k));
+    HybridMotion motion;
+    motion.motion = {u[k], s.process_noise()};
+    if (hybrid && k > 0)
+      motion = hybrid->motion(data.clouds.at(k - 1), data.clouds.at(k), extraction, slam.filter().pose(),
+                              motion.motion);
+    const PlaneSlamStep r = slam.step(motion.motion.u, motion.motion.Q);
     SequenceStep step;
     step.motion_seconds = r.filter.predict_seconds;
     step.measurement_seconds = r.filter.update_seconds + r.filter.augment_seconds;
+    step.extraction_seconds = r.extraction_seconds;
+    step.association_seconds = r.association_seconds;
+    step.registration_seconds = motion.seconds;
+    if (hybrid && k > 0) step.matched_motion = motion.matched ? 1 : 0;
     step.updated = r.filter.updated;
     step.augmented = r.filter.augmented;
     step.gated = r.gated;
@@ -181,7 +197,8 @@ void run_extracted(const SequenceData& data, const PlaneSlamParams& params, cons
 }  // namespace
 
 FilterSequenceRun run_sequence(const SequenceData& data, const PlaneSlamParams& params,
-                               const PlaneSlamSettings& settings, std::size_t scans, std::uint64_t seed) {
+                               const PlaneSlamSettings& settings, std::size_t scans, std::uint64_t seed,
+                               const PlaneSlamMethod& method) {
   const synth::Campus& c = *data.campus;
   if (scans < 2 || scans > c.size()) throw std::invalid_argument("run_sequence: bad scan count");
   Rng rng(seed);
@@ -199,7 +216,7 @@ FilterSequenceRun run_sequence(const SequenceData& data, const PlaneSlamParams& 
   if (params.landmarks == LandmarkSource::kTrue)
     run_true(data, params, settings, u, scans, noise, run);
   else
-    run_extracted(data, params, settings, odometry, scans, seed, run);
+    run_extracted(data, params, settings, u, scans, seed, method, run);
   return run;
 }
 

@@ -5,7 +5,9 @@
 //     by its true id; an id seen for the first time is augmented (eqs. 4.57–4.58);
 //   extracted landmarks — PlaneSlam (filters/plane_slam.hpp): extraction, semantic association
 //     and χ² gate on the scan itself.
-// Both predict with the odometry increment (eq. 4.72) and record per scan the pose, its
+// Both predict with the odometry increment (eq. 4.72) — or, extracted landmarks with a method's
+// motion: fbmlndt, with the FbML-NDT relative pose on the shared extraction (hybrid SLAM, E21,
+// plane_slam_hybrid.hpp) — and record per scan the pose, its
 // covariance (Filter::joint_covariance: exact for the moment filters, SEIF's Markov-blanket
 // approximation), the motion- and measurement-update times, and — for information filters —
 // the block pattern of Ω when the map reaches the sizes asked for.
@@ -33,6 +35,10 @@ struct SequenceStep {
   Matrix6d covariance = Matrix6d::Zero();  ///< pose block (NaN when it could not be read)
   double motion_seconds = 0.0;             ///< predict
   double measurement_seconds = 0.0;        ///< update + augmentation
+  double extraction_seconds = 0.0;         ///< extracted landmarks: plane extraction
+  double association_seconds = 0.0;        ///< extracted landmarks: association + χ² gate
+  double registration_seconds = 0.0;       ///< motion: fbmlndt: the registration (0 otherwise)
+  int matched_motion = -1;                 ///< motion: fbmlndt: 1 matcher's increment, 0 odometry's
   std::size_t map_size = 0;
   std::size_t updated = 0, augmented = 0, gated = 0;
   bool ok = true;  ///< every filter step of the scan reported kOk
@@ -60,8 +66,10 @@ struct FilterSequenceRun {
   std::size_t relocations = 0, skipped_relocations = 0;  ///< ESEIF
 };
 
-/// Runs `scans` scans. `seed` draws the resampled odometry and the observation noise.
+/// Runs `scans` scans. `seed` draws the resampled odometry and the observation noise; `method`
+/// chooses the motion source (default: the odometry).
 FilterSequenceRun run_sequence(const SequenceData& data, const PlaneSlamParams& params,
-                               const PlaneSlamSettings& settings, std::size_t scans, std::uint64_t seed);
+                               const PlaneSlamSettings& settings, std::size_t scans, std::uint64_t seed,
+                               const PlaneSlamMethod& method = {});
 
 }  // namespace sextant

@@ -5,6 +5,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/filters/plane_slam_model.hpp"
+#include "sextant/matchers/mlndt_matcher.hpp"
 
 namespace sextant {
 namespace {
@@ -27,6 +28,29 @@ std::size_t read_count(SettingsReader& in, const std::string& key, std::size_t f
   in.read(key, value);
   if (value < 0) in.fail(key, "key '" + key + "' must be ≥ 0");
   return static_cast<std::size_t>(value);
+}
+
+constexpr double kRadPerDeg = 3.14159265358979323846 / 180.0;
+
+HybridParams read_hybrid_params(const YAML::Node& node, const std::string& file) {
+  SettingsReader in(node, file);
+  HybridParams h;
+  double alarm_deg = h.alarm_rotation / kRadPerDeg;
+  in.read("noise_scale", h.noise_scale);
+  in.read("alarm_translation", h.alarm_translation);
+  in.read("alarm_rotation_deg", alarm_deg);
+  in.read("max_extra_cost", h.max_extra_cost);
+  long block = static_cast<long>(h.block);
+  in.read("block", block);
+  in.finish();
+  if (block < 1) in.fail("block", "key 'block' must be ≥ 1");
+  h.block = static_cast<std::size_t>(block);
+  if (!(h.max_extra_cost > 0.0)) in.fail("max_extra_cost", "key 'max_extra_cost' must be > 0");
+  h.alarm_rotation = alarm_deg * kRadPerDeg;
+  if (!(h.noise_scale > 0.0)) in.fail("noise_scale", "key 'noise_scale' must be > 0");
+  if (!(h.alarm_translation > 0.0 && h.alarm_rotation > 0.0))
+    in.fail("alarm_translation", "keys 'alarm_translation' and 'alarm_rotation_deg' must be > 0");
+  return h;
 }
 
 }  // namespace
@@ -59,7 +83,8 @@ PlaneSlamParams read_plane_slam_params(const ExperimentConfig& config) {
                                           {{"accuracy", PlaneSlamLayout::kAccuracy},
                                            {"seif", PlaneSlamLayout::kSeif},
                                            {"benchmark", PlaneSlamLayout::kBenchmark},
-                                           {"eseif", PlaneSlamLayout::kEseif}});
+                                           {"eseif", PlaneSlamLayout::kEseif},
+                                           {"hybrid", PlaneSlamLayout::kHybrid}});
   p.scans = read_count(in, "scans", 0);
   p.min_points = read_count(in, "min_points", p.min_points);
   p.ellipse_every = read_count(in, "ellipse_every", p.ellipse_every);
@@ -82,6 +107,7 @@ PlaneSlamParams read_plane_slam_params(const ExperimentConfig& config) {
   in.read("revisit_radius", p.revisit_radius);
   in.read("spike_threshold", p.spike_threshold);
   if (in.has("claims")) p.claims = in.child("claims");
+  if (in.has("hybrid")) p.hybrid = read_hybrid_params(in.child("hybrid"), config.file);
   in.finish();
   std::string why;
   if (!p.valid(&why)) in.fail("", why);
@@ -101,7 +127,14 @@ PlaneSlamMethod read_plane_slam_method(const YAML::Node& node, const std::string
   in.require("filter", m.filter);
   if (in.has("filter_settings")) m.filter_settings = in.child("filter_settings");
   m.scans = read_count(in, "scans", 0);
+  m.motion =
+      read_choice<MotionSource>(in, "motion", MotionSource::kOdometry,
+                                {{"odometry", MotionSource::kOdometry}, {"fbmlndt", MotionSource::kFbmlndt}});
+  if (in.has("matcher")) m.matcher = YAML::Clone(in.child("matcher"));
   in.finish();
+  if (m.matcher && !m.matcher.IsNull() && m.motion != MotionSource::kFbmlndt)
+    in.fail("matcher", "key 'matcher': only with motion: fbmlndt");
+  if (m.motion == MotionSource::kFbmlndt) (void)read_mlndt_settings(m.matcher, file);
   if (!filter_registry().contains(m.filter))
     in.fail("filter",
             "key 'filter': '" + m.filter + "' is not a filter (ekf, ukf, ckf, rspkf, seif, eif, eseif)");

@@ -5,6 +5,11 @@
 //   methods:
 //     - {name: ekf, filter: ekf}                       # filter registry name (+ filter_settings)
 //     - {name: eif, filter: eif, scans: 40}            # a method may stop early (E17's EIF image)
+//     - {name: ekf_fbmlndt, filter: ekf, motion: fbmlndt, matcher: {solver: lm}}
+//                                                      # motion: odometry (default) | fbmlndt: the
+//                                                      # FbML-NDT relative pose predicts (hybrid SLAM,
+//                                                      # E21; needs landmarks: extracted); matcher: the
+//                                                      # mlndt keys of its registration
 //   sweep:
 //     p0_scale: [1, 1000, 1.0e6]                       # optional: overrides slam.p0_scale
 //   params:
@@ -23,6 +28,12 @@
 //     compare_scans: 120      # also compute the metrics over the first N scans (prefix_… values), so
 //                              # filters run over different lengths compare on a common prefix
 //     claims: [...]            # the thesis' comparative claims, decided on our rows (claims.hpp)
+//     hybrid: {noise_scale: 1, alarm_translation: 0.6, alarm_rotation_deg: 3, max_extra_cost: 0.5,
+//              block: 20}
+//                              # motion: fbmlndt: Σ = noise_scale · H⁻¹; the odometry's increment is
+//                              # used instead when the matcher and the odometry disagree beyond the
+//                              # alarm thresholds (as Table 3.3's KF does), or the registration failed;
+//                              # report: hybrid: the cost band of the claim and the bootstrap block
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -36,7 +47,17 @@ namespace sextant {
 
 enum class LandmarkSource { kTrue, kExtracted };
 enum class OdometrySource { kCampus, kResample };
-enum class PlaneSlamLayout { kAccuracy, kSeif, kBenchmark, kEseif };
+enum class PlaneSlamLayout { kAccuracy, kSeif, kBenchmark, kEseif, kHybrid };
+enum class MotionSource { kOdometry, kFbmlndt };
+
+/// Hybrid SLAM (E21): how the FbML-NDT relative pose becomes the motion prediction.
+struct HybridParams {
+  double noise_scale = 1.0;           ///< Σ = noise_scale · H⁻¹ (eq. 3.50) [-]
+  double alarm_translation = 0.6;     ///< ‖δt_matcher − δt_odometry‖ above this: odometry used [m]
+  double alarm_rotation = 0.0523599;  ///< max |δo_matcher − δo_odometry| above this: odometry used [rad]
+  double max_extra_cost = 0.5;  ///< report: "little extra cost" = registration ≤ this share of the rest [-]
+  std::size_t block = 20;       ///< report: block length of the moving-block bootstrap over scans
+};
 
 struct PlaneSlamParams {
   LandmarkSource landmarks = LandmarkSource::kTrue;
@@ -56,6 +77,7 @@ struct PlaneSlamParams {
   std::size_t spike_window = 10;  ///< a spike within ±N scans of a revisit start is "at a loop closure"
   std::size_t compare_scans = 0;  ///< > 0: the metrics also over the first N scans ("prefix_…" values)
   YAML::Node claims;              ///< sequence or null
+  HybridParams hybrid;
 
   bool valid(std::string* why) const;
 };
@@ -65,6 +87,8 @@ struct PlaneSlamMethod {
   std::string filter;
   YAML::Node filter_settings;
   std::size_t scans = 0;  ///< 0: params.scans
+  MotionSource motion = MotionSource::kOdometry;
+  YAML::Node matcher;  ///< motion: fbmlndt: mlndt settings of the registration (may be null)
 };
 
 /// The sweep axes the kind understands.

@@ -17,6 +17,10 @@
 //   for (i …) PlaneSlamStep step = slam.step(scan(i), odometry_pose(i));   // first call: no predict
 //
 // Or, for a whole sequence: run_plane_slam(s, scans, odometry, initial_pose, seed).
+//
+// Hybrid SLAM (E21) drives the prediction with a scan matcher instead of the odometry and shares
+// the extraction with it: extract(scan) runs step 2 and returns the extraction (its cell-plane
+// inliers are FbML-NDT's sample, Table 3.2), then step(u, Q) runs steps 1 and 3–6 on it.
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -93,13 +97,18 @@ class PlaneSlam {
   /// Processes one scan (sensor frame) with the odometry pose it was taken at. The first call
   /// only extracts and augments (the filter starts at the initial pose).
   PlaneSlamStep step(const PointCloud& scan, const Pose6& odometry_pose);
+  /// Step 2 alone: extracts the scan's planes for the next step(u, Q) and returns the extraction.
+  const PlaneExtraction& extract(const PointCloud& scan);
+  /// Steps 1 and 3–6 on the last extract(), predicting with the control u of eq. (4.72) and its
+  /// covariance Q (the first step does not predict).
+  PlaneSlamStep step(const Vector6d& u, const Matrix6d& Q);
 
   const Filter& filter() const { return *filter_; }
   Pose6 pose() const;
   /// The semantic map, parallel to the filter's landmarks.
   const std::vector<PlaneLandmark>& map() const { return map_; }
   /// The last scan's extracted landmarks in the sensor frame (inliers index the scan).
-  const std::vector<PlaneLandmark>& last_observed() const { return observed_; }
+  const std::vector<PlaneLandmark>& last_observed() const { return extraction_.landmarks; }
 
  private:
   void sync_map_planes();
@@ -109,7 +118,8 @@ class PlaneSlam {
   std::unique_ptr<Filter> filter_;
   Rng rng_;
   std::vector<PlaneLandmark> map_;
-  std::vector<PlaneLandmark> observed_;
+  PlaneExtraction extraction_;  ///< the last scan's (landmarks: the observations)
+  double extraction_seconds_ = 0.0;
   Pose6 last_odometry_;
   bool started_ = false;
 };
