@@ -157,6 +157,24 @@ void normalize_variable(const SlamModel& model, const BlockInformationMatrix& om
   shift_mean(omega, xi, mu, var, value - before);
 }
 
+bool information_from_moments(const SlamModel& model, const Eigen::VectorXd& x0, const Eigen::MatrixXd& P0,
+                              BlockInformationMatrix& omega, Eigen::VectorXd& xi, Eigen::VectorXd& mu) {
+  Eigen::LLT<Eigen::MatrixXd> llt(symmetrized(P0));
+  if (llt.info() != Eigen::Success) return false;
+  const Eigen::MatrixXd info = llt.solve(Eigen::MatrixXd::Identity(P0.rows(), P0.cols()));
+  omega = BlockInformationMatrix();
+  omega.add_variable(model.pose_dim());
+  for (int i = 0; i < landmark_count(model, x0.size()); ++i) omega.add_variable(model.landmark_dim());
+  for (int i = 0; i < omega.variables(); ++i)
+    for (int j = i; j < omega.variables(); ++j) {
+      const Eigen::MatrixXd M = info.block(omega.offset(i), omega.offset(j), omega.dim(i), omega.dim(j));
+      if (i == j || !M.isZero(0.0)) omega.set(i, j, M);
+    }
+  mu = x0;
+  xi = info * x0;
+  return true;
+}
+
 bool sparse_solve(const BlockInformationMatrix& omega, const Eigen::VectorXd& b, Eigen::VectorXd* x) {
   Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> llt(to_sparse(omega));
   if (llt.info() != Eigen::Success) return false;

@@ -41,6 +41,11 @@ void information_measurement(const SlamModel& model, BlockInformationMatrix& ome
 int information_augment(const SlamModel& model, BlockInformationMatrix& omega, Eigen::VectorXd& xi,
                         Eigen::VectorXd& mu, const Eigen::VectorXd& z, const Eigen::MatrixXd& R);
 
+/// The information form of N(x0, P0): Ω = P0⁻¹ stored block-sparse (exact zeros left out),
+/// ξ = Ω x0, μ = x0. False when P0 is not positive definite (nothing changed).
+bool information_from_moments(const SlamModel& model, const Eigen::VectorXd& x0, const Eigen::MatrixXd& P0,
+                              BlockInformationMatrix& omega, Eigen::VectorXd& xi, Eigen::VectorXd& mu);
+
 /// μ_var ← μ_var + δ keeping ξ = Ω μ (angle wrapping, normal renormalisation).
 void shift_mean(const BlockInformationMatrix& omega, Eigen::VectorXd& xi, Eigen::VectorXd& mu, int var,
                 const Eigen::VectorXd& delta);

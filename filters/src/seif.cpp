@@ -180,19 +180,8 @@ void Seif::normalize_variable(int var) {
 StepResult Seif::initialize(const Eigen::VectorXd& x0, const Eigen::MatrixXd& P0) {
   detail::StepClock clock;
   if (!detail::valid_state(*model_, x0, P0)) return finish(StepStatus::kInvalidInput, clock.seconds());
-  Eigen::LLT<Eigen::MatrixXd> llt(symmetrized(P0));
-  if (llt.info() != Eigen::Success) return finish(StepStatus::kCholeskyFailed, clock.seconds());
-  const Eigen::MatrixXd info = llt.solve(Eigen::MatrixXd::Identity(P0.rows(), P0.cols()));
-  omega_ = BlockInformationMatrix();
-  omega_.add_variable(model_->pose_dim());
-  for (int i = 0; i < landmark_count(*model_, x0.size()); ++i) omega_.add_variable(model_->landmark_dim());
-  for (int i = 0; i < omega_.variables(); ++i)
-    for (int j = i; j < omega_.variables(); ++j) {
-      const Eigen::MatrixXd M = info.block(omega_.offset(i), omega_.offset(j), omega_.dim(i), omega_.dim(j));
-      if (i == j || !M.isZero(0.0)) omega_.set(i, j, M);
-    }
-  mu_ = x0;
-  xi_ = info * x0;
+  if (!detail::information_from_moments(*model_, x0, P0, omega_, xi_, mu_))
+    return finish(StepStatus::kCholeskyFailed, clock.seconds());
   active_.clear();
   for (int j : omega_.neighbours(kPose)) active_.push_back(j - 1);
   for (int v = 0; v < omega_.variables(); ++v) normalize_variable(v);

@@ -2,34 +2,19 @@
 // no options it must register every shared pair from the guess a user has (docs/matcher_defaults.md).
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <array>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <string>
 
 #include "sextant/core/io/uos.hpp"
+#include "sextant_test/cli_run.hpp"
 
 namespace {
 
-struct CliRun {
-  int exit_code = -1;
-  std::string output;  ///< stdout and stderr
-};
-
+using sextant::test::CliRun;
 CliRun run_cli(const std::string& arguments) {
-  CliRun r;
-  const std::string command = std::string(SEXTANT_CLI) + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe)) r.output += buffer.data();
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return sextant::test::run_cli(SEXTANT_CLI, arguments);
 }
 
 /// The number after "key": in a one-line JSON object; NaN when absent or null.

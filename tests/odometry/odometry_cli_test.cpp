@@ -3,9 +3,6 @@
 // layout (velodyne/*.bin from campus scans, poses.txt, calib.txt, times.txt); bad arguments.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -17,6 +14,7 @@
 #include "sextant/core/io/trajectory_io.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
 #include "sextant/synth/campus.hpp"
+#include "sextant_test/cli_run.hpp"
 #include "sextant_test/temp_dir.hpp"
 
 namespace sextant {
@@ -25,21 +23,9 @@ namespace {
 namespace fs = std::filesystem;
 using test::TempDir;
 
-struct CliRun {
-  int exit_code = -1;
-  std::string output;  ///< stdout and stderr
-};
-
+using test::CliRun;
 CliRun run_cli(const std::string& arguments) {
-  CliRun r;
-  const std::string command = std::string(SEXTANT_CLI) + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return r;
-  std::array<char, 4096> buffer{};
-  while (std::fgets(buffer.data(), buffer.size(), pipe)) r.output += buffer.data();
-  const int status = pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return test::run_cli(SEXTANT_CLI, arguments);
 }
 
 std::string read_text(const fs::path& file) {
