@@ -9,7 +9,9 @@ namespace sextant {
 Ekf::Ekf(std::shared_ptr<const SlamModel> model, GaussianFilterSettings settings)
     : MomentFilter(std::move(model), settings) {}
 
-// eqs. (4.62)–(4.63): only the pose rows and columns of P change, O(n).
+// eqs. (4.62)–(4.63): only the pose rows and columns of P change, O(n). P⁺ = J P Jᵀ + diag(GQGᵀ, 0)
+// with J = diag(F, I): P⁺ is positive definite when P is and F is regular, so the check is of
+// the new pose block only.
 StepResult Ekf::predict(const Eigen::VectorXd& u, const Eigen::MatrixXd& Q) {
   detail::StepClock clock;
   if (!detail::valid_control(*model_, u, Q)) return record(StepStatus::kInvalidInput, clock.seconds());
@@ -26,7 +28,8 @@ StepResult Ekf::predict(const Eigen::VectorXd& u, const Eigen::MatrixXd& Q) {
     P_.bottomLeftCorner(n - p, p) = PvL.transpose();
   }
   P_.topLeftCorner(p, p) = symmetrized(Pvv);
-  return record(finish_step(false), clock.seconds());  // P stays symmetric: keep the step O(n)
+  const Eigen::MatrixXd pose_block = P_.topLeftCorner(p, p);
+  return record(finish_step(false, &pose_block), clock.seconds());  // P stays symmetric: O(n)
 }
 
 // eqs. (4.65)–(4.66) with stacked observations; P Hᵀ is formed from the pose and landmark
@@ -81,7 +84,8 @@ StepResult Ekf::update(const std::vector<Eigen::VectorXd>& zs, const Eigen::Matr
   return record(finish_step(), clock.seconds());
 }
 
-// eqs. (4.67)–(4.68)
+// eqs. (4.67)–(4.68). The new landmark's Schur complement in P⁺ is Gz R Gzᵀ: P⁺ is positive
+// definite when P is and Gz R Gzᵀ is, so that block is what the step checks (O(n²) in all).
 StepResult Ekf::augment(const Eigen::VectorXd& z, const Eigen::MatrixXd& R) {
   detail::StepClock clock;
   if (!detail::valid_observation(*model_, z, R)) return record(StepStatus::kInvalidInput, clock.seconds());
@@ -98,7 +102,8 @@ StepResult Ekf::augment(const Eigen::VectorXd& z, const Eigen::MatrixXd& R) {
   P_.bottomLeftCorner(l, n) = Pmx;
   P_.topRightCorner(n, l) = Pmx.transpose();
   P_.bottomRightCorner(l, l) = Pmm;
-  return record(finish_step(), clock.seconds());
+  const Eigen::MatrixXd schur = Gz * R * Gz.transpose();
+  return record(finish_step(true, &schur), clock.seconds());
 }
 
 }  // namespace sextant

@@ -17,8 +17,13 @@ int MomentFilter::num_landmarks() const {
   return landmark_count(*model_, x_.size());
 }
 
-StepStatus MomentFilter::finish_step(bool symmetrize) {
-  return detail::finish_moment_step(*model_, x_, P_, s_.symmetrize && symmetrize, s_.check_covariance);
+StepStatus MomentFilter::finish_step(bool symmetrize, const Eigen::MatrixXd* changed_block) {
+  const StepStatus status = detail::finish_moment_step(*model_, x_, P_, s_.symmetrize && symmetrize,
+                                                       s_.check_covariance && changed_block == nullptr);
+  if (status == StepStatus::kOk && s_.check_covariance && changed_block != nullptr &&
+      !is_positive_definite(*changed_block))
+    return StepStatus::kNotPositiveDefinite;
+  return status;
 }
 
 StepResult MomentFilter::initialize(const Eigen::VectorXd& x0, const Eigen::MatrixXd& P0) {

@@ -55,6 +55,21 @@ TEST_P(FilterNumericalFaults, EachFaultIsAStatusAndTheStateStaysFinite) {
   EXPECT_GE(f->summary().failures() + g->summary().failures(), 2u) << name;
 }
 
+// The EKF checks only the block its predict and augment add (P stays positive definite exactly
+// when that block is): a negative Q or R must still be reported there.
+TEST(EkfBlockChecks, NegativeProcessOrObservationNoiseIsReported) {
+  auto f = filter_with_one_landmark("ekf");
+  const Eigen::Vector2d u(0.1, 0.0);
+  EXPECT_EQ(f->predict(u, -100.0 * Eigen::Matrix2d::Identity()).status, StepStatus::kNotPositiveDefinite);
+  auto g = filter_with_one_landmark("ekf");
+  EXPECT_TRUE(g->predict(u, 0.01 * Eigen::Matrix2d::Identity()).ok());
+  const Eigen::Vector2d z(3.0, 0.5);
+  EXPECT_EQ(g->augment(z, -Eigen::Matrix2d::Identity()).status, StepStatus::kNotPositiveDefinite);
+  auto h = filter_with_one_landmark("ekf");
+  EXPECT_TRUE(h->augment(z, 0.01 * Eigen::Matrix2d::Identity()).ok());
+  EXPECT_EQ(h->num_landmarks(), 2);
+}
+
 INSTANTIATE_TEST_SUITE_P(EveryFilter, FilterNumericalFaults,
                          ::testing::Values("ekf", "ukf", "ckf", "rspkf", "seif", "eif", "eseif"));
 

@@ -15,7 +15,9 @@ namespace sextant {
 struct GaussianFilterSettings {
   bool joseph_form = false;  ///< EKF: P⁺ = (I−KH)P(I−KH)ᵀ + KRKᵀ (O(n³)) instead of P − KSKᵀ
   bool symmetrize = true;    ///< P ← (P + Pᵀ)/2 after every step
-  bool check_covariance = true;  ///< LLᵀ test of P after every step (O(n³); off for benchmarks)
+  /// LLᵀ test of P after every step (O(n³); off for benchmarks). The EKF's predict and augment
+  /// test only the block they add (P stays PD exactly when it does), so its steps stay O(n²).
+  bool check_covariance = true;
   bool valid(std::string* why) const;
 };
 
@@ -35,8 +37,9 @@ class MomentFilter : public Filter {
  protected:
   MomentFilter(std::shared_ptr<const SlamModel> model, GaussianFilterSettings settings);
   /// Wraps angles, normalises landmarks, symmetrises P (when the settings and `symmetrize` say
-  /// so) and checks it (step_checks.hpp).
-  StepStatus finish_step(bool symmetrize = true);
+  /// so) and checks it (step_checks.hpp): the whole P, or, given `changed_block`, only that block
+  /// (for steps that keep P positive definite exactly when the block is).
+  StepStatus finish_step(bool symmetrize = true, const Eigen::MatrixXd* changed_block = nullptr);
 
   std::shared_ptr<const SlamModel> model_;
   GaussianFilterSettings s_;
