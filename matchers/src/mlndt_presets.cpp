@@ -16,9 +16,12 @@ struct Preset {
 // docs/matcher_defaults.md has the table these come from.
 constexpr Preset kPresets[] = {
     {"default", "{solver: lm, layers: 4, start_layer: 2, max_distance: 16, unmatched_penalty: 16}"},
+    // Every key the library's defaults set differently, so that `thesis` stays the thesis (with the
+    // unmatched charge of 50 it has always used: the thesis leaves that open).
     {"thesis",
      "{solver: newton, step_control: none, division: 8, layers: 4, start_layer: 2, "
-     "iterations_per_layer: 3}"},
+     "iterations_per_layer: 3, max_iterations: 50, epsilon: 1.0e-4, unmatched_penalty: 50, "
+     "max_distance: .inf, truncated_layers: 1}"},
     {"outdoor", "{solver: lm, layers: 6, start_layer: 2, max_distance: 16, unmatched_penalty: 16}"},
 };
 
@@ -53,8 +56,11 @@ YAML::Node expand_mlndt_preset(const YAML::Node& settings, const std::string& fi
         file, at_line(yaml_line(preset_node)),
         "key 'preset': unknown preset '" + preset_node.Scalar() + "' (known: " + known_names() + ")");
   YAML::Node expanded = mlndt_preset(preset_node.Scalar(), file);
+  // Deep copies: assigning a node would merge the caller's node memory into `expanded`'s, which
+  // writes to `settings` (a data race when threads expand the same map, as parallel odometry does).
   for (const auto& entry : settings)
-    if (entry.first.as<std::string>() != "preset") expanded[entry.first.as<std::string>()] = entry.second;
+    if (entry.first.as<std::string>() != "preset")
+      expanded[entry.first.as<std::string>()] = YAML::Clone(entry.second);
   return expanded;
 }
 

@@ -131,7 +131,8 @@ TEST(SequenceKind, ChainsFbmlndtOverTheRealUosScans) {
       "dataset: {source: folder, path: " +
       (kSource / "data" / "uos_3dtk").string() +
       "}\n"
-      "methods:\n  - {name: fbmlndt, matcher: fbmlndt, settings: {solver: lm}, sampler: all}\n"
+      "methods:\n  - {name: fbmlndt, matcher: fbmlndt, settings: {preset: thesis, solver: lm}, sampler: "
+      "all}\n"
       "params: {scans: 3, odometry: dataset, filter: none, report: dead_reckoning}\n";
   test::write_text(tmp / "e99_uos_chain.yaml", yaml);
   const RunnerSummary s = run_quick(tmp / "e99_uos_chain.yaml", tmp / "results", false);

@@ -23,6 +23,9 @@
 namespace sextant {
 namespace {
 
+// The thesis' settings with the trust-region Newton step (the library's defaults before they moved to
+// the `default` preset): what the measurements in these tests' comments were taken with.
+constexpr const char* kThesisTrustRegion = "{preset: thesis, step_control: trust_region_last}";
 constexpr const char* kOutdoor = "{layers: 6, max_distance: 16, unmatched_penalty: 16, solver: ";
 
 Eigen::Isometry3d read_matrix(const std::string& path) {
@@ -181,7 +184,7 @@ TEST(RealPairs, RoomScansFromTutorialGuess) {
   const PointCloud in = read_cloud(dir + "room_scan2.pcd");
   const Eigen::Isometry3d guess =
       Eigen::Translation3d(1.79387, 0.720047, 0) * Eigen::AngleAxisd(0.6931, Eigen::Vector3d::UnitZ());
-  const RegistrationResult r = align(ref, in, "mlndt", "{}", "all", "{}", guess);
+  const RegistrationResult r = align(ref, in, "mlndt", kThesisTrustRegion, "all", "{}", guess);
   ASSERT_TRUE(r.converged) << r.summary();
   const RegistrationResult icp = align(ref, in, "icp_p2l", "{max_correspondence_distance: 0.5}", "gbs",
                                        "{cell_size: 0.2, max_per_cell: 3}", r.T);
@@ -206,17 +209,46 @@ TEST(RealPairs, NewtonStepControlOnVelodyneFromIdentity) {
   const auto run = [&](const std::string& settings) {
     return difference(truth, align(ref, in, "mlndt", settings, "gbs", "{}", Eigen::Isometry3d::Identity()).T);
   };
-  const Error lm = run("{solver: lm}");
-  const Error trust = run("{solver: newton}");  // the default step control
-  const Error explicit_trust = run("{solver: newton, step_control: trust_region_last}");
-  const Error line_search = run("{solver: newton, step_control: line_search}");
-  const Error plain = run("{solver: newton, step_control: none}");
+  const Error lm = run("{preset: thesis, solver: lm}");
+  const Error trust = run("{preset: thesis, solver: newton, step_control: trust_region_last}");
+  const Error explicit_trust =
+      run("{solver: newton, step_control: trust_region_last, unmatched_penalty: 50, max_distance: .inf}");
+  const Error line_search = run("{preset: thesis, solver: newton, step_control: line_search}");
+  const Error plain = run("{preset: thesis}");  // the step as printed
   EXPECT_LT(lm.metres, 0.15);
   EXPECT_LT(trust.metres, 1.2 * lm.metres);  // LM-like
   EXPECT_LT(trust.degrees, 0.5);
   EXPECT_EQ(trust.metres, explicit_trust.metres);
   EXPECT_LT(line_search.metres, 0.30);
   EXPECT_GT(plain.metres, 1.0);  // the undamped update as printed still diverges here
+}
+
+// The library's defaults are the `default` preset; `thesis` pins every key they set differently.
+TEST(MlndtPresets, LibraryDefaultsAreTheDefaultPresetAndThesisPinsTheThesis) {
+  const MlndtSettings library;
+  const MlndtSettings none = read_mlndt_settings(YAML::Load("{}"), "x");
+  const MlndtSettings preset = read_mlndt_settings(YAML::Load("{preset: default}"), "x");
+  for (const MlndtSettings* s : {&library, &none, &preset}) {
+    EXPECT_EQ(s->optimizer.solver, SolverKind::kLevenbergMarquardt);
+    EXPECT_EQ(s->pyramid.layers, 4);
+    EXPECT_EQ(s->pyramid.division, 8);
+    EXPECT_EQ(s->start_layer, 2);
+    EXPECT_EQ(s->max_distance, 16.0);
+    EXPECT_EQ(s->unmatched_penalty, 16.0);
+    EXPECT_EQ(s->truncated_layers, 1);
+    EXPECT_EQ(s->optimizer.iterations_per_stage, 3);
+  }
+  const MlndtSettings thesis = read_mlndt_settings(YAML::Load("{preset: thesis}"), "x");
+  EXPECT_EQ(thesis.optimizer.solver, SolverKind::kNewton);
+  EXPECT_EQ(thesis.optimizer.step_control, StepControl::kNone);
+  EXPECT_TRUE(std::isinf(thesis.max_distance));
+  EXPECT_EQ(thesis.unmatched_penalty, 50.0);
+  EXPECT_EQ(thesis.pyramid.layers, 4);
+  EXPECT_EQ(thesis.start_layer, 2);
+  EXPECT_EQ(thesis.optimizer.max_iterations, 50);
+  // A key beside the preset overrides it.
+  EXPECT_EQ(read_mlndt_settings(YAML::Load("{preset: thesis, solver: lm}"), "x").optimizer.solver,
+            SolverKind::kLevenbergMarquardt);
 }
 
 // The legacy boolean and the named setting: line_search: true = step_control: line_search; both at
@@ -252,7 +284,7 @@ TEST(RealPairs, FbmlndtFromZeroGuess) {
     return match_pair(*m, *make_sampler("all", YAML::Node()), ref, in, Eigen::Isometry3d::Identity(), rng)
         .result;
   };
-  const RegistrationResult velodyne = run("{}", vref, vin);
+  const RegistrationResult velodyne = run(kThesisTrustRegion, vref, vin);
   ASSERT_TRUE(velodyne.converged) << velodyne.summary();
   EXPECT_LT(difference(vtruth, velodyne.T).metres, 0.10);
   EXPECT_LT(difference(vtruth, velodyne.T).degrees, 0.6);
@@ -260,7 +292,7 @@ TEST(RealPairs, FbmlndtFromZeroGuess) {
   const RegistrationResult outdoor = run("{layers: 6, max_distance: 16, unmatched_penalty: 16}", vref, vin);
   EXPECT_LT(difference(vtruth, outdoor.T).metres, 0.03);
   // KITTI has no trusted ground truth: compare with the matchers' consensus (ML-NDT, LM, outdoor).
-  const RegistrationResult kitti = run("{}", k.ref, k.in);
+  const RegistrationResult kitti = run(kThesisTrustRegion, k.ref, k.in);
   ASSERT_TRUE(kitti.converged) << kitti.summary();
   const Eigen::Isometry3d consensus =
       align(k.ref, k.in, "mlndt", std::string(kOutdoor) + "lm}", "all", "{}", Eigen::Isometry3d::Identity())

@@ -22,12 +22,13 @@ struct MlndtSettings {
   LayerPyramidSettings pyramid;  ///< q = 8, n = 4, cells with > 4 points, eigenvalue ratio 100
   int start_layer = 2;           ///< s: the first layer used [1, n] (§5: 2 without initial guess)
   /// Score charged for an input point outside every Gaussian, so that a step cannot lower the
-  /// score by pushing points out of the cells (the thesis leaves this open) [Mahalanobis units]
-  double unmatched_penalty = 50.0;
+  /// score by pushing points out of the cells (the thesis leaves this open; the `thesis` preset
+  /// charges 50) [Mahalanobis units]
+  double unmatched_penalty = 16.0;
   /// τ: each term of eq. (3.11) becomes min(eᵀC⁻¹e, τ) (a truncated quadratic: outliers from
   /// moving objects and non-overlap add a constant, no gradient); .inf keeps the thesis' plain
-  /// sum. 16 ≈ the 99.9 % quantile of χ² with 3 DOF [Mahalanobis units]
-  double max_distance = std::numeric_limits<double>::infinity();
+  /// sum (the `thesis` preset). 16 ≈ the 99.9 % quantile of χ² with 3 DOF [Mahalanobis units]
+  double max_distance = 16.0;
   /// The truncation applies in the finest `truncated_layers` layers only: coarse layers keep
   /// the plain sum, whose long tails give ML-NDT its capture range [count, 0..n]
   int truncated_layers = 1;
@@ -36,7 +37,7 @@ struct MlndtSettings {
   /// blocks added in a fixed order (ndt_score.hpp), so the registration is bit-identical for
   /// every value [count, ≥ 0]
   int threads = 1;
-  OptimizerSettings optimizer;  ///< solver, iterations per layer (3), cap, ε, DOF mask
+  OptimizerSettings optimizer;  ///< solver (LM), iterations per layer (3), cap (50), ε, DOF mask
   /// Off by default: hypotheses over yaw × x/y scored at a coarse layer, the best refined
   WideBasinSettings wide_basin;
   MlndtSettings();

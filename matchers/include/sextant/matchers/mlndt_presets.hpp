@@ -4,11 +4,13 @@
 //
 //   default — the measured best over every shared real pair and three campus pairs from the guess a
 //             user has (bench/bench_matcher_defaults, docs/matcher_defaults.md): LM, q = 8, n = 4,
-//             s = 2, last-layer terms truncated at 16 (unmatched points charged 16), with GBS input
+//             s = 2, last-layer terms truncated at 16 (unmatched points charged 16), with GBS input;
+//             also the library's defaults (MlndtSettings{}, a settings map without `preset:`)
 //   thesis  — the thesis' exact settings (Table 3.1, §5.1): Newton with the step as printed (eq. 3.16
 //             with H + γI, no step control), q = 8, n = 4, s = 2, three iterations per layer, the
-//             plain sum of eq. 3.11 (the experiment configs spell these settings out method by
-//             method, with each deliberate deviation named in their report sections)
+//             plain sum of eq. 3.11, unmatched points charged 50 (every experiment config of the
+//             thesis' nineteen says `preset: thesis` and overrides what it deliberately changes,
+//             which its report section names)
 //   outdoor — large outdoor scans: the default with n = 6 (finest cells ≈ 0.6–1 m on 100 m scenes)
 #include <string>
 #include <vector>
