@@ -1,8 +1,9 @@
 // `sextant match <reference> <input> [--method mlndt] [--preset default|thesis|outdoor] [--solver lm]
 // [--sampling gbs] [--init x,y,z,a,b,g] [--gt FILE] [--config settings.yaml] [--out aligned.pcd] [--json]`:
 // one registration of a pair with any registered matcher, its transform, iterations, time and
-// the error against a ground-truth matrix (p_ref = T·p_input). With no options: ML-NDT with the
-// `default` preset on a GBS sample, the measured best on real scans (docs/matcher_defaults.md).
+// the error against a ground-truth matrix (p_ref = T·p_input). With no options: ML-NDT on a GBS
+// sample with the preset the reference's size calls for (choose_mlndt_preset: `outdoor` for scenes
+// spanning ≥ 50 m, else `default`), the measured best on real scans (docs/matcher_defaults.md).
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -17,8 +18,10 @@
 #include "matcher_options.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/cloud_io.hpp"
+#include "sextant/core/settings_reader.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/matcher.hpp"
+#include "sextant/matchers/mlndt_presets.hpp"
 #include "sextant/matchers/sampler.hpp"
 
 namespace sextant::cli {
@@ -155,7 +158,23 @@ void print_text(const MatchOptions& o, const PairMatch& m, const std::optional<P
   if (error) std::cout << "error:       " << error->cm << " cm, " << error->deg << " deg (against --gt)\n";
 }
 
-int run_match(const MatchOptions& o) {
+/// Without --preset (and without a `preset:` in --config) the reference's size picks the preset.
+void choose_preset(MatchOptions& o, const PointCloud& reference) {
+  if (!o.preset.empty() || (o.method != "mlndt" && o.method != "fbmlndt")) return;
+  if (!o.config.empty()) {
+    const YAML::Node file = load_yaml_file(o.config);
+    if (file["matcher"].IsMap() && file["matcher"]["preset"].IsDefined()) return;
+  }
+  const PresetChoice choice = choose_mlndt_preset(reference);
+  std::ostringstream note;
+  note << ", chosen for a " << std::fixed << std::setprecision(0) << choice.span << " m wide reference";
+  o.preset = choice.name;
+  o.preset_note = note.str();
+}
+
+int run_match(MatchOptions o) {
+  const PointCloud reference = read_cloud(o.reference);
+  choose_preset(o, reference);
   const MatcherConfig config = read_matcher_config(o);
   const auto matcher =
       make_matcher(o.method, config.matcher, o.config.empty() ? "matcher settings (--solver)" : o.config);
@@ -164,7 +183,6 @@ int run_match(const MatchOptions& o) {
   const Eigen::Isometry3d initial = o.init.empty() ? Eigen::Isometry3d::Identity() : parse_init(o.init);
   std::optional<Eigen::Isometry3d> truth;
   if (!o.gt.empty()) truth = read_ground_truth(o.gt);
-  const PointCloud reference = read_cloud(o.reference);
   const PointCloud input = read_cloud(o.input);
   Rng rng(o.seed);
   const PairMatch m = match_pair(*matcher, *sampler, reference, input, initial, rng);
@@ -192,7 +210,8 @@ void add_match_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--preset", o->preset,
                   "mlndt/fbmlndt settings: default (measured best on real scans), thesis (the thesis' exact "
-                  "settings), outdoor (6 layers for large outdoor scans)");
+                  "settings), outdoor (6 layers for large outdoor scans); without it, outdoor for a "
+                  "reference spanning >= 50 m, else default");
   cmd->add_option("--solver", o->solver, "Solver for the NDT family (newton, lm, ceres)");
   cmd->add_option("--sampling", o->sampling, "Input sampler (all, regular, random, gbs, ...)")
       ->capture_default_str();

@@ -33,8 +33,9 @@ MatcherConfig read_matcher_config(const MatcherOptions& o) {
 
 std::string describe_matcher(const MatcherOptions& o) {
   return o.method +
-         (ndt_family(o.method) ? " (preset " + (o.preset.empty() ? std::string("default") : o.preset) + ")"
-                               : "") +
+         (ndt_family(o.method)
+              ? " (preset " + (o.preset.empty() ? std::string("default") : o.preset) + o.preset_note + ")"
+              : "") +
          (o.solver.empty() ? "" : " (solver " + o.solver + ")");
 }
 
