@@ -3,6 +3,7 @@
 #include <ceres/ceres.h>
 
 #include <cmath>
+#include <vector>
 
 namespace sextant {
 
@@ -17,6 +18,9 @@ class MahalanobisCost final : public ceres::CostFunction {
         unmatched_residual_(std::sqrt(unmatched_penalty)),
         max_distance_(max_distance),
         truncated_residual_(std::sqrt(max_distance)) {
+    sqrt_information_.reserve(grid.gaussian_count());
+    for (std::size_t g = 0; g < grid.gaussian_count(); ++g)
+      sqrt_information_.push_back(grid.sqrt_information(static_cast<int>(g)));
     set_num_residuals(static_cast<int>(3 * input.size()));
     mutable_parameter_block_sizes()->push_back(6);
   }
@@ -43,7 +47,7 @@ class MahalanobisCost final : public ceres::CostFunction {
         continue;
       }
       const CellGaussian& cell = grid_.gaussian(g);
-      const Eigen::Matrix3d Lt = grid_.sqrt_information(g).cast<double>();
+      const Eigen::Matrix3d& Lt = sqrt_information_[static_cast<std::size_t>(g)];
       const Eigen::Vector3d e = x - Eigen::Vector3d(cell.mean[0], cell.mean[1], cell.mean[2]);  // eq. (3.10)
       r = Lt * e;
       if (r.squaredNorm() > max_distance_) {  // min(eᵀC⁻¹e, τ): a constant beyond τ
@@ -66,6 +70,7 @@ class MahalanobisCost final : public ceres::CostFunction {
   double unmatched_residual_;
   double max_distance_;
   double truncated_residual_;
+  std::vector<Eigen::Matrix3d> sqrt_information_;  ///< Lᵀ per Gaussian of grid_
 };
 
 /// Records one trace row per Ceres iteration (the pose is updated in place every iteration).

@@ -31,35 +31,39 @@ namespace {
 
 using ndt_detail::CellSums;
 
-/// Mean (eq. 3.2), covariance (eq. 3.3) with eigenvalues raised to λmax / ratio; false when the
-/// cell has (almost) no spread: λmax below `min_spread` (repeated points).
+/// Mean (eq. 3.2) and inverse covariance (eq. 3.3) with eigenvalues raised to λmax / ratio; false
+/// when the cell has (almost) no spread: λmax below `min_spread` (repeated points).
 bool cell_gaussian(const CellSums& s, const Eigen::Vector3d& origin, const CellStatsSettings& settings,
-                   CellGaussian& out, Eigen::Matrix3d& covariance, Eigen::Matrix3f& sqrt_info) {
-  const double max_ratio = settings.max_eigen_ratio;
+                   CellGaussian& out) {
   const double n = s.count;
   const Eigen::Vector3d mean = Eigen::Vector3d(s.sum[0], s.sum[1], s.sum[2]) / n;
   Eigen::Matrix3d sum_sq;
   sum_sq << s.sum_sq[0], s.sum_sq[1], s.sum_sq[2], s.sum_sq[1], s.sum_sq[3], s.sum_sq[4], s.sum_sq[2],
       s.sum_sq[4], s.sum_sq[5];
-  Eigen::Matrix3d C = (sum_sq - n * mean * mean.transpose()) / (n - 1.0);
+  const Eigen::Matrix3d C = (sum_sq - n * mean * mean.transpose()) / (n - 1.0);
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
   eig.computeDirect(C);
-  Eigen::Vector3d l = eig.eigenvalues();  // ascending
-  const double floor_value = l(2) / max_ratio;
+  const Eigen::Vector3d& l = eig.eigenvalues();  // ascending
   if (!(l(2) > 0.0) || !(l(2) >= settings.min_spread) || !std::isfinite(l(2))) return false;
-  for (int j = 0; j < 2; ++j) l(j) = std::max(l(j), floor_value);  // C' = V Λ' Vᵀ
+  // C'⁻¹ = V Λ'⁻¹ Vᵀ with Λ' = max(Λ, λmax / ratio)
+  const double floor_value = l(2) / settings.max_eigen_ratio;
+  const Eigen::Vector3d inv_l(1.0 / std::max(l(0), floor_value), 1.0 / std::max(l(1), floor_value),
+                              1.0 / l(2));
   const Eigen::Matrix3d& V = eig.eigenvectors();
-  covariance = V * l.asDiagonal() * V.transpose();
-  const Eigen::Matrix3d inv = V * l.cwiseInverse().asDiagonal() * V.transpose();
+  const Eigen::Matrix3d inv = V * inv_l.asDiagonal() * V.transpose();
   const Eigen::Vector3d m = mean + origin;
   for (int i = 0; i < 3; ++i) out.mean[i] = static_cast<float>(m(i));
   const double upper[6] = {inv(0, 0), inv(0, 1), inv(0, 2), inv(1, 1), inv(1, 2), inv(2, 2)};
   for (int i = 0; i < 6; ++i) out.inv_cov[i] = static_cast<float>(upper[i]);
-  // C⁻¹ = L Lᵀ with L = V Λ'^(-1/2): any square root serves the residual Lᵀe; use the
-  // triangular one from a Cholesky factorisation for a compact upper-triangular Lᵀ.
-  const Eigen::Matrix3d L = Eigen::LLT<Eigen::Matrix3d>(inv).matrixL();
-  sqrt_info = L.transpose().cast<float>();
   return true;
+}
+
+/// The stored C'⁻¹ of a cell as a symmetric double matrix.
+Eigen::Matrix3d information_of(const CellGaussian& g) {
+  const float* u = g.inv_cov;
+  Eigen::Matrix3d inv;
+  inv << u[0], u[1], u[2], u[1], u[3], u[4], u[2], u[4], u[5];
+  return inv;
 }
 
 }  // namespace
@@ -100,31 +104,51 @@ bool NdtGrid::init(const Eigen::Vector3d& origin, double cell_edge, const Eigen:
 }
 
 std::vector<CellSums> NdtGrid::split(const PointCloud& reference) {
-  // One pass, sums per occupied cell in order of first appearance.
-  std::vector<CellSums> sums;
-  sums.reserve(std::min(reference.size(), index_.size()));
   const double inv_edge = 1.0 / cell_edge_;
   const double ox = origin_.x(), oy = origin_.y(), oz = origin_.z();
   const int nx = dims_.x(), ny = dims_.y(), nz = dims_.z();
   // Points on the far face of the box belong to the last cell (the box is closed).
   const double fx_max = nx + 1e-9, fy_max = ny + 1e-9, fz_max = nz + 1e-9;
+  const std::vector<Eigen::Vector3f>& points = reference.points();
+  // First every point's cell (kOutside for points outside the box, or not finite: NaN fails every
+  // comparison, ∞ exceeds the far face), so that the accumulation below can prefetch the cells of
+  // points ahead: the index and the sums are read in the points' (random) order.
+  constexpr std::uint32_t kOutside = 0xffffffffu;
+  std::vector<std::uint32_t> cells(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double fx = (static_cast<double>(points[i].x()) - ox) * inv_edge,
+                 fy = (static_cast<double>(points[i].y()) - oy) * inv_edge,
+                 fz = (static_cast<double>(points[i].z()) - oz) * inv_edge;
+    const bool inside = fx >= 0.0 && fy >= 0.0 && fz >= 0.0 && fx <= fx_max && fy <= fy_max && fz <= fz_max;
+    cells[i] = inside ? static_cast<std::uint32_t>(cell_index(std::min(static_cast<int>(fx), nx - 1),
+                                                              std::min(static_cast<int>(fy), ny - 1),
+                                                              std::min(static_cast<int>(fz), nz - 1)))
+                      : kOutside;
+  }
+  // One pass, sums per occupied cell in order of first appearance.
+  std::vector<CellSums> sums;
+  sums.reserve(std::min(reference.size(), index_.size()));
   std::int32_t* index = index_.data();
-  for (const Eigen::Vector3f& pf : reference.points()) {
-    const double px = static_cast<double>(pf.x()) - ox, py = static_cast<double>(pf.y()) - oy,
-                 pz = static_cast<double>(pf.z()) - oz;
-    const double fx = px * inv_edge, fy = py * inv_edge, fz = pz * inv_edge;
-    // Outside (or not finite: NaN fails every comparison, ∞ exceeds the far face).
-    if (!(fx >= 0.0 && fy >= 0.0 && fz >= 0.0 && fx <= fx_max && fy <= fy_max && fz <= fz_max)) continue;
-    const int cx = std::min(static_cast<int>(fx), nx - 1), cy = std::min(static_cast<int>(fy), ny - 1),
-              cz = std::min(static_cast<int>(fz), nz - 1);
-    const std::size_t cell = cell_index(cx, cy, cz);
+  constexpr std::size_t kIndexAhead = 16, kSumsAhead = 8;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (i + kIndexAhead < cells.size() && cells[i + kIndexAhead] != kOutside)
+      __builtin_prefetch(index + cells[i + kIndexAhead]);
+    if (i + kSumsAhead < cells.size() && cells[i + kSumsAhead] != kOutside) {
+      const std::int32_t ahead = index[cells[i + kSumsAhead]];
+      if (ahead >= 0) __builtin_prefetch(sums.data() + ahead, 1);
+    }
+    const std::uint32_t cell = cells[i];
+    if (cell == kOutside) continue;
     std::int32_t& slot = index[cell];
     if (slot < 0) {
       slot = static_cast<std::int32_t>(sums.size());
       CellSums& fresh = sums.emplace_back();
       fresh.cell = static_cast<std::int32_t>(cell);
-      fresh.x = cx, fresh.y = cy, fresh.z = cz;
+      const Eigen::Vector3i c = cell_coordinates(cell);
+      fresh.x = c.x(), fresh.y = c.y(), fresh.z = c.z();
     }
+    const double px = static_cast<double>(points[i].x()) - ox, py = static_cast<double>(points[i].y()) - oy,
+                 pz = static_cast<double>(points[i].z()) - oz;
     CellSums& s = sums[static_cast<std::size_t>(slot)];
     ++s.count;
     s.sum[0] += px, s.sum[1] += py, s.sum[2] += pz;
@@ -159,21 +183,15 @@ std::vector<CellSums> NdtGrid::merge_children(const std::vector<CellSums>& child
 
 void NdtGrid::generate(const std::vector<CellSums>& sums, const CellStatsSettings& settings) {
   gaussians_.reserve(sums.size());
-  covariances_.reserve(sums.size());
-  sqrt_info_.reserve(sums.size());
   cell_of_gaussian_.reserve(sums.size());
   for (const CellSums& s : sums) {
     std::int32_t& slot = index_[static_cast<std::size_t>(s.cell)];
     slot = -1;
     if (static_cast<std::size_t>(s.count) < settings.min_points) continue;
     CellGaussian g{};
-    Eigen::Matrix3d covariance;
-    Eigen::Matrix3f sqrt_info;
-    if (!cell_gaussian(s, origin_, settings, g, covariance, sqrt_info)) continue;
+    if (!cell_gaussian(s, origin_, settings, g)) continue;
     slot = static_cast<std::int32_t>(gaussians_.size());
     gaussians_.push_back(g);
-    covariances_.push_back(covariance);
-    sqrt_info_.push_back(sqrt_info);
     cell_of_gaussian_.push_back(s.cell);
   }
 }
@@ -196,11 +214,24 @@ NdtGrid NdtGrid::build_over_bounds(const PointCloud& reference, double cell_edge
   return build(reference, b.min.cast<double>(), cell_edge, dims, settings);
 }
 
-Eigen::Vector3i NdtGrid::cell_of(int g) const {
-  const auto cell = static_cast<std::size_t>(cell_of_gaussian_[static_cast<std::size_t>(g)]);
+Eigen::Matrix3d NdtGrid::covariance(int g) const {
+  return information_of(gaussian(g)).inverse();
+}
+
+Eigen::Matrix3d NdtGrid::sqrt_information(int g) const {
+  // C'⁻¹ = L Lᵀ: any square root serves the residual Lᵀe; the Cholesky factor gives a compact
+  // upper-triangular Lᵀ.
+  return Eigen::LLT<Eigen::Matrix3d>(information_of(gaussian(g))).matrixL().transpose();
+}
+
+Eigen::Vector3i NdtGrid::cell_coordinates(std::size_t cell) const {
   const auto nx = static_cast<std::size_t>(dims_.x()), ny = static_cast<std::size_t>(dims_.y());
   return {static_cast<int>(cell % nx), static_cast<int>((cell / nx) % ny),
           static_cast<int>(cell / (nx * ny))};
+}
+
+Eigen::Vector3i NdtGrid::cell_of(int g) const {
+  return cell_coordinates(static_cast<std::size_t>(cell_of_gaussian_[static_cast<std::size_t>(g)]));
 }
 
 LayerGeometry layer_geometry(const Bounds& bounds, int q, int layer) {

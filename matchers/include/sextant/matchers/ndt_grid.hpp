@@ -72,10 +72,12 @@ class NdtGrid {
   }
   const CellGaussian& gaussian(int g) const { return gaussians_[static_cast<std::size_t>(g)]; }
   const std::vector<CellGaussian>& gaussians() const { return gaussians_; }
-  /// Inflated covariance C' of Gaussian g (double precision, for tests and reports).
-  const Eigen::Matrix3d& covariance(int g) const { return covariances_[static_cast<std::size_t>(g)]; }
-  /// Upper-triangular Lᵀ with C⁻¹ = L·Lᵀ (the Ceres residual Lᵀe).
-  const Eigen::Matrix3f& sqrt_information(int g) const { return sqrt_info_[static_cast<std::size_t>(g)]; }
+  /// Inflated covariance C' of Gaussian g, the inverse of its stored C'⁻¹ (float precision; for
+  /// tests and reports, computed on each call: the build keeps only the hot-loop layout).
+  Eigen::Matrix3d covariance(int g) const;
+  /// Upper-triangular Lᵀ with C'⁻¹ = L·Lᵀ (the Ceres residual Lᵀe), from the stored C'⁻¹; computed
+  /// on each call.
+  Eigen::Matrix3d sqrt_information(int g) const;
   /// Index of the cell holding Gaussian g along each axis.
   Eigen::Vector3i cell_of(int g) const;
 
@@ -99,6 +101,8 @@ class NdtGrid {
                static_cast<std::size_t>(dims_.x()) +
            static_cast<std::size_t>(ix);
   }
+  /// (ix, iy, iz) of a cell_index().
+  Eigen::Vector3i cell_coordinates(std::size_t cell) const;
 
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
   Eigen::Vector3i dims_ = Eigen::Vector3i::Zero();
@@ -107,8 +111,6 @@ class NdtGrid {
   bool too_large_ = false;
   std::vector<std::int32_t> index_;  ///< cell → Gaussian index or −1
   std::vector<CellGaussian> gaussians_;
-  std::vector<Eigen::Matrix3d> covariances_;
-  std::vector<Eigen::Matrix3f> sqrt_info_;
   std::vector<std::int32_t> cell_of_gaussian_;
 };
 
