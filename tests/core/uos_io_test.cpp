@@ -92,7 +92,7 @@ TEST(UosFrames, LastLineIsFinalRegistration) {
   EXPECT_NEAR(frames.back().linear().determinant(), 1.0, 1e-5);
 }
 
-// Median nearest-neighbour distance from (every 10th point of) `moving` to `fixed`, with a
+// Median nearest-neighbour distance from (every 50th point of) `moving` to `fixed`, with a
 // voxel hash of cell `cell` searched over the 27 neighbouring cells (capped at `cell`).
 double median_nn_distance(const PointCloud& fixed, const PointCloud& moving, float cell) {
   auto key = [cell](const Eigen::Vector3f& p) {
@@ -102,7 +102,7 @@ double median_nn_distance(const PointCloud& fixed, const PointCloud& moving, flo
   std::unordered_multimap<long long, Eigen::Vector3f> grid;
   for (const auto& p : fixed.points()) grid.emplace(key(p), p);
   std::vector<float> distances;
-  for (std::size_t i = 0; i < moving.size(); i += 10) {
+  for (std::size_t i = 0; i < moving.size(); i += 50) {
     const Eigen::Vector3f& q = moving[i];
     if (q.norm() < 0.6f) continue;  // robot self-hits coincide in every scan
     float best = cell;
