@@ -15,6 +15,7 @@
 
 #include "sextant/core/io/cloud_io.hpp"
 #include "sextant/core/rng.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/samplers.hpp"
 #include "sextant/synth/campus.hpp"
@@ -23,7 +24,6 @@ namespace {
 
 using namespace sextant;
 
-constexpr double kDegree = M_PI / 180.0;
 const char* const kPlain = "{solver: lm, layers: 6, max_distance: 16, unmatched_penalty: 16}";
 
 struct Pair {
@@ -123,7 +123,7 @@ int main(int argc, char** argv) {
         "### %s (%zu reference points, %zu GBS input points; reference pose T: %.2f m, %.1f°, under D)\n\n"
         "| offset m \\ yaw ° |",
         pair.name.c_str(), pair.reference.size(), sample.size(), translation_norm(pair.truth),
-        rotation_angle(pair.truth) / kDegree);
+        rotation_angle(pair.truth) / kRadPerDeg);
     for (double yaw : yaws) std::printf(" %.0f |", yaw);
     std::printf("\n|---|");
     for (std::size_t k = 0; k < yaws.size(); ++k) std::printf("---|");
@@ -133,8 +133,8 @@ int main(int argc, char** argv) {
     for (double offset : offsets) {
       std::printf("| %.0f |", offset);
       for (double yaw : yaws) {
-        const Eigen::Isometry3d D =
-            Eigen::Translation3d(offset, 0, 0) * Eigen::AngleAxisd(yaw * kDegree, Eigen::Vector3d::UnitZ());
+        const Eigen::Isometry3d D = Eigen::Translation3d(offset, 0, 0) *
+                                    Eigen::AngleAxisd(yaw * kRadPerDeg, Eigen::Vector3d::UnitZ());
         const Eigen::Isometry3d truth = D * pair.truth;
         const PointCloud input = transformed(sample, truth.inverse() * pair.truth);
         std::string cell;
@@ -144,7 +144,7 @@ int main(int argc, char** argv) {
           const RegistrationResult r = matcher.align(input, Eigen::Isometry3d::Identity());
           seconds[m] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
           const Eigen::Isometry3d E = truth.inverse() * r.T;
-          const bool ok = translation_norm(E) < 0.10 && rotation_angle(E) < 0.5 * kDegree;
+          const bool ok = translation_norm(E) < 0.10 && rotation_angle(E) < 0.5 * kRadPerDeg;
           successes[m] += ok;
           cell += ok ? "+" : ".";
           if (m == 0) cell += "/";

@@ -13,7 +13,7 @@ namespace sextant {
 
 namespace {
 
-constexpr double kLeft = 72, kRight = 24, kTop = 40, kBottom = 56;  // plot-area margins [px]
+using svg::kBottom, svg::kLeft, svg::kRight, svg::kTop;
 
 struct Range {
   double lo = std::numeric_limits<double>::infinity();

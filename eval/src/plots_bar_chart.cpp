@@ -8,7 +8,8 @@
 namespace sextant {
 namespace {
 
-constexpr double kLeft = 72, kRight = 24, kTop = 40, kBottom = 56;  // plot-area margins [px]
+using svg::kBottom, svg::kLeft, svg::kRight, svg::kTop;
+
 constexpr double kGroupFill = 0.8;  ///< share of a group's width covered by its bars
 
 /// The value range: the data and zero, padded by 5 % on the sides that hold data.

@@ -5,14 +5,13 @@
 #include <stdexcept>
 
 #include "sextant/core/io/uos.hpp"
+#include "sextant/core/units.hpp"
 
 namespace sextant {
 
 namespace {
 
 constexpr double kCmPerMetre = 100.0;
-constexpr double kDegPerRad = 180.0 / M_PI;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 RegistrationError non_finite_error() {
   RegistrationError e;

@@ -5,11 +5,11 @@
 #include <limits>
 
 #include "sextant/core/rng.hpp"
+#include "sextant/core/units.hpp"
+#include "sextant/eval/statistics.hpp"
 
 namespace sextant {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct Pairs {
   std::vector<double> x, y;
@@ -48,12 +48,6 @@ LineFit fit(const std::vector<double>& x, const std::vector<double>& y) {
   f.slope = sxy / sxx;
   f.intercept = my - f.slope * mx;
   return f;
-}
-
-double median_of(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
 
 }  // namespace

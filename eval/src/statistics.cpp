@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace sextant {
 
@@ -45,6 +46,16 @@ SampleStats summarize(const std::vector<double>& values) {
 
 double rms(const std::vector<double>& values) {
   return summarize(values).rms;
+}
+
+double mean_of(const std::vector<double>& values) {
+  const SampleStats s = summarize(values);
+  return s.count > 0 ? s.mean : std::numeric_limits<double>::quiet_NaN();
+}
+
+double median_of(const std::vector<double>& values) {
+  const SampleStats s = summarize(values);
+  return s.count > 0 ? s.median : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace sextant

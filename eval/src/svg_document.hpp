@@ -38,7 +38,8 @@ class Document {
 
 /// Legend entries: name, colour.
 using LegendEntries = std::vector<std::pair<std::string, std::string>>;
-constexpr double kLegendRow = 18;  ///< height of one legend row [px]
+constexpr double kLeft = 72, kRight = 24, kTop = 40, kBottom = 56;  ///< plot-area margins [px]
+constexpr double kLegendRow = 18;                                   ///< height of one legend row [px]
 
 /// Rows needed to flow the entries left to right within `width` px.
 int legend_rows(const LegendEntries& entries, double width);

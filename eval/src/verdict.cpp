@@ -7,11 +7,10 @@
 
 #include "sextant/core/chi_square.hpp"
 #include "sextant/core/rng.hpp"
+#include "sextant/core/units.hpp"
 
 namespace sextant {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 Interval undefined(double confidence, std::size_t n = 0) {
   return {kNaN, kNaN, kNaN, confidence, n};

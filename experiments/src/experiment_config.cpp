@@ -210,4 +210,10 @@ std::vector<std::filesystem::path> list_experiment_configs(const std::filesystem
   return files;
 }
 
+const SweepAxis* find_axis(const ExperimentConfig& config, const std::string& name) {
+  for (const SweepAxis& axis : config.sweep)
+    if (axis.name == name) return &axis;
+  return nullptr;
+}
+
 }  // namespace sextant

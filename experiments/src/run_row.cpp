@@ -8,12 +8,11 @@
 #include <unordered_set>
 
 #include "sextant/core/atomic_file.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/experiments/json.hpp"
 
 namespace sextant {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 double number_of(const YAML::Node& node) {
   if (!node.IsDefined() || node.IsNull()) return kNaN;
@@ -43,6 +42,12 @@ std::string csv_field(const std::string& text) {
 double RunRow::value(const std::string& name) const {
   const auto it = values.find(name);
   return it == values.end() ? kNaN : it->second;
+}
+
+const std::vector<double>& series_or_empty(const RunRow& row, const std::string& name) {
+  static const std::vector<double> empty;
+  const auto it = row.series.find(name);
+  return it == row.series.end() ? empty : it->second;
 }
 
 RunRow row_for(const RunSpec& run, const std::string& experiment) {

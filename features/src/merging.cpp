@@ -9,12 +9,11 @@
 #include <Eigen/Eigenvalues>
 
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/core/units.hpp"
 
 namespace sextant {
 
 namespace {
-
-constexpr double kDegPerRad = 180.0 / M_PI;
 
 double orientation_deg(const PlaneLandmark& a, const PlaneLandmark& b) {
   return std::acos(std::clamp(a.plane.normal.dot(b.plane.normal), -1.0, 1.0)) * kDegPerRad;

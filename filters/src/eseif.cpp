@@ -16,7 +16,7 @@
 namespace sextant {
 namespace {
 
-constexpr int kPose = 0;
+using detail::kPose;
 
 bool contains(const std::vector<int>& set, int v) {
   return std::find(set.begin(), set.end(), v) != set.end();

@@ -10,8 +10,6 @@
 namespace sextant::detail {
 namespace {
 
-constexpr int kPose = 0;
-
 Eigen::SparseMatrix<double> to_sparse(const BlockInformationMatrix& omega) {
   std::vector<Eigen::Triplet<double>> entries;
   for (int i = 0; i < omega.variables(); ++i) {

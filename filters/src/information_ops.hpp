@@ -10,6 +10,8 @@
 
 namespace sextant::detail {
 
+constexpr int kPose = 0;  ///< the pose's variable index (landmark k is variable k + 1)
+
 /// Row/column offsets of each variable inside a gathered dense block (size vars.size() + 1).
 std::vector<Eigen::Index> local_offsets(const BlockInformationMatrix& omega, const std::vector<int>& vars);
 Eigen::VectorXd gather_vector(const BlockInformationMatrix& omega, const Eigen::VectorXd& v,

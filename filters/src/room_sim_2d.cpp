@@ -10,12 +10,11 @@
 
 #include "sextant/core/pose.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/filters/scan_matching_kf.hpp"
 
 namespace sextant {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// Distance along the unit direction d from p (inside the room) to the first wall or circle.
 double cast_ray(const RoomSim2dSettings& s, const Eigen::Vector2d& p, const Eigen::Vector2d& d) {

@@ -13,8 +13,8 @@
 namespace sextant {
 namespace {
 
-constexpr int kPose = 0;
 using detail::gather_vector;
+using detail::kPose;
 using detail::local_offsets;
 using detail::scatter_add_vector;
 

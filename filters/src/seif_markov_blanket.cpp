@@ -9,12 +9,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "information_ops.hpp"
 #include "sextant/filters/seif.hpp"
 
 namespace sextant {
 namespace {
 
-constexpr int kPose = 0;
+using detail::kPose;
 
 bool contains(const std::vector<int>& set, int v) {
   return std::find(set.begin(), set.end(), v) != set.end();

@@ -8,13 +8,12 @@
 
 #include "sextant/core/pose.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/matchers/ndt_score.hpp"
 
 namespace sextant {
 
 namespace {
-
-constexpr double kDegree = M_PI / 180.0;
 
 struct Hypothesis {
   double score = 0.0;
@@ -123,8 +122,8 @@ std::vector<Eigen::Isometry3d> wide_basin_starts(const std::vector<NdtGrid>& lay
       static_cast<int>(std::floor(settings.translation_range / settings.translation_step + 1e-9));
   const double full_turn_steps = 360.0 / settings.yaw_step_deg;
   const auto pose_of = [&](const Hypothesis& h) {
-    return hypothesis_pose(initial, h.yaw * settings.yaw_step_deg * kDegree, h.x * settings.translation_step,
-                           h.y * settings.translation_step);
+    return hypothesis_pose(initial, h.yaw * settings.yaw_step_deg * kRadPerDeg,
+                           h.x * settings.translation_step, h.y * settings.translation_step);
   };
   // Prescreen every hypothesis with a smaller strided sample when asked, rescore the best.
   const bool prescreen = settings.prescreen_points > 0 && settings.prescreen_points < settings.sample_points;

@@ -4,14 +4,11 @@
 #include <limits>
 
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/posegraph/relative_pose_factor.hpp"
 
 namespace sextant {
-namespace {
-
-constexpr double kDeg = 180.0 / 3.14159265358979323846;
-
-}  // namespace
+namespace {}  // namespace
 
 bool LoopClosureSettings::valid(std::string* why) const {
   const auto fail = [&](const char* text) {
@@ -82,7 +79,7 @@ LoopClosureDecision judge_loop_closure(const RegistrationResult& r, const LoopCl
       r.input_points ? static_cast<double>(r.matched_points) / static_cast<double>(r.input_points) : 0.0;
   const Eigen::Isometry3d correction = relative(candidate.guess, r.T);
   d.correction_m = translation_norm(correction);
-  d.correction_deg = rotation_angle(correction) * kDeg;
+  d.correction_deg = rotation_angle(correction) * kDegPerRad;
   if (!r.converged) {
     d.rejection = ClosureRejection::not_converged;
     d.reason = "did not converge (" + to_string(r.why) + ")";

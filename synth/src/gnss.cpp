@@ -1,4 +1,5 @@
 #include "sextant/synth/gnss.hpp"
+#include "sextant/core/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,9 +8,7 @@
 #include <GeographicLib/LocalCartesian.hpp>
 
 namespace sextant::synth {
-namespace {
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
-}  // namespace
+namespace {}  // namespace
 
 std::vector<GnssRecord> simulate_gnss(const std::vector<Eigen::Isometry3d>& ground_truth,
                                       const std::vector<double>& stamps, const GnssSettings& s, Rng& rng) {
@@ -24,9 +23,9 @@ std::vector<GnssRecord> simulate_gnss(const std::vector<Eigen::Isometry3d>& grou
                                                                 rng.normal(0.0, s.sigma_vertical));
     enu.Reverse(p.x(), p.y(), p.z(), r.latitude, r.longitude, r.altitude);
     const Eigen::Matrix3d& R = T.linear();  // ZYX angles
-    r.yaw = std::atan2(R(1, 0), R(0, 0)) + rng.normal(0.0, s.sigma_attitude_deg * kDeg);
-    r.pitch = -std::asin(std::clamp(R(2, 0), -1.0, 1.0)) + rng.normal(0.0, s.sigma_attitude_deg * kDeg);
-    r.roll = std::atan2(R(2, 1), R(2, 2)) + rng.normal(0.0, s.sigma_attitude_deg * kDeg);
+    r.yaw = std::atan2(R(1, 0), R(0, 0)) + rng.normal(0.0, s.sigma_attitude_deg * kRadPerDeg);
+    r.pitch = -std::asin(std::clamp(R(2, 0), -1.0, 1.0)) + rng.normal(0.0, s.sigma_attitude_deg * kRadPerDeg);
+    r.roll = std::atan2(R(2, 1), R(2, 2)) + rng.normal(0.0, s.sigma_attitude_deg * kRadPerDeg);
     r.position_accuracy = s.sigma_horizontal;
     out.push_back(r);
   }

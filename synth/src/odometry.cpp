@@ -3,11 +3,10 @@
 #include <cmath>
 
 #include "sextant/core/pose.hpp"
+#include "sextant/core/units.hpp"
 
 namespace sextant::synth {
 namespace {
-
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 Eigen::Isometry3d planar_isometry(const Increment2D& p) {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
@@ -40,7 +39,7 @@ Increment2D corrupt_increment(const Increment2D& truth, const OdometrySettings& 
   if (s.model == "gaussian") {  // figs 5.32–5.34
     out.forward += rng.normal(0.0, s.gaussian_translation);
     out.lateral += rng.normal(0.0, s.gaussian_translation);
-    out.heading += rng.normal(0.0, s.gaussian_heading_deg * kDeg);
+    out.heading += rng.normal(0.0, s.gaussian_heading_deg * kRadPerDeg);
     return out;
   }
   // "thesis": table 5.1, biased and heavy-tailed.
@@ -48,7 +47,7 @@ Increment2D corrupt_increment(const Increment2D& truth, const OdometrySettings& 
   out.lateral += s.bias_lateral + heavy_tailed(s.sigma_lateral, s.outlier_probability, s.outlier_scale, rng);
   out.heading +=
       (s.bias_heading_deg + heavy_tailed(s.sigma_heading_deg, s.outlier_probability, s.outlier_scale, rng)) *
-      kDeg;
+      kRadPerDeg;
   return out;
 }
 

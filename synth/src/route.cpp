@@ -1,12 +1,11 @@
 #include "sextant/synth/route.hpp"
+#include "sextant/core/units.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace sextant::synth {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// A straight line or a circular arc of the route.
 struct Piece {

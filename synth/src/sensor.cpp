@@ -1,14 +1,11 @@
 #include "sextant/synth/sensor.hpp"
+#include "sextant/core/units.hpp"
 
 #include <cmath>
 #include <map>
 
 namespace sextant::synth {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-}  // namespace
+namespace {}  // namespace
 
 SimulatedScan simulate_scan(const World& world, const SensorSettings& sensor, double sensor_height,
                             const Eigen::Isometry3d& world_from_sensor, Rng& rng) {

@@ -1,4 +1,5 @@
 #include "sextant/synth/world_builder.hpp"
+#include "sextant/core/units.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +12,6 @@
 namespace sextant::synth {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 using namespace detail;  // NOLINT: the builder's own geometry helpers
 
 class Builder {

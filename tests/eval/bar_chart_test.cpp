@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "sextant/core/units.hpp"
 #include "sextant/eval/bar_chart.hpp"
 #include "xml_check.hpp"
 
@@ -11,7 +12,6 @@ namespace sextant {
 namespace {
 
 using sextant::testing::check_xml;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// The value of attribute `name` in the SVG tag `tag`; empty when absent. (String scanning, not
 /// std::regex: GCC 12's regex trips -Wmaybe-uninitialized in the sanitizer build.)

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "sextant/core/units.hpp"
 #include "sextant/eval/plots.hpp"
 #include "xml_check.hpp"
 
@@ -10,7 +11,6 @@ namespace sextant {
 namespace {
 
 using sextant::testing::check_xml;
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 int count(const std::string& s, const std::string& what) {
   int n = 0;

@@ -3,12 +3,11 @@
 #include <cmath>
 #include <limits>
 
+#include "sextant/core/units.hpp"
 #include "sextant/eval/registration_metrics.hpp"
 
 namespace sextant {
 namespace {
-
-constexpr double kDeg = 180.0 / M_PI;
 
 Eigen::Isometry3d pose(double x, double y, double z, double a, double b, double g) {
   return to_isometry(Pose6{x, y, z, a, b, g});
@@ -19,10 +18,10 @@ TEST(RegistrationError, PerParameterInCentimetresAndDegrees) {
   const Eigen::Isometry3d est = gt * pose(0.10, -0.20, 0.05, 0.01, 0.02, -0.03);
   const RegistrationError e = registration_error(est, gt);
   ASSERT_TRUE(e.finite);
-  const double expected[6] = {10.0, -20.0, 5.0, 0.01 * kDeg, 0.02 * kDeg, -0.03 * kDeg};
+  const double expected[6] = {10.0, -20.0, 5.0, 0.01 * kDegPerRad, 0.02 * kDegPerRad, -0.03 * kDegPerRad};
   for (int k = 0; k < 6; ++k) EXPECT_NEAR(e.parameters[k], expected[k], 1e-9) << parameter_names()[k];
   EXPECT_NEAR(e.translation_cm, std::sqrt(100.0 + 400.0 + 25.0), 1e-9);
-  EXPECT_NEAR(e.rotation_deg, rotation_angle(pose(0, 0, 0, 0.01, 0.02, -0.03)) * kDeg, 1e-9);
+  EXPECT_NEAR(e.rotation_deg, rotation_angle(pose(0, 0, 0, 0.01, 0.02, -0.03)) * kDegPerRad, 1e-9);
 }
 
 TEST(RegistrationError, UosAxes) {
@@ -36,13 +35,13 @@ TEST(RegistrationError, UosAxes) {
   const RegistrationError yaw =
       registration_error(pose(0, 0, 0, 0, 0, 0.1), Eigen::Isometry3d::Identity(), AxisConvention::uos);
   EXPECT_NEAR(yaw.parameters[3], 0.0, 1e-9);
-  EXPECT_NEAR(yaw.parameters[4], -0.1 * kDeg, 1e-9);
+  EXPECT_NEAR(yaw.parameters[4], -0.1 * kDegPerRad, 1e-9);
   EXPECT_NEAR(yaw.parameters[5], 0.0, 1e-9);
   // Roll about our x is about z_uos.
   const RegistrationError roll =
       registration_error(pose(0, 0, 0, 0.1, 0, 0), Eigen::Isometry3d::Identity(), AxisConvention::uos);
-  EXPECT_NEAR(roll.parameters[5], -0.1 * kDeg, 1e-9);
-  EXPECT_NEAR(roll.rotation_deg, 0.1 * kDeg, 1e-9);
+  EXPECT_NEAR(roll.parameters[5], -0.1 * kDegPerRad, 1e-9);
+  EXPECT_NEAR(roll.rotation_deg, 0.1 * kDegPerRad, 1e-9);
 }
 
 TEST(RegistrationError, NonFiniteEstimateIsFailureNotCrash) {

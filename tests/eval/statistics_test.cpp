@@ -32,5 +32,15 @@ TEST(Statistics, SkipsNonFiniteAndHandlesEmpty) {
   EXPECT_DOUBLE_EQ(rms({}), 0.0);
 }
 
+TEST(Statistics, MeanAndMedianOfTheFiniteValuesAreNanWhenThereAreNone) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_DOUBLE_EQ(mean_of({nan, 1.0, inf, 2.0, 6.0}), 3.0);
+  EXPECT_DOUBLE_EQ(median_of({nan, 7.0, 1.0, -inf, 2.0}), 2.0);
+  EXPECT_DOUBLE_EQ(median_of({4.0, nan, 1.0, 3.0, 2.0}), 2.5);
+  EXPECT_TRUE(std::isnan(mean_of({nan, inf})));
+  EXPECT_TRUE(std::isnan(median_of({})));
+}
+
 }  // namespace
 }  // namespace sextant

@@ -14,7 +14,6 @@
 namespace sextant {
 namespace {
 
-using test::kDeg;
 using test::pose;
 using test::rotation_error;
 using test::translation_error;
@@ -181,7 +180,7 @@ TEST_P(IcpSynthetic, RecoversKnownTransform) {
   const RegistrationResult r = icp->align(input, Eigen::Isometry3d::Identity());
   EXPECT_TRUE(r.converged) << r.summary();
   EXPECT_LT(translation_error(truth, r.T), 0.01) << r.summary();
-  EXPECT_LT(rotation_error(truth, r.T), 0.1 * kDeg) << r.summary();
+  EXPECT_LT(rotation_error(truth, r.T), 0.1 * kRadPerDeg) << r.summary();
   EXPECT_EQ(r.iterations, static_cast<int>(r.trace.size()));
   EXPECT_EQ(r.input_points, input.size());
   EXPECT_GT(r.matched_points, input.size() / 2);
@@ -260,7 +259,7 @@ TEST_P(IcpSynthetic, DofMaskMovesOnlyTheFreeParameters) {
   RegistrationResult r = icp->align(input, Eigen::Isometry3d::Identity());
   EXPECT_TRUE(r.converged) << r.summary();
   EXPECT_LT(translation_error(planar, r.T), 0.01) << r.summary();
-  EXPECT_LT(rotation_error(planar, r.T), 0.1 * kDeg) << r.summary();
+  EXPECT_LT(rotation_error(planar, r.T), 0.1 * kRadPerDeg) << r.summary();
   const Pose6 p = to_pose6(r.T);
   EXPECT_NEAR(p.z, 0.0, 1e-12);
   EXPECT_NEAR(p.alpha, 0.0, 1e-12);

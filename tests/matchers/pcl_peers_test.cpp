@@ -19,7 +19,6 @@
 namespace sextant {
 namespace {
 
-using test::kDeg;
 using test::pose;
 using test::rotation_error;
 using test::translation_error;
@@ -73,7 +72,7 @@ TEST_P(PclPeers, RecoverKnownTransformOnSyntheticPair) {
   const RegistrationResult r = matcher->align(input, Eigen::Isometry3d::Identity());
   EXPECT_TRUE(r.converged) << r.summary();
   EXPECT_LT(translation_error(truth, r.T), 0.05) << r.summary();
-  EXPECT_LT(rotation_error(truth, r.T), 0.3 * kDeg) << r.summary();
+  EXPECT_LT(rotation_error(truth, r.T), 0.3 * kRadPerDeg) << r.summary();
   EXPECT_GT(r.iterations, 0);
   EXPECT_EQ(r.input_points, input.size());
   EXPECT_GT(r.seconds, 0.0);
@@ -158,7 +157,7 @@ TEST_P(VelodynePair, RecoversReferenceFromNearGuess) {
   const RegistrationResult r = matcher->align(*input_, guess);
   EXPECT_TRUE(r.converged) << r.summary();
   EXPECT_LT(translation_error(truth_, r.T), c.max_cm / 100.0) << r.summary();
-  EXPECT_LT(rotation_error(truth_, r.T), c.max_deg * kDeg) << r.summary();
+  EXPECT_LT(rotation_error(truth_, r.T), c.max_deg * kRadPerDeg) << r.summary();
 }
 
 // Point-based matchers on the 0.2 m voxel centroids: point-to-plane ICP and NDT reach 2–3 cm /

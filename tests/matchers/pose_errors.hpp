@@ -5,14 +5,13 @@
 #include <Eigen/Geometry>
 
 #include "sextant/core/pose.hpp"
+#include "sextant/core/units.hpp"
 
 namespace sextant::test {
 
-constexpr double kDeg = M_PI / 180.0;
-
 /// T from x, y, z [m] and α, β, γ [deg] (eq. 3.8).
 inline Eigen::Isometry3d pose(double x, double y, double z, double a_deg, double b_deg, double g_deg) {
-  return to_isometry(Pose6{x, y, z, a_deg * kDeg, b_deg * kDeg, g_deg * kDeg});
+  return to_isometry(Pose6{x, y, z, a_deg * kRadPerDeg, b_deg * kRadPerDeg, g_deg * kRadPerDeg});
 }
 
 /// ‖t‖ of truth⁻¹·estimate [m].

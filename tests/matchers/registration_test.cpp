@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "sextant/core/error.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/ndt_matcher.hpp"
 #include "sextant/matchers/ndt_score.hpp"
@@ -13,8 +14,6 @@
 
 namespace sextant {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 Eigen::Isometry3d pose(double x, double y, double z, double a, double b, double g) {
   return to_isometry(Pose6{x, y, z, a, b, g});
@@ -44,7 +43,7 @@ double error_m(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
   return translation_norm(a.inverse() * b);
 }
 double error_deg(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
-  return rotation_angle(a.inverse() * b) / kDeg;
+  return rotation_angle(a.inverse() * b) / kRadPerDeg;
 }
 
 RegistrationResult run(const std::string& method, const std::string& yaml, const Pair& p,
@@ -55,7 +54,7 @@ RegistrationResult run(const std::string& method, const std::string& yaml, const
 }
 
 TEST(Mlndt, RecoversKnownTransformWithEverySolver) {
-  const Pair p = make_pair(pose(1.2, -0.8, 0.1, 1 * kDeg, -1 * kDeg, 8 * kDeg));
+  const Pair p = make_pair(pose(1.2, -0.8, 0.1, 1 * kRadPerDeg, -1 * kRadPerDeg, 8 * kRadPerDeg));
   std::vector<RegistrationResult> results;
   // The plain Newton step (step_control: none) first, then LM, Ceres and the default Newton.
   for (const char* solver : {"newton, step_control: none", "lm", "ceres", "newton"}) {
@@ -118,7 +117,7 @@ TEST(Mlndt, TruncationRejectsFarCorrespondencesAndDegenerateCellsAreDropped) {
 }
 
 TEST(Mlndt, TraceFollowsLayerSchedule) {
-  const Pair p = make_pair(pose(0.5, 0.3, 0, 0, 0, 3 * kDeg));
+  const Pair p = make_pair(pose(0.5, 0.3, 0, 0, 0, 3 * kRadPerDeg));
   const RegistrationResult r = run("mlndt", "{start_layer: 2}", p);
   ASSERT_GE(r.trace.size(), 7u);
   for (int i = 0; i < 3; ++i) EXPECT_EQ(r.trace[static_cast<std::size_t>(i)].layer, 2);
@@ -127,7 +126,7 @@ TEST(Mlndt, TraceFollowsLayerSchedule) {
 }
 
 TEST(Ndt, RecoversKnownTransform) {
-  const Pair p = make_pair(pose(0.6, -0.4, 0.05, 0.5 * kDeg, -0.5 * kDeg, 4 * kDeg));
+  const Pair p = make_pair(pose(0.6, -0.4, 0.05, 0.5 * kRadPerDeg, -0.5 * kRadPerDeg, 4 * kRadPerDeg));
   for (const char* yaml : {"{cell_size: 2.0}", "{cell_size: 2.0, trilinear: true}", "{}"}) {
     const RegistrationResult r = run("ndt", yaml, p);
     EXPECT_TRUE(r.converged) << yaml << ": " << r.summary();
@@ -139,7 +138,7 @@ TEST(Ndt, RecoversKnownTransform) {
 }
 
 TEST(Mlndt, DofMaskKeepsFixedParameters) {
-  const Pair p = make_pair(pose(1.0, 0.7, 0, 0, 0, 6 * kDeg));
+  const Pair p = make_pair(pose(1.0, 0.7, 0, 0, 0, 6 * kRadPerDeg));
   const Eigen::Isometry3d init = pose(0, 0, 0.3, 0, 0, 0);  // z is wrong but fixed
   for (const char* solver : {"newton", "lm", "ceres"}) {
     const RegistrationResult r =
@@ -148,7 +147,7 @@ TEST(Mlndt, DofMaskKeepsFixedParameters) {
     EXPECT_DOUBLE_EQ(est.z, 0.3) << solver;
     EXPECT_NEAR(est.alpha, 0.0, 1e-12) << solver;
     EXPECT_NEAR(est.beta, 0.0, 1e-12) << solver;
-    EXPECT_NEAR(est.gamma, 6 * kDeg, 1.0 * kDeg) << solver;
+    EXPECT_NEAR(est.gamma, 6 * kRadPerDeg, 1.0 * kRadPerDeg) << solver;
   }
   EXPECT_THROW(make_matcher("mlndt", YAML::Load("{dof: [x, q]}")), InputError);
 }
@@ -156,7 +155,7 @@ TEST(Mlndt, DofMaskKeepsFixedParameters) {
 TEST(Mlndt, LongRangeBeatsFixedCellNdt) {
   // The thesis' long-range claim (§3.2, chapter 5): from a zero initial guess ML-NDT recovers a
   // 15°, several-metre displacement that NDT at the finest layer's cell size does not.
-  const Pair p = make_pair(pose(3.0, -2.0, 0.0, 0, 0, 15 * kDeg), 3);
+  const Pair p = make_pair(pose(3.0, -2.0, 0.0, 0, 0, 15 * kRadPerDeg), 3);
   const RegistrationResult ml = run("mlndt", "{start_layer: 1}", p);
   EXPECT_LT(error_m(ml.T, p.T), 0.1) << ml.summary();
   EXPECT_LT(error_deg(ml.T, p.T), 0.5);
@@ -168,7 +167,7 @@ TEST(Mlndt, LongRangeBeatsFixedCellNdt) {
 }
 
 TEST(Registration, DegenerateInputNeverCrashes) {
-  const Pair p = make_pair(pose(0.3, 0.2, 0, 0, 0, 2 * kDeg));
+  const Pair p = make_pair(pose(0.3, 0.2, 0, 0, 0, 2 * kRadPerDeg));
   PointCloud tiny;
   for (int i = 0; i < 3; ++i) tiny.push_back({float(i), 0, 0});
   PointCloud collinear, coplanar, far_away;

@@ -12,8 +12,6 @@
 namespace sextant {
 namespace {
 
-using test::kDeg;
-
 PointCloud transformed(const PointCloud& cloud, const Eigen::Isometry3d& M) {
   PointCloud out;
   const Eigen::Isometry3f Mf = M.cast<float>();
@@ -71,23 +69,24 @@ TEST(WideBasin, Recovers12MetresAlongX) {
   const Outcome o = yard_case(truth);
   EXPECT_GT(o.plain_m, 0.5) << "plain ML-NDT was expected to fail";
   EXPECT_LT(o.wide_m, 0.03);
-  EXPECT_LT(o.wide_rad, 0.2 * kDeg);
+  EXPECT_LT(o.wide_rad, 0.2 * kRadPerDeg);
 }
 
 TEST(WideBasin, Recovers60DegreesOfYaw) {
   const Eigen::Isometry3d truth = test::pose(0, 0, 0, 0, 0, 60);
   const Outcome o = yard_case(truth);
-  EXPECT_GT(o.plain_rad, 5 * kDeg) << "plain ML-NDT was expected to fail";
+  EXPECT_GT(o.plain_rad, 5 * kRadPerDeg) << "plain ML-NDT was expected to fail";
   EXPECT_LT(o.wide_m, 0.03);
-  EXPECT_LT(o.wide_rad, 0.2 * kDeg);
+  EXPECT_LT(o.wide_rad, 0.2 * kRadPerDeg);
 }
 
 TEST(WideBasin, Recovers8MetresAnd45Degrees) {
-  const Eigen::Isometry3d truth = test::pose(8 * std::cos(30 * kDeg), 8 * std::sin(30 * kDeg), 0, 0, 0, 45);
+  const Eigen::Isometry3d truth =
+      test::pose(8 * std::cos(30 * kRadPerDeg), 8 * std::sin(30 * kRadPerDeg), 0, 0, 0, 45);
   const Outcome o = yard_case(truth);
-  EXPECT_TRUE(o.plain_m > 0.5 || o.plain_rad > 5 * kDeg) << "plain ML-NDT was expected to fail";
+  EXPECT_TRUE(o.plain_m > 0.5 || o.plain_rad > 5 * kRadPerDeg) << "plain ML-NDT was expected to fail";
   EXPECT_LT(o.wide_m, 0.03);
-  EXPECT_LT(o.wide_rad, 0.2 * kDeg);
+  EXPECT_LT(o.wide_rad, 0.2 * kRadPerDeg);
 }
 
 TEST(WideBasin, RecoversACampusPairDisplaced12MetresAnd60Degrees) {
@@ -99,9 +98,9 @@ TEST(WideBasin, RecoversACampusPairDisplaced12MetresAnd60Degrees) {
   const PointCloud input = every_fourth(transformed(campus.scan(151).cloud, T.inverse() * D.inverse() * T));
   const Outcome o = register_both(campus.scan(150).cloud, input, D * T,
                                   "solver: lm, layers: 6, max_distance: 16, unmatched_penalty: 16");
-  EXPECT_TRUE(o.plain_m > 0.5 || o.plain_rad > 5 * kDeg) << "plain ML-NDT was expected to fail";
+  EXPECT_TRUE(o.plain_m > 0.5 || o.plain_rad > 5 * kRadPerDeg) << "plain ML-NDT was expected to fail";
   EXPECT_LT(o.wide_m, 0.05);
-  EXPECT_LT(o.wide_rad, 0.3 * kDeg);
+  EXPECT_LT(o.wide_rad, 0.3 * kRadPerDeg);
 }
 
 TEST(WideBasin, Recovers10MetresAnd60DegreesWithTheDefaultSolver) {
@@ -113,7 +112,7 @@ TEST(WideBasin, Recovers10MetresAnd60DegreesWithTheDefaultSolver) {
   wide->set_reference(reference);
   const RegistrationResult r = wide->align(input, Eigen::Isometry3d::Identity());
   EXPECT_LT(test::translation_error(truth, r.T), 0.03) << r.summary();
-  EXPECT_LT(test::rotation_error(truth, r.T), 0.2 * kDeg) << r.summary();
+  EXPECT_LT(test::rotation_error(truth, r.T), 0.2 * kRadPerDeg) << r.summary();
 }
 
 TEST(WideBasin, KeepsTheAnswerWherePlainMlndtConverges) {
@@ -122,7 +121,7 @@ TEST(WideBasin, KeepsTheAnswerWherePlainMlndtConverges) {
   EXPECT_LT(o.plain_m, 0.03);
   EXPECT_LT(o.wide_m, 0.03);
   EXPECT_NEAR(o.wide_m, o.plain_m, 0.005);
-  EXPECT_NEAR(o.wide_rad, o.plain_rad, 0.05 * kDeg);
+  EXPECT_NEAR(o.wide_rad, o.plain_rad, 0.05 * kRadPerDeg);
 }
 
 TEST(WideBasin, FbmlndtForwardsTheOptionAndRecovers60Degrees) {
@@ -134,7 +133,7 @@ TEST(WideBasin, FbmlndtForwardsTheOptionAndRecovers60Degrees) {
   fb->set_reference(reference);
   const RegistrationResult r = fb->align(input, Eigen::Isometry3d::Identity());
   EXPECT_LT(test::translation_error(truth, r.T), 0.03) << r.summary();
-  EXPECT_LT(test::rotation_error(truth, r.T), 0.2 * kDeg) << r.summary();
+  EXPECT_LT(test::rotation_error(truth, r.T), 0.2 * kRadPerDeg) << r.summary();
 }
 
 }  // namespace

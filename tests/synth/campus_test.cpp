@@ -6,14 +6,13 @@
 #include <map>
 
 #include "sextant/core/pose.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/synth/campus.hpp"
 #include "sextant/synth/odometry.hpp"
 #include "small_campus.hpp"
 
 namespace sextant::synth {
 namespace {
-
-constexpr double kDeg = M_PI / 180.0;
 
 TEST(Campus, WorldHasTheThesisIngredients) {
   const Campus c = generate_campus(CampusSettings{}, 1);
@@ -150,7 +149,8 @@ TEST(Campus, TrajectoryRevisitsEarlyPlacesTurnsSharplyAndFollowsTheSlopes) {
     EXPECT_TRUE(found) << "no return to an early place near " << fraction * 100 << " %";
   }
   // One sharp turn of 51.5° between scans 3 and 4.
-  EXPECT_NEAR(rotation_angle(relative(c.ground_truth[3], c.ground_truth[4])), 51.5 * kDeg, 1.5 * kDeg);
+  EXPECT_NEAR(rotation_angle(relative(c.ground_truth[3], c.ground_truth[4])), 51.5 * kRadPerDeg,
+              1.5 * kRadPerDeg);
   // Extent about 160 m × 60 m; z, roll and pitch change.
   double min_x = 1e9, max_x = -1e9, min_z = 1e9, max_z = -1e9, max_tilt = 0;
   for (const auto& T : c.ground_truth) {
@@ -163,8 +163,8 @@ TEST(Campus, TrajectoryRevisitsEarlyPlacesTurnsSharplyAndFollowsTheSlopes) {
   }
   EXPECT_NEAR(max_x - min_x, 160.0, 15.0);
   EXPECT_GT(max_z - min_z, 0.5);
-  EXPECT_GT(max_tilt, 1.0 * kDeg);
-  EXPECT_LT(max_tilt, 10.0 * kDeg);
+  EXPECT_GT(max_tilt, 1.0 * kRadPerDeg);
+  EXPECT_LT(max_tilt, 10.0 * kRadPerDeg);
 }
 
 TEST(Odometry, ThesisModelIsBiasedAndHeavyTailed) {
@@ -191,7 +191,7 @@ TEST(Odometry, ThesisModelIsBiasedAndHeavyTailed) {
       std::sqrt(1 - s.outlier_probability + s.outlier_probability * s.outlier_scale * s.outlier_scale);
   EXPECT_NEAR(sum_f / n, s.bias_forward, 0.01);
   EXPECT_NEAR(mean_l, s.bias_lateral, 0.01);
-  EXPECT_NEAR(sum_h / n, s.bias_heading_deg * kDeg, 0.02 * kDeg);
+  EXPECT_NEAR(sum_h / n, s.bias_heading_deg * kRadPerDeg, 0.02 * kRadPerDeg);
   EXPECT_NEAR(std::sqrt(var_l), expected_sd, 0.05 * expected_sd);
   EXPECT_NEAR(std::sqrt(var_l), 0.2291, 0.03);    // table 5.1 std of t_x (uos) [m]
   EXPECT_GT(quart_l / n / (var_l * var_l), 4.0);  // kurtosis well above the Gaussian 3
@@ -212,8 +212,8 @@ TEST(Odometry, GaussianModelIsZeroMeanTwentyCentimetresOneDegree) {
   }
   EXPECT_NEAR(sum / n, 0.0, 0.01);
   EXPECT_NEAR(std::sqrt(sq / n), 0.20, 0.01);
-  EXPECT_NEAR(sum_h / n, 0.0, 0.05 * kDeg);
-  EXPECT_NEAR(std::sqrt(sq_h / n), 1.0 * kDeg, 0.05 * kDeg);
+  EXPECT_NEAR(sum_h / n, 0.0, 0.05 * kRadPerDeg);
+  EXPECT_NEAR(std::sqrt(sq_h / n), 1.0 * kRadPerDeg, 0.05 * kRadPerDeg);
 }
 
 TEST(Odometry, PosesArePlanarAndIncrementsCarryTheConfiguredErrors) {

@@ -24,6 +24,10 @@ T load(const unsigned char* p, bool swap) {
 
 }  // namespace
 
+void fail(const std::filesystem::path& file, const std::string& where, const std::string& what) {
+  throw InputError(file.string(), where, what);
+}
+
 double read_scalar(const unsigned char* p, ScalarType type, bool swap) {
   switch (type.kind) {
     case 'F': return type.size == 8 ? load<double>(p, swap) : static_cast<double>(load<float>(p, swap));

@@ -19,6 +19,9 @@ struct ScalarType {
   int size = 4;
 };
 
+/// Throws InputError(file, where, what): a malformed header or record.
+[[noreturn]] void fail(const std::filesystem::path& file, const std::string& where, const std::string& what);
+
 /// Reads one scalar at `p` (the caller checked that `size` bytes are there); `swap` for big-endian.
 double read_scalar(const unsigned char* p, ScalarType type, bool swap);
 

@@ -32,10 +32,6 @@ struct PcdHeader {
   long data_line = 0;
 };
 
-[[noreturn]] void fail(const std::filesystem::path& file, const std::string& where, const std::string& what) {
-  throw InputError(file.string(), where, what);
-}
-
 void fill_types(const std::filesystem::path& file, long line, PcdHeader& h,
                 const std::vector<std::string_view>& t, const std::string& key) {
   if (t.size() - 1 != h.fields.size()) {
@@ -61,7 +57,7 @@ void fill_types(const std::filesystem::path& file, long line, PcdHeader& h,
   }
 }
 
-PcdHeader parse_header(const std::filesystem::path& file, const std::string& bytes) {
+PcdHeader parse_pcd_header(const std::filesystem::path& file, const std::string& bytes) {
   if (bytes.empty()) fail(file, "", "empty file (0 bytes), not a PCD file");
   PcdHeader h;
   std::uint64_t width = 0, height = 1;
@@ -175,7 +171,7 @@ std::string too_short(const PcdHeader& h, std::uint64_t need, std::size_t have) 
 
 PointCloud read_pcd(const std::filesystem::path& file, ScanLoadReport* report) {
   const std::string bytes = read_file_bytes(file);
-  const PcdHeader h = parse_header(file, bytes);
+  const PcdHeader h = parse_pcd_header(file, bytes);
   const PcdField* axes[3] = {find_field(h, "x"), find_field(h, "y"), find_field(h, "z")};
   for (int k = 0; k < 3; ++k) {
     if (!axes[k]) fail(file, "", std::string("no '") + "xyz"[k] + "' field");

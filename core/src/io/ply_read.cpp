@@ -39,10 +39,6 @@ struct PlyHeader {
   long data_line = 0;
 };
 
-[[noreturn]] void fail(const std::filesystem::path& file, const std::string& where, const std::string& what) {
-  throw InputError(file.string(), where, what);
-}
-
 ScalarType scalar_type(const std::filesystem::path& file, long line, std::string_view name) {
   static const struct {
     const char* name;
@@ -57,7 +53,7 @@ ScalarType scalar_type(const std::filesystem::path& file, long line, std::string
   fail(file, at_line(line), "unknown PLY property type '" + std::string(name) + "'");
 }
 
-PlyHeader parse_header(const std::filesystem::path& file, const std::string& bytes) {
+PlyHeader parse_ply_header(const std::filesystem::path& file, const std::string& bytes) {
   if (bytes.empty()) fail(file, "", "empty file (0 bytes), not a PLY file");
   PlyHeader h;
   std::size_t start = 0;
@@ -171,7 +167,7 @@ class BinaryCursor {
 
 PointCloud read_ply(const std::filesystem::path& file, ScanLoadReport* report) {
   const std::string bytes = read_file_bytes(file);
-  const PlyHeader h = parse_header(file, bytes);
+  const PlyHeader h = parse_ply_header(file, bytes);
   std::size_t vertex = h.elements.size();
   for (std::size_t i = 0; i < h.elements.size() && vertex == h.elements.size(); ++i) {
     if (h.elements[i].name == "vertex") vertex = i;

@@ -19,6 +19,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/cloud_io.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/mlndt_presets.hpp"
@@ -26,8 +27,6 @@
 
 namespace sextant::cli {
 namespace {
-
-constexpr double kDegPerRad = 180.0 / M_PI;
 
 struct MatchOptions : MatcherOptions {
   std::string reference, input;

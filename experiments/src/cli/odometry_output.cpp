@@ -7,13 +7,12 @@
 #include "sextant/core/atomic_file.hpp"
 #include "sextant/core/io/kitti.hpp"
 #include "sextant/core/io/trajectory_io.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
 #include "sextant/experiments/json.hpp"
 
 namespace sextant::cli {
 namespace {
-
-constexpr double kDegPerRad = 180.0 / M_PI;
 
 Trajectory stamped(const Dataset& dataset, std::size_t first, const std::vector<Eigen::Isometry3d>& poses) {
   Trajectory t;

@@ -7,12 +7,10 @@
 
 #include "registration_report.hpp"
 #include "sextant/core/pose.hpp"
+#include "sextant/core/units.hpp"
 
 namespace sextant {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
 
 const std::vector<double>& series_of(const RunRow& row, const char* name) {
   static const std::vector<double> empty;
@@ -39,7 +37,7 @@ std::vector<std::pair<double, double>> iterate_errors(const RunRow& row) {
   std::vector<std::pair<double, double>> out;
   const auto add = [&](const Eigen::Isometry3d& T) {
     const Eigen::Isometry3d E = truth.inverse() * T;
-    out.emplace_back(translation_norm(E), rotation_angle(E) * kRadToDeg);
+    out.emplace_back(translation_norm(E), rotation_angle(E) * kDegPerRad);
   };
   add(series_to_isometry(series_of(row, "initial")));
   for (std::size_t k = 0; k + 6 <= xi.size(); k += 6) {

@@ -6,12 +6,12 @@
 #include "basin_analysis.hpp"
 #include "registration_report.hpp"
 #include "sextant/core/pose.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/eval/plots.hpp"
 
 namespace sextant {
 namespace {
 
-constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
 const char* const kColours[3] = {"#1f77b4", "#d62728", "#2ca02c"};
 const char* const kTints[3] = {"#9ecae1", "#f4a6a6", "#a1d99b"};
 
@@ -78,7 +78,7 @@ std::vector<ReportFigure> parameter_figures(const std::string& method, const std
   static const char* const kNames[6] = {"tx", "ty", "tz", "α", "β", "γ"};
   std::vector<ReportFigure> out;
   for (int part = 0; part < 2; ++part) {
-    const double scale = part == 0 ? 1.0 : kRadToDeg;
+    const double scale = part == 0 ? 1.0 : kDegPerRad;
     XYPlot plot;
     plot.title = "Parameters vs iteration, " + method + (part == 0 ? " (translation)" : " (rotation)");
     plot.x_label = "iteration (0 = initial guess)";

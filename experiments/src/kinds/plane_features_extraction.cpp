@@ -28,6 +28,7 @@
 #include "plane_features_extraction.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/synth/campus.hpp"
 
 namespace sextant {
@@ -52,8 +53,6 @@ ExtractionStudyParams read_extraction_study_params(const ExperimentConfig& confi
 }
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 /// The id most of the feature's inliers hit in `ids` (true landmark or primitive), or −1.
 int majority(const PlaneLandmark& plane, const std::vector<std::int32_t>& ids) {

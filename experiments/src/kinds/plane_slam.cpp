@@ -16,14 +16,13 @@
 #include "plane_slam_sequence.hpp"
 #include "sextant/core/chi_square.hpp"
 #include "sextant/core/error.hpp"
+#include "sextant/core/units.hpp"
+#include "sextant/eval/statistics.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
 #include "sextant/synth/settings.hpp"
 
 namespace sextant {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kDeg = 180.0 / 3.14159265358979323846;
 
 synth::Campus open_campus(const ExperimentConfig& config) {
   if (config.dataset.source != DatasetSource::kSynthetic)
@@ -66,21 +65,13 @@ void put_max(const std::vector<double>& v, RunRow& row, const std::string& value
   if (!at.empty()) row.values[at] = where;
 }
 
-double mean_of(const std::vector<double>& v) {
-  double s = 0.0;
-  std::size_t n = 0;
-  for (double x : v)
-    if (std::isfinite(x)) s += x, ++n;
-  return n ? s / static_cast<double>(n) : kNaN;
-}
-
 void put_benchmarks(const PoseList& estimate, const PoseList& truth, const std::string& prefix, RunRow& row) {
   const WulfResult w = wulf_metric(estimate, truth);
   const KummerleResult k = kummerle_metric(estimate, truth);
   row.values[prefix + "wulf_translation_m"] = w.status.ok ? w.position_rms : kNaN;
-  row.values[prefix + "wulf_rotation_deg"] = w.status.ok ? w.orientation_rms * kDeg : kNaN;
+  row.values[prefix + "wulf_rotation_deg"] = w.status.ok ? w.orientation_rms * kDegPerRad : kNaN;
   row.values[prefix + "kummerle_translation_m"] = k.status.ok ? k.translation_rms : kNaN;
-  row.values[prefix + "kummerle_rotation_deg"] = k.status.ok ? k.rotation_rms * kDeg : kNaN;
+  row.values[prefix + "kummerle_rotation_deg"] = k.status.ok ? k.rotation_rms * kDegPerRad : kNaN;
 }
 
 /// Extracted landmarks: the mean per-scan times of extraction, association, filter (predict +
@@ -140,9 +131,9 @@ void fill_row(const FilterSequenceRun& r, const synth::Campus& campus, const Pla
     const Vector6d t = to_pose6(campus.ground_truth[k]).vector(), o = r.odometry[k].vector();
     const bool finite = st.pose.allFinite();
     s["error_m"].push_back(finite ? (st.pose.head<3>() - t.head<3>()).norm() : kNaN);
-    s["rotation_error_deg"].push_back(finite ? rotation_error(st.pose, t) * kDeg : kNaN);
+    s["rotation_error_deg"].push_back(finite ? rotation_error(st.pose, t) * kDegPerRad : kNaN);
     s["odometry_error_m"].push_back((o.head<3>() - t.head<3>()).norm());
-    s["odometry_rotation_error_deg"].push_back(rotation_error(o, t) * kDeg);
+    s["odometry_rotation_error_deg"].push_back(rotation_error(o, t) * kDegPerRad);
     const double nees = pose_nees(st.pose, t, st.covariance);
     s["nees"].push_back(nees);
     if (st.has_marginal) s["nees_marginal"].push_back(pose_nees(st.pose, t, st.marginal));
@@ -222,10 +213,10 @@ void fill_row(const FilterSequenceRun& r, const synth::Campus& campus, const Pla
   put_benchmarks(odometry, truth, "odometry_", row);
   const KummerleResult k = kummerle_metric(estimate, truth);
   for (double e : k.translation_errors) s["kummerle_translation_m"].push_back(e);
-  for (double e : k.rotation_errors) s["kummerle_rotation_deg"].push_back(e * kDeg);
+  for (double e : k.rotation_errors) s["kummerle_rotation_deg"].push_back(e * kDegPerRad);
   const KummerleResult ko = kummerle_metric(odometry, truth);
   for (double e : ko.translation_errors) s["odometry_kummerle_translation_m"].push_back(e);
-  for (double e : ko.rotation_errors) s["odometry_kummerle_rotation_deg"].push_back(e * kDeg);
+  for (double e : ko.rotation_errors) s["odometry_kummerle_rotation_deg"].push_back(e * kDegPerRad);
   if (params.compare_scans >= 2 && params.compare_scans <= n) {
     const auto prefix = [&](const PoseList& p) {
       return PoseList(p.begin(), p.begin() + static_cast<std::ptrdiff_t>(params.compare_scans));

@@ -5,14 +5,11 @@
 #include <limits>
 
 #include "plane_slam_report.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/eval/verdict.hpp"
 
 namespace sextant {
-namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-}  // namespace
+namespace {}  // namespace
 
 std::vector<double> PlaneSlamGroup::values(const std::string& name) const {
   std::vector<double> out;
@@ -50,12 +47,6 @@ PlaneSlamRows collect_plane_slam_rows(const ExperimentConfig& config, const std:
       if (g.method == runs[i].method && g.point == point) g.rows.push_back(rows[i]);
   }
   return data;
-}
-
-const std::vector<double>& series(const RunRow& row, const std::string& name) {
-  static const std::vector<double> empty;
-  const auto it = row.series.find(name);
-  return it == row.series.end() ? empty : it->second;
 }
 
 std::vector<Eigen::Vector3d> positions(const std::vector<double>& poses) {
@@ -102,7 +93,8 @@ std::string common_notes(const ExperimentConfig& config, const PlaneSlamParams& 
   std::size_t scans = 0;
   for (const PlaneSlamGroup& g : data.groups)
     if (g.first())
-      scans = std::max(scans, g.first()->series.count("error_m") ? series(*g.first(), "error_m").size() : 0);
+      scans = std::max(
+          scans, g.first()->series.count("error_m") ? series_or_empty(*g.first(), "error_m").size() : 0);
   std::string s =
       "Landmarks: " + landmark_text(params) + ". Odometry: " +
       (params.odometry == OdometrySource::kResample
@@ -147,11 +139,11 @@ ReportFigure error_figure(const PlaneSlamRows& data, const std::string& point, c
   for (const PlaneSlamGroup* g : data.at(point)) {
     const RunRow& row = *g->first();
     if (!odometry_drawn) {
-      const auto& o = series(row, odometry_series);
+      const auto& o = series_or_empty(row, odometry_series);
       plot.series.push_back({"odometry", scan_axis(o.size()), o, PlotSeries::Style::line, "#888888"});
       odometry_drawn = true;
     }
-    const auto& y = series(row, series_name);
+    const auto& y = series_or_empty(row, series_name);
     plot.add_line(g->method, scan_axis(y.size()), y);
   }
   return {id + point_stem(point),
@@ -164,18 +156,20 @@ ReportFigure map_figure(const ExperimentConfig& config, const PlaneSlamParams& p
   TrajectoryPlot plot;
   plot.title = "Map and trajectories, " + method + " (2σ position ellipses)";
   TrajectorySeries planes{"estimated planes (vertical)", {}, "#9467bd", {}, 10, 2.0};
-  const auto& seg = series(row, "map_segments");
+  const auto& seg = series_or_empty(row, "map_segments");
   for (std::size_t k = 0; k + 3 < seg.size(); k += 4) {
     planes.positions.emplace_back(seg[k], seg[k + 1], 0.0);
     planes.positions.emplace_back(seg[k + 2], seg[k + 3], 0.0);
     planes.positions.emplace_back(kNaN, kNaN, kNaN);
   }
   if (!planes.positions.empty()) plot.trajectories.push_back(planes);
-  plot.trajectories.push_back({"ground truth", positions(series(row, "truth")), "#2ca02c", {}, 10, 2.0});
-  plot.trajectories.push_back({"odometry", positions(series(row, "odometry")), "#ff7f0e", {}, 10, 2.0});
-  TrajectorySeries est{method, positions(series(row, "trajectory")), "#1f77b4", {}, params.ellipse_every,
-                       2.0};
-  const auto& c = series(row, "position_covariance");
+  plot.trajectories.push_back(
+      {"ground truth", positions(series_or_empty(row, "truth")), "#2ca02c", {}, 10, 2.0});
+  plot.trajectories.push_back(
+      {"odometry", positions(series_or_empty(row, "odometry")), "#ff7f0e", {}, 10, 2.0});
+  TrajectorySeries est{
+      method, positions(series_or_empty(row, "trajectory")), "#1f77b4", {}, params.ellipse_every, 2.0};
+  const auto& c = series_or_empty(row, "position_covariance");
   for (std::size_t k = 0; k + 5 < c.size(); k += 6) {
     Eigen::Matrix3d P;
     P << c[k], c[k + 1], c[k + 2], c[k + 1], c[k + 3], c[k + 4], c[k + 2], c[k + 4], c[k + 5];

@@ -47,8 +47,6 @@ struct PlaneSlamRows {
 PlaneSlamRows collect_plane_slam_rows(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
                                       const std::vector<const RunRow*>& rows);
 
-/// A row's series (empty when absent).
-const std::vector<double>& series(const RunRow& row, const std::string& name);
 /// Positions of a 6-per-scan pose series.
 std::vector<Eigen::Vector3d> positions(const std::vector<double>& poses);
 /// 0, 1, …, n−1.
@@ -89,6 +87,9 @@ struct TimeGrowth {
   double map_lo = NAN, map_hi = NAN;
 };
 TimeGrowth time_growth(const PlaneSlamGroup& g, const std::string& time, std::uint64_t seed);
+/// "Flat" (a bounded cost, E17 and E22): the fitted time changes by less than this fraction of its
+/// median across the map's range.
+constexpr double kFlatGrowth = 0.5;
 /// `time` per scan, or against the map size (repetition 1 of every method; log scale).
 ReportFigure time_figure(const PlaneSlamRows& data, const std::string& time, const std::string& id,
                          const std::string& what, bool against_map);

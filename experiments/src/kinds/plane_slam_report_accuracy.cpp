@@ -6,18 +6,11 @@
 #include <cmath>
 
 #include "plane_slam_report.hpp"
+#include "sextant/eval/statistics.hpp"
 #include "sextant/eval/verdict.hpp"
 
 namespace sextant {
 namespace {
-
-double median_of(std::vector<double> v) {
-  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
-  if (v.empty()) return NAN;
-  std::sort(v.begin(), v.end());
-  const std::size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
 
 Table error_table(const ExperimentConfig& config, const PlaneSlamRows& data, const std::string& point) {
   Table t;
@@ -107,7 +100,7 @@ ReportFigure nees_figure(const PlaneSlamRows& data, const PlaneSlamParams& param
   std::size_t n = 0;
   double bound = NAN;
   for (const PlaneSlamGroup* g : data.at(point)) {
-    const auto& y = series(*g->first(), "nees");
+    const auto& y = series_or_empty(*g->first(), "nees");
     n = std::max(n, y.size());
     bound = g->first()->value("nees_bound");
     plot.add_line(g->method, scan_axis(y.size()), y);

@@ -8,18 +8,11 @@
 
 #include "plane_slam_report.hpp"
 #include "sextant/eval/sequence_analysis.hpp"
+#include "sextant/eval/statistics.hpp"
 #include "sextant/eval/verdict.hpp"
 
 namespace sextant {
 namespace {
-
-double median_of(std::vector<double> v) {
-  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
-  if (v.empty()) return NAN;
-  std::sort(v.begin(), v.end());
-  const std::size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
 
 std::string join(const std::vector<std::size_t>& v) {
   std::string s;
@@ -66,7 +59,7 @@ ReportFigure metric_figure(const PlaneSlamRows& data, const std::string& name, c
   plot.y_label = y_label;
   double top = 0.0;
   for (const PlaneSlamGroup* g : data.at(data.points.front())) {
-    const auto& y = series(*g->first(), name);
+    const auto& y = series_or_empty(*g->first(), name);
     for (double v : y)
       if (std::isfinite(v)) top = std::max(top, v);
     plot.add_line(g->method + " (σ = " + number_text(g->first()->value(value), 3) + ")", scan_axis(y.size()),
@@ -87,8 +80,8 @@ Claim spike_claim(const PlaneSlamGroup& g, const PlaneSlamParams& params,
   std::size_t spikes = 0, near = 0;
   std::vector<std::size_t> first_spikes;
   for (const RunRow* r : g.rows) {
-    const std::vector<std::size_t> s =
-        robust_spikes(series(*r, "kummerle_translation_m"), params.spike_threshold, params.spike_window);
+    const std::vector<std::size_t> s = robust_spikes(series_or_empty(*r, "kummerle_translation_m"),
+                                                     params.spike_threshold, params.spike_window);
     if (r == g.first()) first_spikes = s;
     for (std::size_t d : distance_to_nearest(s, revisits)) {
       ++spikes;
@@ -134,8 +127,9 @@ ReportSection benchmark_report(const ExperimentConfig& config, const PlaneSlamPa
   // Loop closures from the ground truth of the longest run.
   const RunRow* longest = groups.front()->first();
   for (const PlaneSlamGroup* g : groups)
-    if (series(*g->first(), "truth").size() > series(*longest, "truth").size()) longest = g->first();
-  const std::vector<Eigen::Vector3d> truth = positions(series(*longest, "truth"));
+    if (series_or_empty(*g->first(), "truth").size() > series_or_empty(*longest, "truth").size())
+      longest = g->first();
+  const std::vector<Eigen::Vector3d> truth = positions(series_or_empty(*longest, "truth"));
   const std::vector<std::size_t> revisits = revisit_starts(truth, params.revisit_radius, params.revisit_gap);
   section.notes += " Loop closures on this route (revisit radius " + number_text(params.revisit_radius, 0) +
                    " m, gap " + std::to_string(params.revisit_gap) + " scans): scans " + join(revisits) + ".";
@@ -164,7 +158,7 @@ ReportSection benchmark_report(const ExperimentConfig& config, const PlaneSlamPa
                                           revisits));
   section.claims = declared_claims(config, params, data);
   for (const PlaneSlamGroup* g : groups) {
-    const std::size_t relations = series(*g->first(), "kummerle_translation_m").size();
+    const std::size_t relations = series_or_empty(*g->first(), "kummerle_translation_m").size();
     section.claims.push_back(spike_claim(*g, params, revisits, relations));
   }
   for (Claim& c : beats_odometry_claims(data, config.seed)) section.claims.push_back(c);

@@ -8,13 +8,13 @@
 #include "plane_slam_report.hpp"
 #include "sextant/core/chi_square.hpp"
 #include "sextant/core/rng.hpp"
+#include "sextant/eval/statistics.hpp"
 #include "sextant/eval/verdict.hpp"
 
 namespace sextant {
 namespace {
 
 constexpr std::size_t kBlock = 25;        // scans per bootstrap block (NEES is correlated in time)
-constexpr double kFlatGrowth = 0.5;       // as E17: bounded = fitted time changes < 50 % of its median
 constexpr double kErrorTolerance = 0.25;  // "≈ or better": ESEIF − SEIF below 25 % of SEIF's error
 
 /// Mean pose NEES over scans and repetitions with a moving-block bootstrap interval, and the 95 %
@@ -29,7 +29,7 @@ struct NeesSummary {
 NeesSummary nees_summary(const PlaneSlamGroup& g, const std::string& name, std::uint64_t seed) {
   std::vector<double> sums, counts;
   for (const RunRow* r : g.rows) {
-    const auto& v = series(*r, name);
+    const auto& v = series_or_empty(*r, name);
     for (std::size_t start = 0; start < v.size(); start += kBlock) {
       double sum = 0.0, n = 0.0;
       for (std::size_t k = start; k < std::min(v.size(), start + kBlock); ++k)
@@ -61,14 +61,6 @@ NeesSummary nees_summary(const PlaneSlamGroup& g, const std::string& name, std::
   return out;
 }
 
-double median_of(std::vector<double> v) {
-  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
-  if (v.empty()) return NAN;
-  std::sort(v.begin(), v.end());
-  const std::size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
-
 std::string nees_text(const NeesSummary& s) {
   return "mean NEES " + describe(s.mean, "", 2) + " over " + std::to_string(s.blocks) + " blocks of " +
          std::to_string(kBlock) + " scans; 95 % band of a consistent filter [" + number_text(s.band_lo, 2) +
@@ -84,11 +76,11 @@ ReportFigure nees_figure(const PlaneSlamRows& data) {
   std::size_t n = 0;
   for (const PlaneSlamGroup* g : data.at(data.points.front())) {
     const RunRow& r = *g->first();
-    const auto& v = series(r, "nees");
+    const auto& v = series_or_empty(r, "nees");
     n = std::max(n, v.size());
     plot.add_line(g->method, scan_axis(v.size()), v);
     if (g->method == "seif" && r.series.count("nees_marginal"))
-      plot.add_line("seif (exact marginal of Ω)", scan_axis(v.size()), series(r, "nees_marginal"));
+      plot.add_line("seif (exact marginal of Ω)", scan_axis(v.size()), series_or_empty(r, "nees_marginal"));
   }
   const double lo = chi_square_quantile(0.025, 6.0), hi = chi_square_quantile(0.975, 6.0);
   plot.add_line("χ²₆ 2.5 %", {0.0, double(n)}, {lo, lo});

@@ -13,20 +13,12 @@
 
 #include "plane_slam_report.hpp"
 #include "sextant/core/rng.hpp"
+#include "sextant/core/units.hpp"
+#include "sextant/eval/statistics.hpp"
 #include "sextant/eval/verdict.hpp"
 
 namespace sextant {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-double median_of(std::vector<double> v) {
-  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
-  if (v.empty()) return kNaN;
-  std::sort(v.begin(), v.end());
-  const std::size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
 
 /// A hybrid method and the odometry-driven method with the same filter.
 struct Pair {
@@ -97,7 +89,7 @@ Interval block_bootstrap(const std::vector<std::vector<double>>& a, const std::v
 
 std::vector<std::vector<double>> per_repetition(const PlaneSlamGroup& g, const std::string& name) {
   std::vector<std::vector<double>> out;
-  for (const RunRow* r : g.rows) out.push_back(series(*r, name));
+  for (const RunRow* r : g.rows) out.push_back(series_or_empty(*r, name));
   return out;
 }
 
@@ -105,8 +97,8 @@ std::vector<std::vector<double>> per_repetition(const PlaneSlamGroup& g, const s
 std::vector<std::vector<double>> rest_ms(const PlaneSlamGroup& g) {
   std::vector<std::vector<double>> out;
   for (const RunRow* r : g.rows) {
-    const auto &e = series(*r, "extraction_ms"), &a = series(*r, "association_ms");
-    const auto &m = series(*r, "motion_ms"), &u = series(*r, "measurement_ms");
+    const auto &e = series_or_empty(*r, "extraction_ms"), &a = series_or_empty(*r, "association_ms");
+    const auto &m = series_or_empty(*r, "motion_ms"), &u = series_or_empty(*r, "measurement_ms");
     std::vector<double> v;
     for (std::size_t k = 0; k < e.size() && k < a.size() && k < m.size() && k < u.size(); ++k)
       v.push_back(e[k] + a[k] + m[k] + u[k]);
@@ -139,7 +131,7 @@ Table accuracy_table(const ExperimentConfig& config, const PlaneSlamRows& data) 
     const auto m = [&](const std::string& v) { return cell_or_missing(median_of(g.values(p + v))); };
     std::vector<double> final_rot, mean_rot;
     for (const RunRow* r : g.rows) {
-      const auto& s = series(*r, p.empty() ? "rotation_error_deg" : "odometry_rotation_error_deg");
+      const auto& s = series_or_empty(*r, p.empty() ? "rotation_error_deg" : "odometry_rotation_error_deg");
       double sum = 0;
       for (double x : s) sum += x;
       final_rot.push_back(s.empty() ? kNaN : s.back());

@@ -9,29 +9,17 @@
 #include "plane_slam_report.hpp"
 #include "sextant/eval/sequence_analysis.hpp"
 #include "sextant/eval/sparsity.hpp"
+#include "sextant/eval/statistics.hpp"
 #include "sextant/eval/verdict.hpp"
 
 namespace sextant {
-namespace {
-
-// "Flat": the fitted time changes by less than this fraction of its median across the map's range.
-constexpr double kFlatGrowth = 0.5;
-
-double median_of(std::vector<double> v) {
-  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
-  if (v.empty()) return NAN;
-  std::sort(v.begin(), v.end());
-  const std::size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
-
-}  // namespace
+namespace {}  // namespace
 
 TimeGrowth time_growth(const PlaneSlamGroup& g, const std::string& time, std::uint64_t seed) {
   std::vector<double> x, y;
   for (const RunRow* r : g.rows) {
-    const auto& t = series(*r, time);
-    const auto& m = series(*r, "map_size");
+    const auto& t = series_or_empty(*r, time);
+    const auto& m = series_or_empty(*r, "map_size");
     for (std::size_t k = 1; k < std::min(t.size(), m.size()); ++k) {
       x.push_back(m[k]);
       y.push_back(t[k]);
@@ -60,10 +48,10 @@ ReportFigure time_figure(const PlaneSlamRows& data, const std::string& time, con
   plot.log_y = true;
   for (const PlaneSlamGroup* g : data.at(data.points.front())) {
     const RunRow& r = *g->first();
-    std::vector<double> y = series(r, time);
+    std::vector<double> y = series_or_empty(r, time);
     if (!y.empty()) y.front() = NAN;  // scan 0: no motion update; its augmentations are not comparable
     if (against_map)
-      plot.add_scatter(g->method, series(r, "map_size"), y);
+      plot.add_scatter(g->method, series_or_empty(r, "map_size"), y);
     else
       plot.add_line(g->method, scan_axis(y.size()), y);
   }
@@ -90,7 +78,7 @@ std::vector<ReportFigure> information_figures(const PlaneSlamRows& data) {
           for (std::size_t q = 0; q < size(b); ++q) entries.emplace_back(offset(a) + p, offset(b) + q);
       };
       for (std::size_t v = 0; v <= landmarks; ++v) block(v, v);
-      const auto& links = series(r, key);
+      const auto& links = series_or_empty(r, key);
       for (std::size_t k = 0; k + 1 < links.size(); k += 2) {
         const auto a = static_cast<std::size_t>(links[k]), b = static_cast<std::size_t>(links[k + 1]);
         block(a, b);

@@ -4,6 +4,7 @@
 
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/filters/plane_slam_model.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 
@@ -29,8 +30,6 @@ std::size_t read_count(SettingsReader& in, const std::string& key, std::size_t f
   if (value < 0) in.fail(key, "key '" + key + "' must be ≥ 0");
   return static_cast<std::size_t>(value);
 }
-
-constexpr double kRadPerDeg = 3.14159265358979323846 / 180.0;
 
 HybridParams read_hybrid_params(const YAML::Node& node, const std::string& file) {
   SettingsReader in(node, file);

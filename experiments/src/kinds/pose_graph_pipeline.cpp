@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "sequence_report.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/posegraph/relative_pose_factor.hpp"
@@ -17,9 +18,6 @@
 
 namespace sextant {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kDeg = 180.0 / 3.14159265358979323846;
 
 /// ATE (SE(3) Umeyama), Wulf and Kümmerle of one trajectory, as `<prefix>…` values; the per-pose
 /// ATE errors and the poses as series.
@@ -30,9 +28,9 @@ void put_metrics(const PoseList& estimate, const PoseList& truth, const std::str
   auto& v = row.values;
   v[prefix + "ate_m"] = ate.status.ok ? ate.translation.rms : kNaN;
   v[prefix + "wulf_translation_m"] = w.status.ok ? w.position_rms : kNaN;
-  v[prefix + "wulf_rotation_deg"] = w.status.ok ? w.orientation_rms * kDeg : kNaN;
+  v[prefix + "wulf_rotation_deg"] = w.status.ok ? w.orientation_rms * kDegPerRad : kNaN;
   v[prefix + "kummerle_translation_m"] = k.status.ok ? k.translation_rms : kNaN;
-  v[prefix + "kummerle_rotation_deg"] = k.status.ok ? k.rotation_rms * kDeg : kNaN;
+  v[prefix + "kummerle_rotation_deg"] = k.status.ok ? k.rotation_rms * kDegPerRad : kNaN;
   row.series[prefix + "ate_errors"] = ate.translation_errors;
   row.series[prefix + "trajectory"] = poses_to_series(estimate);
 }
@@ -307,7 +305,7 @@ void run_pose_graph_method(const PreloadedCampus& data, const PoseGraphParams& p
     const Eigen::Isometry3d error =
         relative(relative(truth[c.candidate.i], truth[c.candidate.j]), c.measured);
     se["closure_true_error_m"].push_back(translation_norm(error));
-    se["closure_true_error_deg"].push_back(rotation_angle(error) * kDeg);
+    se["closure_true_error_deg"].push_back(rotation_angle(error) * kDegPerRad);
     const bool weighted = c.decision.accepted && accepted_index < solved.closure_weights.size();
     se["closure_weight"].push_back(weighted ? solved.closure_weights[accepted_index] : kNaN);
     if (c.decision.accepted) ++accepted_index;

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "sequence_report.hpp"
+#include "sextant/core/units.hpp"
 
 namespace sextant {
 namespace {
@@ -65,12 +66,11 @@ void add_prefix_row(Table& t, const std::string& label, const std::vector<const 
     const AteResult ate = absolute_trajectory_error(est, truth, Alignment::se3);
     const WulfResult w = wulf_metric(est, truth);
     const KummerleResult k = kummerle_metric(est, truth);
-    constexpr double kDeg = 180.0 / 3.14159265358979323846;
     v[0].push_back(ate.status.ok ? ate.translation.rms : NAN);
     v[1].push_back(w.status.ok ? w.position_rms : NAN);
-    v[2].push_back(w.status.ok ? w.orientation_rms * kDeg : NAN);
+    v[2].push_back(w.status.ok ? w.orientation_rms * kDegPerRad : NAN);
     v[3].push_back(k.status.ok ? k.translation_rms : NAN);
-    v[4].push_back(k.status.ok ? k.rotation_rms * kDeg : NAN);
+    v[4].push_back(k.status.ok ? k.rotation_rms * kDegPerRad : NAN);
   }
   std::vector<Cell> cells{Cell::text(label), Cell::number(static_cast<double>(n), 0)};
   for (const auto& x : v) cells.push_back(number(median_finite(x)));

@@ -9,11 +9,10 @@
 
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/core/units.hpp"
 
 namespace sextant {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::array<std::optional<double>, 6> read_six(const YAML::Node& node, const std::string& file,
                                               const std::string& key) {

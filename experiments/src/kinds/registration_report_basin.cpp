@@ -8,6 +8,7 @@
 #include "basin_report.hpp"
 #include "registration_report.hpp"
 #include "registration_scenes.hpp"
+#include "sextant/eval/statistics.hpp"
 #include "sextant/eval/verdict.hpp"
 
 namespace sextant {
@@ -17,22 +18,6 @@ std::vector<std::string> labels(const std::vector<double>& values, int precision
   std::vector<std::string> out;
   for (const double v : values) out.push_back(format_number(v, precision));
   return out;
-}
-
-double median_of(std::vector<double> v) {
-  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
-  if (v.empty()) return NAN;
-  std::sort(v.begin(), v.end());
-  const std::size_t h = v.size() / 2;
-  return v.size() % 2 ? v[h] : 0.5 * (v[h - 1] + v[h]);
-}
-
-double mean_of(const std::vector<double>& v) {
-  double s = 0;
-  std::size_t n = 0;
-  for (const double x : v)
-    if (std::isfinite(x)) s += x, ++n;
-  return n ? s / static_cast<double>(n) : NAN;
 }
 
 /// Success rate of method m per (|yaw| row, offset column), pooled over scenes and directions.

@@ -12,13 +12,12 @@
 #include "sextant/core/io/cloud_io.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/matchers/ndt_grid.hpp"
 #include "sextant/matchers/ndt_matcher.hpp"
 
 namespace sextant {
 namespace {
-
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
 
 double point_value(const RunSpec& run, const std::string& axis, double fallback) {
   const auto it = run.point.find(axis);
@@ -44,8 +43,8 @@ SceneSpec read_scene(const YAML::Node& node, const std::string& file) {
   std::vector<double> pose;
   if (in.read("truth_pose", pose)) {
     if (pose.size() != 6) in.fail("truth_pose", "key 'truth_pose': expected [x, y, z, α, β, γ] in m and deg");
-    s.truth_pose =
-        to_isometry(Pose6{pose[0], pose[1], pose[2], pose[3] * kDeg, pose[4] * kDeg, pose[5] * kDeg});
+    s.truth_pose = to_isometry(
+        Pose6{pose[0], pose[1], pose[2], pose[3] * kRadPerDeg, pose[4] * kRadPerDeg, pose[5] * kRadPerDeg});
   }
   in.finish();
   const bool files = !s.reference.empty() || !s.input.empty();
@@ -60,12 +59,6 @@ SceneSpec read_scene(const YAML::Node& node, const std::string& file) {
   if (!files && s.second < 0) s.second = s.scan + 1;
   if (!files && s.second == s.scan) in.fail("second", "key 'second': must differ from 'scan'");
   return s;
-}
-
-const SweepAxis* find_axis(const ExperimentConfig& config, const std::string& name) {
-  for (const auto& axis : config.sweep)
-    if (axis.name == name) return &axis;
-  return nullptr;
 }
 
 std::size_t scene_index(const DisplacedSettings& settings, const std::string& name) {
@@ -232,12 +225,12 @@ DisplacedCase DisplacedScenes::displace(const RunSpec& run) const {
   c.yaw_deg = d.yaw_sign * point_value(run, "yaw", 0.0);
   const double tx = point_value(run, "tx", 0.0);
   // Move the input so that the true transform becomes the offset D; the guess stays identity.
-  const Pose6 offset_pose{tx + c.offset_m * std::cos(c.heading_deg * kDeg),
-                          c.offset_m * std::sin(c.heading_deg * kDeg),
+  const Pose6 offset_pose{tx + c.offset_m * std::cos(c.heading_deg * kRadPerDeg),
+                          c.offset_m * std::sin(c.heading_deg * kRadPerDeg),
                           0,
                           0,
                           0,
-                          c.yaw_deg * kDeg};
+                          c.yaw_deg * kRadPerDeg};
   const Eigen::Isometry3d D = to_isometry(offset_pose);
   c.input = scene.input.transformed(D.inverse() * scene.truth);
   c.truth = D;

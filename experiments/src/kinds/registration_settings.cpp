@@ -14,13 +14,6 @@
 namespace sextant {
 namespace {
 
-const SweepAxis* find_axis(const ExperimentConfig& config, const std::string& name) {
-  for (const auto& axis : config.sweep) {
-    if (axis.name == name) return &axis;
-  }
-  return nullptr;
-}
-
 [[noreturn]] void axis_fail(const ExperimentConfig& config, const YAML::Node& where,
                             const std::string& problem) {
   throw InputError(config.file, at_line(yaml_line(where)), problem);

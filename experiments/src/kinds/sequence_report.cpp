@@ -10,19 +10,12 @@
 #include "registration_report.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/eval/plots.hpp"
+#include "sextant/eval/statistics.hpp"
 
 namespace sextant {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kPi = 3.14159265358979323846;
-
-const std::vector<double>& series_or_empty(const RunRow& row, const std::string& name) {
-  static const std::vector<double> empty;
-  const auto it = row.series.find(name);
-  return it == row.series.end() ? empty : it->second;
-}
 
 std::vector<Eigen::Vector3d> positions(const PoseList& poses) {
   std::vector<Eigen::Vector3d> p;
@@ -77,17 +70,6 @@ std::vector<double> position_errors(const PoseList& estimate, const PoseList& re
   for (std::size_t i = 0; i < std::min(estimate.size(), reference.size()); ++i)
     e.push_back((estimate[i].translation() - reference[i].translation()).norm());
   return e;
-}
-
-double mean_of(const std::vector<double>& values) {
-  double sum = 0;
-  std::size_t n = 0;
-  for (const double v : values) {
-    if (!std::isfinite(v)) continue;
-    sum += v;
-    ++n;
-  }
-  return n > 0 ? sum / static_cast<double>(n) : kNaN;
 }
 
 std::vector<SequenceRun> sequence_runs(const std::vector<RunSpec>& runs,

@@ -27,8 +27,6 @@ PoseList series_to_poses(const std::vector<double>& series);
 std::vector<double> horizontal_errors(const PoseList& estimate, const PoseList& reference);
 /// ‖p_est − p_ref‖ per pose [m].
 std::vector<double> position_errors(const PoseList& estimate, const PoseList& reference);
-/// Mean of the finite values (NaN when none).
-double mean_of(const std::vector<double>& values);
 
 /// One finished run, decoded.
 struct SequenceRun {

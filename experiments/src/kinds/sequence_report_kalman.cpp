@@ -12,12 +12,11 @@
 
 #include "registration_report.hpp"
 #include "sequence_report.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/eval/verdict.hpp"
 
 namespace sextant {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// eᵀ P⁻¹ e of the position error at scan k (NaN when P is not positive definite).
 double position_nees(const SequenceRun& r, std::size_t k) {

@@ -2,16 +2,16 @@
 
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/core/units.hpp"
 
 namespace sextant {
 namespace {
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
-
 void read_kf(SettingsReader& in, SequenceParams& p) {
   if (!in.has("kf")) return;
   SettingsReader kf(in.child("kf"), in.file());
-  double rotation_deg = p.kf.odometry_sigma_rotation / kDeg, alarm_deg = p.kf.alarm_rotation / kDeg;
+  double rotation_deg = p.kf.odometry_sigma_rotation / kRadPerDeg,
+         alarm_deg = p.kf.alarm_rotation / kRadPerDeg;
   kf.read("sigma_translation", p.kf.odometry_sigma_translation);
   kf.read("sigma_rotation_deg", rotation_deg);
   kf.read("alarm_translation", p.kf.alarm_translation);
@@ -19,8 +19,8 @@ void read_kf(SettingsReader& in, SequenceParams& p) {
   kf.read("measurement_noise_scale", p.measurement_noise_scale);
   kf.read("initial_sigma", p.initial_sigma);
   kf.finish();
-  p.kf.odometry_sigma_rotation = rotation_deg * kDeg;
-  p.kf.alarm_rotation = alarm_deg * kDeg;
+  p.kf.odometry_sigma_rotation = rotation_deg * kRadPerDeg;
+  p.kf.alarm_rotation = alarm_deg * kRadPerDeg;
   std::string why;
   if (!p.kf.valid(&why)) kf.fail("", "key 'kf': " + why);
   if (!(p.measurement_noise_scale > 0))

@@ -23,6 +23,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/filters/filter.hpp"
 #include "sextant/filters/range_bearing_sim.hpp"
 #include "simulation.hpp"
@@ -109,8 +110,6 @@ FilterMethod read_filter_method(const YAML::Node& node, const std::string& file)
   return m;
 }
 
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
-
 class RangeBearingMonteCarlo : public SimulationModel {
  public:
   void validate(const ExperimentConfig& config) const override {
@@ -154,7 +153,7 @@ class RangeBearingMonteCarlo : public SimulationModel {
       max_pos = std::max(max_pos, e.norm());
       if ((k + 1) % static_cast<std::size_t>(p.record_every) != 0 && k + 1 != n) continue;
       t.push_back(static_cast<double>(k + 1) * p.sim.dt);
-      pos.push_back(e.norm()), head.push_back(std::abs(eh) / kDeg);
+      pos.push_back(e.norm()), head.push_back(std::abs(eh) / kRadPerDeg);
       truth_x.push_back(truth.x()), truth_y.push_back(truth.y()), est_x.push_back(est.x()),
           est_y.push_back(est.y());
     }
@@ -163,13 +162,13 @@ class RangeBearingMonteCarlo : public SimulationModel {
     row.values["failed_steps"] = static_cast<double>(result.failed_steps);
     row.values["landmarks_mapped"] = static_cast<double>(result.landmark_index.size());
     row.values["mean_position_error_m"] = sum_pos / count;
-    row.values["mean_heading_error_deg"] = sum_head / count / kDeg;
+    row.values["mean_heading_error_deg"] = sum_head / count / kRadPerDeg;
     row.values["max_position_error_m"] = max_pos;
     row.values["final_position_error_m"] = pos.empty() ? NAN : pos.back();
     row.values["dead_reckoning_error_m"] = sum_odo / count;
     row.values["mean_along_track_m"] = along / count;
     row.values["mean_cross_track_m"] = cross / count;
-    row.values["mean_signed_heading_deg"] = signed_head / count / kDeg;
+    row.values["mean_signed_heading_deg"] = signed_head / count / kRadPerDeg;
     row.series["t"] = t;
     row.series["position_error_m"] = pos;
     row.series["heading_error_deg"] = head;

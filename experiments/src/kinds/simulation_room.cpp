@@ -16,6 +16,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/time_lag.hpp"
 #include "sextant/eval/verdict.hpp"
@@ -25,8 +26,6 @@
 
 namespace sextant {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 struct RoomParams {
   RoomSim2dSettings room;
@@ -76,12 +75,6 @@ TimedPath path_of(const RunRow& row) {
   };
   p.t = get("path_t"), p.x = get("path_x"), p.y = get("path_y");
   return p;
-}
-
-const std::vector<double>& series_or_empty(const RunRow& row, const std::string& name) {
-  static const std::vector<double> empty;
-  const auto it = row.series.find(name);
-  return it == row.series.end() ? empty : it->second;
 }
 
 class Room2dModel : public SimulationModel {

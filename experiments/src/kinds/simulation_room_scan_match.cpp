@@ -5,14 +5,13 @@
 
 #include "registration_report.hpp"
 #include "sextant/core/pose.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/filters/scan_matching_kf.hpp"
 #include "simulation_room.hpp"
 
 namespace sextant {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 Eigen::Isometry3d planar(const Eigen::Vector3d& xi) {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
@@ -28,12 +27,6 @@ void store(const PointCloud& cloud, const Eigen::Isometry3d& T, const std::strin
     x.push_back(q.x()), y.push_back(q.y());
   }
   row.series["match_" + name + "_x"] = x, row.series["match_" + name + "_y"] = y;
-}
-
-const std::vector<double>& series(const RunRow& row, const std::string& name) {
-  static const std::vector<double> empty;
-  const auto it = row.series.find(name);
-  return it == row.series.end() ? empty : it->second;
 }
 
 }  // namespace
@@ -71,7 +64,7 @@ void record_scan_match(const RoomSim2dSettings& settings, const RoomSim2dRun& ru
 }
 
 ReportFigure scan_match_figure(const RunRow& row) {
-  if (series(row, "match_reference_x").empty()) return {};
+  if (series_or_empty(row, "match_reference_x").empty()) return {};
   XYPlot plot{"Fig. 5.17: scan matching result at t = " + format_number(row.value("match_time_s"), 1) + " s",
               "x [m] (frame of the previous scan)",
               "y [m]",
@@ -80,7 +73,8 @@ ReportFigure scan_match_figure(const RunRow& row) {
   plot.height = 520;
   // The reference scan as a line in beam order, broken where neighbouring returns jump (occlusions).
   std::vector<double> rx, ry;
-  const std::vector<double>&x = series(row, "match_reference_x"), &y = series(row, "match_reference_y");
+  const std::vector<double>&x = series_or_empty(row, "match_reference_x"),
+        &y = series_or_empty(row, "match_reference_y");
   for (std::size_t i = 0; i < x.size() && i < y.size(); ++i) {
     if (i > 0 && std::hypot(x[i] - x[i - 1], y[i] - y[i - 1]) > 0.5) rx.push_back(NAN), ry.push_back(NAN);
     rx.push_back(x[i]), ry.push_back(y[i]);
@@ -90,11 +84,11 @@ ReportFigure scan_match_figure(const RunRow& row) {
   plot.add_scatter("new scan at the dead-reckoning guess (" +
                        format_number(row.value("match_guess_error_m"), 2) + " m, " +
                        format_number(row.value("match_guess_error_deg"), 1) + "° off)",
-                   series(row, "match_guess_x"), series(row, "match_guess_y"));
+                   series_or_empty(row, "match_guess_x"), series_or_empty(row, "match_guess_y"));
   plot.series.back().color = "#d62728";
   plot.add_scatter("new scan after ML-NDT (" + format_number(row.value("match_error_m"), 3) + " m, " +
                        format_number(row.value("match_error_deg"), 2) + "° off)",
-                   series(row, "match_matched_x"), series(row, "match_matched_y"));
+                   series_or_empty(row, "match_matched_x"), series_or_empty(row, "match_matched_y"));
   plot.series.back().color = "#1f77b4";
   plot.add_line("", rx, ry);
   plot.series.back().color = "#222222";

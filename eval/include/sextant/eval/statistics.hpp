@@ -22,4 +22,9 @@ SampleStats summarize(const std::vector<double>& values);
 /// Root mean square of the finite values (0 when there are none).
 double rms(const std::vector<double>& values);
 
+/// Mean of the finite values; NaN when there are none.
+double mean_of(const std::vector<double>& values);
+/// Median of the finite values (mean of the two middle ones for an even count); NaN when there are none.
+double median_of(const std::vector<double>& values);
+
 }  // namespace sextant

@@ -72,6 +72,9 @@ ExperimentConfig read_experiment_config(const std::filesystem::path& file, bool 
 /// Same from an already loaded document (`file` names it in errors).
 ExperimentConfig parse_experiment_config(const YAML::Node& document, const std::string& file, bool quick);
 
+/// The sweep axis `name` of `config`; nullptr when it has none.
+const SweepAxis* find_axis(const ExperimentConfig& config, const std::string& name);
+
 /// The YAML files under `folder` whose name matches eNN_*.yaml, sorted.
 std::vector<std::filesystem::path> list_experiment_configs(const std::filesystem::path& folder);
 

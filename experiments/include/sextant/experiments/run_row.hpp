@@ -29,6 +29,9 @@ struct RunRow {
   double value(const std::string& name) const;
 };
 
+/// The series `name` of the row; empty when absent.
+const std::vector<double>& series_or_empty(const RunRow& row, const std::string& name);
+
 /// A row with the run's identity filled in.
 RunRow row_for(const RunSpec& run, const std::string& experiment);
 
