@@ -6,7 +6,8 @@ function(sextant_add_module name)
   set(target sextant_${name})
   add_library(${target} ${ARG_SOURCES})
   add_library(Sextant::${name} ALIAS ${target})
-  set_target_properties(${target} PROPERTIES EXPORT_NAME ${name} OUTPUT_NAME sextant_${name})
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${name} OUTPUT_NAME sextant_${name}
+                                             UNITY_BUILD ${SEXTANT_UNITY_BUILD})
   target_include_directories(${target} PUBLIC
     $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
