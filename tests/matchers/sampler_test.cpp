@@ -1,5 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <utility>
+
 #include "sextant/core/error.hpp"
 #include "sextant/matchers/samplers.hpp"
 
@@ -50,6 +56,50 @@ TEST(Sampler, GridKeepsAtMostFivePerCellAndDropsSparseCells) {
   for (std::size_t i : r.indices) ++per_cell[static_cast<int>(cloud[i].x())];
   EXPECT_EQ(per_cell, (std::vector<int>{0, 0, 3, 4, 5, 5, 5, 5, 5, 5}));
   EXPECT_NEAR(r.kept_fraction, 37.0 / 55.0, 1e-12);
+}
+
+/// GBS by its definition: (cell key, index) pairs sorted, so cells come in key order (x, y, z
+/// fields of 21 bits each, x most significant, wrapping) and points in index order; per cell a
+/// partial Fisher–Yates draw of min(size, 5) points, cells of fewer than 3 dropped.
+std::vector<std::size_t> gbs_by_sorting_pairs(const PointCloud& input, Rng& rng) {
+  const auto field = [](float v) {
+    return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v * 1.0)) & 0x1FFFFF);
+  };
+  std::vector<std::pair<std::uint64_t, std::size_t>> keyed;
+  for (std::size_t i = 0; i < input.size(); ++i)
+    if (input[i].allFinite())
+      keyed.emplace_back((field(input[i].x()) << 42) | (field(input[i].y()) << 21) | field(input[i].z()), i);
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::size_t> selected, cell;
+  for (std::size_t begin = 0; begin < keyed.size();) {
+    cell.clear();
+    std::size_t end = begin;
+    while (end < keyed.size() && keyed[end].first == keyed[begin].first) cell.push_back(keyed[end++].second);
+    begin = end;
+    if (cell.size() < 3) continue;
+    const std::size_t keep = std::min<std::size_t>(cell.size(), 5);
+    for (std::size_t i = 0; i < keep; ++i) std::swap(cell[i], cell[i + rng.index(cell.size() - i)]);
+    selected.insert(selected.end(), cell.begin(), cell.begin() + static_cast<std::ptrdiff_t>(keep));
+  }
+  std::sort(selected.begin(), selected.end());
+  return selected;
+}
+
+TEST(Sampler, GridDrawsTheSamePointsAsSortingTheCellKeyIndexPairs) {
+  // Points around the origin (negative cell indices wrap in the key) with NaNs and infinities.
+  Rng layout(11);
+  PointCloud cloud;
+  for (int i = 0; i < 30000; ++i)
+    cloud.push_back({static_cast<float>(layout.uniform(-40, 40)), static_cast<float>(layout.uniform(-40, 40)),
+                     static_cast<float>(layout.normal(0.0, 3.0))});
+  for (std::size_t i = 0; i < cloud.size(); i += 997)
+    cloud.points()[i].y() = std::numeric_limits<float>::quiet_NaN();
+  cloud.points()[5].z() = std::numeric_limits<float>::infinity();
+  const auto gbs = make_sampler("gbs");
+  for (const std::uint64_t seed : {1u, 2u, 3u}) {
+    Rng a(seed), b(seed);
+    EXPECT_EQ(gbs->select(cloud, a), gbs_by_sorting_pairs(cloud, b)) << "seed " << seed;
+  }
 }
 
 TEST(Sampler, BadSettingsNameTheKey) {

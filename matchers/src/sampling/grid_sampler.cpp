@@ -38,21 +38,51 @@ GridSampler::GridSampler(GridSamplerSettings settings) : settings_(settings) {}
 
 std::vector<std::size_t> GridSampler::select(const PointCloud& input, Rng& rng) const {
   const double inv_cell = 1.0 / settings_.cell_size;
-  std::vector<std::pair<std::uint64_t, std::size_t>> keyed;
-  keyed.reserve(input.size());
+  // The points grouped by cell, cells in key order and points in index order: each cell's key is
+  // numbered in a hash table, the few distinct keys are sorted, and a counting sort by the keys'
+  // ranks groups the points (the order of sorting (key, index) pairs, in linear time).
+  std::vector<std::size_t> order;  // finite points, then grouped
+  order.reserve(input.size());
+  std::vector<std::uint64_t> keys;  // distinct keys, by first appearance
+  std::vector<std::uint32_t> cell_of_point;
+  cell_of_point.reserve(input.size());
+  std::size_t capacity = 64;
+  while (capacity < 2 * input.size()) capacity *= 2;
+  constexpr std::uint32_t kEmpty = 0xffffffffu;
+  std::vector<std::uint32_t> table(capacity, kEmpty);  // open addressing: slot → index into keys
+  const std::size_t mask = capacity - 1;
   for (std::size_t i = 0; i < input.size(); ++i) {
-    if (input[i].allFinite()) keyed.emplace_back(cell_key(input[i], inv_cell), i);
+    if (!input[i].allFinite()) continue;
+    const std::uint64_t key = cell_key(input[i], inv_cell);
+    std::size_t slot = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 32) & mask;
+    while (table[slot] != kEmpty && keys[table[slot]] != key) slot = (slot + 1) & mask;
+    if (table[slot] == kEmpty) {
+      table[slot] = static_cast<std::uint32_t>(keys.size());
+      keys.push_back(key);
+    }
+    order.push_back(i);
+    cell_of_point.push_back(table[slot]);
   }
-  std::sort(keyed.begin(), keyed.end());  // cells in key order, points in index order
+  std::vector<std::uint32_t> by_key(keys.size());
+  for (std::size_t c = 0; c < keys.size(); ++c) by_key[c] = static_cast<std::uint32_t>(c);
+  std::sort(by_key.begin(), by_key.end(),
+            [&keys](std::uint32_t a, std::uint32_t b) { return keys[a] < keys[b]; });
+  std::vector<std::size_t> start(keys.size() + 1, 0);  // first position of each cell, by cell number
+  std::vector<std::size_t> count(keys.size(), 0);
+  for (const std::uint32_t c : cell_of_point) ++count[c];
+  std::size_t at = 0;
+  for (const std::uint32_t c : by_key) start[c] = at, at += count[c];
+  std::vector<std::size_t> grouped(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k) grouped[start[cell_of_point[k]]++] = order[k];
 
   std::vector<std::size_t> selected;
-  selected.reserve(keyed.size() / 2);
+  selected.reserve(grouped.size() / 2);
   std::vector<std::size_t> cell;
-  for (std::size_t begin = 0; begin < keyed.size();) {
-    std::size_t end = begin;
-    cell.clear();
-    while (end < keyed.size() && keyed[end].first == keyed[begin].first) cell.push_back(keyed[end++].second);
-    begin = end;
+  std::size_t begin = 0;
+  for (const std::uint32_t c : by_key) {
+    cell.assign(grouped.begin() + static_cast<std::ptrdiff_t>(begin),
+                grouped.begin() + static_cast<std::ptrdiff_t>(begin + count[c]));
+    begin += count[c];
     if (cell.size() < settings_.min_per_cell) continue;
     const std::size_t keep = std::min(cell.size(), settings_.max_per_cell);
     for (std::size_t i = 0; i < keep; ++i) std::swap(cell[i], cell[i + rng.index(cell.size() - i)]);
