@@ -67,7 +67,7 @@ std::vector<std::size_t> GridSampler::select(const PointCloud& input, Rng& rng) 
   for (std::size_t c = 0; c < keys.size(); ++c) by_key[c] = static_cast<std::uint32_t>(c);
   std::sort(by_key.begin(), by_key.end(),
             [&keys](std::uint32_t a, std::uint32_t b) { return keys[a] < keys[b]; });
-  std::vector<std::size_t> start(keys.size() + 1, 0);  // first position of each cell, by cell number
+  std::vector<std::size_t> start(keys.size(), 0);  // first position of each cell, by cell number
   std::vector<std::size_t> count(keys.size(), 0);
   for (const std::uint32_t c : cell_of_point) ++count[c];
   std::size_t at = 0;
