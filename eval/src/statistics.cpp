@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
+
+#include "sextant/core/units.hpp"
 
 namespace sextant {
 
@@ -50,12 +51,12 @@ double rms(const std::vector<double>& values) {
 
 double mean_of(const std::vector<double>& values) {
   const SampleStats s = summarize(values);
-  return s.count > 0 ? s.mean : std::numeric_limits<double>::quiet_NaN();
+  return s.count > 0 ? s.mean : kNaN;
 }
 
 double median_of(const std::vector<double>& values) {
   const SampleStats s = summarize(values);
-  return s.count > 0 ? s.median : std::numeric_limits<double>::quiet_NaN();
+  return s.count > 0 ? s.median : kNaN;
 }
 
 }  // namespace sextant

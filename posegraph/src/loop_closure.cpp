@@ -8,8 +8,6 @@
 #include "sextant/posegraph/relative_pose_factor.hpp"
 
 namespace sextant {
-namespace {}  // namespace
-
 bool LoopClosureSettings::valid(std::string* why) const {
   const auto fail = [&](const char* text) {
     if (why) *why = text;

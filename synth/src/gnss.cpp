@@ -8,8 +8,6 @@
 #include <GeographicLib/LocalCartesian.hpp>
 
 namespace sextant::synth {
-namespace {}  // namespace
-
 std::vector<GnssRecord> simulate_gnss(const std::vector<Eigen::Isometry3d>& ground_truth,
                                       const std::vector<double>& stamps, const GnssSettings& s, Rng& rng) {
   const GeographicLib::LocalCartesian enu(s.origin_latitude, s.origin_longitude, s.origin_altitude);

@@ -5,8 +5,6 @@
 #include <map>
 
 namespace sextant::synth {
-namespace {}  // namespace
-
 SimulatedScan simulate_scan(const World& world, const SensorSettings& sensor, double sensor_height,
                             const Eigen::Isometry3d& world_from_sensor, Rng& rng) {
   SimulatedScan scan;

@@ -9,8 +9,6 @@
 #include "sextant/eval/verdict.hpp"
 
 namespace sextant {
-namespace {}  // namespace
-
 std::vector<double> PlaneSlamGroup::values(const std::string& name) const {
   std::vector<double> out;
   for (const RunRow* r : rows) out.push_back(r ? r->value(name) : kNaN);

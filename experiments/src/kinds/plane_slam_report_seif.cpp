@@ -13,8 +13,6 @@
 #include "sextant/eval/verdict.hpp"
 
 namespace sextant {
-namespace {}  // namespace
-
 TimeGrowth time_growth(const PlaneSlamGroup& g, const std::string& time, std::uint64_t seed) {
   std::vector<double> x, y;
   for (const RunRow* r : g.rows) {

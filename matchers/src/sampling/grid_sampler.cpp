@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <utility>
 
 #include "sextant/core/settings_reader.hpp"
@@ -64,7 +65,7 @@ std::vector<std::size_t> GridSampler::select(const PointCloud& input, Rng& rng) 
     cell_of_point.push_back(table[slot]);
   }
   std::vector<std::uint32_t> by_key(keys.size());
-  for (std::size_t c = 0; c < keys.size(); ++c) by_key[c] = static_cast<std::uint32_t>(c);
+  std::iota(by_key.begin(), by_key.end(), 0u);
   std::sort(by_key.begin(), by_key.end(),
             [&keys](std::uint32_t a, std::uint32_t b) { return keys[a] < keys[b]; });
   std::vector<std::size_t> start(keys.size(), 0);  // first position of each cell, by cell number
@@ -77,16 +78,17 @@ std::vector<std::size_t> GridSampler::select(const PointCloud& input, Rng& rng) 
 
   std::vector<std::size_t> selected;
   selected.reserve(grouped.size() / 2);
-  std::vector<std::size_t> cell;
-  std::size_t begin = 0;
+  std::size_t begin = 0;  // each cell's points, drawn from in place
   for (const std::uint32_t c : by_key) {
-    cell.assign(grouped.begin() + static_cast<std::ptrdiff_t>(begin),
-                grouped.begin() + static_cast<std::ptrdiff_t>(begin + count[c]));
-    begin += count[c];
-    if (cell.size() < settings_.min_per_cell) continue;
-    const std::size_t keep = std::min(cell.size(), settings_.max_per_cell);
-    for (std::size_t i = 0; i < keep; ++i) std::swap(cell[i], cell[i + rng.index(cell.size() - i)]);
-    selected.insert(selected.end(), cell.begin(), cell.begin() + static_cast<std::ptrdiff_t>(keep));
+    const std::size_t n = count[c];
+    if (n >= settings_.min_per_cell) {
+      const std::size_t keep = std::min(n, settings_.max_per_cell);
+      for (std::size_t i = 0; i < keep; ++i)
+        std::swap(grouped[begin + i], grouped[begin + i + rng.index(n - i)]);
+      selected.insert(selected.end(), grouped.begin() + static_cast<std::ptrdiff_t>(begin),
+                      grouped.begin() + static_cast<std::ptrdiff_t>(begin + keep));
+    }
+    begin += n;
   }
   std::sort(selected.begin(), selected.end());
   return selected;
