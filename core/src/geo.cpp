@@ -112,7 +112,7 @@ std::vector<OxtsRecord> read_oxts_file(const std::filesystem::path& file) {
 std::vector<OxtsRecord> read_oxts_folder(const std::filesystem::path& folder) {
   const std::filesystem::path data =
       std::filesystem::is_directory(folder / "data") ? folder / "data" : folder;
-  const auto files = detail::numbered_files(data, "", ".txt");
+  const auto files = detail::list_scans(data, "", {".txt"}).files;
   if (files.empty()) throw InputError(data.string(), "", "no numbered OXTS files (NNNNNNNNNN.txt)");
   std::vector<OxtsRecord> records;
   for (const auto& f : files) {

@@ -85,3 +85,15 @@ bool is_finite(const Pose6& pose) {
 }
 
 }  // namespace sextant
+
+namespace sextant {
+
+Eigen::Isometry3d scale_motion(const Eigen::Isometry3d& T, double factor) {
+  const Eigen::AngleAxisd rotation(T.rotation());
+  Eigen::Isometry3d scaled = Eigen::Isometry3d::Identity();
+  scaled.linear() = Eigen::AngleAxisd(rotation.angle() * factor, rotation.axis()).toRotationMatrix();
+  scaled.translation() = T.translation() * factor;
+  return scaled;
+}
+
+}  // namespace sextant

@@ -85,11 +85,5 @@ TEST(KittiDataset, SequenceFolder) {
   expect_input_error([&] { open_dataset(dir.path()); }, dir / "calib.txt", "", "missing");
 }
 
-TEST(OpenDataset, UnknownLayoutAndMissingFolder) {
-  TempDir dir;
-  expect_input_error([&] { open_dataset(dir.path()); }, dir.path(), "", "unknown dataset layout");
-  expect_input_error([&] { open_dataset(dir / "nope"); }, dir / "nope", "", "not a folder");
-}
-
 }  // namespace
 }  // namespace sextant

@@ -10,16 +10,12 @@
 namespace sextant {
 namespace {
 
-std::vector<detail::NumberedFile> velodyne_files(const std::filesystem::path& velodyne) {
-  auto files = detail::numbered_files(velodyne, "", ".xyz32.bin");
-  if (files.empty()) files = detail::numbered_files(velodyne, "", ".bin");
-  return files;
-}
-
 class KittiDataset final : public Dataset {
  public:
   explicit KittiDataset(const std::filesystem::path& folder) {
-    scans_ = velodyne_files(folder / "velodyne");
+    detail::ScanListing listing = detail::list_scans(folder / "velodyne", "", {".bin", ".xyz32.bin"});
+    scans_ = std::move(listing.files);
+    meta_.notes = std::move(listing.notes);
     if (scans_.empty()) {
       throw InputError((folder / "velodyne").string(), "",
                        "no NNNNNN.bin files (not a KITTI sequence folder)");
@@ -96,14 +92,6 @@ class KittiDataset final : public Dataset {
 
 std::unique_ptr<Dataset> open_kitti_dataset(const std::filesystem::path& folder) {
   return std::make_unique<KittiDataset>(folder);
-}
-
-std::unique_ptr<Dataset> open_dataset(const std::filesystem::path& folder) {
-  if (!std::filesystem::is_directory(folder)) throw InputError(folder.string(), "", "not a folder");
-  if (std::filesystem::is_directory(folder / "velodyne")) return open_kitti_dataset(folder);
-  if (!detail::numbered_files(folder, "scan", ".3d").empty()) return open_uos_dataset(folder);
-  throw InputError(folder.string(), "",
-                   "unknown dataset layout: expected scanNNN.3d files (uos) or a velodyne/ folder (KITTI)");
 }
 
 }  // namespace sextant

@@ -1,5 +1,9 @@
 #pragma once
-// Private: finds numbered scan files (scan000.3d, 000000.bin) in a folder, sorted by number.
+// Private: lists the scan files of a dataset folder in natural order (scan2 before scan10), with
+// what a user must hear about them: gaps in the numbering and mixed formats are reported as notes;
+// two files with the same number (scan001.3d and scan1.3d, 000002.bin and 000002.pcd) are
+// ambiguous and refused.
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -7,13 +11,25 @@
 namespace sextant::detail {
 
 struct NumberedFile {
-  long number = 0;
+  std::uint64_t number = 0;  ///< the last run of digits in the name before the extension
   std::filesystem::path path;
+  std::string extension;  ///< the matched extension, e.g. ".xyz32.bin"
 };
 
-/// Files named <prefix><digits><suffix> (e.g. "scan" + "000" + ".3d"), sorted by number.
-std::vector<NumberedFile> numbered_files(const std::filesystem::path& folder, const std::string& prefix,
-                                         const std::string& suffix);
+struct ScanListing {
+  std::vector<NumberedFile> files;  ///< ascending number
+  std::vector<std::string> notes;   ///< gaps, mixed formats: reported, not errors
+};
+
+/// Regular files named <prefix>…<digits><extension> for one of `extensions` (the longest one a
+/// name ends with wins, case-insensitive), ascending by number. InputError naming both files when
+/// two share a number, and for a file whose digits do not fit 19 places.
+ScanListing list_scans(const std::filesystem::path& folder, const std::string& prefix,
+                       const std::vector<std::string>& extensions);
+
+/// "3 numbers missing: 001–002, 004" style description of the gaps of an ascending listing
+/// (empty when consecutive).
+std::string describe_gaps(const std::vector<NumberedFile>& files);
 
 /// The folder's own name, also for "a/b/" and "." paths.
 std::string folder_name(const std::filesystem::path& folder);

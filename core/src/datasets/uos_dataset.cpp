@@ -37,7 +37,9 @@ std::vector<Eigen::Isometry3d> read_sibling_poses(const std::vector<detail::Numb
 class UosDataset final : public Dataset {
  public:
   explicit UosDataset(const std::filesystem::path& folder) {
-    scans_ = detail::numbered_files(folder, "scan", ".3d");
+    detail::ScanListing listing = detail::list_scans(folder, "scan", {".3d"});
+    scans_ = std::move(listing.files);
+    meta_.notes = std::move(listing.notes);
     if (scans_.empty()) throw InputError(folder.string(), "", "no scanNNN.3d files (not a uos folder)");
     odometry_ = read_sibling_poses(scans_, ".pose", "odometry (.pose)",
                                    [](const std::filesystem::path& f) { return read_uos_pose(f); });

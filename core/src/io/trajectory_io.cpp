@@ -74,4 +74,31 @@ void write_kitti_trajectory(const std::filesystem::path& file, const Trajectory&
   write_kitti_poses(file, poses);
 }
 
+TrajectoryFormat detect_trajectory_format(const std::filesystem::path& file) {
+  const std::string text = detail::read_file_bytes(file);
+  std::vector<double> v;
+  std::string bad;
+  long first_line = 0;
+  std::size_t count = 0;
+  detail::for_each_line(text, [&](std::string_view line, long number) {
+    if (first_line != 0 || detail::is_blank(line) || line.front() == '#') return;
+    if (!detail::parse_numbers(line, v, &bad))
+      throw InputError(file.string(), at_line(number), detail::bad_number_problem(bad));
+    first_line = number;
+    count = v.size();
+  });
+  if (first_line == 0) throw InputError(file.string(), "", "no poses (an empty trajectory file)");
+  if (count == 8) return TrajectoryFormat::kTum;
+  if (count == 12) return TrajectoryFormat::kKitti;
+  throw InputError(file.string(), at_line(first_line),
+                   "expected a TUM line (8 numbers: timestamp tx ty tz qx qy qz qw) or a KITTI line (12 "
+                   "numbers: a 3×4 row-major matrix), found " +
+                       std::to_string(count) + " numbers");
+}
+
+Trajectory read_trajectory(const std::filesystem::path& file) {
+  return detect_trajectory_format(file) == TrajectoryFormat::kTum ? read_tum_trajectory(file)
+                                                                  : read_kitti_trajectory(file);
+}
+
 }  // namespace sextant

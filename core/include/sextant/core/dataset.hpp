@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -21,6 +22,9 @@ struct DatasetMetadata {
   std::size_t scan_count = 0;
   bool has_odometry = false;
   bool has_ground_truth = false;
+  /// What a user must hear about the folder: gaps in the scan numbering, mixed file formats (each
+  /// reported, not an error; ambiguous numbering is an InputError when the folder is opened).
+  std::vector<std::string> notes;
 };
 
 /// What loading one scan cost: nothing is dropped without a count.
@@ -50,10 +54,24 @@ class Dataset {
   virtual std::filesystem::path scan_file(std::size_t /*i*/) const { return {}; }
 };
 
-/// Opens a folder, detecting its layout (uos: scan000.3d…; KITTI: velodyne/ + poses/calib).
-/// Throws InputError when the folder is neither.
+/// Opens a folder, detecting its layout: KITTI (a velodyne/ folder), uos (scanNNN.3d files), else a
+/// scan folder (open_scan_folder). Throws InputError when the folder holds no scans.
 /// Pose files are read when the folder is opened, so their errors surface at once.
 std::unique_ptr<Dataset> open_dataset(const std::filesystem::path& folder);
+
+/// The point-cloud extensions a scan folder is made of: .pcd .ply .bin .xyz32.bin .xyz .csv .3d.
+const std::vector<std::string>& scan_folder_extensions();
+
+/// Any folder of scans: the files of scan_folder_extensions() in `folder`, or in `folder/scans`
+/// when `folder` holds none, in natural order (by the last number in the name: full2 before
+/// full10). Optional, beside the scans' folder or in `folder`: `poses.txt` (one 3×4 row-major
+/// world ← scan matrix per line, the KITTI layout without calibration: the ground truth) and
+/// `times.txt` (one time [s] per scan). `poses_file`, when given, replaces poses.txt: TUM
+/// (8 numbers per line) or KITTI (12 per line), one pose per scan, in order. A pose or time count
+/// that differs from the scan count, and two files with the same number, are InputErrors; gaps
+/// in the numbering and mixed formats are notes in the metadata.
+std::unique_ptr<Dataset> open_scan_folder(const std::filesystem::path& folder,
+                                          const std::filesystem::path& poses_file = {});
 
 /// A uos folder: scanNNN.3d sorted by number; odometry from every scanNNN.pose, ground truth
 /// from the last line of every scanNNN.frames. Pose files present for some scans but missing for

@@ -44,6 +44,11 @@ double translation_norm(const Eigen::Isometry3d& T);
 
 /// True when every entry is finite.
 bool is_finite(const Eigen::Isometry3d& T);
+
+/// The motion T continued for `factor` times as long at the same body-frame velocity: rotation
+/// angle × factor about the same axis, translation × factor (a constant-velocity extrapolation,
+/// exact for straight motion; factor 1 gives T, 0 the identity).
+Eigen::Isometry3d scale_motion(const Eigen::Isometry3d& T, double factor);
 bool is_finite(const Pose6& pose);
 
 }  // namespace sextant

@@ -17,4 +17,11 @@ void write_tum_trajectory(const std::filesystem::path& file, const Trajectory& t
 Trajectory read_kitti_trajectory(const std::filesystem::path& file);
 void write_kitti_trajectory(const std::filesystem::path& file, const Trajectory& trajectory);
 
+enum class TrajectoryFormat { kTum, kKitti };
+/// The format of a trajectory file from its first data line: 8 numbers TUM, 12 KITTI; InputError
+/// naming the line otherwise (and for a file without poses).
+TrajectoryFormat detect_trajectory_format(const std::filesystem::path& file);
+/// Reads a TUM or KITTI file, whichever detect_trajectory_format finds.
+Trajectory read_trajectory(const std::filesystem::path& file);
+
 }  // namespace sextant

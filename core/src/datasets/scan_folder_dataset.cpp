@@ -1,0 +1,120 @@
+// Any folder of point-cloud files as a dataset, and the layout detection of open_dataset.
+#include <stdexcept>
+
+#include "scan_files.hpp"
+#include "sextant/core/dataset.hpp"
+#include "sextant/core/error.hpp"
+#include "sextant/core/io/cloud_io.hpp"
+#include "sextant/core/io/kitti.hpp"
+#include "sextant/core/io/trajectory_io.hpp"
+
+namespace sextant {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The folder's scans, or those of folder/scans when the folder itself holds none.
+detail::ScanListing scan_listing(const fs::path& folder, fs::path& scans_folder) {
+  scans_folder = folder;
+  detail::ScanListing listing = detail::list_scans(folder, "", scan_folder_extensions());
+  if (listing.files.empty() && fs::is_directory(folder / "scans")) {
+    scans_folder = folder / "scans";
+    listing = detail::list_scans(scans_folder, "", scan_folder_extensions());
+  }
+  return listing;
+}
+
+/// `name` in the scans' folder or, failing that, in `folder`; empty when in neither.
+fs::path beside(const fs::path& folder, const fs::path& scans_folder, const std::string& name) {
+  for (const fs::path& place : {scans_folder, folder})
+    if (fs::exists(place / name)) return place / name;
+  return {};
+}
+
+class ScanFolderDataset final : public Dataset {
+ public:
+  ScanFolderDataset(const fs::path& folder, const fs::path& poses_file) {
+    fs::path scans_folder;
+    detail::ScanListing listing = scan_listing(folder, scans_folder);
+    if (listing.files.empty())
+      throw InputError(folder.string(), "",
+                       "no scans: expected point-cloud files (.pcd .ply .bin .xyz32.bin .xyz .csv .3d) in "
+                       "the folder or in scans/ inside it");
+    scans_ = std::move(listing.files);
+    meta_.notes = std::move(listing.notes);
+    meta_.name = detail::folder_name(folder);
+    meta_.format = "folder";
+    meta_.path = folder;
+    meta_.scan_count = scans_.size();
+    const fs::path poses = poses_file.empty() ? beside(folder, scans_folder, "poses.txt") : poses_file;
+    if (!poses.empty()) {
+      const Trajectory trajectory =
+          poses_file.empty() ? read_kitti_trajectory(poses) : read_trajectory(poses);
+      check_count(poses, trajectory.size(), "poses");
+      for (const StampedPose& p : trajectory) ground_truth_.push_back(p.pose);
+    }
+    if (const fs::path times = beside(folder, scans_folder, "times.txt"); !times.empty()) {
+      times_ = read_kitti_times(times);
+      check_count(times, times_.size(), "times");
+    }
+    meta_.has_ground_truth = !ground_truth_.empty();
+  }
+
+  const DatasetMetadata& metadata() const override { return meta_; }
+  PointCloud scan(std::size_t i, ScanLoadReport* report) const override {
+    return read_cloud(scans_.at(i).path, report);
+  }
+  std::optional<Eigen::Isometry3d> odometry(std::size_t i) const override {
+    check_index(i);
+    return std::nullopt;
+  }
+  std::optional<Eigen::Isometry3d> ground_truth(std::size_t i) const override {
+    check_index(i);
+    if (ground_truth_.empty()) return std::nullopt;
+    return ground_truth_[i];
+  }
+  std::optional<double> stamp(std::size_t i) const override {
+    check_index(i);
+    if (times_.empty()) return std::nullopt;
+    return times_[i];
+  }
+  fs::path scan_file(std::size_t i) const override { return scans_.at(i).path; }
+
+ private:
+  void check_count(const fs::path& file, std::size_t count, const std::string& what) const {
+    if (count != scans_.size())
+      throw InputError(file.string(), "",
+                       std::to_string(count) + " " + what + " for " + std::to_string(scans_.size()) +
+                           " scans (one per scan, in the scans' order, is expected)");
+  }
+  void check_index(std::size_t i) const {
+    if (i >= scans_.size()) throw std::out_of_range("scan index " + std::to_string(i) + " out of range");
+  }
+
+  DatasetMetadata meta_;
+  std::vector<detail::NumberedFile> scans_;
+  std::vector<Eigen::Isometry3d> ground_truth_;
+  std::vector<double> times_;
+};
+
+}  // namespace
+
+const std::vector<std::string>& scan_folder_extensions() {
+  static const std::vector<std::string> extensions{".pcd", ".ply", ".bin", ".xyz32.bin",
+                                                   ".xyz", ".csv", ".3d"};
+  return extensions;
+}
+
+std::unique_ptr<Dataset> open_scan_folder(const fs::path& folder, const fs::path& poses_file) {
+  if (!fs::is_directory(folder)) throw InputError(folder.string(), "", "not a folder");
+  return std::make_unique<ScanFolderDataset>(folder, poses_file);
+}
+
+std::unique_ptr<Dataset> open_dataset(const fs::path& folder) {
+  if (!fs::is_directory(folder)) throw InputError(folder.string(), "", "not a folder");
+  if (fs::is_directory(folder / "velodyne")) return open_kitti_dataset(folder);
+  if (!detail::list_scans(folder, "scan", {".3d"}).files.empty()) return open_uos_dataset(folder);
+  return open_scan_folder(folder);
+}
+
+}  // namespace sextant

@@ -1,0 +1,136 @@
+// Any folder of scans as a dataset (open_scan_folder), and what every folder layout reports about
+// its numbering: gaps and mixed formats as notes, two files with one number as an error.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "sextant/core/dataset.hpp"
+#include "sextant/core/io/cloud_io.hpp"
+#include "sextant/core/io/kitti.hpp"
+#include "sextant/core/io/trajectory_io.hpp"
+#include "sextant/core/io/uos.hpp"
+#include "test_util.hpp"
+
+namespace sextant {
+namespace {
+
+using test::expect_input_error;
+using test::TempDir;
+using test::write_text;
+
+/// A cloud of `n` points, its first at (n, 0, 0), so that the scan can be recognised by its size.
+PointCloud cloud_of(std::size_t n) {
+  PointCloud cloud;
+  for (std::size_t i = 0; i < n; ++i) cloud.push_back({static_cast<float>(n + i), 1.f, 2.f});
+  return cloud;
+}
+
+bool has_note(const DatasetMetadata& m, const std::string& part) {
+  return std::any_of(m.notes.begin(), m.notes.end(),
+                     [&](const std::string& note) { return note.find(part) != std::string::npos; });
+}
+
+TEST(ScanFolder, NaturalOrderOfAnyFormat) {
+  TempDir dir;
+  write_cloud(dir / "full10.pcd", cloud_of(10));
+  write_cloud(dir / "full2.ply", cloud_of(2));
+  write_cloud(dir / "full3.xyz", cloud_of(3));
+  write_text(dir / "readme.txt", "not a scan\n");
+  const auto ds = open_dataset(dir.path());
+  EXPECT_EQ(ds->metadata().format, "folder");
+  ASSERT_EQ(ds->size(), 3u);
+  EXPECT_EQ(ds->scan_file(0).filename(), "full2.ply");
+  EXPECT_EQ(ds->scan_file(1).filename(), "full3.xyz");
+  EXPECT_EQ(ds->scan_file(2).filename(), "full10.pcd");
+  EXPECT_EQ(ds->scan(2).size(), 10u);
+  EXPECT_FALSE(ds->metadata().has_ground_truth);
+  EXPECT_FALSE(ds->ground_truth(0).has_value());
+  EXPECT_FALSE(ds->stamp(0).has_value());
+  EXPECT_TRUE(has_note(ds->metadata(), "6 numbers missing: 4–9")) << ds->metadata().notes.size();
+  EXPECT_TRUE(has_note(ds->metadata(), "mix file formats (1 .pcd, 1 .ply, 1 .xyz)"));
+}
+
+TEST(ScanFolder, ScansSubfolderWithPosesAndTimes) {
+  TempDir dir;
+  for (int i = 0; i < 3; ++i)
+    write_cloud(dir / "scans" / ("00000" + std::to_string(i) + ".pcd"), cloud_of(4 + i));
+  std::vector<Eigen::Isometry3d> poses(3, Eigen::Isometry3d::Identity());
+  poses[1].translation() = Eigen::Vector3d(1.5, 0, 0);
+  poses[2].translation() = Eigen::Vector3d(3.0, 0.5, 0);
+  poses[2].linear() = Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  write_kitti_poses(dir / "poses.txt", poses);
+  write_text(dir / "times.txt", "10.0\n10.5\n12.25\n");
+  const auto ds = open_dataset(dir.path());
+  ASSERT_EQ(ds->size(), 3u);
+  EXPECT_TRUE(ds->metadata().notes.empty());
+  EXPECT_EQ(ds->scan(1).size(), 5u);
+  ASSERT_TRUE(ds->metadata().has_ground_truth);
+  // poses.txt of a scan folder is world ← scan as it stands: no camera calibration applied.
+  EXPECT_TRUE(ds->ground_truth(2)->isApprox(poses[2], 1e-9));
+  EXPECT_DOUBLE_EQ(*ds->stamp(2), 12.25);
+
+  write_text(dir / "times.txt", "10.0\n10.5\n");
+  expect_input_error([&] { open_dataset(dir.path()); }, dir / "times.txt", "", "2 times for 3 scans");
+  std::filesystem::remove(dir / "times.txt");
+  poses.pop_back();
+  write_kitti_poses(dir / "poses.txt", poses);
+  expect_input_error([&] { open_dataset(dir.path()); }, dir / "poses.txt", "", "2 poses for 3 scans");
+}
+
+TEST(ScanFolder, PosesFileInTumOrKittiFormat) {
+  TempDir dir;
+  for (int i = 0; i < 2; ++i) write_cloud(dir / ("s" + std::to_string(i) + ".csv"), cloud_of(3));
+  Trajectory truth(2);
+  truth[1].stamp = 0.1;
+  truth[1].pose.translation() = Eigen::Vector3d(0.2, -0.1, 0.05);
+  truth[1].pose.linear() = Eigen::AngleAxisd(-0.2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  write_tum_trajectory(dir / "gt.tum", truth);
+  const auto tum = open_scan_folder(dir.path(), dir / "gt.tum");
+  EXPECT_TRUE(tum->ground_truth(1)->isApprox(truth[1].pose, 1e-6));
+  write_kitti_trajectory(dir / "gt.kitti", truth);
+  const auto kitti = open_scan_folder(dir.path(), dir / "gt.kitti");
+  EXPECT_TRUE(kitti->ground_truth(1)->isApprox(truth[1].pose, 1e-6));
+  write_text(dir / "bad.txt", "1 2 3 4 5\n");
+  expect_input_error([&] { open_scan_folder(dir.path(), dir / "bad.txt"); }, dir / "bad.txt", "line 1",
+                     "found 5 numbers");
+}
+
+TEST(ScanFolder, SameNumberTwiceIsRefusedNamingBothFiles) {
+  TempDir dir;
+  write_cloud(dir / "cloud_001.pcd", cloud_of(3));
+  write_cloud(dir / "cloud_1.ply", cloud_of(3));
+  expect_input_error([&] { open_dataset(dir.path()); }, dir.path(), "", "cloud_001.pcd and cloud_1.ply");
+}
+
+TEST(ScanFolder, EmptyFolderAndMissingFolder) {
+  TempDir dir;
+  expect_input_error([&] { open_dataset(dir.path()); }, dir.path(), "", "no scans");
+  expect_input_error([&] { open_dataset(dir / "nope"); }, dir / "nope", "", "not a folder");
+}
+
+TEST(ScanFolder, UosGapsAndAmbiguousNamesAreReported) {
+  TempDir dir;
+  for (const char* name : {"scan000.3d", "scan005.3d", "scan009.3d"}) write_uos_scan(dir / name, cloud_of(2));
+  const auto ds = open_dataset(dir.path());
+  EXPECT_EQ(ds->metadata().format, "uos");
+  EXPECT_TRUE(has_note(ds->metadata(), "7 numbers missing: 1–4, 6–8"));
+  write_uos_scan(dir / "scan5.3d", cloud_of(2));
+  expect_input_error([&] { open_dataset(dir.path()); }, dir.path(), "", "scan005.3d and scan5.3d");
+}
+
+TEST(ScanFolder, KittiVelodyneMixingFormatsIsReported) {
+  TempDir dir;
+  write_xyz32(dir / "velodyne" / "000000.xyz32.bin", cloud_of(2));
+  write_xyz32(dir / "velodyne" / "000001.xyz32.bin", cloud_of(3));
+  write_kitti_velodyne(dir / "velodyne" / "000002.bin", cloud_of(4));
+  const auto ds = open_dataset(dir.path());
+  ASSERT_EQ(ds->size(), 3u);  // all three, in order, not the two .xyz32.bin alone
+  EXPECT_EQ(ds->scan(2).size(), 4u);
+  EXPECT_TRUE(has_note(ds->metadata(), "1 .bin, 2 .xyz32.bin"));
+  write_kitti_velodyne(dir / "velodyne" / "000001.bin", cloud_of(4));
+  expect_input_error([&] { open_dataset(dir.path()); }, (dir / "velodyne").string(), "",
+                     "000001.bin and 000001.xyz32.bin");
+}
+
+}  // namespace
+}  // namespace sextant
