@@ -13,7 +13,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 PairMatch match_pair(Matcher& matcher, const Sampler& sampler, const PointCloud& reference,
-                     const PointCloud& input, const Eigen::Isometry3d& initial, Rng& rng) {
+                     const PointCloud& input, const Eigen::Isometry3d& initial, Rng& rng,
+                     const QualitySettings& quality) {
   PairMatch out;
   auto start = std::chrono::steady_clock::now();
   const SampleResult sample = sample_points(sampler, input, rng);
@@ -25,6 +26,7 @@ PairMatch match_pair(Matcher& matcher, const Sampler& sampler, const PointCloud&
   out.reference_seconds = seconds_since(start);
   out.result = matcher.align(sampled, initial);
   out.result.input_points = sampled.size();
+  out.result.quality = assess_registration(out.result, sampled, quality);
   return out;
 }
 

@@ -1,7 +1,9 @@
 #include "sextant/matchers/mlndt_matcher.hpp"
 
 #include <chrono>
+#include <cmath>
 
+#include "sextant/core/chi_square.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/matchers/mlndt_presets.hpp"
 
@@ -28,6 +30,7 @@ class LayerObjective final : public StagedObjective {
     // eqs. (3.11), (3.17), (3.18) with each term truncated at max_distance: min(eᵀC⁻¹e, τ)
     const double tau = max_distance(stage);
     ScoreEvaluation e = mahalanobis_score(grid(stage), input_, xi, d, tau, threads_);
+    e.matched_score = e.score;
     const std::size_t unmatched = input_.size() - e.matched - e.rejected;
     e.score += penalty_ * static_cast<double>(unmatched);
     if (e.rejected > 0) e.score += tau * static_cast<double>(e.rejected);  // never ∞·0
@@ -39,6 +42,13 @@ class LayerObjective final : public StagedObjective {
   }
   const NdtGrid* mahalanobis_grid(int stage) const override { return &grid(stage); }
   const PointCloud& input() const override { return input_; }
+  /// E[X | X ≤ τ] for X = eᵀC⁻¹e ~ χ²₃: 3·F₅(τ)/F₃(τ) (points beyond τ are not matched); 2.98 at
+  /// τ = 16, 3 for the plain sum
+  double predicted_matched_score() const override {
+    const double tau = max_distance(stages() - 1);
+    if (!std::isfinite(tau)) return 3.0;
+    return 3.0 * chi_square_cdf(tau, 5.0) / chi_square_cdf(tau, 3.0);
+  }
 
  private:
   const NdtGrid& grid(int stage) const { return layers_[static_cast<std::size_t>(first_ + stage)]; }
@@ -92,6 +102,7 @@ MlndtSettings read_mlndt_settings(const YAML::Node& node, const std::string& fil
   MlndtSettings s;
   in.read("division", s.pyramid.division);
   in.read("layers", s.pyramid.layers);
+  in.read("bounds_quantile", s.pyramid.bounds_quantile);
   in.read("start_layer", s.start_layer);
   in.read("unmatched_penalty", s.unmatched_penalty);
   in.read("max_distance", s.max_distance);

@@ -21,8 +21,11 @@ constexpr Preset kPresets[] = {
     {"thesis",
      "{solver: newton, step_control: none, division: 8, layers: 4, start_layer: 2, "
      "iterations_per_layer: 3, max_iterations: 50, epsilon: 1.0e-4, unmatched_penalty: 50, "
-     "max_distance: .inf, truncated_layers: 1}"},
-    {"outdoor", "{solver: lm, layers: 6, start_layer: 2, max_distance: 16, unmatched_penalty: 16}"},
+     "max_distance: .inf, truncated_layers: 1, bounds_quantile: 0}"},
+    // Measured with the bounding box (before robust_bounds): its 6 layers over the robust box are too
+    // fine for a GBS sample of a 64-beam scan (overlap 0.29 on the Velodyne pair).
+    {"outdoor",
+     "{solver: lm, layers: 6, start_layer: 2, max_distance: 16, unmatched_penalty: 16, bounds_quantile: 0}"},
 };
 
 std::string known_names() {
@@ -57,6 +60,13 @@ YAML::Node mlndt_preset(const std::string& name, const std::string& file) {
   for (const Preset& p : kPresets)
     if (name == p.name) return YAML::Load(p.settings);
   throw InputError(file, "", "key 'preset': unknown preset '" + name + "' (known: " + known_names() + ")");
+}
+
+YAML::Node with_wide_basin(const std::string& matcher, const YAML::Node& settings) {
+  if (matcher != "mlndt" && matcher != "fbmlndt") return YAML::Node();
+  YAML::Node wide = settings.IsMap() ? YAML::Clone(settings) : YAML::Node(YAML::NodeType::Map);
+  if (!wide["wide_basin"].IsDefined()) wide["wide_basin"] = YAML::Node(YAML::NodeType::Map);
+  return wide;
 }
 
 YAML::Node expand_mlndt_preset(const YAML::Node& settings, const std::string& file) {

@@ -260,6 +260,8 @@ bool LayerPyramidSettings::valid(std::string* why) const {
     problem = "division (q) must be at least 2";
   else if (layers < 1 || layers > 8)
     problem = "layers (n) must lie in [1, 8]";
+  else if (!(bounds_quantile >= 0.0 && bounds_quantile < 0.25))
+    problem = "bounds_quantile must lie in [0, 0.25)";
   if (problem && why) *why = problem;
   if (problem) return false;
   return cells.valid(why);
@@ -284,8 +286,36 @@ constexpr std::size_t kMaxCells = std::size_t{1} << 27;  // NdtGrid::build's def
 
 }  // namespace
 
+Bounds robust_bounds(const PointCloud& cloud, double quantile) {
+  const Bounds box = cloud.bounds();
+  if (!(quantile > 0.0) || cloud.size() < 2) return box;
+  constexpr std::size_t kMaxSample = 16384;
+  const std::size_t stride = (cloud.size() + kMaxSample - 1) / kMaxSample;
+  std::vector<float> values;
+  values.reserve(cloud.size() / stride + 1);
+  Bounds robust;
+  for (int a = 0; a < 3; ++a) {
+    values.clear();
+    for (std::size_t i = 0; i < cloud.size(); i += stride) {
+      const float v = cloud[i](a);
+      if (std::isfinite(v)) values.push_back(v);
+    }
+    if (values.empty()) return box;
+    const auto at = [&](double q) {  // the value of rank floor(q·(m − 1)) in the sorted values
+      const auto k = static_cast<std::ptrdiff_t>(q * static_cast<double>(values.size() - 1));
+      std::nth_element(values.begin(), values.begin() + k, values.end());
+      return values[static_cast<std::size_t>(k)];
+    };
+    const float low = at(quantile), high = at(1.0 - quantile);
+    const float margin = 0.1f * (high - low);
+    robust.min(a) = std::max(box.min(a), low - margin);
+    robust.max(a) = std::min(box.max(a), high + margin);
+  }
+  return robust;
+}
+
 std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const LayerPyramidSettings& settings) {
-  const Bounds bounds = reference.bounds();
+  const Bounds bounds = robust_bounds(reference, settings.bounds_quantile);
   const Eigen::Vector3d origin = bounds.min.cast<double>();
   const auto n = static_cast<std::size_t>(std::max(settings.layers, 0));
   std::vector<LayerGeometry> g;

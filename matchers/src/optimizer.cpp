@@ -247,6 +247,8 @@ class Loop {
       result_.H = at.hessian;
       result_.score = at.score;
       result_.matched_points = at.matched;
+      result_.predicted_matched_score = objective_.predicted_matched_score();
+      if (at.matched > 0) result_.mean_matched_score = at.matched_score / static_cast<double>(at.matched);
       if (result_.converged && at.matched < settings_.min_matched) {
         result_.converged = false;
         result_.why = Termination::kTooFewCorrespondences;

@@ -7,6 +7,7 @@
 #include "sextant/core/point_cloud.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/matchers/matcher.hpp"
+#include "sextant/matchers/registration_quality.hpp"
 #include "sextant/matchers/sampler.hpp"
 
 namespace sextant {
@@ -18,9 +19,11 @@ struct PairMatch {
   double sampling_seconds = 0.0;   ///< time to sample the input
 };
 
-/// Samples `input`, builds the reference model of `matcher` from `reference` and aligns the
-/// sample from `initial` (p_ref ≈ T·p_input). Never throws for bad data.
+/// Samples `input`, builds the reference model of `matcher` from `reference`, aligns the sample
+/// from `initial` (p_ref ≈ T·p_input) and assesses the result (result.quality, with `quality`'s
+/// thresholds). Never throws for bad data.
 PairMatch match_pair(Matcher& matcher, const Sampler& sampler, const PointCloud& reference,
-                     const PointCloud& input, const Eigen::Isometry3d& initial, Rng& rng);
+                     const PointCloud& input, const Eigen::Isometry3d& initial, Rng& rng,
+                     const QualitySettings& quality = {});
 
 }  // namespace sextant

@@ -42,6 +42,10 @@ PresetChoice choose_mlndt_preset(const PointCloud& reference);
 YAML::Node mlndt_preset(const std::string& name, const std::string& file = "<settings>");
 std::vector<std::string> mlndt_preset_names();
 
+/// `settings` (mlndt or fbmlndt) with the wide basin switched on (`wide_basin: {}` unless it has its
+/// own); a null node for a matcher without a wide basin.
+YAML::Node with_wide_basin(const std::string& matcher, const YAML::Node& settings);
+
 /// `settings` with its `preset:` key (if any) expanded: the preset's keys, overridden by the others.
 YAML::Node expand_mlndt_preset(const YAML::Node& settings, const std::string& file);
 

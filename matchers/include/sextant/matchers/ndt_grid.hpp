@@ -123,14 +123,25 @@ struct LayerGeometry {
 };
 LayerGeometry layer_geometry(const Bounds& bounds, int q, int layer);
 
+/// The box the pyramid is built over: per axis, the `quantile` and 1 − `quantile` quantiles of the
+/// points (of an evenly strided subsample of at most 16,384 points), widened by 10 % of that extent
+/// on each side and clipped to the bounding box. One stray return 10 km away, or every point
+/// repeated, leaves it (and so the cell sizes) where it was; quantile 0 is the bounding box (§3.2).
+Bounds robust_bounds(const PointCloud& cloud, double quantile);
+
 struct LayerPyramidSettings {
   int division = 8;  ///< q: layer i splits the bounding volume into qⁱ cells
   int layers = 4;    ///< n: layers 1..n
+  /// The box split into the layers (robust_bounds): 0 = the bounding box, as the thesis does (the
+  /// `thesis` preset); the default leaves out the farthest 0.5 % along each axis, so that a layer's
+  /// cell size does not hang on one far point [fraction, 0..0.25)
+  double bounds_quantile = 0.005;
   CellStatsSettings cells;
   bool valid(std::string* why) const;
 };
 
-/// Layers 1..n of Table 3.1 ("splitting" and "generative" processes); element 0 is layer 1. With
+/// Layers 1..n of Table 3.1 ("splitting" and "generative" processes) over robust_bounds(reference,
+/// settings.bounds_quantile) (points outside it are not in any cell); element 0 is layer 1. With
 /// q = 8 over a volume the cells nest (the edge halves): the points are split once into layer n
 /// and every coarser layer sums its 2 × 2 × 2 children, with edges exactly 2^(n−i) × layer n's
 /// (layer_geometry's to rounding). Otherwise every layer is split from the points.

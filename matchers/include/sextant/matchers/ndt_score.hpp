@@ -63,6 +63,8 @@ struct ScoreEvaluation {
   Matrix6d gauss_newton = Matrix6d::Zero();  ///< 2·Σ JᵀC⁻¹J (Mahalanobis only): the LM matrix of eq. (3.21)
   std::size_t matched = 0;
   std::size_t rejected = 0;  ///< in a cell but beyond the Mahalanobis limit (not in `matched`)
+  /// The matched points' share of `score` (an objective may add penalties for the others)
+  double matched_score = 0.0;
 };
 
 /// Outlier-mixture constants of Magnusson's Gaussian score (Magnusson 2009, eqs. 6.8–6.9):

@@ -68,6 +68,9 @@ class StagedObjective {
   /// τ of the stage: terms with eᵀC⁻¹e > τ are charged τ and contribute no derivatives.
   virtual double max_distance(int /*stage*/) const { return std::numeric_limits<double>::infinity(); }
   virtual const PointCloud& input() const = 0;
+  /// Mean of a matched point's score term at the right pose, for the fit check of
+  /// registration_quality.hpp (3 for the Mahalanobis score: eᵀC⁻¹e ~ χ²₃); 0: no prediction.
+  virtual double predicted_matched_score() const { return 0.0; }
 };
 
 /// Runs the stages from `initial`; never throws for bad data (status in the result). Fills T,

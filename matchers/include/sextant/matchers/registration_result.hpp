@@ -33,6 +33,23 @@ struct IterationTrace {
   std::size_t matched_points = 0;
 };
 
+/// Whether to believe a registration (registration_quality.hpp says how each is decided).
+enum class Trust { kOk, kNotConverged, kDegenerate, kLowOverlap, kSuspect };
+
+/// "ok", "not_converged", "degenerate", "low_overlap", "suspect".
+std::string to_string(Trust trust);
+
+/// The assessment of a registration's solution (assess_registration, registration_quality.hpp).
+struct RegistrationQuality {
+  bool assessed = false;          ///< false: nobody assessed this result (the fields mean nothing)
+  double overlap = 0.0;           ///< matched / input points [fraction]
+  double constraint_ratio = 0.0;  ///< weakest / strongest eigenvalue of the metre-scaled H (NaN: no H)
+  double fit_ratio = 0.0;         ///< mean matched score / its prediction (0: no prediction)
+  Trust trust = Trust::kNotConverged;
+  std::string reason;  ///< empty when ok, else one line that says why not
+  bool trusted() const { return assessed && trust == Trust::kOk; }
+};
+
 struct RegistrationResult {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();  ///< maps input points into the reference frame
   bool converged = false;
@@ -40,6 +57,12 @@ struct RegistrationResult {
   int iterations = 0;
   Matrix6d H = Matrix6d::Zero();  ///< Hessian of the score at the solution; R = H⁻¹, eq. (3.50)
   double score = 0.0;
+  /// Mean score of a matched point at the solution (the penalties of unmatched and rejected points
+  /// left out), and what the score's model predicts for it at the right pose (3 for the Mahalanobis
+  /// score: a χ² with 3 DOF); 0 and 0 when the matcher has no such model.
+  double mean_matched_score = 0.0;
+  double predicted_matched_score = 0.0;
+  RegistrationQuality quality;  ///< filled by assess_registration (match_pair does)
   std::vector<IterationTrace> trace;
   std::size_t matched_points = 0;
   std::size_t input_points = 0;  ///< points offered to the matcher after sampling
