@@ -2,6 +2,7 @@
 // registers scan i (sampled) against scan i − 1 or the local map in scan i − 1's frame, from the
 // guess mode's start, and chains the result: pose_i = pose_{i−1} · relative_i.
 #include <algorithm>
+#include <cmath>
 #include <deque>
 #include <memory>
 #include <mutex>
@@ -9,9 +10,11 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
 
+#include "sequence_trust.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/matchers/match_pair.hpp"
+#include "sextant/matchers/mlndt_presets.hpp"
 #include "sextant/odometry/local_map.hpp"
 #include "sextant/odometry/odometry.hpp"
 
@@ -37,6 +40,16 @@ PointCloud load_scan(const Dataset& dataset, std::size_t i, double min_range) {
   for (std::size_t j = 0; j < scan.size(); ++j)
     if (scan[j].squaredNorm() >= squared) keep.push_back(j);
   return scan.subset(keep);
+}
+
+/// Δt_i / Δt_{i−1} around scan i (the constant-velocity guess's scale), 1 without usable times.
+double time_ratio(const Dataset& dataset, std::size_t i) {
+  if (i < 2) return 1.0;
+  const auto t0 = dataset.stamp(i - 2), t1 = dataset.stamp(i - 1), t2 = dataset.stamp(i);
+  if (!t0 || !t1 || !t2) return 1.0;
+  const double before = *t1 - *t0, now = *t2 - *t1;
+  if (!(before > 0.0 && now > 0.0) || !std::isfinite(now / before)) return 1.0;
+  return now / before;
 }
 
 /// The odometry poses the guess mode needs (empty unless guess = odometry).
@@ -71,19 +84,64 @@ Eigen::Isometry3d start_pose(const Dataset& dataset, const OdometrySettings& s, 
   return Eigen::Isometry3d::Identity();
 }
 
-/// The matcher and sampler of one worker.
+/// The matcher and sampler of one worker, and the wide-basin matcher it recovers with.
 struct Worker {
   std::unique_ptr<Matcher> matcher;
+  std::unique_ptr<Matcher> wide_basin;  ///< null: the matcher has no wide basin, or recovery is off
   std::unique_ptr<Sampler> sampler;
+  const OdometrySettings& settings;
 
-  explicit Worker(const OdometryMethod& m)
-      : matcher(make_matcher(m.matcher, m.settings, "<odometry matcher>")),
-        sampler(make_sampler(m.sampler, m.sampler_settings, "<odometry sampler>")) {}
+  explicit Worker(const OdometrySettings& s)
+      : matcher(make_matcher(s.method.matcher, s.method.settings, "<odometry matcher>")),
+        sampler(make_sampler(s.method.sampler, s.method.sampler_settings, "<odometry sampler>")),
+        settings(s) {
+    if (const YAML::Node wide = with_wide_basin(s.method.matcher, s.method.settings);
+        s.recover && wide.IsDefined())
+      wide_basin = make_matcher(s.method.matcher, wide, "<odometry matcher, wide basin>");
+  }
 
-  OdometryStep register_scan(const PointCloud& reference, const PointCloud& input,
-                             const Eigen::Isometry3d& guess, std::uint64_t seed) const {
+  /// The first registration from `guess`, assessed on its own (absolute checks).
+  OdometryStep first_try(const PointCloud& reference, const PointCloud& input, const Eigen::Isometry3d& guess,
+                         std::uint64_t seed) const {
     Rng rng(seed);
-    const PairMatch m = match_pair(*matcher, *sampler, reference, input, guess, rng);
+    const PairMatch m = match_pair(*matcher, *sampler, reference, input, guess, rng, settings.quality);
+    OdometryStep step = to_step(m, reference, guess);
+    step.first_trust = step.quality.trust;
+    return step;
+  }
+
+  /// An untrusted step: the wide basin from each of `starts` (the guess first) until a registration
+  /// is trusted, also against the sequence; when none is, the step chains `starts.back()` (the
+  /// last trusted motion) and stays untrusted.
+  void recover(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
+               const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed,
+               const odometry_detail::SequenceTrust& sequence) const {
+    if (step.trusted() || !settings.recover || starts.empty()) return;
+    double seconds = step.seconds;
+    if (wide_basin) {
+      for (const Eigen::Isometry3d& start : starts) {
+        Rng rng(seed);  // the same sample
+        const PairMatch w = match_pair(*wide_basin, *sampler, reference, input, start, rng, settings.quality);
+        OdometryStep again = to_step(w, reference, step.guess);
+        seconds += again.seconds;
+        sequence.check(again.quality);
+        if (again.trusted()) {
+          again.first_trust = step.first_trust;
+          again.recovery = "wide_basin";
+          again.seconds = seconds;
+          step = std::move(again);
+          return;
+        }
+      }
+    }
+    step.recovery = starts.back().isApprox(step.guess, 1e-12) ? "guess" : "last_motion";
+    step.relative = starts.back();
+    step.seconds = seconds;
+  }
+
+ private:
+  OdometryStep to_step(const PairMatch& m, const PointCloud& reference,
+                       const Eigen::Isometry3d& guess) const {
     OdometryStep step;
     step.relative = m.result.T;
     step.guess = guess;
@@ -96,14 +154,30 @@ struct Worker {
     step.seconds = m.result.seconds + m.reference_seconds + m.sampling_seconds;
     step.status = to_string(m.result.why);
     step.fallback = m.result.fallback;
+    step.quality = m.result.quality;
     if (!step.relative.matrix().allFinite()) {  // never chain NaN: keep the guess, say so
       step.relative = guess;
       step.converged = false;
       step.status += " (non-finite result replaced by the guess)";
+      step.quality.trust = Trust::kNotConverged;
+      step.quality.reason = "non-finite result";
     }
     return step;
   }
 };
+
+/// Where the recovery of step k starts its wide-basin searches: the guess, then (constant velocity)
+/// the last motion unscaled and no motion (a vehicle that stopped between keyframes), last the
+/// motion to chain when nothing is trusted: the last trusted one (the guess for the odometry guess).
+std::vector<Eigen::Isometry3d> recovery_starts(const OdometrySettings& s, const Eigen::Isometry3d& guess,
+                                               const Eigen::Isometry3d& last_motion) {
+  if (s.guess == OdometryGuess::odometry) return {guess};
+  std::vector<Eigen::Isometry3d> starts{guess};
+  for (const Eigen::Isometry3d& other : {Eigen::Isometry3d(Eigen::Isometry3d::Identity()), last_motion})
+    if (!other.isApprox(starts.back(), 1e-9)) starts.push_back(other);
+  if (!starts.back().isApprox(last_motion, 1e-9)) starts.push_back(last_motion);
+  return starts;
+}
 
 /// Calls the progress callback one finished step at a time.
 class StepCounter {
@@ -128,6 +202,7 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
                                          std::size_t count, const std::vector<Eigen::Isometry3d>& odometry,
                                          const std::vector<std::uint64_t>& seeds, StepCounter& counter) {
   std::vector<OdometryStep> steps(count - 1);
+  odometry_detail::SequenceTrust trust;
   PointCloud previous = load_scan(dataset, first, s.min_range);
   for (std::size_t begin = 1; begin < count; begin += kChunk) {
     const std::size_t end = std::min(count, begin + kChunk);
@@ -136,11 +211,22 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
                       [&](std::size_t k) { chunk[k - begin] = load_scan(dataset, first + k, s.min_range); });
     tbb::parallel_for(begin, end, [&](std::size_t k) {
       const PointCloud& reference = k == begin ? previous : chunk[k - 1 - begin];
-      const Worker worker(s.method);
+      const Worker worker(s);
       steps[k - 1] =
-          worker.register_scan(reference, chunk[k - begin], relative(odometry[k - 1], odometry[k]), seeds[k]);
+          worker.first_try(reference, chunk[k - begin], relative(odometry[k - 1], odometry[k]), seeds[k]);
       counter.tick();
     });
+    // In sequence order: the sequence check, and the recovery of what is not trusted.
+    const Worker worker(s);
+    for (std::size_t k = begin; k < end; ++k) {
+      OdometryStep& step = steps[k - 1];
+      trust.check(step.quality);
+      if (!step.trusted()) {
+        const PointCloud& reference = k == begin ? previous : chunk[k - 1 - begin];
+        worker.recover(step, reference, chunk[k - begin], {step.guess}, seeds[k], trust);
+      }
+      trust.record(step.quality);
+    }
     previous = std::move(chunk.back());
   }
   return steps;
@@ -163,7 +249,9 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
                                            std::size_t first, std::size_t count,
                                            const std::vector<Eigen::Isometry3d>& odometry,
                                            const std::vector<std::uint64_t>& seeds, StepCounter& counter) {
-  const Worker worker(s.method);
+  const Worker worker(s);
+  odometry_detail::SequenceTrust trust;
+  Eigen::Isometry3d last_trusted = Eigen::Isometry3d::Identity();  // the last trusted relative motion
   std::vector<OdometryStep> steps;
   std::deque<PointCloud> window;               // the last scans, oldest first
   std::deque<Eigen::Isometry3d> window_poses;  // their chained poses (frame of the sequence's first scan)
@@ -178,7 +266,8 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
     if (k + 1 < count) prefetch.run([&] { next = load_scan(dataset, first + k + 1, s.min_range); });
     Eigen::Isometry3d guess = Eigen::Isometry3d::Identity();
     if (s.guess == OdometryGuess::odometry) guess = relative(odometry[k - 1], odometry[k]);
-    if (s.guess == OdometryGuess::constant_velocity && !steps.empty()) guess = steps.back().relative;
+    if (s.guess == OdometryGuess::constant_velocity)
+      guess = scale_motion(last_trusted, time_ratio(dataset, first + k));
     const Eigen::Isometry3d& previous_pose = window_poses.back();
     if (s.map == OdometryMap::local_map && window.size() > 1) {
       std::vector<const PointCloud*> clouds;
@@ -188,10 +277,17 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
         poses.push_back(relative(previous_pose, window_poses[j]));
       }
       const PointCloud map = merge_local_map(clouds, poses, s.local_map_max_points, s.local_map_voxel);
-      steps.push_back(worker.register_scan(map, input, guess, seeds[k]));
+      steps.push_back(worker.first_try(map, input, guess, seeds[k]));
+      trust.check(steps.back().quality);
+      worker.recover(steps.back(), map, input, recovery_starts(s, guess, last_trusted), seeds[k], trust);
     } else {
-      steps.push_back(worker.register_scan(window.back(), input, guess, seeds[k]));
+      steps.push_back(worker.first_try(window.back(), input, guess, seeds[k]));
+      trust.check(steps.back().quality);
+      worker.recover(steps.back(), window.back(), input, recovery_starts(s, guess, last_trusted), seeds[k],
+                     trust);
     }
+    trust.record(steps.back().quality);
+    if (steps.back().trusted()) last_trusted = steps.back().relative;
     const std::size_t keep = s.map == OdometryMap::local_map ? s.local_map_scans : 1;
     window_poses.push_back(previous_pose * steps.back().relative);
     window.push_back(std::move(input));
@@ -207,10 +303,21 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
 
 }  // namespace
 
+std::size_t OdometryResult::untrusted() const {
+  return static_cast<std::size_t>(
+      std::count_if(steps.begin(), steps.end(), [](const OdometryStep& s) { return !s.trusted(); }));
+}
+
+std::size_t OdometryResult::recovered() const {
+  return static_cast<std::size_t>(std::count_if(
+      steps.begin(), steps.end(), [](const OdometryStep& s) { return s.recovery == "wide_basin"; }));
+}
+
 OdometryResult run_odometry(const Dataset& dataset, const OdometrySettings& settings, std::size_t first,
                             std::size_t count, const OdometryProgress& progress) {
   if (const std::string why = settings.problem(); !why.empty())
     throw InputError("odometry settings", "", why);
+  if (std::string why; !settings.quality.valid(&why)) throw InputError("odometry settings", "", why);
   if (count < 1) throw InputError(dataset_label(dataset), "", "an odometry run needs at least one scan");
   if (first >= dataset.size() || count > dataset.size() - first)
     throw InputError(dataset_label(dataset), "",

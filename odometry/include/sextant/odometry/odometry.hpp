@@ -24,14 +24,17 @@
 
 #include "sextant/core/dataset.hpp"
 #include "sextant/core/pose.hpp"
+#include "sextant/matchers/registration_quality.hpp"
 
 namespace sextant {
 
 /// Where each registration starts from.
 enum class OdometryGuess {
-  odometry,           ///< the odometry increment (dataset odometry, or OdometrySettings::odometry)
-  constant_velocity,  ///< the previous estimated relative motion (identity for the first step)
-  identity,           ///< no motion
+  odometry,  ///< the odometry increment (dataset odometry, or OdometrySettings::odometry)
+  /// The previous relative motion (identity for the first step), scaled by Δt_i / Δt_{i−1} when the
+  /// dataset has times: keyframes of irregular spacing keep the velocity, not the last step
+  constant_velocity,
+  identity,  ///< no motion
 };
 
 /// What scan i is registered against.
@@ -69,6 +72,14 @@ struct OdometrySettings {
   std::optional<Eigen::Isometry3d> initial_pose;
   /// Guess odometry + map scan: run the independent registrations on all cores.
   bool parallel = true;
+  /// When a registration is not trusted (registration_quality.hpp, and against the sequence: an
+  /// overlap below 0.8 × or a fit above 1.2 × the median of the last 10 trusted steps): register
+  /// again with the wide basin (mlndt and fbmlndt) from the guess, then (constant velocity) from no
+  /// motion and the last trusted motion, and take the first trusted result; else chain the last
+  /// trusted motion (the odometry guess). Off: every registration is chained as the matcher
+  /// returned it (its trust still recorded).
+  bool recover = true;
+  QualitySettings quality;
 
   /// Empty when valid, else what is wrong.
   std::string problem() const;
@@ -87,11 +98,22 @@ struct OdometryStep {
   double seconds = 0.0;              ///< registration + reference model + sampling [s]
   std::string status;                ///< termination reason (registration_result.hpp)
   std::string fallback;              ///< empty, or what the matcher fell back to and why
+  /// The assessment of the registration chained (after any recovery); trust kOk = believed.
+  RegistrationQuality quality;
+  /// How the step was recovered: "" (not needed, or recovery off), "wide_basin" (the first
+  /// registration was not trusted; a wide-basin one is), "guess" / "last_motion" (no trusted
+  /// registration: the odometry guess, or the last trusted motion of a constant-velocity run, is
+  /// chained and the step stays untrusted).
+  std::string recovery;
+  Trust first_trust = Trust::kOk;  ///< the first registration's trust, before any recovery
+  bool trusted() const { return quality.trusted(); }
 };
 
 struct OdometryResult {
   std::vector<Eigen::Isometry3d> poses;  ///< world ← scan first + i, i = 0 … count − 1
   std::vector<OdometryStep> steps;  ///< count − 1 registrations; steps[i] links poses[i] and poses[i + 1]
+  std::size_t untrusted() const;    ///< steps whose chained motion is not trusted
+  std::size_t recovered() const;    ///< steps recovered by the wide basin
 };
 
 /// Called after each finished registration with (done, total); never concurrently.

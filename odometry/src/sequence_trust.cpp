@@ -1,0 +1,44 @@
+#include "sequence_trust.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include <fmt/format.h>
+
+namespace sextant::odometry_detail {
+namespace {
+
+template <typename Field>
+double median_of(const std::deque<RegistrationQuality>& window, Field field) {
+  std::vector<double> values;
+  for (const RegistrationQuality& q : window) values.push_back(field(q));
+  const auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+  std::nth_element(values.begin(), mid, values.end());
+  return *mid;
+}
+
+}  // namespace
+
+void SequenceTrust::check(RegistrationQuality& quality) const {
+  if (!quality.trusted() || trusted_.size() < settings_.min_history) return;
+  const double overlap = median_of(trusted_, [](const RegistrationQuality& q) { return q.overlap; });
+  const double fit = median_of(trusted_, [](const RegistrationQuality& q) { return q.fit_ratio; });
+  if (quality.overlap < settings_.overlap_factor * overlap) {
+    quality.trust = Trust::kSuspect;
+    quality.reason =
+        fmt::format("{:.1f} % of the input matched, below {:.0f} % of the last trusted steps' {:.1f} %",
+                    100.0 * quality.overlap, 100.0 * settings_.overlap_factor, 100.0 * overlap);
+  } else if (fit > 0.0 && quality.fit_ratio > settings_.fit_factor * fit) {
+    quality.trust = Trust::kSuspect;
+    quality.reason = fmt::format("fit {:.2f} × the prediction, above {:.1f} × the last trusted steps' {:.2f}",
+                                 quality.fit_ratio, settings_.fit_factor, fit);
+  }
+}
+
+void SequenceTrust::record(const RegistrationQuality& quality) {
+  if (!quality.trusted()) return;
+  trusted_.push_back(quality);
+  while (trusted_.size() > settings_.window) trusted_.pop_front();
+}
+
+}  // namespace sextant::odometry_detail

@@ -1,0 +1,34 @@
+#pragma once
+// The trust of a registration against its own sequence (issue 22). Consecutive scans of one lidar
+// on one vehicle overlap about as much from one step to the next, and their matched points fit the
+// reference's Gaussians about as well. A step whose overlap falls well below, or whose fit rises
+// well above, the median of the last trusted steps slid or jumped, even when each number alone
+// would pass (registration_quality.hpp's absolute checks).
+#include <cstddef>
+#include <deque>
+
+#include "sextant/matchers/registration_result.hpp"
+
+namespace sextant::odometry_detail {
+
+struct SequenceTrustSettings {
+  std::size_t window = 10;      ///< trusted steps the medians are taken over [count]
+  std::size_t min_history = 3;  ///< no relative check before this many trusted steps [count]
+  double overlap_factor = 0.8;  ///< suspect below this × the median overlap [ratio]
+  double fit_factor = 1.2;      ///< suspect above this × the median fit ratio [ratio]
+};
+
+class SequenceTrust {
+ public:
+  explicit SequenceTrust(SequenceTrustSettings settings = {}) : settings_(settings) {}
+  /// Marks a trusted `quality` suspect (with the reason) when it falls out of the sequence's range.
+  void check(RegistrationQuality& quality) const;
+  /// Adds a trusted step to the window (untrusted ones are ignored).
+  void record(const RegistrationQuality& quality);
+
+ private:
+  SequenceTrustSettings settings_;
+  std::deque<RegistrationQuality> trusted_;
+};
+
+}  // namespace sextant::odometry_detail
