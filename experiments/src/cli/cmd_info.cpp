@@ -46,6 +46,7 @@ void describe_dataset(const std::filesystem::path& folder) {
             << "ground truth: " << (m.has_ground_truth ? "yes" : "no") << "\n"
             << "timestamps:   " << (m.scan_count > 0 && dataset->stamp(0) ? "yes" : "no") << "\n";
   if (m.scan_count > 0) std::cout << "first scan:   " << dataset->scan_file(0).string() << "\n";
+  for (const std::string& note : m.notes) std::cout << "note:         " << note << "\n";
   if (m.has_ground_truth && m.scan_count > 1) {
     double length = 0.0;
     for (std::size_t i = 1; i < m.scan_count; ++i) {

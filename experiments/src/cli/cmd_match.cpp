@@ -2,8 +2,11 @@
 // [--sampling gbs] [--init x,y,z,a,b,g] [--gt FILE] [--config settings.yaml] [--out aligned.pcd] [--json]`:
 // one registration of a pair with any registered matcher, its transform, iterations, time and
 // the error against a ground-truth matrix (p_ref = T·p_input). With no options: ML-NDT on a GBS
-// sample with the preset the reference's size calls for (choose_mlndt_preset: `outdoor` for scenes
-// spanning ≥ 50 m, else `default`), the measured best on real scans (docs/matcher_defaults.md).
+// sample with the `default` preset, as `sextant odometry` and the library (docs/matcher_defaults.md);
+// without --init the wide basin searches around the identity (--no-wide-basin: off). Every result
+// is assessed (registration_quality.hpp); with --init an untrusted result is registered again with
+// the wide basin. Exit status: 0 trusted, 3 not converged, 4 converged but not trusted (why is
+// printed), 1 for bad input.
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -34,7 +37,12 @@ struct MatchOptions : MatcherOptions {
   std::string gt, out;
   std::uint64_t seed = 1;
   bool json = false;
+  bool no_wide_basin = false;
 };
+
+/// Exit status of a registration that is not to be believed (README, "sextant match").
+constexpr int kExitNotConverged = 3;
+constexpr int kExitNotTrusted = 4;
 
 /// Error of a registration against ground truth: E = T_gt⁻¹·T_est (DESIGN.md).
 struct PoseError {
@@ -115,7 +123,8 @@ std::string json_string(const std::string& s) {
   return out + "\"";
 }
 
-void print_json(const MatchOptions& o, const PairMatch& m, const std::optional<PoseError>& error) {
+void print_json(const MatchOptions& o, const PairMatch& m, const std::string& search,
+                const std::optional<PoseError>& error) {
   const RegistrationResult& r = m.result;
   std::ostringstream out;
   out << "{\"method\": " << json_string(o.method) << ", \"sampling\": " << json_string(o.sampling)
@@ -131,12 +140,18 @@ void print_json(const MatchOptions& o, const PairMatch& m, const std::optional<P
       << ", \"reference_seconds\": " << json_number(m.reference_seconds)
       << ", \"score\": " << json_number(r.score) << ", \"matched_points\": " << r.matched_points
       << ", \"input_points\": " << r.input_points << ", \"kept_fraction\": " << json_number(m.kept_fraction)
+      << ", \"trust\": " << json_string(to_string(r.quality.trust))
+      << ", \"trust_reason\": " << json_string(r.quality.reason)
+      << ", \"overlap\": " << json_number(r.quality.overlap)
+      << ", \"constraint_ratio\": " << json_number(r.quality.constraint_ratio)
+      << ", \"fit_ratio\": " << json_number(r.quality.fit_ratio) << ", \"search\": " << json_string(search)
       << ", \"error_cm\": " << (error ? json_number(error->cm) : "null")
       << ", \"error_deg\": " << (error ? json_number(error->deg) : "null") << "}\n";
   std::cout << out.str();
 }
 
-void print_text(const MatchOptions& o, const PairMatch& m, const std::optional<PoseError>& error) {
+void print_text(const MatchOptions& o, const PairMatch& m, const std::string& search,
+                const std::optional<PoseError>& error) {
   const RegistrationResult& r = m.result;
   const Pose6 p = to_pose6(r.T);
   std::cout << std::fixed << std::setprecision(6) << "method:      " << describe_matcher(o) << ", sampling "
@@ -152,48 +167,62 @@ void print_text(const MatchOptions& o, const PairMatch& m, const std::optional<P
             << p.alpha * kDegPerRad << " beta " << p.beta * kDegPerRad << " gamma " << p.gamma * kDegPerRad
             << " deg\n"
             << "result:      " << r.summary() << "\n"
+            << "search:      " << search << "\n"
+            << std::setprecision(3) << "trust:       " << to_string(r.quality.trust)
+            << (r.quality.reason.empty() ? "" : " (" + r.quality.reason + ")") << "; overlap "
+            << r.quality.overlap << ", weakest/strongest constraint " << r.quality.constraint_ratio
+            << ", fit " << r.quality.fit_ratio << " x predicted\n"
             << std::setprecision(4) << "time:        " << r.seconds << " s registration, "
             << m.reference_seconds << " s reference model, " << m.sampling_seconds << " s sampling\n";
   if (error) std::cout << "error:       " << error->cm << " cm, " << error->deg << " deg (against --gt)\n";
 }
 
-/// Without --preset (and without a `preset:` in --config) the reference's size picks the preset.
-void choose_preset(MatchOptions& o, const PointCloud& reference) {
-  if (!o.preset.empty() || (o.method != "mlndt" && o.method != "fbmlndt")) return;
-  if (!o.config.empty()) {
-    const YAML::Node file = load_yaml_file(o.config);
-    if (file["matcher"].IsMap() && file["matcher"]["preset"].IsDefined()) return;
-  }
-  const PresetChoice choice = choose_mlndt_preset(reference);
-  std::ostringstream note;
-  note << ", chosen for a " << std::fixed << std::setprecision(0) << choice.span << " m wide reference";
-  o.preset = choice.name;
-  o.preset_note = note.str();
-}
-
 int run_match(MatchOptions o) {
   const PointCloud reference = read_cloud(o.reference);
-  choose_preset(o, reference);
   const MatcherConfig config = read_matcher_config(o);
-  const auto matcher =
-      make_matcher(o.method, config.matcher, o.config.empty() ? "matcher settings (--solver)" : o.config);
+  const std::string where = o.config.empty() ? "matcher settings (--solver)" : o.config;
   const auto sampler =
       make_sampler(o.sampling, config.sampler, o.config.empty() ? "sampler settings" : o.config);
   const Eigen::Isometry3d initial = o.init.empty() ? Eigen::Isometry3d::Identity() : parse_init(o.init);
   std::optional<Eigen::Isometry3d> truth;
   if (!o.gt.empty()) truth = read_ground_truth(o.gt);
   const PointCloud input = read_cloud(o.input);
+  // Without a guess the wide basin searches around the identity; with one, the guess is refined and
+  // the wide basin is the recovery of an untrusted result.
+  const YAML::Node wide = with_wide_basin(o.method, config.matcher);
+  const bool has_own_wide_basin = config.matcher.IsMap() && config.matcher["wide_basin"].IsDefined();
+  const bool search_first = o.init.empty() && !o.no_wide_basin && wide.IsDefined();
+  auto matcher = make_matcher(o.method, search_first ? wide : config.matcher, where);
   Rng rng(o.seed);
-  const PairMatch m = match_pair(*matcher, *sampler, reference, input, initial, rng);
+  PairMatch m = match_pair(*matcher, *sampler, reference, input, initial, rng);
+  std::string search = has_own_wide_basin || search_first ? "wide basin" : "from the guess";
+  if (search_first) search += " (no --init; --no-wide-basin: off)";
+  if (!m.result.quality.trusted() && !search_first && !has_own_wide_basin && !o.no_wide_basin &&
+      wide.IsDefined()) {
+    const auto wide_matcher = make_matcher(o.method, wide, where);
+    Rng again(o.seed);
+    PairMatch w = match_pair(*wide_matcher, *sampler, reference, input, initial, again);
+    const std::string first = to_string(m.result.quality.trust);
+    if (w.result.quality.trusted()) {
+      m = std::move(w);
+      search += ", " + first + ": recovered by the wide basin";
+    } else {
+      search += ", " + first + ": the wide basin found no trusted pose either";
+    }
+  }
   std::optional<PoseError> error;
   if (truth) error = pose_error(*truth, m.result.T);
-  if (!o.out.empty()) write_cloud(o.out, input.transformed(m.result.T));
-  if (o.json) {
-    print_json(o, m, error);
-  } else {
-    print_text(o, m, error);
+  if (!o.out.empty()) {
+    write_cloud(o.out, input.transformed(m.result.T));
+    if (!o.json) std::cout << "wrote:       " << o.out << " (the input in the reference frame)\n";
   }
-  return 0;
+  if (o.json) {
+    print_json(o, m, search, error);
+  } else {
+    print_text(o, m, search, error);
+  }
+  if (!m.result.converged) return kExitNotConverged;
+  return m.result.quality.trusted() ? 0 : kExitNotTrusted;
 }
 
 }  // namespace
@@ -208,9 +237,8 @@ void add_match_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--method", o->method, "Matcher name (mlndt, ndt, icp_p2p, icp_p2l, pcl_ndt, ...)")
       ->capture_default_str();
   cmd->add_option("--preset", o->preset,
-                  "mlndt/fbmlndt settings: default (measured best on real scans), thesis (the thesis' exact "
-                  "settings), outdoor (6 layers for large outdoor scans); without it, outdoor for a "
-                  "reference spanning >= 50 m, else default");
+                  "mlndt/fbmlndt settings: default (the default: measured best on real scans), thesis (the "
+                  "thesis' exact settings), outdoor (6 layers over the bounding box)");
   cmd->add_option("--solver", o->solver, "Solver for the NDT family (newton, lm, ceres)");
   cmd->add_option("--sampling", o->sampling, "Input sampler (all, regular, random, gbs, ...)")
       ->capture_default_str();
@@ -220,6 +248,13 @@ void add_match_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--out", o->out, "Write the aligned input cloud here (format by extension)");
   cmd->add_option("--seed", o->seed, "Seed of the sampler's random choices")->capture_default_str();
   cmd->add_flag("--json", o->json, "Print one JSON object instead of text");
+  cmd->add_flag("--no-wide-basin", o->no_wide_basin,
+                "Without --init: register from the identity only (default: the wide basin searches "
+                "yaw and x/y around it); with --init: no wide-basin retry of an untrusted result");
+  cmd->footer(
+      "Exit status: 0 the result is trusted; 3 the optimiser did not converge; 4 it converged but "
+      "the result is not trusted (low overlap, degenerate or a poor fit; the reason is printed); 1 bad "
+      "input.");
   cmd->callback([&exit_code, o] { exit_code = guarded([o] { return run_match(*o); }); });
 }
 

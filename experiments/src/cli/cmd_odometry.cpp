@@ -34,6 +34,7 @@ namespace fs = std::filesystem;
 
 struct OdometryOptions : MatcherOptions {
   std::string dataset, out;
+  std::string poses;  ///< ground truth for a scan folder: TUM or KITTI file (default: poses.txt beside it)
   std::string guess;  ///< empty: odometry when the dataset has it, else constant_velocity
   std::string map = "scan";
   std::size_t first = 0;
@@ -44,6 +45,7 @@ struct OdometryOptions : MatcherOptions {
   std::uint64_t campus_seed = 1;
   int jobs = 0;
   bool no_progress = false;
+  bool no_recover = false;
 };
 
 std::unique_ptr<Dataset> open_cli_dataset(const OdometryOptions& o) {
@@ -53,10 +55,18 @@ std::unique_ptr<Dataset> open_cli_dataset(const OdometryOptions& o) {
   const fs::path folder(o.dataset);
   if (!fs::exists(folder))
     throw InputError(o.dataset, "",
-                     "no such dataset folder (expected a uos folder, a KITTI sequence folder, or 'campus')");
+                     "no such dataset folder (expected a folder of scans, a uos folder, a KITTI sequence "
+                     "folder, or 'campus')");
   if (!fs::is_directory(folder))
-    throw InputError(o.dataset, "", "is a file, expected a dataset folder (uos or KITTI) or 'campus'");
-  return open_dataset(folder);
+    throw InputError(o.dataset, "",
+                     "is a file, expected a dataset folder (a folder of scans, uos or KITTI) or 'campus'");
+  std::unique_ptr<Dataset> dataset = open_dataset(folder);
+  if (o.poses.empty()) return dataset;
+  if (dataset->metadata().format != "folder")
+    throw InputError("--poses", "",
+                     "only for a plain folder of scans: this " + dataset->metadata().format +
+                         " folder brings its own poses");
+  return open_scan_folder(folder, o.poses);
 }
 
 std::string yes_no(bool b) {
@@ -71,16 +81,18 @@ std::string provenance_json(const OdometryOptions& o, const MatcherConfig& confi
   out << "{\n  \"command\": \"odometry\",\n  \"dataset\": {\"argument\": " << json_string(o.dataset)
       << ", \"name\": " << json_string(meta.name) << ", \"format\": " << json_string(meta.format)
       << ", \"path\": " << json_string(meta.path.string()) << ", \"scans\": " << meta.scan_count
-      << ", \"campus_seed\": " << o.campus_seed << "},\n  \"first\": " << o.first
-      << ",\n  \"scans\": " << scans << ",\n  \"method\": " << json_string(o.method)
-      << ",\n  \"preset\": " << json_string(o.preset) << ",\n  \"solver\": " << json_string(o.solver)
-      << ",\n  \"sampling\": " << json_string(o.sampling) << ",\n  \"config_file\": " << json_string(o.config)
+      << ", \"campus_seed\": " << o.campus_seed << ", \"poses\": " << json_string(o.poses)
+      << "},\n  \"first\": " << o.first << ",\n  \"scans\": " << scans
+      << ",\n  \"method\": " << json_string(o.method) << ",\n  \"preset\": " << json_string(o.preset)
+      << ",\n  \"solver\": " << json_string(o.solver) << ",\n  \"sampling\": " << json_string(o.sampling)
+      << ",\n  \"config_file\": " << json_string(o.config)
       << ",\n  \"matcher_settings\": " << to_json(config.matcher) << ",\n  \"sampler_settings\": "
       << (config.sampler.IsDefined() && !config.sampler.IsNull() ? to_json(config.sampler) : "null")
       << ",\n  \"guess\": " << json_string(to_string(s.guess))
       << ",\n  \"map\": " << json_string(to_string(s.map))
       << ",\n  \"local_map_scans\": " << s.local_map_scans
-      << ",\n  \"min_range\": " << json_number(s.min_range) << ",\n  \"seed\": " << s.seed
+      << ",\n  \"min_range\": " << json_number(s.min_range)
+      << ",\n  \"recover\": " << (s.recover ? "true" : "false") << ",\n  \"seed\": " << s.seed
       << ",\n  \"jobs\": " << o.jobs << ",\n  \"git\": {\"sha\": " << json_string(git.sha)
       << ", \"dirty\": " << (git.dirty ? "true" : "false") << ", \"source\": " << json_string(git.source)
       << "},\n  \"libraries\": " << library_versions_json() << ",\n  \"host\": " << json_string(host_name())
@@ -105,6 +117,7 @@ int run_odometry_command(const OdometryOptions& o) {
   s.local_map_scans = o.local_map_scans;
   s.min_range = o.min_range;
   s.seed = o.seed;
+  s.recover = !o.no_recover;
   if (const std::string why = s.problem(); !why.empty()) throw InputError("arguments", "", why);
   std::optional<tbb::global_control> threads;
   if (o.jobs > 0)
@@ -136,8 +149,9 @@ int run_odometry_command(const OdometryOptions& o) {
             << to_string(s.guess) << (o.guess.empty() ? " (default for this dataset)" : "") << ", map "
             << to_string(s.map)
             << (s.map == OdometryMap::local_map ? " of " + std::to_string(s.local_map_scans) + " scans" : "")
-            << "\n"
-            << std::flush;
+            << "\n";
+  for (const std::string& note : meta.notes) std::cout << "note:     " << note << "\n";
+  std::cout << std::flush;
 
   const auto t0 = std::chrono::steady_clock::now();
   std::optional<Progress> progress;  // drawn only on a terminal
@@ -151,8 +165,10 @@ int run_odometry_command(const OdometryOptions& o) {
   progress->finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-  std::size_t not_converged = 0;
-  for (const auto& step : result.steps) not_converged += step.converged ? 0 : 1;
+  OdometryCounts counts;
+  for (const auto& step : result.steps) counts.not_converged += step.converged ? 0 : 1;
+  counts.untrusted = result.untrusted();
+  counts.recovered = result.recovered();
   const auto truth = ground_truth_of(*dataset, o.first, scans);
   std::optional<TrajectoryAccuracy> estimate_accuracy, odometry_accuracy;
   if (truth && scans >= 2) {
@@ -164,14 +180,15 @@ int run_odometry_command(const OdometryOptions& o) {
   const fs::path out(o.out);
   write_trajectories(out, *dataset, o.first, result.poses, truth);
   write_steps_csv(out / "steps.csv", o.first, result, truth);
-  write_metrics_json(out / "metrics.json", estimate_accuracy, odometry_accuracy, scans, not_converged,
-                     seconds);
+  write_metrics_json(out / "metrics.json", estimate_accuracy, odometry_accuracy, scans, counts, seconds);
   write_file_atomically(out / "provenance.json", provenance_json(o, config, meta, s, scans, start, seconds));
 
   std::cout << std::fixed << std::setprecision(1) << "registered " << result.steps.size() << " pairs in "
             << seconds << " s (" << std::setprecision(3)
             << (result.steps.empty() ? 0.0 : seconds / static_cast<double>(result.steps.size()))
-            << " s per pair), " << not_converged << " not converged\n";
+            << " s per pair), " << counts.not_converged << " not converged, " << counts.untrusted
+            << " untrusted" << (s.recover ? " (their guess chained)" : "") << ", " << counts.recovered
+            << " recovered by the wide basin\n";
   if (estimate_accuracy) {
     std::cout << "estimate: " << accuracy_line(*estimate_accuracy) << "\n";
     if (odometry_accuracy)
@@ -188,16 +205,21 @@ int run_odometry_command(const OdometryOptions& o) {
 }  // namespace
 
 void add_odometry_command(CLI::App& app, int& exit_code) {
-  auto* cmd = app.add_subcommand(
-      "odometry",
-      "Chain registrations over a sequence (uos folder, KITTI sequence folder or 'campus'), "
-      "write the trajectory (TUM, KITTI) and score it against the ground truth");
+  auto* cmd =
+      app.add_subcommand("odometry",
+                         "Chain registrations over a sequence (a folder of scans, uos, KITTI or 'campus'), "
+                         "write the trajectory (TUM, KITTI) and score it against the ground truth");
   auto o = std::make_shared<OdometryOptions>();
   cmd->add_option("dataset", o->dataset,
-                  "uos folder (scanNNN.3d + .pose/.frames), KITTI sequence folder (velodyne/, calib.txt, "
-                  "poses), or 'campus' (the built-in synthetic campus)")
+                  "a folder of scans (.pcd .ply .bin .xyz32.bin .xyz .csv .3d, in it or in scans/, in the "
+                  "order of the number in their names; optional poses.txt and times.txt), a uos folder "
+                  "(scanNNN.3d + .pose/.frames), a KITTI sequence folder (velodyne/, calib.txt, poses), or "
+                  "'campus' (the built-in synthetic campus)")
       ->required();
   cmd->add_option("--out", o->out, "Output folder")->required();
+  cmd->add_option("--poses", o->poses,
+                  "Ground truth of a folder of scans: a TUM (8 numbers per line) or KITTI (12) file, one "
+                  "pose per scan (default: poses.txt beside the scans, if any)");
   cmd->add_option("--method", o->method, "Matcher (mlndt, fbmlndt, ndt, icp_p2p, icp_p2l, pcl_ndt, ...)")
       ->capture_default_str();
   cmd->add_option("--preset", o->preset, "mlndt/fbmlndt settings: default, thesis, outdoor");
@@ -221,6 +243,9 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--campus-seed", o->campus_seed, "Seed of the built-in campus")->capture_default_str();
   cmd->add_option("--jobs,-j", o->jobs, "Worker threads (0 = all)")->check(CLI::NonNegativeNumber);
   cmd->add_flag("--no-progress", o->no_progress, "No progress bar");
+  cmd->add_flag("--no-recover", o->no_recover,
+                "Chain every registration as the matcher returns it (default: an untrusted one is "
+                "registered again with the wide basin, else its guess is chained)");
   cmd->callback([&exit_code, o] { exit_code = guarded([o] { return run_odometry_command(*o); }); });
 }
 

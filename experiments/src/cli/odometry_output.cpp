@@ -112,12 +112,23 @@ void write_trajectories(const std::filesystem::path& out, const Dataset& dataset
   write_kitti_trajectory(out / "groundtruth.kitti.txt", kitti_frame(dataset, reference));
 }
 
+namespace {
+
+/// Free text in a CSV field: no commas or quotes inside.
+std::string csv_free_text(std::string text) {
+  for (char& c : text)
+    if (c == ',' || c == '"') c = ';';
+  return text;
+}
+
+}  // namespace
+
 void write_steps_csv(const std::filesystem::path& file, std::size_t first, const OdometryResult& result,
                      const std::optional<std::vector<Eigen::Isometry3d>>& truth) {
   std::ostringstream out;
   out << "step,from_scan,to_scan,x_m,y_m,z_m,roll_deg,pitch_deg,yaw_deg,guess_x_m,guess_y_m,guess_yaw_deg,"
          "converged,iterations,score,matched_points,reference_points,seconds,error_m,error_deg,status,"
-         "fallback\n";
+         "trust,first_trust,recovery,overlap,constraint_ratio,fit_ratio,trust_reason,fallback\n";
   out << std::setprecision(9);
   for (std::size_t i = 0; i < result.steps.size(); ++i) {
     const OdometryStep& s = result.steps[i];
@@ -133,19 +144,20 @@ void write_steps_csv(const std::filesystem::path& file, std::size_t first, const
     } else {
       out << ",";
     }
-    std::string fallback = s.fallback;  // CSV: no commas or quotes inside the free text
-    for (char& c : fallback)
-      if (c == ',' || c == '"') c = ';';
-    out << "," << s.status << "," << fallback << "\n";
+    out << "," << s.status << "," << to_string(s.quality.trust) << "," << to_string(s.first_trust) << ","
+        << s.recovery << "," << s.quality.overlap << "," << s.quality.constraint_ratio << ","
+        << s.quality.fit_ratio << "," << csv_free_text(s.quality.reason) << "," << csv_free_text(s.fallback)
+        << "\n";
   }
   write_file_atomically(file, out.str());
 }
 
 void write_metrics_json(const std::filesystem::path& file, const std::optional<TrajectoryAccuracy>& estimate,
                         const std::optional<TrajectoryAccuracy>& odometry, std::size_t scans,
-                        std::size_t not_converged, double seconds) {
+                        const OdometryCounts& counts, double seconds) {
   std::ostringstream out;
-  out << "{\"scans\": " << scans << ", \"not_converged\": " << not_converged
+  out << "{\"scans\": " << scans << ", \"not_converged\": " << counts.not_converged
+      << ", \"untrusted\": " << counts.untrusted << ", \"recovered_by_wide_basin\": " << counts.recovered
       << ", \"seconds\": " << json_number(seconds)
       << ", \"estimate\": " << (estimate ? accuracy_json(*estimate) : "null")
       << ", \"odometry\": " << (odometry ? accuracy_json(*odometry) : "null") << "}\n";

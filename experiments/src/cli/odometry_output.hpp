@@ -44,13 +44,21 @@ void write_trajectories(const std::filesystem::path& out, const Dataset& dataset
                         const std::vector<Eigen::Isometry3d>& poses,
                         const std::optional<std::vector<Eigen::Isometry3d>>& truth);
 
-/// steps.csv: one line per registration (relative pose, guess, convergence, time, error vs truth).
+/// steps.csv: one line per registration (relative pose, guess, convergence, time, error vs truth,
+/// trust before and after recovery, the recovery used, the quality measures).
 void write_steps_csv(const std::filesystem::path& file, std::size_t first, const OdometryResult& result,
                      const std::optional<std::vector<Eigen::Isometry3d>>& truth);
 
-/// metrics.json: the estimate's accuracy and, when the dataset has odometry, the odometry's.
+/// Steps whose registration did not converge; whose chained motion is not trusted; that the wide
+/// basin recovered.
+struct OdometryCounts {
+  std::size_t not_converged = 0, untrusted = 0, recovered = 0;
+};
+
+/// metrics.json: the step counts, the estimate's accuracy and, when the dataset has odometry, the
+/// odometry's.
 void write_metrics_json(const std::filesystem::path& file, const std::optional<TrajectoryAccuracy>& estimate,
                         const std::optional<TrajectoryAccuracy>& odometry, std::size_t scans,
-                        std::size_t not_converged, double seconds);
+                        const OdometryCounts& counts, double seconds);
 
 }  // namespace sextant::cli

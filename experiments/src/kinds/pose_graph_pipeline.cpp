@@ -161,7 +161,7 @@ void put_solve(const PoseGraphReport& r, const std::string& prefix, RunRow& row)
 }  // namespace
 
 PreloadedCampus::PreloadedCampus(const synth::Campus& campus, std::size_t scans, bool with_landmarks) {
-  metadata_ = {"campus", "synthetic", {}, scans, true, true};
+  metadata_ = {"campus", "synthetic", {}, scans, true, true, {}};
   data_.campus = &campus;
   data_.clouds.resize(scans);
   if (with_landmarks) data_.visible.resize(scans);

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# The real-sequence benchmark (issue 22): `sextant odometry` with no options over the built-in
+# campus and the two trustworthy stretches of the shared MulRan Riverside02 excerpt (0–107 and
+# 116–165; its reference is wrong in between, see data/README.md), then the same scans with PCL's
+# GICP (`--method pcl_gicp`) as the baseline row. Prints one table: ATE, RPE, KITTI drift, time per
+# scan and the trust counts (untrusted steps, steps the wide basin recovered).
+#
+#   bench/sequences.sh [build/experiments/sextant] [path/to/mulran_riverside02] [output folder]
+#
+# Timings are single runs on whatever the machine is doing: run it on a quiet machine.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+sextant=${1:-build/experiments/sextant}
+mulran=${2:-../shared/data/mulran_riverside02}
+out=${3:-$(mktemp -d)}
+mkdir -p "$out"
+[ -x "$sextant" ] || { echo "bench/sequences.sh: no sextant at $sextant (build first)" >&2; exit 1; }
+[ -d "$mulran" ] || { echo "bench/sequences.sh: no MulRan folder at $mulran" >&2; exit 1; }
+
+# json_field FILE KEY_PATH: a number from metrics.json (one line, known layout).
+field() {  # field <metrics.json> <section> <key>
+  sed -E "s/.*\"$2\": \{[^}]*\"$3\": ([-0-9.eE+]+|null).*/\1/" "$1"
+}
+top() {  # top <metrics.json> <key>
+  sed -E "s/.*\"$2\": ([-0-9.eE+]+|null).*/\1/" "$1"
+}
+
+run() {  # run <id> <label> <method> <dataset> [odometry options...]
+  local id=$1 label=$2 method=$3 dataset=$4
+  shift 4
+  local dir="$out/$id-$method"
+  "$sextant" odometry "$dataset" --method "$method" --out "$dir" --no-progress "$@" >"$dir.log" 2>&1 ||
+    { echo "| $label | $method | failed: see $dir.log |"; return; }
+  local m="$dir/metrics.json" steps
+  steps=$(($(top "$m" scans) - 1))
+  awk -v label="$label" -v method="$method" -v steps="$steps" -v secs="$(top "$m" seconds)" \
+      -v ate="$(field "$m" estimate ate_m)" -v rpe="$(field "$m" estimate rpe_m)" \
+      -v rpedeg="$(field "$m" estimate rpe_deg)" -v drift="$(field "$m" estimate drift_percent)" \
+      -v untrusted="$(top "$m" untrusted)" -v recovered="$(top "$m" recovered_by_wide_basin)" \
+      -v nc="$(top "$m" not_converged)" 'BEGIN {
+        printf "| %s | %s | %.3f | %.3f / %.2f | %.2f | %.1f | %d | %d | %d |\n", label, method, ate, rpe,
+               rpedeg, drift, 1000 * secs / steps, nc, untrusted, recovered }'
+}
+
+echo "| sequence | method | ATE [m] | RPE per step [m / °] | KITTI drift [%] | ms per scan | not converged | untrusted | recovered |"
+echo "|---|---|---|---|---|---|---|---|---|"
+for method in mlndt pcl_gicp; do
+  run campus "campus (468 scans, odometry guess)" "$method" campus
+  run mulran0 "MulRan 0–107" "$method" "$mulran" --first 0 --scans 108
+  run mulran116 "MulRan 116–165" "$method" "$mulran" --first 116 --scans 50
+done
+echo "(outputs in $out)"
