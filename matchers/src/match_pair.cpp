@@ -25,7 +25,8 @@ PairMatch match_pair(Matcher& matcher, const Sampler& sampler, const PointCloud&
   matcher.set_reference(reference);
   out.reference_seconds = seconds_since(start);
   out.result = matcher.align(sampled, initial);
-  out.result.input_points = sampled.size();
+  // A matcher that samples again (FbML-NDT) says how many points it matched from; the others, the sample.
+  if (out.result.input_points == 0) out.result.input_points = sampled.size();
   out.result.quality = assess_registration(out.result, sampled, quality);
   return out;
 }

@@ -76,6 +76,7 @@ MlndtSettings::MlndtSettings() {
   optimizer.step_control = StepControl::kTrustRegionLast;
   unmatched_penalty = 16.0;
   max_distance = 16.0;
+  pyramid.cells.min_relative_spread = 0.02;  // blobs of repeated points are no surface (ndt_grid.hpp)
 }
 
 bool MlndtSettings::valid(std::string* why) const {
@@ -104,6 +105,7 @@ MlndtSettings read_mlndt_settings(const YAML::Node& node, const std::string& fil
   in.read("layers", s.pyramid.layers);
   in.read("bounds_quantile", s.pyramid.bounds_quantile);
   in.read("start_layer", s.start_layer);
+  in.read("refine_first", s.refine_first);
   in.read("unmatched_penalty", s.unmatched_penalty);
   in.read("max_distance", s.max_distance);
   in.read("truncated_layers", s.truncated_layers);
@@ -129,7 +131,23 @@ RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Iso
   if (layers_.empty() || layers_.back().empty())
     return not_started(Termination::kEmptyInput, input.size(), initial);
   const LayerObjective objective(layers_, settings_, input);
-  if (!settings_.wide_basin.enabled) return optimize(objective, initial, settings_.optimizer);
+  if (!settings_.wide_basin.enabled) {
+    if (!settings_.refine_first || settings_.start_layer == settings_.pyramid.layers)
+      return optimize(objective, initial, settings_.optimizer);
+    MlndtSettings last_layer = settings_;
+    last_layer.start_layer = settings_.pyramid.layers;
+    RegistrationResult refined =
+        optimize(LayerObjective(layers_, last_layer, input), initial, settings_.optimizer);
+    RegistrationResult full = optimize(objective, initial, settings_.optimizer);
+    // Same input, same last layer: the final scores compare directly (as the wide basin's do).
+    const double seconds = refined.seconds + full.seconds;
+    const bool refined_usable =
+        refined.why == Termination::kConverged || refined.why == Termination::kMaxIterations;
+    RegistrationResult best =
+        refined_usable && refined.score < full.score ? std::move(refined) : std::move(full);
+    best.seconds = seconds;
+    return best;
+  }
   // Wide basin: refine the initial guess and the best coarse-layer hypotheses; keep the lowest
   // final score (same input, same last layer, so the scores compare directly).
   const auto start = std::chrono::steady_clock::now();

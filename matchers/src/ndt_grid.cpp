@@ -32,9 +32,10 @@ namespace {
 using ndt_detail::CellSums;
 
 /// Mean (eq. 3.2) and inverse covariance (eq. 3.3) with eigenvalues raised to λmax / ratio; false
-/// when the cell has (almost) no spread: λmax below `min_spread` (repeated points).
-bool cell_gaussian(const CellSums& s, const Eigen::Vector3d& origin, const CellStatsSettings& settings,
-                   CellGaussian& out) {
+/// when the cell has (almost) no spread: λmax below `min_spread` (repeated points) or below
+/// (min_relative_spread · edge)² (a blob, not a surface at this cell size).
+bool cell_gaussian(const CellSums& s, const Eigen::Vector3d& origin, double edge,
+                   const CellStatsSettings& settings, CellGaussian& out) {
   const double n = s.count;
   const Eigen::Vector3d mean = Eigen::Vector3d(s.sum[0], s.sum[1], s.sum[2]) / n;
   Eigen::Matrix3d sum_sq;
@@ -45,6 +46,8 @@ bool cell_gaussian(const CellSums& s, const Eigen::Vector3d& origin, const CellS
   eig.computeDirect(C);
   const Eigen::Vector3d& l = eig.eigenvalues();  // ascending
   if (!(l(2) > 0.0) || !(l(2) >= settings.min_spread) || !std::isfinite(l(2))) return false;
+  const double relative = settings.min_relative_spread * edge;
+  if (l(2) < relative * relative) return false;
   // C'⁻¹ = V Λ'⁻¹ Vᵀ with Λ' = max(Λ, λmax / ratio)
   const double floor_value = l(2) / settings.max_eigen_ratio;
   const Eigen::Vector3d inv_l(1.0 / std::max(l(0), floor_value), 1.0 / std::max(l(1), floor_value),
@@ -76,6 +79,8 @@ bool CellStatsSettings::valid(std::string* why) const {
     problem = "max_eigen_ratio must be at least 1";
   else if (!(min_spread >= 0.0) || !std::isfinite(min_spread))
     problem = "min_spread must be a variance ≥ 0 [m²]";
+  else if (!(min_relative_spread >= 0.0 && min_relative_spread < 1.0))
+    problem = "min_relative_spread must lie in [0, 1) (a fraction of the cell edge)";
   if (problem && why) *why = problem;
   return problem == nullptr;
 }
@@ -189,7 +194,7 @@ void NdtGrid::generate(const std::vector<CellSums>& sums, const CellStatsSetting
     slot = -1;
     if (static_cast<std::size_t>(s.count) < settings.min_points) continue;
     CellGaussian g{};
-    if (!cell_gaussian(s, origin_, settings, g)) continue;
+    if (!cell_gaussian(s, origin_, cell_edge_, settings, g)) continue;
     slot = static_cast<std::int32_t>(gaussians_.size());
     gaussians_.push_back(g);
     cell_of_gaussian_.push_back(s.cell);
@@ -347,6 +352,7 @@ void read_cell_stats_settings(SettingsReader& in, CellStatsSettings& s) {
   in.read("min_points", s.min_points);
   in.read("max_eigen_ratio", s.max_eigen_ratio);
   in.read("min_spread", s.min_spread);
+  in.read("min_relative_spread", s.min_relative_spread);
 }
 
 }  // namespace sextant

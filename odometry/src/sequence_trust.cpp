@@ -1,11 +1,11 @@
-#include "sequence_trust.hpp"
+#include "sextant/odometry/sequence_trust.hpp"
 
 #include <algorithm>
 #include <vector>
 
 #include <fmt/format.h>
 
-namespace sextant::odometry_detail {
+namespace sextant {
 namespace {
 
 template <typename Field>
@@ -41,4 +41,4 @@ void SequenceTrust::record(const RegistrationQuality& quality) {
   while (trusted_.size() > settings_.window) trusted_.pop_front();
 }
 
-}  // namespace sextant::odometry_detail
+}  // namespace sextant

@@ -89,14 +89,15 @@ TEST(SampleConstraints, TheCourtyardConstrainsEveryParameter) {
 }
 
 /// fbmlndt on a corridor pair displaced 0.6 m along the corridor, from the identity (denser fallback GBS).
-RegistrationResult corridor_registration(const std::string& fallback) {
+RegistrationResult corridor_registration(const std::string& fallback, bool verify = false) {
   Rng rng(9);
   const PointCloud reference = corridor_with_shrubs(pose(0, 0, 1.5, 0), rng);
   const PointCloud input = corridor_with_shrubs(pose(0.6, 0, 1.5, 0), rng);
-  auto matcher = make_matcher("fbmlndt",
-                              YAML::Load("{fallback: " + fallback +
-                                         ", solver: lm, fallback_gbs: {cell_size: 0.5, max_per_cell: 10}}"),
-                              "t.yaml");
+  auto matcher =
+      make_matcher("fbmlndt",
+                   YAML::Load("{fallback: " + fallback + ", verify: " + (verify ? "true" : "false") +
+                              ", solver: lm, fallback_gbs: {cell_size: 0.5, max_per_cell: 10}}"),
+                   "t.yaml");
   matcher->set_reference(reference);
   return matcher->align(input, Eigen::Isometry3d::Identity());
 }
@@ -119,6 +120,16 @@ TEST(Fbmlndt, FallsBackToGbsPointsOnADegenerateCorridor) {
   EXPECT_LT(thesis.T.translation().x(), 0.1);
   EXPECT_NEAR(gbs.T.translation().x(), 0.6, 0.1);
   EXPECT_GT(safe.T.translation().x(), thesis.T.translation().x() + 0.2);
+}
+
+// Without the constraint fallback, the check on GBS points (verify) still catches the slide: the
+// feature sample's pose (0.01 m) is refined on the GBS sample, whose shrubs fix the 0.6 m motion.
+TEST(Fbmlndt, VerifyOnGbsPointsCatchesTheCorridorSlide) {
+  const RegistrationResult slid = corridor_registration("none");
+  const RegistrationResult verified = corridor_registration("none", true);
+  EXPECT_LT(slid.T.translation().x(), 0.1);
+  EXPECT_NEAR(verified.T.translation().x(), 0.6, 0.1) << verified.summary();
+  EXPECT_NE(verified.fallback.find("GBS"), std::string::npos) << verified.fallback;
 }
 
 TEST(Fbmlndt, WellConstrainedScenesKeepTheFeatureSample) {

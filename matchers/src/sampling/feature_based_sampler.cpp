@@ -5,7 +5,10 @@
 #include <iterator>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/matchers/registration_quality.hpp"
 
 namespace sextant {
 
@@ -57,6 +60,7 @@ FbsFallback read_fallback(SettingsReader& in) {
 FbmlndtSettings read_fbmlndt_settings(const YAML::Node& node, const std::string& file) {
   FbmlndtSettings s;
   YAML::Node rest;
+  bool verify_given = false;
   if (node && node.IsMap()) {
     SettingsReader in(node, file);
     in.read("seed", s.seed);
@@ -64,10 +68,13 @@ FbmlndtSettings read_fbmlndt_settings(const YAML::Node& node, const std::string&
     s.fallback = read_fallback(in);
     if (in.has("constraints")) s.constraints = read_constraint_thresholds(in.child("constraints"), file);
     if (in.has("fallback_gbs")) s.fallback_gbs = read_grid_sampler_settings(in.child("fallback_gbs"), file);
+    if (in.read("verify", s.verify)) verify_given = true;
     rest = YAML::Clone(node);  // the remaining keys belong to mlndt (which rejects unknown ones)
-    for (const char* own : {"seed", "features", "fallback", "constraints", "fallback_gbs"}) rest.remove(own);
+    for (const char* own : {"seed", "features", "fallback", "constraints", "fallback_gbs", "verify"})
+      rest.remove(own);
   }
   s.mlndt = read_mlndt_settings(rest, file);
+  if (!verify_given) s.verify = s.mlndt.refine_first;
   return s;
 }
 
@@ -85,11 +92,13 @@ RegistrationResult FbmlndtMatcher::align(const PointCloud& input, const Eigen::I
   // Fail safe: a feature sample that leaves a pose direction unconstrained gets GBS points.
   last_check_ = check_plane_constraints(features.cell_planes, input, settings_.constraints);
   std::string fallback;
+  bool gbs_only = false;  // the sample is the GBS sample (nothing left to verify)
   if (!last_check_.constrains_all && settings_.fallback != FbsFallback::kNone && !input.empty()) {
     const std::vector<std::size_t> gbs = GridSampler(settings_.fallback_gbs).select(input, rng);
     const std::size_t features_kept = indices.size();
     if (settings_.fallback == FbsFallback::kGbs) {
       indices = gbs;
+      gbs_only = true;
     } else {
       std::vector<std::size_t> both;
       std::set_union(indices.begin(), indices.end(), gbs.begin(), gbs.end(), std::back_inserter(both));
@@ -111,9 +120,37 @@ RegistrationResult FbmlndtMatcher::align(const PointCloud& input, const Eigen::I
     result = mlndt_.align(sample, initial);
   }
   result.input_points = sample.size();
+  if (settings_.verify && !input.empty() && !gbs_only) verify_on_gbs(input, initial, rng, result, fallback);
   result.fallback = fallback;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
+}
+
+void FbmlndtMatcher::verify_on_gbs(const PointCloud& input, const Eigen::Isometry3d& initial, Rng& rng,
+                                   RegistrationResult& result, std::string& fallback) {
+  const PointCloud gbs = input.subset(GridSampler(settings_.fallback_gbs).select(input, rng));
+  if (gbs.empty()) return;
+  const auto with = [&](RegistrationResult r) {  // a registration of the GBS points, assessed
+    r.input_points = gbs.size();
+    r.quality = assess_registration(r, gbs);
+    return r;
+  };
+  const RegistrationResult refined = with(mlndt_.align(gbs, is_finite(result.T) ? result.T : initial));
+  const std::string note = fallback.empty() ? "" : fallback + "; ";
+  if (refined.quality.trusted()) {
+    const double moved = translation_norm(relative(result.T, refined.T));
+    if (moved > 0.1)
+      fallback =
+          note + fmt::format("the feature sample's pose moved {:.2f} m on {} GBS points", moved, gbs.size());
+    result = refined;
+    return;
+  }
+  const RegistrationResult plain = with(mlndt_.align(gbs, initial));
+  if (plain.quality.trusted()) {
+    fallback = note + "the feature sample's pose is not trusted on GBS points (" + refined.quality.reason +
+               "): ML-NDT on " + std::to_string(gbs.size()) + " GBS points";
+    result = plain;
+  }
 }
 
 std::unique_ptr<Matcher> create_fbmlndt_matcher(const YAML::Node& settings, const std::string& file) {

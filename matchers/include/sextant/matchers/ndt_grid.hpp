@@ -19,11 +19,17 @@ struct CellStatsSettings {
   /// Cells whose largest covariance eigenvalue is below this are dropped: repeated points give
   /// no surface, and their near-singular C⁻¹ would dominate eq. (3.11) [m²]
   double min_spread = 1e-6;
+  /// Cells whose points spread less than this fraction of the cell edge (standard deviation along
+  /// the widest axis) are dropped too: a blob, not a surface at this layer's resolution. Repeating
+  /// every point with a little noise turns cells with one point into such blobs, whose sharp
+  /// Gaussians then dominated eq. (3.11) in the untruncated coarse layers (issue 22). 0 keeps them
+  /// (NDT, and ML-NDT's `thesis` preset); ML-NDT's default is 0.02 [fraction]
+  double min_relative_spread = 0.0;
   bool valid(std::string* why) const;
 };
 
 class SettingsReader;
-/// Reads min_points, max_eigen_ratio and min_spread at the reader's level.
+/// Reads min_points, max_eigen_ratio, min_spread and min_relative_spread at the reader's level.
 void read_cell_stats_settings(SettingsReader& in, CellStatsSettings& s);
 
 namespace ndt_detail {

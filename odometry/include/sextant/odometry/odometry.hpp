@@ -73,9 +73,10 @@ struct OdometrySettings {
   /// Guess odometry + map scan: run the independent registrations on all cores.
   bool parallel = true;
   /// When a registration is not trusted (registration_quality.hpp, and against the sequence: an
-  /// overlap below 0.8 × or a fit above 1.2 × the median of the last 10 trusted steps): register
+  /// overlap below 0.9 × or a fit above 1.1 × the median of the last 10 trusted steps): register
   /// again with the wide basin (mlndt and fbmlndt) from the guess, then (constant velocity) from no
-  /// motion and the last trusted motion, and take the first trusted result; else chain the last
+  /// motion and the last trusted motion, and take the first result the absolute checks trust (the
+  /// sequence check only triggers the search); else chain the last
   /// trusted motion (the odometry guess). Off: every registration is chained as the matcher
   /// returned it (its trust still recorded).
   bool recover = true;

@@ -3,19 +3,22 @@
 // on one vehicle overlap about as much from one step to the next, and their matched points fit the
 // reference's Gaussians about as well. A step whose overlap falls well below, or whose fit rises
 // well above, the median of the last trusted steps slid or jumped, even when each number alone
-// would pass (registration_quality.hpp's absolute checks).
+// would pass (registration_quality.hpp's absolute checks). The window holds the trusted steps:
+// after recovery where one step's guess needs the last (constant velocity, local map); the steps
+// trusted at their first registration where the steps are independent (the odometry guess), whose
+// recoveries then run in parallel.
 #include <cstddef>
 #include <deque>
 
 #include "sextant/matchers/registration_result.hpp"
 
-namespace sextant::odometry_detail {
+namespace sextant {
 
 struct SequenceTrustSettings {
   std::size_t window = 10;      ///< trusted steps the medians are taken over [count]
   std::size_t min_history = 3;  ///< no relative check before this many trusted steps [count]
-  double overlap_factor = 0.8;  ///< suspect below this × the median overlap [ratio]
-  double fit_factor = 1.2;      ///< suspect above this × the median fit ratio [ratio]
+  double overlap_factor = 0.9;  ///< suspect below this × the median overlap [ratio]
+  double fit_factor = 1.1;      ///< suspect above this × the median fit ratio [ratio]
 };
 
 class SequenceTrust {
@@ -31,4 +34,4 @@ class SequenceTrust {
   std::deque<RegistrationQuality> trusted_;
 };
 
-}  // namespace sextant::odometry_detail
+}  // namespace sextant

@@ -1,0 +1,54 @@
+// The sequence check of odometry (sequence_trust.hpp): a step far below its neighbours' overlap or
+// far above their fit is suspect; before the history is long enough, or for an untrusted step,
+// nothing changes; only trusted steps enter the window.
+#include <gtest/gtest.h>
+
+#include "sextant/odometry/sequence_trust.hpp"
+
+namespace sextant {
+namespace {
+
+RegistrationQuality trusted(double overlap, double fit) {
+  RegistrationQuality q;
+  q.assessed = true;
+  q.trust = Trust::kOk;
+  q.overlap = overlap;
+  q.fit_ratio = fit;
+  return q;
+}
+
+TEST(SequenceTrust, FlagsAStepOutOfItsSequencesRange) {
+  SequenceTrust sequence;
+  RegistrationQuality early = trusted(0.2, 3.0);
+  sequence.check(early);  // no history yet: the absolute checks alone decide
+  EXPECT_TRUE(early.trusted());
+  for (const double overlap : {0.85, 0.9, 0.8, 0.88}) sequence.record(trusted(overlap, 1.0));
+  RegistrationQuality untrusted = trusted(0.1, 1.0);
+  untrusted.trust = Trust::kLowOverlap;
+  sequence.record(untrusted);  // ignored: the median stays that of the trusted steps
+  RegistrationQuality normal = trusted(0.80, 1.05);
+  sequence.check(normal);
+  EXPECT_TRUE(normal.trusted()) << normal.reason;
+  RegistrationQuality slid = trusted(0.70, 1.0);  // below 0.9 × the median 0.88 (window of 4: upper median)
+  sequence.check(slid);
+  EXPECT_EQ(slid.trust, Trust::kSuspect);
+  EXPECT_NE(slid.reason.find("70.0 %"), std::string::npos) << slid.reason;
+  RegistrationQuality poor = trusted(0.9, 1.2);  // above 1.1 × the median fit 1.0
+  sequence.check(poor);
+  EXPECT_EQ(poor.trust, Trust::kSuspect);
+  EXPECT_NE(poor.reason.find("fit 1.20"), std::string::npos) << poor.reason;
+}
+
+TEST(SequenceTrust, WindowForgetsOldSteps) {
+  SequenceTrustSettings settings;
+  settings.window = 3;
+  SequenceTrust sequence(settings);
+  for (int i = 0; i < 3; ++i) sequence.record(trusted(0.9, 1.0));
+  for (int i = 0; i < 3; ++i) sequence.record(trusted(0.5, 1.0));  // a sparser stretch
+  RegistrationQuality q = trusted(0.5, 1.0);
+  sequence.check(q);
+  EXPECT_TRUE(q.trusted()) << q.reason;
+}
+
+}  // namespace
+}  // namespace sextant
