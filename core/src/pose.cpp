@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace sextant {
 
@@ -87,6 +89,19 @@ bool is_finite(const Pose6& pose) {
 }  // namespace sextant
 
 namespace sextant {
+
+std::string rigid_problem(const Eigen::Matrix3d& R, const Eigen::Vector3d& t, double tolerance) {
+  if (!R.allFinite() || !t.allFinite()) return "not finite";
+  const double off = (R.transpose() * R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+  if (off > tolerance) {
+    std::ostringstream out;
+    out << "the rotation is not orthonormal (max |RᵀR − I| = " << std::setprecision(3) << off
+        << ", tolerance " << tolerance << ")";
+    return out.str();
+  }
+  if (R.determinant() <= 0.0) return "the rotation is a reflection (det R < 0)";
+  return {};
+}
 
 Eigen::Isometry3d scale_motion(const Eigen::Isometry3d& T, double factor) {
   const Eigen::AngleAxisd rotation(T.rotation());

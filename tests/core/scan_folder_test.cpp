@@ -134,3 +134,33 @@ TEST(ScanFolder, KittiVelodyneMixingFormatsIsReported) {
 
 }  // namespace
 }  // namespace sextant
+
+namespace sextant {
+namespace {
+
+// Issue 23: every pose read is a rigid transform, or an error naming the file and line.
+TEST(PoseFiles, NonRigidPosesAreRefusedNamingTheLine) {
+  TempDir dir;
+  write_text(dir / "zeros.txt", "1 0 0 0 0 1 0 0 0 0 1 0\n0 0 0 0 0 0 0 0 0 0 0 0\n");
+  expect_input_error([&] { read_kitti_poses(dir / "zeros.txt"); }, dir / "zeros.txt", "line 2",
+                     "not a rigid transform: the rotation is not orthonormal");
+  write_text(dir / "mirror.txt", "-1 0 0 0 0 1 0 0 0 0 1 0\n");
+  expect_input_error([&] { read_kitti_poses(dir / "mirror.txt"); }, dir / "mirror.txt", "line 1",
+                     "reflection");
+  write_text(dir / "rounded.txt",
+             "0.999903 -0.0116068 -0.00770509 -1.9494 0.0115921 0.999931 -0.00195905 "
+             "-0.0144169 0.0077273 0.00186954 0.999968 0.0611163\n");
+  EXPECT_EQ(read_kitti_poses(dir / "rounded.txt").size(), 1u);  // 6 digits, as MulRan's poses.txt
+  write_text(dir / "scan000.frames",
+             "1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1 2\n0 0 0 0 0 0 0 0 0 0 0 0 0 0 0 1 2\n");
+  expect_input_error([&] { read_uos_frames(dir / "scan000.frames"); }, dir / "scan000.frames", "line 2",
+                     "not a rigid transform");
+  // A scan folder's poses.txt goes through the same reader.
+  write_cloud(dir / "s" / "0.pcd", cloud_of(3));
+  write_text(dir / "s" / "poses.txt", "0 0 0 0 0 0 0 0 0 0 0 0\n");
+  expect_input_error([&] { open_dataset(dir / "s"); }, dir / "s" / "poses.txt", "line 1",
+                     "not a rigid transform");
+}
+
+}  // namespace
+}  // namespace sextant

@@ -109,7 +109,10 @@ std::vector<Eigen::Isometry3d> read_kitti_poses(const std::filesystem::path& fil
                        "expected 12 numbers (a 3×4 row-major pose), found " + std::to_string(values.size()));
     }
     check_finite(file, number, values);
-    poses.push_back(isometry_from_row_major(values, 0));
+    const Eigen::Isometry3d T = isometry_from_row_major(values, 0);
+    if (const std::string why = rigid_problem(T.linear(), T.translation()); !why.empty())
+      throw InputError(file.string(), at_line(number), "not a rigid transform: " + why);
+    poses.push_back(T);
   });
   return poses;
 }

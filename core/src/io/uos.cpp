@@ -209,6 +209,9 @@ std::vector<Eigen::Isometry3d> read_uos_frames(const std::filesystem::path& file
     }
     require_finite(file, row);
     const Eigen::Matrix4d M = Eigen::Map<const Eigen::Matrix4d>(row.values.data());  // column-major
+    if (const std::string why = rigid_problem(M.topLeftCorner<3, 3>(), M.topRightCorner<3, 1>());
+        !why.empty())
+      throw InputError(file.string(), at_line(row.line), "not a rigid transform: " + why);
     frames.push_back(uos_pose_to_internal(M));
   }
   return frames;

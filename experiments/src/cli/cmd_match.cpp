@@ -5,8 +5,8 @@
 // sample with the `default` preset, as `sextant odometry` and the library (docs/matcher_defaults.md);
 // without --init the wide basin searches around the identity (--no-wide-basin: off). Every result
 // is assessed (registration_quality.hpp); with --init an untrusted result is registered again with
-// the wide basin. Exit status: 0 trusted, 3 not converged, 4 converged but not trusted (why is
-// printed), 1 for bad input.
+// the wide basin. Exit status: 0 trusted, 3 not converged or not trusted (why is printed), 1 bad
+// input, 2 a usage error.
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -39,10 +39,6 @@ struct MatchOptions : MatcherOptions {
   bool json = false;
   bool no_wide_basin = false;
 };
-
-/// Exit status of a registration that is not to be believed (README, "sextant match").
-constexpr int kExitNotConverged = 3;
-constexpr int kExitNotTrusted = 4;
 
 /// Error of a registration against ground truth: E = T_gt⁻¹·T_est (DESIGN.md).
 struct PoseError {
@@ -92,6 +88,8 @@ Eigen::Isometry3d read_ground_truth(const std::string& file) {
   Eigen::Matrix4d M = Eigen::Matrix4d::Identity();
   for (std::size_t i = 0; i < values.size(); ++i)
     M(static_cast<int>(i / 4), static_cast<int>(i % 4)) = values[i];
+  if (const std::string why = rigid_problem(M.topLeftCorner<3, 3>(), M.topRightCorner<3, 1>()); !why.empty())
+    throw InputError(file, "", "not a rigid transform: " + why);
   if (!M.allFinite() || !M.row(3).isApprox(Eigen::RowVector4d(0, 0, 0, 1)))
     throw InputError(file, "", "the matrix is not finite or its last row is not 0 0 0 1");
   const Eigen::Matrix3d R = M.topLeftCorner<3, 3>();
@@ -221,8 +219,7 @@ int run_match(MatchOptions o) {
   } else {
     print_text(o, m, search, error);
   }
-  if (!m.result.converged) return kExitNotConverged;
-  return m.result.quality.trusted() ? 0 : kExitNotTrusted;
+  return m.result.quality.trusted() ? 0 : kExitUntrusted;  // not converged is not trusted either
 }
 
 }  // namespace
@@ -252,9 +249,8 @@ void add_match_command(CLI::App& app, int& exit_code) {
                 "Without --init: register from the identity only (default: the wide basin searches "
                 "yaw and x/y around it); with --init: no wide-basin retry of an untrusted result");
   cmd->footer(
-      "Exit status: 0 the result is trusted; 3 the optimiser did not converge; 4 it converged but "
-      "the result is not trusted (low overlap, degenerate or a poor fit; the reason is printed); 1 bad "
-      "input.");
+      "Exit status: 0 the result is trusted; 3 it is not (not converged, low overlap, degenerate or a "
+      "poor fit; the reason is printed); 1 bad input; 2 a usage error.");
   cmd->callback([&exit_code, o] { exit_code = guarded([o] { return run_match(*o); }); });
 }
 

@@ -9,6 +9,11 @@
 
 namespace sextant::cli {
 
+/// Exit status of every subcommand (README, "Exit status").
+inline constexpr int kExitRuntimeError = 1;
+inline constexpr int kExitUsage = 2;
+inline constexpr int kExitUntrusted = 3;  ///< a registration that is not converged or not trusted
+
 /// Runs a subcommand body: an exception becomes "sextant: error: <message>" on stderr and exit code 1.
 int guarded(const std::function<int()>& body);
 

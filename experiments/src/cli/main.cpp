@@ -1,4 +1,6 @@
-// The `sextant` command line: one subcommand per file under cli/.
+// The `sextant` command line: one subcommand per file under cli/. Exit status, the same in every
+// subcommand: 0 success, 1 a runtime error (bad input, a failed run), 2 a usage error, 3 a result that
+// is not converged or not trusted (`match`).
 #include <iostream>
 
 #include "commands.hpp"
@@ -10,7 +12,7 @@ int guarded(const std::function<int()>& body) {
     return body();
   } catch (const std::exception& e) {
     std::cerr << "sextant: error: " << e.what() << "\n";
-    return 1;
+    return kExitRuntimeError;
   }
 }
 
@@ -33,6 +35,13 @@ int main(int argc, char** argv) {
   add_slurm_command(app, exit_code);
   add_synth_command(app, exit_code);
   add_version_command(app, exit_code);
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help prints and succeeds; every other parse error is a usage error: exit 2 (README, "Exit
+    // status"), whatever CLI11's own code for it is.
+    const int cli11 = app.exit(e);
+    return cli11 == 0 ? 0 : kExitUsage;
+  }
   return exit_code;
 }

@@ -4,6 +4,8 @@
 // the thesis' eq. (3.8) (whose printed Ry has a typo: its last row is [−sβ 0 cβ]) and 3DTK's
 // EulerToMatrix4 order.
 #include <Eigen/Core>
+#include <string>
+
 #include <Eigen/Geometry>
 
 namespace sextant {
@@ -44,6 +46,16 @@ double translation_norm(const Eigen::Isometry3d& T);
 
 /// True when every entry is finite.
 bool is_finite(const Eigen::Isometry3d& T);
+
+/// How far a rotation matrix read from a file may be from orthonormal (max |RᵀR − I|) and still be
+/// taken as a rotation: pose files print 6–9 significant digits.
+inline constexpr double kRigidTolerance = 1e-3;
+
+/// Empty when R (with translation t) is a rigid transform — finite, max |RᵀR − I| ≤ `tolerance`,
+/// det R > 0 — else what is wrong with it ("not orthonormal (max |RᵀR − I| = 1)", …). Every pose
+/// reader checks its poses with it and names the file and line of a bad one.
+std::string rigid_problem(const Eigen::Matrix3d& R, const Eigen::Vector3d& t,
+                          double tolerance = kRigidTolerance);
 
 /// The motion T continued for `factor` times as long at the same body-frame velocity: rotation
 /// angle × factor about the same axis, translation × factor (a constant-velocity extrapolation,
