@@ -1,6 +1,7 @@
 #include "sextant/core/settings_reader.hpp"
 
 #include <filesystem>
+#include <map>
 
 namespace sextant {
 
@@ -28,10 +29,17 @@ void check_tree(const YAML::Node& node, int depth, std::size_t& count, const std
   if (node.IsSequence()) {
     for (const auto& child : node) check_tree(child, depth + 1, count, path);
   } else if (node.IsMap()) {
+    std::map<std::string, long> seen;  // key → its line: a repeated key is an error, not "the first wins"
     for (const auto& entry : node) {
       if (!entry.first.IsScalar()) {
         throw InputError(path, at_line(yaml_line(entry.first)),
                          "a map key must be a plain name, not a list or map");
+      }
+      const auto [first, inserted] = seen.emplace(entry.first.Scalar(), yaml_line(entry.first));
+      if (!inserted) {
+        throw InputError(path, at_line(yaml_line(entry.first)),
+                         "duplicate key '" + entry.first.Scalar() + "' (first at line " +
+                             std::to_string(first->second) + ")");
       }
       check_tree(entry.second, depth + 1, count, path);
     }

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/experiments/json.hpp"
 
 namespace sextant {
 namespace {
@@ -106,6 +108,26 @@ std::vector<YAML::Node> range_values(const YAML::Node& node, const std::string& 
   return values;
 }
 
+/// methods × sweep points × repetitions against kMaxRuns, before anything is allocated (and without
+/// overflow): a 10⁴ × 10³ sweep used to take 6 GB before std::bad_alloc.
+void check_run_count(const ExperimentConfig& c, SettingsReader& in) {
+  std::uint64_t runs = std::max<std::size_t>(c.methods.size(), 1);
+  std::string shape = std::to_string(runs) + (runs == 1 ? " method" : " methods");
+  bool over = false;
+  const auto times = [&](std::uint64_t factor, const std::string& what) {
+    shape += " × " + what;
+    if (factor != 0 && runs > kMaxRuns / factor) over = true;
+    if (!over) runs *= factor;
+  };
+  for (const SweepAxis& axis : c.sweep)
+    times(axis.values.size(), "axis '" + axis.name + "' (" + std::to_string(axis.values.size()) + " values)");
+  times(static_cast<std::uint64_t>(c.repetitions), std::to_string(c.repetitions) + " repetitions");
+  if (over)
+    in.fail(c.sweep.empty() ? "repetitions" : "sweep",
+            "the plan has " + shape + ": more than " + std::to_string(kMaxRuns) +
+                " runs, the cap of one experiment (split it into several)");
+}
+
 std::vector<SweepAxis> read_sweep(const YAML::Node& node, const std::string& file) {
   std::vector<SweepAxis> axes;
   if (!node.IsDefined() || node.IsNull()) return axes;
@@ -126,6 +148,15 @@ std::vector<SweepAxis> read_sweep(const YAML::Node& node, const std::string& fil
                        "sweep axis '" + axis.name + "': expected a list of values or {from, to, step}");
     }
     if (axis.values.empty()) throw InputError(file, where, "sweep axis '" + axis.name + "' has no values");
+    std::map<std::string, long> labels;  // a value twice would run twice under one label
+    for (const YAML::Node& v : axis.values) {
+      const std::string label = v.IsScalar() ? v.Scalar() : canonical_json(v);
+      const auto [first, inserted] = labels.emplace(label, yaml_line(v));
+      if (!inserted)
+        throw InputError(file, at_line(yaml_line(v) ? yaml_line(v) : yaml_line(entry.second)),
+                         "sweep axis '" + axis.name + "': the value '" + label + "' is listed twice" +
+                             (first->second ? " (first at line " + std::to_string(first->second) + ")" : ""));
+    }
     axes.push_back(std::move(axis));
   }
   return axes;
@@ -178,6 +209,7 @@ ExperimentConfig parse_experiment_config(const YAML::Node& document, const std::
   c.dataset = read_dataset(in.child("dataset"), file);
   c.methods = read_methods(in.child("methods"), in);
   c.sweep = read_sweep(in.child("sweep"), file);
+  check_run_count(c, in);
   in.read("metrics", c.metrics);
   c.params = in.child("params");
   if (c.params.IsDefined() && !c.params.IsNull() && !c.params.IsMap())

@@ -27,6 +27,7 @@ namespace {
 using PclPoint = pcl::PointXYZ;
 using PclCloud = pcl::PointCloud<PclPoint>;
 using PclTree = pcl::search::KdTree<PclPoint>;
+constexpr double kMaxPclGuess = 1e6;  ///< [m]
 
 /// Our cloud as a PCL cloud, without non-finite points (PCL's registration assumes dense clouds).
 PclCloud::Ptr to_pcl(const PointCloud& cloud) {
@@ -91,6 +92,9 @@ class PclPeer : public Matcher {
   RegistrationResult align(const PointCloud& input, const Eigen::Isometry3d& initial) override {
     const auto start = std::chrono::steady_clock::now();
     if (!is_finite(initial)) return not_started(Termination::kNonFiniteInput, input.size(), initial);
+    // PCL asserts (the process aborts) on guesses like 1e39 m: no PCL call with one.
+    if (initial.translation().norm() > kMaxPclGuess)
+      return not_started(Termination::kDiverged, input.size(), initial);
     RegistrationResult result;
     result.input_points = input.size();
     result.T = initial;
@@ -123,7 +127,7 @@ class PclPeer : public Matcher {
     classify(result);
     if (aligned.size() == source->size()) {
       result.score = registration_.getFitnessScore();
-      result.matched_points = source->size();
+      result.matched_points = points_within(aligned, overlap_distance());
       result.H = hessian(aligned, T);
     }
     return result;
@@ -132,6 +136,21 @@ class PclPeer : public Matcher {
  protected:
   virtual std::size_t min_points() const { return 3; }
   virtual void prepare_target() {}
+  /// Aligned points with a reference point within `distance`: the overlap the trust check needs
+  /// (PCL's fitness score averages over the matched points only, so it cannot tell).
+  std::size_t points_within(const PclCloud& aligned, double distance) const {
+    std::size_t n = 0;
+    pcl::Indices index(1);
+    std::vector<float> squared(1);
+    const float limit = static_cast<float>(distance * distance);
+    for (const PclPoint& p : aligned.points)
+      if (tree_->nearestKSearch(p, 1, index, squared) == 1 && squared[0] <= limit) ++n;
+    return n;
+  }
+
+  /// How close an aligned point must come to the reference to count as matched [m].
+  virtual double overlap_distance() { return registration_.getMaxCorrespondenceDistance(); }
+
   virtual Matrix6d hessian(const PclCloud&, const Eigen::Matrix4d&) {
     return Matrix6d::Zero();
   }  // not exposed
@@ -171,6 +190,8 @@ class PclNdtMatcher final : public PclPeer<PclNdt> {
 
  private:
   int max_iterations() const override { return settings_.max_iterations; }
+  /// NDT has no correspondence distance: a point within one cell of the reference is in its model.
+  double overlap_distance() override { return settings_.resolution; }
   Matrix6d hessian(const PclCloud& aligned, const Eigen::Matrix4d& T) override {
     return registration_.hessian_at(aligned, T);
   }

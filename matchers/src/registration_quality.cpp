@@ -62,9 +62,11 @@ double constraint_ratio(const Matrix6d& H, double range) {
     }
   }
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(scaled, Eigen::EigenvaluesOnly);
-  const double strongest = eig.eigenvalues().maxCoeff();
+  Eigen::VectorXd l = eig.eigenvalues();
+  if (l.maxCoeff() <= 0.0) l = -l;  // the Hessian of a maximised score (PCL's NDT) is negative definite
+  const double strongest = l.maxCoeff();
   if (!(strongest > 0.0)) return 0.0;
-  return std::max(0.0, eig.eigenvalues().minCoeff()) / strongest;  // an indefinite H: 0
+  return std::max(0.0, l.minCoeff()) / strongest;  // an indefinite H: 0
 }
 
 RegistrationQuality assess_registration(const RegistrationResult& result, const PointCloud& input,

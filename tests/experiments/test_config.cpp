@@ -175,3 +175,34 @@ TEST(ExperimentConfig, TheShippedConfigsAreValid) {
 
 }  // namespace
 }  // namespace sextant
+
+namespace sextant {
+namespace {
+
+// Issue 23: a key given twice used to be "the first wins" in the runner while experiment.yaml
+// recorded the second; a value listed twice ran twice under one label.
+TEST(ExperimentConfig, DuplicateKeysAndSweepValuesAreErrorsAtTheirLine) {
+  TempDir tmp;
+  std::string msg = error_of(tmp, replace(kValid, "seed: 3", "seed: 3\nseed: 4"));
+  EXPECT_NE(msg.find("line 4"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("duplicate key 'seed' (first at line 3)"), std::string::npos) << msg;
+  msg = error_of(tmp, replace(kValid, "x: [1, 2, 3]", "x: [1, 2, 1]"));
+  EXPECT_NE(msg.find("sweep axis 'x': the value '1' is listed twice"), std::string::npos) << msg;
+  msg = error_of(tmp, replace(kValid, "x: [1, 2, 3]", "x: [1, \"1\"]"));
+  EXPECT_NE(msg.find("listed twice"), std::string::npos) << msg;
+}
+
+// Issue 23: the plan's size is checked before anything is allocated, without overflow.
+TEST(ExperimentConfig, PlansOverTheRunCapAreRefusedNamingTheAxes) {
+  TempDir tmp;
+  std::string msg = error_of(
+      tmp,
+      replace(kValid, "x: [1, 2, 3]", "x: {from: 1, to: 10000, step: 1}\n  z: {from: 1, to: 1000, step: 1}"));
+  EXPECT_NE(msg.find("axis 'x' (10000 values) × axis 'z' (1000 values)"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("more than 1000000 runs"), std::string::npos) << msg;
+  msg = error_of(tmp, replace(kValid, "repetitions: 2", "repetitions: 2147483647"));
+  EXPECT_NE(msg.find("2147483647 repetitions"), std::string::npos) << msg;
+}
+
+}  // namespace
+}  // namespace sextant

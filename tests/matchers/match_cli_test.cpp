@@ -132,7 +132,8 @@ TEST(MatchCliDefaults, PresetsAreSelectable) {
 TEST(MatchCliErrors, BadInputIsAnErrorWithExitCode1) {
   for (const std::string& arguments :
        {kPair + " --method no_such_matcher", kPair + " --init 1,2,3",
-        kPair + " --method icp_p2p --preset thesis", std::string("/no/such/file.pcd /no/such/other.pcd")}) {
+        kPair + " --method icp_p2p --preset thesis", kPair + " --method pcl_ndt --init=1e39,0,0,0,0,0",
+        std::string("/no/such/file.pcd /no/such/other.pcd")}) {
     const CliRun r = run_cli("match " + arguments);
     EXPECT_EQ(r.exit_code, 1) << arguments << "\n" << r.output;
     EXPECT_NE(r.output.find("sextant: error: "), std::string::npos) << r.output;

@@ -14,6 +14,7 @@
 #include "sextant/core/io/cloud_io.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/pcl_peers.hpp"
+#include "sextant/matchers/registration_quality.hpp"
 #include "test_clouds.hpp"
 
 namespace sextant {
@@ -116,6 +117,23 @@ TEST_P(PclPeers, DegenerateInputNeverCrashes) {
   matcher->set_reference(PointCloud({{0, 0, 0}, {5, 0, 0}, {0, 5, 0}, {0, 0, 5}}));
   r = matcher->align(reference, Eigen::Isometry3d::Identity());
   EXPECT_TRUE(r.T.matrix().allFinite()) << r.summary();
+}
+
+// Issue 23: a guess of 1e39 m made PCL assert (the process aborted); clouds 10 km apart "converged
+// after 0 iterations". Now the first is not started, the second is not trusted (no overlap).
+TEST_P(PclPeers, AbsurdGuessesAreResultsNotAborts) {
+  const auto matcher = make_matcher(GetParam());
+  Rng rng(4);
+  const PointCloud reference = test::yard(rng);
+  matcher->set_reference(reference);
+  Eigen::Isometry3d far = Eigen::Isometry3d::Identity();
+  far.translation().x() = 1e39;
+  RegistrationResult r = matcher->align(reference, far);
+  EXPECT_FALSE(r.converged);
+  far.translation().x() = 1e4;
+  r = matcher->align(reference, far);
+  EXPECT_EQ(r.matched_points, 0u) << r.summary();
+  EXPECT_FALSE(assess_registration(r, reference).trusted()) << r.summary();
 }
 
 INSTANTIATE_TEST_SUITE_P(Registered, PclPeers, ::testing::ValuesIn(kPeers),

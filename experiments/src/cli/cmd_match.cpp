@@ -46,6 +46,9 @@ struct PoseError {
   double deg = 0.0;
 };
 
+/// A guess beyond this is no guess between two scans (PCL's peers abort the process on 1e39) [m].
+constexpr double kMaxGuessMetres = 1e6;
+
 Eigen::Isometry3d parse_init(const std::string& text) {
   std::vector<double> values;
   std::stringstream in(text);
@@ -63,6 +66,9 @@ Eigen::Isometry3d parse_init(const std::string& text) {
   if (values.size() != 6 || !Eigen::Map<const Vector6d>(values.data()).allFinite())
     throw InputError("--init", "",
                      "expected six finite numbers x,y,z,alpha,beta,gamma (m, deg), got '" + text + "'");
+  if (Eigen::Map<const Eigen::Vector3d>(values.data()).norm() > kMaxGuessMetres)
+    throw InputError("--init", "",
+                     "the translation is farther than 10^6 m (" + text + "): not a guess between two scans");
   return to_isometry(Pose6{values[0], values[1], values[2], values[3] / kDegPerRad, values[4] / kDegPerRad,
                            values[5] / kDegPerRad});
 }

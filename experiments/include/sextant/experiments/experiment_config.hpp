@@ -46,6 +46,10 @@ struct MethodConfig {
   YAML::Node node;   ///< the whole method map (kind-specific keys)
 };
 
+/// The most runs one experiment may plan (methods × sweep points × repetitions): a larger plan is an
+/// InputError naming its axes, before anything is allocated.
+inline constexpr std::uint64_t kMaxRuns = 1000000;
+
 struct ExperimentConfig {
   std::string file;  ///< path of the YAML file, for error messages
   std::string name;

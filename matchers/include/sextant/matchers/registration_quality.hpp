@@ -44,7 +44,8 @@ struct QualitySettings {
 
 /// Rotations scaled to metres at `rms_range`: S·H·S with S = diag(1, 1, 1, 1/L, 1/L, 1/L); its weakest
 /// eigenvalue over its strongest (over the parameters H constrains at all: rows of a DOF-masked H are
-/// zero and left out). 0 for a non-finite or indefinite H; NaN for an all-zero H (a matcher that gives
+/// zero and left out; a negative definite H, of a maximised score, counts as −H). 0 for a
+/// non-finite or indefinite H; NaN for an all-zero H (a matcher that gives
 /// none, such as PCL's: no degeneracy check).
 double constraint_ratio(const Matrix6d& H, double rms_range);
 
