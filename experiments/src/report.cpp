@@ -1,5 +1,7 @@
 #include "sextant/experiments/report.hpp"
 
+#include "results_lock.hpp"
+
 #include <algorithm>
 #include <fstream>
 #include <map>
@@ -274,21 +276,58 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
   return summary;
 }
 
-std::size_t merge_results(const std::vector<fs::path>& inputs, const fs::path& out) {
-  std::size_t written = 0;
-  for (const auto& [name, folders] : find_experiments(inputs)) {
+MergeSummary merge_results(const std::vector<fs::path>& inputs, const fs::path& out) {
+  MergeSummary summary;
+  for (auto [name, folders] : find_experiments(inputs)) {
     const fs::path dir = out / name;
+    const detail::ResultsLock lock(dir);  // no runner and no other merge writes here meanwhile
+    // The target's own rows are an input too: a merge never drops what is already there.
+    if (fs::exists(dir / kEffectiveConfig)) folders.insert(folders.begin(), dir);
+    // The same folder named twice counts once.
+    std::vector<fs::path> distinct;
+    std::set<fs::path> seen;
+    for (const fs::path& f : folders)
+      if (seen.insert(fs::weakly_canonical(f)).second) distinct.push_back(f);
+    folders = std::move(distinct);
+    // Results of two configs are not one experiment: refuse rather than mix them.
+    const fs::path config_path = folders.front() / kEffectiveConfig;
+    const std::string config_text = read_text(config_path);
+    for (const fs::path& f : folders)
+      if (read_text(f / kEffectiveConfig) != config_text)
+        throw InputError((f / kEffectiveConfig).string(), "",
+                         "differs from " + config_path.string() +
+                             ": these are results of two configs; merge each config's folders apart");
+    const std::vector<RunSpec> runs = expand_runs(
+        parse_experiment_config(load_yaml_file(config_path.string()), config_path.string(), false));
+    MergedExperiment& merged = summary.experiments.emplace_back();
+    merged.name = name;
+    merged.inputs = folders.size();
+    merged.expected = runs.size();
+    std::map<std::string, std::size_t> holders;  // run key → input folders that hold a row of it
+    for (const fs::path& f : folders) {
+      std::set<std::string> keys;
+      for (const RunRow& row : read_rows(f / kRunsJsonl).rows) keys.insert(row.key);
+      for (const std::string& key : keys) ++holders[key];
+    }
+    for (const auto& [key, count] : holders) merged.duplicated += count > 1 ? 1 : 0;
     // Rows in the expansion order of the config they were run with: the merged files do not depend
     // on how many shards there were or in which order their runs finished.
-    const fs::path config_path = folders.front() / kEffectiveConfig;
-    const std::vector<RunRow> rows = in_expansion_order(
-        union_rows(folders), expand_runs(parse_experiment_config(load_yaml_file(config_path.string()),
-                                                                 config_path.string(), false)));
+    const std::vector<RunRow> rows = in_expansion_order(union_rows(folders), runs);
+    std::set<std::string> present;
+    for (const RunRow& row : rows)
+      if (row.ok) present.insert(row.key);
+    for (const RunSpec& run : runs) {
+      if (present.count(run.key)) continue;
+      ++merged.missing;
+      std::string label = run.method;
+      for (const auto& [axis, value] : run.point) label += ", " + axis + " = " + value;
+      merged.missing_runs.push_back(label + ", repetition " + std::to_string(run.repetition));
+    }
     std::string text;
     for (const auto& row : rows) text += to_json_line(row) + "\n";
     write_file_atomically(dir / kRunsJsonl, text);
     write_rows_csv(dir / kRunsCsv, rows);
-    write_file_atomically(dir / kEffectiveConfig, read_text(folders.front() / kEffectiveConfig));
+    write_file_atomically(dir / kEffectiveConfig, config_text);
     std::set<std::string> names;  // provenance files written by this merge
     for (std::size_t k = 0; k < folders.size(); ++k) {
       for (const auto& file : provenance_files(folders[k])) {
@@ -297,12 +336,14 @@ std::size_t merge_results(const std::vector<fs::path>& inputs, const fs::path& o
           target = file.stem().string() + ".input-" + std::to_string(k + 1) + ".json";
           names.insert(target);
         }
-        write_file_atomically(dir / target, read_text(file));
+        if (fs::weakly_canonical(file) != fs::weakly_canonical(dir / target))
+          write_file_atomically(dir / target, read_text(file));
       }
     }
-    written += rows.size();
+    merged.rows = rows.size();
+    summary.rows += rows.size();
   }
-  return written;
+  return summary;
 }
 
 }  // namespace sextant

@@ -1,5 +1,7 @@
 // The runner: results, resume, truncated lines, shards + merge, and a SIGKILL mid-sweep.
+#include <fcntl.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -10,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "sextant/core/error.hpp"
 #include "sextant/experiments/report.hpp"
 #include "sextant/experiments/run_row.hpp"
 #include "sextant/experiments/runner.hpp"
@@ -102,7 +105,7 @@ TEST(Runner, ShardsMergeIntoTheWholeSweep) {
     EXPECT_TRUE(std::filesystem::exists(o.results_root / "sharded" / provenance_file_name(o.shard)));
   }
   EXPECT_EQ(executed, 20u);
-  EXPECT_EQ(merge_results(roots, tmp / "merged"), 20u);
+  EXPECT_EQ(merge_results(roots, tmp / "merged").rows, 20u);
   const RowFile merged = read_rows(tmp / "merged" / "sharded" / kRunsJsonl);
   EXPECT_EQ(merged.rows.size(), 20u);
   EXPECT_EQ(count_lines(tmp / "merged" / "sharded" / kRunsJsonl), 20u);
@@ -224,6 +227,89 @@ TEST(Cli, ABadConfigStopsWithFileLineAndKey) {
   EXPECT_NE(err.find("line 12"), std::string::npos) << err;
   EXPECT_NE(err.find("'colour'"), std::string::npos) << err;
   EXPECT_FALSE(std::filesystem::exists(tmp / "results" / "bad" / kRunsJsonl));
+}
+
+}  // namespace
+}  // namespace sextant
+
+namespace sextant {
+namespace {
+
+// Issue 23: a merge into a folder that already held every row left only the shard's; the same
+// shard named twice was silent about the runs no shard had; a differing config was copied over.
+TEST(Merge, KeepsTheTargetsRowsAndCountsMissingAndDuplicatedRuns) {
+  TempDir tmp;
+  test::write_text(tmp / "e.yaml", test::selftest_yaml("sharded", 5, 2, 0));
+  std::vector<std::filesystem::path> roots;
+  for (std::size_t i = 0; i < 3; ++i) {
+    RunnerOptions o = options_for(tmp, "shard" + std::to_string(i));
+    o.shard = Shard{i, 3};
+    run_experiment(tmp / "e.yaml", o);
+    roots.push_back(o.results_root);
+  }
+  const auto merged_rows = [&] { return read_rows(tmp / "all" / "sharded" / kRunsJsonl).rows.size(); };
+  // Shard 0 twice, shard 1 once: the runs of shard 2 are missing, by count and by name.
+  MergeSummary m = merge_results({roots[0], roots[0], roots[1]}, tmp / "all");
+  ASSERT_EQ(m.experiments.size(), 1u);
+  const MergedExperiment& e = m.experiments.front();
+  EXPECT_EQ(e.inputs, 2u);  // the same folder named twice counts once
+  EXPECT_EQ(e.expected, 20u);
+  EXPECT_EQ(e.missing + e.rows, 20u);
+  EXPECT_GT(e.missing, 0u);
+  EXPECT_EQ(e.missing_runs.size(), e.missing);
+  EXPECT_NE(e.missing_runs.front().find("repetition"), std::string::npos) << e.missing_runs.front();
+  EXPECT_EQ(e.duplicated, 0u);
+  // Everything, then shard 2 alone into the same target: nothing already there is dropped.
+  m = merge_results(roots, tmp / "all");
+  EXPECT_EQ(merged_rows(), 20u);
+  m = merge_results({roots[2]}, tmp / "all");
+  EXPECT_EQ(merged_rows(), 20u);
+  EXPECT_EQ(m.experiments.front().missing, 0u);
+  EXPECT_GT(m.experiments.front().duplicated, 0u);  // shard 2's runs are in the target already
+  // A shard of another config is refused, naming both files.
+  test::write_text(tmp / "f.yaml", test::selftest_yaml("sharded", 4, 2, 0));
+  RunnerOptions other = options_for(tmp, "other");
+  run_experiment(tmp / "f.yaml", other);
+  try {
+    merge_results({other.results_root}, tmp / "all");
+    ADD_FAILURE() << "a merge of two configs was accepted";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("results of two configs"), std::string::npos) << error.what();
+  }
+  EXPECT_EQ(merged_rows(), 20u);
+}
+
+}  // namespace
+}  // namespace sextant
+
+namespace sextant {
+namespace {
+
+// Issue 23: a merge took no lock and overwrote a folder a runner was writing. It takes the same
+// lock the runner holds (flock on <folder>/.lock), so it is refused while another process holds it.
+TEST(Merge, IsRefusedWhileAnotherProcessHoldsTheFoldersLock) {
+  TempDir tmp;
+  test::write_text(tmp / "e.yaml", test::selftest_yaml("locked", 2, 1, 0));
+  RunnerOptions o = options_for(tmp, "shard");
+  run_experiment(tmp / "e.yaml", o);
+  std::filesystem::create_directories(tmp / "all" / "locked");
+  const int fd = ::open((tmp / "all" / "locked" / ".lock").c_str(), O_RDWR | O_CREAT, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+  const pid_t child = ::fork();  // flock is per open file: another process must try
+  if (child == 0) {
+    try {
+      merge_results({o.results_root}, tmp / "all");
+    } catch (const InputError&) {
+      ::_exit(7);
+    }
+    ::_exit(0);
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 7) << "the merge did not stop at the lock";
+  ::close(fd);
+  EXPECT_EQ(merge_results({o.results_root}, tmp / "all").rows, 4u);  // 2 methods × 2 points
 }
 
 }  // namespace

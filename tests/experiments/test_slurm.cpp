@@ -116,7 +116,7 @@ TEST(SlurmScripts, MergedShardsEqualASingleRunWhateverN) {
       run_shard(o, k);
       roots.push_back(shard_root(o, k));
     }
-    EXPECT_EQ(merge_results(roots, o.results), 42u);
+    EXPECT_EQ(merge_results(roots, o.results).rows, 42u);
     EXPECT_EQ(csv_without_seconds(o.results / "st" / kRunsCsv), expected_csv) << "N = " << n;
     EXPECT_EQ(test::read_text(o.results / "st" / kEffectiveConfig),
               test::read_text(tmp / "single" / "st" / kEffectiveConfig));

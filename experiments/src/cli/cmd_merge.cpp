@@ -15,8 +15,19 @@ void add_merge_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--out,-o", *out, "merged results root")->required();
   cmd->callback([&exit_code, inputs, out] {
     exit_code = guarded([&] {
-      const std::size_t rows = merge_results({inputs->begin(), inputs->end()}, *out);
-      std::cout << "merge: " << rows << " rows → " << *out << "\n";
+      const MergeSummary merged = merge_results({inputs->begin(), inputs->end()}, *out);
+      for (const MergedExperiment& e : merged.experiments) {
+        std::cout << "merge: " << e.name << ": " << e.rows << " rows from " << e.inputs << " folder"
+                  << (e.inputs == 1 ? "" : "s") << "; " << e.expected - e.missing << " of " << e.expected
+                  << " runs present, " << e.missing << " missing, " << e.duplicated
+                  << " in more than one input\n";
+        constexpr std::size_t kNamed = 10;
+        for (std::size_t i = 0; i < e.missing_runs.size() && i < kNamed; ++i)
+          std::cout << "  missing: " << e.missing_runs[i] << "\n";
+        if (e.missing_runs.size() > kNamed)
+          std::cout << "  … and " << e.missing_runs.size() - kNamed << " more missing\n";
+      }
+      std::cout << "merge: " << merged.rows << " rows → " << *out << "\n";
       return 0;
     });
   });
