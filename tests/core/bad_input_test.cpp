@@ -202,3 +202,33 @@ TEST(BadInput, UnreadableFile) {
 
 }  // namespace
 }  // namespace sextant
+
+namespace sextant {
+namespace {
+
+// Issue 23, readers: each of these lost or invented a point, or never ended.
+TEST(BadInput, ByteOrderMarkUnderflowDevicesAndSymlinkLoops) {
+  TempDir dir;
+  // A UTF-8 BOM before the first data line was taken for a header: the line was skipped.
+  write_text(dir / "bom.csv",
+             "\xEF\xBB\xBF"
+             "1 2 3\n4 5 6\n");
+  ScanLoadReport report;
+  EXPECT_EQ(read_cloud(dir / "bom.csv", &report).size(), 2u);
+  EXPECT_EQ(report.header_lines_skipped, 0u);
+  // 1e-400 is a finite number (0 as a double), not "non-finite".
+  write_text(dir / "tiny.xyz", "1e-400 2 3\n4 5 6\n");
+  EXPECT_EQ(read_cloud(dir / "tiny.xyz", &report).size(), 2u);
+  EXPECT_EQ(report.non_finite_dropped, 0u);
+  write_text(dir / "scan000.pose", "0 0 1e-400\n0 0 0\n");
+  EXPECT_TRUE(read_uos_pose(dir / "scan000.pose").matrix().allFinite());
+  // A symlink to /dev/zero read until std::bad_alloc; a symlink loop gave a raw filesystem error.
+  std::filesystem::create_symlink("/dev/zero", dir / "zero.xyz");
+  expect_input_error([&] { read_cloud(dir / "zero.xyz"); }, dir / "zero.xyz", "", "not a regular file");
+  std::filesystem::create_symlink(dir / "loop.pcd", dir / "loop.pcd");
+  expect_input_error([&] { read_cloud(dir / "loop.pcd"); }, dir / "loop.pcd", "",
+                     "Too many levels of symbolic links");
+}
+
+}  // namespace
+}  // namespace sextant

@@ -8,6 +8,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/kitti.hpp"
 #include "sextant/core/io/uos.hpp"
+#include "text_parse.hpp"
 
 namespace sextant {
 namespace {
@@ -87,6 +88,7 @@ std::vector<CloudFormat> cloud_formats() {
 
 PointCloud read_cloud(const std::filesystem::path& file, ScanLoadReport* report) {
   const Entry& e = entry_for(file);
+  detail::require_regular_file(file);
   ScanLoadReport local;
   PointCloud cloud = read_by_kind(e.kind, file, &local);
   if (report) *report = local;

@@ -10,7 +10,8 @@
 namespace sextant::detail {
 
 PointCloud read_point_list(const std::filesystem::path& file, ScanLoadReport* report) {
-  const std::string text = read_file_bytes(file);
+  std::string text = read_file_bytes(file);
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // a UTF-8 byte order mark is no data
   ScanLoadReport local;
   PointCloud cloud;
   std::vector<double> values;

@@ -4,10 +4,12 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <string>
 
 #include "sextant/core/error.hpp"
 
@@ -20,10 +22,21 @@ bool is_separator(char c) {
 
 }  // namespace
 
-std::string read_file_bytes(const std::filesystem::path& file) {
+void require_regular_file(const std::filesystem::path& file) {
   std::error_code ec;
-  if (std::filesystem::is_directory(file, ec))
+  const std::filesystem::file_status status = std::filesystem::status(file, ec);
+  if (ec && status.type() != std::filesystem::file_type::not_found)  // e.g. a symlink loop
+    throw InputError(file.string(), "", "cannot open: " + ec.message());
+  if (std::filesystem::is_directory(status))
     throw InputError(file.string(), "", "is a folder, expected a file");
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    throw InputError(file.string(), "",
+                     "not a regular file (a device, pipe or socket, which may never end): copy the data "
+                     "into a file first");
+}
+
+std::string read_file_bytes(const std::filesystem::path& file) {
+  require_regular_file(file);
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(file.string(), "", "cannot open: " + std::string(std::strerror(errno)));
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
@@ -49,9 +62,10 @@ bool parse_numbers(std::string_view line, std::vector<double>& out, std::string*
     if (*first == '+') ++first;  // from_chars rejects a leading '+'
     double value = 0.0;
     const auto [ptr, ec] = std::from_chars(first, last, value);
-    // Out-of-range magnitudes (1e999) are reported as non-finite rather than as malformed.
+    // Out of range: too large (1e999) is reported as non-finite rather than as malformed; too small
+    // (1e-400) is the nearest double, 0 or subnormal, as strtod gives it (it is a finite number).
     if (ec == std::errc::result_out_of_range && ptr == last) {
-      value = (*first == '-') ? -HUGE_VAL : HUGE_VAL;
+      value = std::strtod(std::string(first, last).c_str(), nullptr);
     } else if (ec != std::errc() || ptr != last || first == last) {
       if (bad_token) *bad_token = std::string(line.substr(i, end - i));
       return false;

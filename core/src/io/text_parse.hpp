@@ -10,6 +10,10 @@
 namespace sextant::detail {
 
 /// The whole file as bytes; InputError when it cannot be opened.
+/// InputError unless `file` is a regular file (after symlinks): a folder, a device such as
+/// /dev/zero (which never ends), a pipe or a symlink loop is named as such.
+void require_regular_file(const std::filesystem::path& file);
+
 std::string read_file_bytes(const std::filesystem::path& file);
 
 /// Calls f(line, line_number) for every line (without '\n' or '\r'); line numbers start at 1.

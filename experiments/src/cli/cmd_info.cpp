@@ -69,7 +69,8 @@ void add_info_command(CLI::App& app, int& exit_code) {
       ->required();
   cmd->callback([&exit_code, path] {
     exit_code = guarded([path] {
-      if (std::filesystem::is_directory(*path)) {
+      std::error_code ec;  // a symlink loop: the reader names it
+      if (std::filesystem::is_directory(*path, ec)) {
         describe_dataset(*path);
       } else {
         describe_cloud(*path);
