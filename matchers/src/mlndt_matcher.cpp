@@ -125,11 +125,14 @@ MlndtMatcher::MlndtMatcher(MlndtSettings settings) : settings_(std::move(setting
 
 void MlndtMatcher::set_reference(const PointCloud& reference) {
   layers_ = build_layer_pyramid(reference, settings_.pyramid);  // splitting and generative processes
+  reference_points_ = reference.size();
 }
 
 RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Isometry3d& initial) {
   if (layers_.empty() || layers_.back().empty())
-    return not_started(Termination::kEmptyInput, input.size(), initial);
+    return not_started(
+        layers_.empty() ? Termination::kEmptyInput : empty_model_reason(reference_points_, layers_.back()),
+        input.size(), initial);
   const LayerObjective objective(layers_, settings_, input);
   if (!settings_.wide_basin.enabled) {
     if (!settings_.refine_first || settings_.start_layer == settings_.pyramid.layers)

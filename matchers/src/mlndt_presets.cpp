@@ -64,8 +64,8 @@ YAML::Node mlndt_preset(const std::string& name, const std::string& file) {
   throw InputError(file, "", "key 'preset': unknown preset '" + name + "' (known: " + known_names() + ")");
 }
 
-YAML::Node with_wide_basin(const std::string& matcher, const YAML::Node& settings) {
-  if (matcher != "mlndt" && matcher != "fbmlndt") return YAML::Node();
+std::optional<YAML::Node> with_wide_basin(const std::string& matcher, const YAML::Node& settings) {
+  if (matcher != "mlndt" && matcher != "fbmlndt") return std::nullopt;
   YAML::Node wide = settings.IsMap() ? YAML::Clone(settings) : YAML::Node(YAML::NodeType::Map);
   if (!wide["wide_basin"].IsDefined()) wide["wide_basin"] = YAML::Node(YAML::NodeType::Map);
   return wide;

@@ -291,6 +291,11 @@ constexpr std::size_t kMaxCells = std::size_t{1} << 27;  // NdtGrid::build's def
 
 }  // namespace
 
+Termination empty_model_reason(std::size_t reference_points, const NdtGrid& grid) {
+  if (reference_points == 0) return Termination::kEmptyInput;
+  return grid.too_large() ? Termination::kGridTooLarge : Termination::kNoGaussians;
+}
+
 Bounds robust_bounds(const PointCloud& cloud, double quantile) {
   const Bounds box = cloud.bounds();
   if (!(quantile > 0.0) || cloud.size() < 2) return box;

@@ -77,11 +77,12 @@ void NdtMatcher::set_reference(const PointCloud& reference) {
   double edge = settings_.cell_size;
   if (edge <= 0.0) edge = layer_geometry(reference.bounds(), settings_.volume_divisions, 1).cell_edge;
   grid_ = NdtGrid::build_over_bounds(reference, edge, settings_.cells);
+  reference_points_ = reference.size();
   params_ = GaussianScoreParams::from_outlier_ratio(settings_.outlier_ratio, edge);
 }
 
 RegistrationResult NdtMatcher::align(const PointCloud& input, const Eigen::Isometry3d& initial) {
-  if (grid_.empty()) return not_started(Termination::kEmptyInput, input.size(), initial);
+  if (grid_.empty()) return not_started(empty_model_reason(reference_points_, grid_), input.size(), initial);
   const GaussianObjective objective(grid_, params_, settings_.trilinear, settings_.threads, input);
   return optimize(objective, initial, settings_.optimizer);
 }

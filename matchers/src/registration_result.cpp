@@ -17,6 +17,8 @@ std::string to_string(Termination why) {
     case Termination::kEmptyInput: return "empty_input";
     case Termination::kSolverFailure: return "solver_failure";
     case Termination::kDiverged: return "diverged";
+    case Termination::kGridTooLarge: return "grid_too_large";
+    case Termination::kNoGaussians: return "no_gaussians";
   }
   return "unknown";
 }

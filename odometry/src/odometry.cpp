@@ -87,7 +87,10 @@ Eigen::Isometry3d start_pose(const Dataset& dataset, const OdometrySettings& s, 
 /// The matcher and sampler of one worker, and the wide-basin matcher it recovers with.
 struct Worker {
   std::unique_ptr<Matcher> matcher;
-  std::unique_ptr<Matcher> wide_basin;  ///< null: the matcher has no wide basin, or recovery is off
+  /// What recovers an untrusted step: the matcher with its wide basin (mlndt, fbmlndt), else the
+  /// matcher itself from the other starts; null when recovery is off.
+  std::unique_ptr<Matcher> recovery;
+  bool wide_basin = false;
   std::unique_ptr<Sampler> sampler;
   const OdometrySettings& settings;
 
@@ -95,9 +98,11 @@ struct Worker {
       : matcher(make_matcher(s.method.matcher, s.method.settings, "<odometry matcher>")),
         sampler(make_sampler(s.method.sampler, s.method.sampler_settings, "<odometry sampler>")),
         settings(s) {
-    if (const YAML::Node wide = with_wide_basin(s.method.matcher, s.method.settings);
-        s.recover && wide.IsDefined())
-      wide_basin = make_matcher(s.method.matcher, wide, "<odometry matcher, wide basin>");
+    if (!s.recover) return;
+    const std::optional<YAML::Node> wide = with_wide_basin(s.method.matcher, s.method.settings);
+    wide_basin = wide.has_value();
+    recovery =
+        make_matcher(s.method.matcher, wide ? *wide : s.method.settings, "<odometry matcher, recovery>");
   }
 
   /// The first registration from `guess`, assessed on its own (absolute checks).
@@ -119,15 +124,16 @@ struct Worker {
                const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed) const {
     if (step.trusted() || !settings.recover || starts.empty()) return;
     double seconds = step.seconds;
-    if (wide_basin) {
+    if (recovery) {
       for (const Eigen::Isometry3d& start : starts) {
-        Rng rng(seed);  // the same sample
-        const PairMatch w = match_pair(*wide_basin, *sampler, reference, input, start, rng, settings.quality);
+        if (!wide_basin && start.isApprox(step.guess, 1e-12)) continue;  // tried already
+        Rng rng(seed);                                                   // the same sample
+        const PairMatch w = match_pair(*recovery, *sampler, reference, input, start, rng, settings.quality);
         OdometryStep again = to_step(w, reference, step.guess);
         seconds += again.seconds;
         if (again.trusted()) {
           again.first_trust = step.first_trust;
-          again.recovery = "wide_basin";
+          again.recovery = wide_basin ? "wide_basin" : "restart";
           again.seconds = seconds;
           step = std::move(again);
           return;
@@ -311,8 +317,9 @@ std::size_t OdometryResult::untrusted() const {
 }
 
 std::size_t OdometryResult::recovered() const {
-  return static_cast<std::size_t>(std::count_if(
-      steps.begin(), steps.end(), [](const OdometryStep& s) { return s.recovery == "wide_basin"; }));
+  return static_cast<std::size_t>(std::count_if(steps.begin(), steps.end(), [](const OdometryStep& s) {
+    return s.recovery == "wide_basin" || s.recovery == "restart";
+  }));
 }
 
 OdometryResult run_odometry(const Dataset& dataset, const OdometrySettings& settings, std::size_t first,

@@ -209,3 +209,29 @@ TEST(FbmlndtVerify, FollowsRefineFirstUnlessGiven) {
 
 }  // namespace
 }  // namespace sextant
+
+namespace sextant {
+namespace {
+
+// Issue 23: a grid of too many cells and a reference without a single Gaussian both said
+// empty_input; each now names its cause.
+TEST(EmptyReferenceModel, NamesTheCause) {
+  PointCloud yard;
+  for (int i = 0; i < 40; ++i)
+    for (int j = 0; j < 40; ++j)
+      yard.push_back({static_cast<float>(i) * 0.5f, static_cast<float>(j) * 0.5f,
+                      static_cast<float>((i * j) % 7) * 0.1f});
+  const auto ndt = make_matcher("ndt", YAML::Load("{cell_size: 0.001}"));
+  ndt->set_reference(yard);
+  EXPECT_EQ(ndt->align(yard, Eigen::Isometry3d::Identity()).why, Termination::kGridTooLarge);
+  MlndtMatcher mlndt;
+  mlndt.set_reference(PointCloud({{0, 0, 0}, {5, 0, 0}, {0, 5, 0}, {0, 0, 5}}));  // no cell with 5 points
+  const RegistrationResult sparse = mlndt.align(yard, Eigen::Isometry3d::Identity());
+  EXPECT_EQ(sparse.why, Termination::kNoGaussians);
+  EXPECT_EQ(to_string(sparse.why), "no_gaussians");
+  mlndt.set_reference(PointCloud());
+  EXPECT_EQ(mlndt.align(yard, Eigen::Isometry3d::Identity()).why, Termination::kEmptyInput);
+}
+
+}  // namespace
+}  // namespace sextant

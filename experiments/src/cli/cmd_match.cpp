@@ -193,17 +193,16 @@ int run_match(MatchOptions o) {
   const PointCloud input = read_cloud(o.input);
   // Without a guess the wide basin searches around the identity; with one, the guess is refined and
   // the wide basin is the recovery of an untrusted result.
-  const YAML::Node wide = with_wide_basin(o.method, config.matcher);
+  const std::optional<YAML::Node> wide = with_wide_basin(o.method, config.matcher);
   const bool has_own_wide_basin = config.matcher.IsMap() && config.matcher["wide_basin"].IsDefined();
-  const bool search_first = o.init.empty() && !o.no_wide_basin && wide.IsDefined();
-  auto matcher = make_matcher(o.method, search_first ? wide : config.matcher, where);
+  const bool search_first = o.init.empty() && !o.no_wide_basin && wide.has_value();
+  auto matcher = make_matcher(o.method, search_first ? *wide : config.matcher, where);
   Rng rng(o.seed);
   PairMatch m = match_pair(*matcher, *sampler, reference, input, initial, rng);
   std::string search = has_own_wide_basin || search_first ? "wide basin" : "from the guess";
   if (search_first) search += " (no --init; --no-wide-basin: off)";
-  if (!m.result.quality.trusted() && !search_first && !has_own_wide_basin && !o.no_wide_basin &&
-      wide.IsDefined()) {
-    const auto wide_matcher = make_matcher(o.method, wide, where);
+  if (!m.result.quality.trusted() && !search_first && !has_own_wide_basin && !o.no_wide_basin && wide) {
+    const auto wide_matcher = make_matcher(o.method, *wide, where);
     Rng again(o.seed);
     PairMatch w = match_pair(*wide_matcher, *sampler, reference, input, initial, again);
     const std::string first = to_string(m.result.quality.trust);

@@ -67,6 +67,7 @@ class MlndtMatcher final : public Matcher {
  private:
   MlndtSettings settings_;
   std::vector<NdtGrid> layers_;
+  std::size_t reference_points_ = 0;
 };
 
 std::unique_ptr<Matcher> create_mlndt_matcher(const YAML::Node& settings, const std::string& file);

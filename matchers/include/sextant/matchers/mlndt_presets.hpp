@@ -12,6 +12,7 @@
 //             thesis' nineteen says `preset: thesis` and overrides what it deliberately changes,
 //             which its report section names)
 //   outdoor — large outdoor scans: the default with n = 6 (finest cells ≈ 0.6–1 m on 100 m scenes)
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,8 +44,8 @@ YAML::Node mlndt_preset(const std::string& name, const std::string& file = "<set
 std::vector<std::string> mlndt_preset_names();
 
 /// `settings` (mlndt or fbmlndt) with the wide basin switched on (`wide_basin: {}` unless it has its
-/// own); a null node for a matcher without a wide basin.
-YAML::Node with_wide_basin(const std::string& matcher, const YAML::Node& settings);
+/// own); nothing for a matcher without a wide basin.
+std::optional<YAML::Node> with_wide_basin(const std::string& matcher, const YAML::Node& settings);
 
 /// `settings` with its `preset:` key (if any) expanded: the preset's keys, overridden by the others.
 YAML::Node expand_mlndt_preset(const YAML::Node& settings, const std::string& file);

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "sextant/core/point_cloud.hpp"
+#include "sextant/matchers/registration_result.hpp"
 
 namespace sextant {
 
@@ -145,6 +146,11 @@ struct LayerPyramidSettings {
   CellStatsSettings cells;
   bool valid(std::string* why) const;
 };
+
+/// Why a reference model has nothing to match against: kEmptyInput (no reference points),
+/// kGridTooLarge (the cells would be too many) or kNoGaussians (no cell with enough spread points:
+/// cells too small for the point density, or every cell flat to a blob).
+Termination empty_model_reason(std::size_t reference_points, const NdtGrid& grid);
 
 /// Layers 1..n of Table 3.1 ("splitting" and "generative" processes) over robust_bounds(reference,
 /// settings.bounds_quantile) (points outside it are not in any cell); element 0 is layer 1. With

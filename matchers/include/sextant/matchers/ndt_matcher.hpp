@@ -41,6 +41,7 @@ class NdtMatcher final : public Matcher {
  private:
   NdtSettings settings_;
   NdtGrid grid_;
+  std::size_t reference_points_ = 0;
   GaussianScoreParams params_;
 };
 

@@ -19,6 +19,8 @@ enum class Termination {
   kEmptyInput,             ///< empty reference or input cloud
   kSolverFailure,          ///< linear solve or line search failed
   kDiverged,               ///< the estimate left the plausible region
+  kGridTooLarge,           ///< the reference's grid would exceed the cell cap (cells too small for it)
+  kNoGaussians,            ///< no cell of the reference holds enough spread points for a Gaussian
 };
 
 std::string to_string(Termination why);

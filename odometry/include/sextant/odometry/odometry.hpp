@@ -102,7 +102,8 @@ struct OdometryStep {
   /// The assessment of the registration chained (after any recovery); trust kOk = believed.
   RegistrationQuality quality;
   /// How the step was recovered: "" (not needed, or recovery off), "wide_basin" (the first
-  /// registration was not trusted; a wide-basin one is), "guess" / "last_motion" (no trusted
+  /// registration was not trusted; a wide-basin one is), "restart" (a matcher without a wide
+  /// basin, registered again from another start, is), "guess" / "last_motion" (no trusted
   /// registration: the odometry guess, or the last trusted motion of a constant-velocity run, is
   /// chained and the step stays untrusted).
   std::string recovery;
@@ -114,7 +115,7 @@ struct OdometryResult {
   std::vector<Eigen::Isometry3d> poses;  ///< world ← scan first + i, i = 0 … count − 1
   std::vector<OdometryStep> steps;  ///< count − 1 registrations; steps[i] links poses[i] and poses[i + 1]
   std::size_t untrusted() const;    ///< steps whose chained motion is not trusted
-  std::size_t recovered() const;    ///< steps recovered by the wide basin
+  std::size_t recovered() const;    ///< steps recovered (wide basin, or restart)
 };
 
 /// Called after each finished registration with (done, total); never concurrently.
