@@ -232,3 +232,37 @@ TEST(BadInput, ByteOrderMarkUnderflowDevicesAndSymlinkLoops) {
 
 }  // namespace
 }  // namespace sextant
+
+namespace sextant {
+namespace {
+
+bool has_warning(const ScanLoadReport& report, const std::string& part) {
+  for (const std::string& w : report.warnings)
+    if (w.find(part) != std::string::npos) return true;
+  return false;
+}
+
+// Issue 23: a .bin of 12-byte points whose size is a multiple of 48 read silently as 16-byte
+// points; ascii PLY values beyond the properties and rows beyond the counts were ignored silently.
+TEST(BadInput, DoubtfulLayoutsAndIgnoredDataAreCounted) {
+  TempDir dir;
+  PointCloud twelve;
+  for (int i = 0; i < 4; ++i) twelve.push_back({-1.0f - i, -2.0f, -3.0f});
+  write_xyz32(dir / "points.bin", twelve);  // 48 bytes: also 3 records of 16 bytes
+  ScanLoadReport report;
+  EXPECT_EQ(read_cloud(dir / "points.bin", &report).size(), 3u);
+  EXPECT_TRUE(has_warning(report, "negative fourth value, which is no intensity")) << report.warnings.size();
+  write_kitti_velodyne(dir / "real.bin", twelve);  // x y z and a 0 intensity
+  read_cloud(dir / "real.bin", &report);
+  EXPECT_TRUE(report.warnings.empty());
+
+  write_text(dir / "extra.ply",
+             "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\n"
+             "end_header\n1 2 3 9\n4 5 6\n7 8 9\n");
+  EXPECT_EQ(read_cloud(dir / "extra.ply", &report).size(), 2u);
+  EXPECT_TRUE(has_warning(report, "1 vertex rows have more values than the 3 declared properties"));
+  EXPECT_TRUE(has_warning(report, "1 rows after the header's element counts, ignored"));
+}
+
+}  // namespace
+}  // namespace sextant

@@ -37,8 +37,10 @@ PointCloud read_float_records(const std::filesystem::path& file, std::size_t flo
   cloud.points().reserve(n);
   if (floats_per_point == 4) cloud.intensity().reserve(n);
   float v[4] = {0, 0, 0, 0};
+  std::size_t negative_intensity = 0;
   for (std::size_t i = 0; i < n; ++i) {
     std::memcpy(v, bytes.data() + i * record, record);
+    if (floats_per_point == 4 && v[3] < 0.0f) ++negative_intensity;
     const Eigen::Vector3f p(v[0], v[1], v[2]);
     if (!p.allFinite() || (floats_per_point == 4 && !std::isfinite(v[3]))) {
       ++local.non_finite_dropped;
@@ -50,6 +52,12 @@ PointCloud read_float_records(const std::filesystem::path& file, std::size_t flo
       cloud.push_back(p);
     }
   }
+  // A file of 12-byte points whose size is a multiple of 48 also reads as 16-byte points: its
+  // "intensity" is then a coordinate, often negative, which no lidar's intensity is.
+  if (negative_intensity > 0)
+    local.warnings.push_back(std::to_string(negative_intensity) + " of " + std::to_string(n) +
+                             " points have a negative fourth value, which is no intensity: is this a "
+                             "file of 12-byte x y z points (rename it .xyz32.bin)?");
   if (report) *report = local;
   return cloud;
 }

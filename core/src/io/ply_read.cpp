@@ -199,16 +199,26 @@ PointCloud read_ply(const std::filesystem::path& file, ScanLoadReport* report) {
   for (const PlyProperty& p : v.properties) {
     if (p.is_list) fail(file, "", "list properties in ascii vertex rows are not supported");
   }
-  // ascii: one row per non-blank line, elements in header order; rows of earlier elements skipped.
+  // ascii: one row per non-blank line, elements in header order; rows of other elements skipped.
+  // Values beyond the declared properties and rows beyond the declared counts are counted.
+  const std::size_t elements = h.elements.size();
   std::size_t e = 0;
   std::uint64_t r = 0;
+  std::uint64_t beyond = 0, wide_rows = 0;
   std::string bad;
-  for_each_line(std::string_view(bytes).substr(h.data_offset), [&](std::string_view line, long n) {
-    while (e <= vertex && r == h.elements[e].count) {
+  const auto next_element = [&] {
+    while (e < elements && r == h.elements[e].count) {
       ++e;
       r = 0;
     }
-    if (e > vertex || is_blank(line)) return;
+  };
+  for_each_line(std::string_view(bytes).substr(h.data_offset), [&](std::string_view line, long n) {
+    next_element();
+    if (is_blank(line)) return;
+    if (e == elements) {
+      ++beyond;
+      return;
+    }
     ++r;
     if (e != vertex) return;
     const long number = h.data_line + n;
@@ -218,14 +228,19 @@ PointCloud read_ply(const std::filesystem::path& file, ScanLoadReport* report) {
            "expected " + std::to_string(v.properties.size()) + " values, found " +
                std::to_string(values.size()));
     }
+    if (values.size() > v.properties.size()) ++wide_rows;
     add();
   });
-  while (e <= vertex && r == h.elements[e].count) {
-    ++e;
-    r = 0;
-  }
+  next_element();
   if (e <= vertex) fail(file, "", "truncated: the data ends before the header's element counts");
-  return sink.take(report);
+  PointCloud cloud = sink.take(report);
+  if (report && wide_rows > 0)
+    report->warnings.push_back(std::to_string(wide_rows) + " vertex rows have more values than the " +
+                               std::to_string(v.properties.size()) +
+                               " declared properties (the rest ignored)");
+  if (report && beyond > 0)
+    report->warnings.push_back(std::to_string(beyond) + " rows after the header's element counts, ignored");
+  return cloud;
 }
 
 }  // namespace sextant::detail

@@ -33,6 +33,7 @@ void describe_cloud(const std::filesystem::path& file) {
             << "bounds min:  " << vector_text(b.min) << " m\n"
             << "bounds max:  " << vector_text(b.max) << " m\n"
             << "extent:      " << vector_text(b.extent()) << " m\n";
+  for (const std::string& warning : report.warnings) std::cout << "warning:     " << warning << "\n";
 }
 
 void describe_dataset(const std::filesystem::path& folder) {

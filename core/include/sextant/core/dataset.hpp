@@ -33,6 +33,9 @@ struct ScanLoadReport {
   std::size_t non_finite_dropped = 0;  ///< NaN/Inf coordinates
   std::size_t no_return_dropped = 0;   ///< scanner "no return" values (uos 3276 cm)
   std::size_t header_lines_skipped = 0;
+  /// What the reader doubts without refusing the file (`sextant info` prints them), e.g. a `.bin`
+  /// whose fourth column does not look like intensity.
+  std::vector<std::string> warnings;
 };
 
 class Dataset {
