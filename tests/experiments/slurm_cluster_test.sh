@@ -50,6 +50,7 @@ work="$tmp/work"
 mkdir -p "$work/build/experiments"
 ln -s "$(realpath "$sextant")" "$work/build/experiments/sextant"
 ln -s "$source_dir/experiments" "$work/experiments"
+ln -s "$source_dir/data" "$work/data"
 cd "$work"
 exp=e04_init_vs_layer
 
@@ -69,9 +70,11 @@ job_id() {  # job_id array|merge <output>
   sed -n "s/^submitted: $1 job \([0-9]*\).*/\1/p" <<<"$2"
 }
 # Wall times are measured, not computed: every value, series or column named *seconds* is masked.
-masked_jsonl() { sed -E 's/"([A-Za-z0-9_]*seconds[A-Za-z0-9_]*)": (\[[^]]*\]|[^,}]*)/"\1": T/g' "$1" | sort; }
+# Timings (…seconds…, …_ms…, E21's registration_extra, a ratio of two times) differ run to run.
+timing='seconds|_ms|registration_extra'
+masked_jsonl() { sed -E 's/"([A-Za-z0-9_]*('"$timing"')[A-Za-z0-9_]*)": (\[[^]]*\]|[^,}]*)/"\1": T/g' "$1" | sort; }
 masked_csv() {
-  awk -F, 'NR == 1 {for (i = 1; i <= NF; i++) t[i] = ($i ~ /seconds/)} {for (i = 1; i <= NF; i++) if (NR > 1 && t[i]) $i = "T"} 1' OFS=, "$1"
+  awk -F, -v re="$timing" 'NR == 1 {for (i = 1; i <= NF; i++) t[i] = ($i ~ re)} {for (i = 1; i <= NF; i++) if (NR > 1 && t[i]) $i = "T"} 1' OFS=, "$1"
 }
 check_equal_to_single() {
   local merged="results/$exp" single="single/$exp"
@@ -128,4 +131,30 @@ wait_gone "$array3,$merge3"
 [ "$(shard_sums 1 3 4)" = "$before" ] || fail "a finished shard was redone"
 check_equal_to_single
 echo "slurm_cluster_test: deleted shard re-run alone, merged = single-process run"
+# `slurm reproduce --quick`: every experiment as one array plus the merge job; the merged results
+# equal a single-process `reproduce --quick` run for run (timings masked), and the report is written.
+"$sextant" reproduce --quick --jobs 2 --no-progress --experiments experiments --results single_all \
+  --report single_report >/dev/null || fail "single-process reproduce --quick"
+out=$("$sextant" slurm reproduce --quick -n 3 --experiments experiments --results all --report all_report --submit) ||
+  fail "slurm reproduce: $out"
+echo "$out"
+array4=$(job_id array "$out")
+merge4=$(job_id merge "$out")
+[[ -n $array4 && -n $merge4 ]] || fail "slurm reproduce: no job ids in the output"
+wait_gone "$array4,$merge4"
+experiments=0
+for single in single_all/*/; do
+  name=$(basename "$single")
+  [ -f "$single/experiment.yaml" ] || continue
+  experiments=$((experiments + 1))
+  [ -f "all/$name/runs.jsonl" ] || fail "slurm reproduce: no merged results for $name"
+  cmp "all/$name/experiment.yaml" "$single/experiment.yaml" || fail "slurm reproduce: $name's experiment.yaml differs"
+  cmp <(masked_jsonl "all/$name/runs.jsonl") <(masked_jsonl "$single/runs.jsonl") ||
+    fail "slurm reproduce: $name's runs.jsonl differs from the single-process run (timings masked)"
+  cmp <(masked_csv "all/$name/runs.csv") <(masked_csv "$single/runs.csv") ||
+    fail "slurm reproduce: $name's runs.csv differs (timings masked)"
+  grep -q "<section id=\"$name\">" all_report/index.html || fail "slurm reproduce: no report section for $name"
+done
+((experiments >= 22)) || fail "slurm reproduce: only $experiments experiments compared"
+echo "slurm_cluster_test: slurm reproduce --quick merged = single-process reproduce --quick ($experiments experiments)"
 echo "slurm_cluster_test: passed in $((SECONDS - start_time)) s"
