@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sextant/core/pose.hpp"
+#include "sextant/core/units.hpp"
 
 namespace sextant {
 
@@ -14,6 +15,11 @@ bool RangeBearingSimSettings::valid(std::string* why) const {
     return *why = "observe_every must be >= dt, max_range > 0", false;
   if (!(sigma_speed > 0 && sigma_steer > 0 && sigma_range > 0 && sigma_bearing > 0))
     return *why = "noise standard deviations must be > 0", false;
+  // Physical bounds: a noise as large as what it measures leaves nothing to estimate.
+  if (!(sigma_range < max_range)) return *why = "sigma_range must be < max_range (the sensor's reach)", false;
+  if (!(sigma_bearing < kPi / 2)) return *why = "sigma_bearing must be < π/2 rad (90°)", false;
+  if (!(sigma_speed < 10 * speed)) return *why = "sigma_speed must be < 10 × speed", false;
+  if (!(sigma_steer < kPi / 2)) return *why = "sigma_steer must be < π/2 rad (90°)", false;
   if (!(waypoint_radius > 0) || max_steps < 1) return *why = "waypoint_radius > 0 and max_steps >= 1", false;
   return true;
 }

@@ -41,6 +41,8 @@ bool NdtSettings::valid(std::string* why) const {
   const char* problem = nullptr;
   if (!(cell_size >= 0.0) || !std::isfinite(cell_size))
     problem = "cell_size must be ≥ 0 metres (0: from the volume)";
+  else if (cell_size > kMaxNdtCellSize)
+    problem = "cell_size must be ≤ 1000 m: a cell that holds a whole scan leaves one Gaussian to match";
   else if (volume_divisions < 1)
     problem = "volume_divisions must be at least 1";
   else if (!(outlier_ratio > 0.0 && outlier_ratio < 1.0))

@@ -101,6 +101,26 @@ TEST(E15, QuickProfileRunsPairedFiltersAndComparesThem) {
   EXPECT_NE(summary.find("(95 %, n = 4)"), std::string::npos) << summary;
 }
 
+// Issue 23: a Monte Carlo run whose filter maps no landmark was an "ok" row; it is a failed run.
+TEST(SimulationKind, ARunThatMapsNothingIsAFailedRun) {
+  TempDir tmp;
+  test::write_text(tmp / "blind.yaml",
+                   "name: blind\nkind: simulation\nseed: 1\nrepetitions: 1\n"
+                   "methods: [{name: ukf, filter: ukf}, {name: r, filter: rspkf}]\n"
+                   "params: {model: range_bearing, landmarks: 5, side: 50, baseline: ukf, proposed: r,\n"
+                   "  sim: {max_range: 0.01, sigma_range: 0.001, max_steps: 50}}\n");
+  RunnerOptions o;
+  o.results_root = tmp / "results";
+  o.jobs = 1;
+  o.progress = false;
+  const RunnerSummary s = run_experiment(tmp / "blind.yaml", o);
+  EXPECT_EQ(s.failed, 2u);
+  for (const auto& r : read_rows(s.folder / kRunsJsonl).rows) {
+    EXPECT_FALSE(r.ok);
+    EXPECT_NE(r.error.find("mapped no landmark of 5"), std::string::npos) << r.error;
+  }
+}
+
 TEST(SimulationKind, RejectsAnUnknownModelAndBadKeys) {
   const auto parse = [](const std::string& text) {
     const ExperimentConfig c = parse_experiment_config(YAML::Load(text), "x.yaml", false);

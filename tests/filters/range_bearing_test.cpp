@@ -87,3 +87,25 @@ TEST(RangeBearing, UkfLosesPositiveDefinitenessWhenP0IsScaledUp) {
 
 }  // namespace
 }  // namespace sextant
+
+namespace sextant {
+namespace {
+
+// Issue 23: sigma_range 1e300 ran "ok" with nothing mapped. Noises get physical bounds.
+TEST(RangeBearing, NoisesAsLargeAsWhatTheyMeasureAreRefused) {
+  RangeBearingSimSettings s;
+  std::string why;
+  EXPECT_TRUE(s.valid(&why)) << why;
+  s.sigma_range = 1e300;
+  EXPECT_FALSE(s.valid(&why));
+  EXPECT_NE(why.find("sigma_range must be < max_range"), std::string::npos) << why;
+  s = RangeBearingSimSettings{};
+  s.sigma_bearing = 4.0;
+  EXPECT_FALSE(s.valid(&why));
+  s = RangeBearingSimSettings{};
+  s.sigma_speed = 1e9;
+  EXPECT_FALSE(s.valid(&why));
+}
+
+}  // namespace
+}  // namespace sextant

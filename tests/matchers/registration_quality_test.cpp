@@ -7,6 +7,7 @@
 #include <string>
 
 #include "pose_errors.hpp"
+#include "sextant/core/error.hpp"
 #include "sextant/core/io/cloud_io.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/matchers/feature_based_sampler.hpp"
@@ -231,6 +232,22 @@ TEST(EmptyReferenceModel, NamesTheCause) {
   EXPECT_EQ(to_string(sparse.why), "no_gaussians");
   mlndt.set_reference(PointCloud());
   EXPECT_EQ(mlndt.align(yard, Eigen::Isometry3d::Identity()).why, Termination::kEmptyInput);
+}
+
+}  // namespace
+}  // namespace sextant
+
+namespace sextant {
+namespace {
+
+TEST(SettingsBounds, AbsurdButFiniteSettingsAreRefused) {  // issue 23
+  try {
+    (void)make_matcher("ndt", YAML::Load("{cell_size: 1.0e30}"), "t.yaml");
+    ADD_FAILURE() << "cell_size 1e30 accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("cell_size must be ≤ 1000 m"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW((void)make_matcher("ndt", YAML::Load("{cell_size: 2.0}"), "t.yaml"));
 }
 
 }  // namespace

@@ -18,6 +18,8 @@
 // The filters use Q = diag(σ_V², σ_γ²) and R = diag(σ_r², σ_b²) of the simulated noise (the
 // thesis writes Q = R = diag(1, π/180): the σ's of 1 m/s, 1°, 1 m and 1°).
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "registration_report.hpp"
 #include "sextant/core/error.hpp"
@@ -135,6 +137,12 @@ class RangeBearingMonteCarlo : public SimulationModel {
     filter->initialize(Eigen::VectorXd::Zero(3), p.initial_sigma.cwiseAbs2().asDiagonal().toDenseMatrix());
     const SlamRunResult result =
         run_slam(*filter, sim.steps, p.sim.control_noise(), p.sim.observation_noise());
+    // A SLAM run that maps nothing, or whose filter fails most steps, is a failed run, not a result.
+    if (result.landmark_index.empty())
+      throw std::runtime_error("the filter mapped no landmark of " + std::to_string(p.landmarks));
+    if (2 * result.failed_steps > result.steps.size())
+      throw std::runtime_error("the filter failed " + std::to_string(result.failed_steps) + " of " +
+                               std::to_string(result.steps.size()) + " steps");
 
     // Dead reckoning of the same noisy controls (eq. 5.7 without noise terms).
     Eigen::VectorXd odo = Eigen::VectorXd::Zero(3);

@@ -21,10 +21,10 @@ struct RangeBearingSimSettings {
   double max_steer_rate = 0.3491;   ///< steering rate limit [rad/s] (20°/s)
   double observe_every = 2.5;       ///< time between observations [s]
   double max_range = 30.0;          ///< sensor range [m]
-  double sigma_speed = 1.0;         ///< control noise on V [m/s]
-  double sigma_steer = 0.017453;    ///< control noise on the steering angle [rad] (1°)
-  double sigma_range = 1.0;         ///< range noise [m]
-  double sigma_bearing = 0.017453;  ///< bearing noise [rad] (1°)
+  double sigma_speed = 1.0;         ///< control noise on V [m/s, (0, 10·speed)]
+  double sigma_steer = 0.017453;    ///< control noise on the steering angle [rad (1°), (0, π/2)]
+  double sigma_range = 1.0;         ///< range noise [m, (0, max_range)]
+  double sigma_bearing = 0.017453;  ///< bearing noise [rad (1°), (0, π/2)]
   double waypoint_radius = 2.0;     ///< a waypoint is reached within this distance [m]
   int max_steps = 2000;             ///< stop after this many controls even if waypoints remain
   bool valid(std::string* why) const;

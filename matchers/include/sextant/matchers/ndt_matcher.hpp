@@ -13,8 +13,11 @@
 
 namespace sextant {
 
+/// The largest cell edge `ndt` accepts [m] (1e30 used to "converge" 140 m / 157° off).
+inline constexpr double kMaxNdtCellSize = 1000.0;
+
 struct NdtSettings {
-  double cell_size = 0.0;       ///< cell edge [m]; 0 → from volume_divisions
+  double cell_size = 0.0;       ///< cell edge [m, ≤ kMaxNdtCellSize]; 0 → from volume_divisions
   int volume_divisions = 64;    ///< cell volume = bounding volume / this (64 = ML-NDT layer 2) [count]
   double outlier_ratio = 0.55;  ///< Magnusson's p_outlier in (0, 1)
   bool trilinear = false;       ///< score against the 8 surrounding cells
