@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The real-sequence benchmark (issue 22): `sextant odometry` with no options over the built-in
 # campus and the two trustworthy stretches of the shared MulRan Riverside02 excerpt (0–107 and
-# 116–165; its reference is wrong in between, see data/README.md), then the same scans with PCL's
-# GICP (`--method pcl_gicp`) as the baseline row. Prints one table: ATE, RPE, KITTI drift, time per
-# scan and the trust counts (untrusted steps, steps the wide basin recovered).
+# 116–165; its reference is wrong in between, see ../shared/data/README.md), then the same scans
+# with PCL's GICP (`--method pcl_gicp`, without Sextant's recovery) as the baseline row. Prints one
+# table: ATE, RPE, KITTI drift, time per scan and the trust counts (untrusted steps, recovered steps).
 #
 #   bench/sequences.sh [build/experiments/sextant] [path/to/mulran_riverside02] [output folder]
 #
@@ -36,7 +36,7 @@ run() {  # run <id> <label> <method> <dataset> [odometry options...]
   awk -v label="$label" -v method="$method" -v steps="$steps" -v secs="$(top "$m" seconds)" \
       -v ate="$(field "$m" estimate ate_m)" -v rpe="$(field "$m" estimate rpe_m)" \
       -v rpedeg="$(field "$m" estimate rpe_deg)" -v drift="$(field "$m" estimate drift_percent)" \
-      -v untrusted="$(top "$m" untrusted)" -v recovered="$(top "$m" recovered_by_wide_basin)" \
+      -v untrusted="$(top "$m" untrusted)" -v recovered="$(top "$m" recovered)" \
       -v nc="$(top "$m" not_converged)" 'BEGIN {
         printf "| %s | %s | %.3f | %.3f / %.2f | %.2f | %.1f | %d | %d | %d |\n", label, method, ate, rpe,
                rpedeg, drift, 1000 * secs / steps, nc, untrusted, recovered }'
@@ -44,9 +44,12 @@ run() {  # run <id> <label> <method> <dataset> [odometry options...]
 
 echo "| sequence | method | ATE [m] | RPE per step [m / °] | KITTI drift [%] | ms per scan | not converged | untrusted | recovered |"
 echo "|---|---|---|---|---|---|---|---|---|"
+# The baseline is the peer as it is: no recovery (its trust is still counted).
 for method in mlndt pcl_gicp; do
-  run campus "campus (468 scans, odometry guess)" "$method" campus
-  run mulran0 "MulRan 0–107" "$method" "$mulran" --first 0 --scans 108
-  run mulran116 "MulRan 116–165" "$method" "$mulran" --first 116 --scans 50
+  extra=()
+  [ "$method" = mlndt ] || extra=(--no-recover)
+  run campus "campus (468 scans, odometry guess)" "$method" campus "${extra[@]}"
+  run mulran0 "MulRan 0–107" "$method" "$mulran" --first 0 --scans 108 "${extra[@]}"
+  run mulran116 "MulRan 116–165" "$method" "$mulran" --first 116 --scans 50 "${extra[@]}"
 done
 echo "(outputs in $out)"

@@ -157,7 +157,7 @@ void write_metrics_json(const std::filesystem::path& file, const std::optional<T
                         const OdometryCounts& counts, double seconds) {
   std::ostringstream out;
   out << "{\"scans\": " << scans << ", \"not_converged\": " << counts.not_converged
-      << ", \"untrusted\": " << counts.untrusted << ", \"recovered_by_wide_basin\": " << counts.recovered
+      << ", \"untrusted\": " << counts.untrusted << ", \"recovered\": " << counts.recovered
       << ", \"seconds\": " << json_number(seconds)
       << ", \"estimate\": " << (estimate ? accuracy_json(*estimate) : "null")
       << ", \"odometry\": " << (odometry ? accuracy_json(*odometry) : "null") << "}\n";
