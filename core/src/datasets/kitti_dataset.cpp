@@ -1,6 +1,7 @@
 // A KITTI odometry sequence folder.
 #include <stdexcept>
 
+#include "listed_scans_dataset.hpp"
 #include "scan_files.hpp"
 #include "sextant/core/dataset.hpp"
 #include "sextant/core/error.hpp"
@@ -10,7 +11,7 @@
 namespace sextant {
 namespace {
 
-class KittiDataset final : public Dataset {
+class KittiDataset final : public detail::ListedScansDataset {
  public:
   explicit KittiDataset(const std::filesystem::path& folder) {
     detail::ScanListing listing = detail::list_scans(folder / "velodyne", "", {".bin", ".xyz32.bin"});
@@ -33,26 +34,6 @@ class KittiDataset final : public Dataset {
     meta_.has_ground_truth = !ground_truth_.empty();
   }
 
-  const DatasetMetadata& metadata() const override { return meta_; }
-  PointCloud scan(std::size_t i, ScanLoadReport* report) const override {
-    return read_cloud(scans_.at(i).path, report);
-  }
-  std::optional<Eigen::Isometry3d> odometry(std::size_t i) const override {
-    check_index(i);
-    return std::nullopt;
-  }
-  std::optional<Eigen::Isometry3d> ground_truth(std::size_t i) const override {
-    check_index(i);
-    if (ground_truth_.empty()) return std::nullopt;
-    return ground_truth_[i];
-  }
-  std::optional<double> stamp(std::size_t i) const override {
-    check_index(i);
-    if (times_.empty()) return std::nullopt;
-    return times_[i];
-  }
-  std::filesystem::path scan_file(std::size_t i) const override { return scans_.at(i).path; }
-
  private:
   void read_poses(const std::filesystem::path& folder) {
     std::filesystem::path poses_file = folder / "poses.txt";
@@ -70,22 +51,6 @@ class KittiDataset final : public Dataset {
     check_count(poses_file, camera_poses.size(), "poses");
     ground_truth_ = kitti_velodyne_poses(camera_poses, read_kitti_calib_tr(calib_file));
   }
-
-  void check_count(const std::filesystem::path& file, std::size_t count, const std::string& what) const {
-    if (count != scans_.size()) {
-      throw InputError(
-          file.string(), "",
-          std::to_string(count) + " " + what + " for " + std::to_string(scans_.size()) + " scans");
-    }
-  }
-  void check_index(std::size_t i) const {
-    if (i >= scans_.size()) throw std::out_of_range("scan index " + std::to_string(i) + " out of range");
-  }
-
-  DatasetMetadata meta_;
-  std::vector<detail::NumberedFile> scans_;
-  std::vector<Eigen::Isometry3d> ground_truth_;
-  std::vector<double> times_;
 };
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Any folder of point-cloud files as a dataset, and the layout detection of open_dataset.
 #include <stdexcept>
 
+#include "listed_scans_dataset.hpp"
 #include "scan_files.hpp"
 #include "sextant/core/dataset.hpp"
 #include "sextant/core/error.hpp"
@@ -31,7 +32,7 @@ fs::path beside(const fs::path& folder, const fs::path& scans_folder, const std:
   return {};
 }
 
-class ScanFolderDataset final : public Dataset {
+class ScanFolderDataset final : public detail::ListedScansDataset {
  public:
   ScanFolderDataset(const fs::path& folder, const fs::path& poses_file) {
     fs::path scans_folder;
@@ -59,42 +60,6 @@ class ScanFolderDataset final : public Dataset {
     }
     meta_.has_ground_truth = !ground_truth_.empty();
   }
-
-  const DatasetMetadata& metadata() const override { return meta_; }
-  PointCloud scan(std::size_t i, ScanLoadReport* report) const override {
-    return read_cloud(scans_.at(i).path, report);
-  }
-  std::optional<Eigen::Isometry3d> odometry(std::size_t i) const override {
-    check_index(i);
-    return std::nullopt;
-  }
-  std::optional<Eigen::Isometry3d> ground_truth(std::size_t i) const override {
-    check_index(i);
-    if (ground_truth_.empty()) return std::nullopt;
-    return ground_truth_[i];
-  }
-  std::optional<double> stamp(std::size_t i) const override {
-    check_index(i);
-    if (times_.empty()) return std::nullopt;
-    return times_[i];
-  }
-  fs::path scan_file(std::size_t i) const override { return scans_.at(i).path; }
-
- private:
-  void check_count(const fs::path& file, std::size_t count, const std::string& what) const {
-    if (count != scans_.size())
-      throw InputError(file.string(), "",
-                       std::to_string(count) + " " + what + " for " + std::to_string(scans_.size()) +
-                           " scans (one per scan, in the scans' order, is expected)");
-  }
-  void check_index(std::size_t i) const {
-    if (i >= scans_.size()) throw std::out_of_range("scan index " + std::to_string(i) + " out of range");
-  }
-
-  DatasetMetadata meta_;
-  std::vector<detail::NumberedFile> scans_;
-  std::vector<Eigen::Isometry3d> ground_truth_;
-  std::vector<double> times_;
 };
 
 }  // namespace
