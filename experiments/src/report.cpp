@@ -1,7 +1,5 @@
 #include "sextant/experiments/report.hpp"
 
-#include "results_lock.hpp"
-
 #include <algorithm>
 #include <fstream>
 #include <map>
@@ -11,6 +9,7 @@
 #include <unordered_set>
 
 #include "report_overview.hpp"
+#include "results_lock.hpp"
 #include "sextant/core/atomic_file.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/trajectory_io.hpp"
@@ -47,14 +46,18 @@ std::map<std::string, std::vector<fs::path>> find_experiments(const std::vector<
 }
 
 /// Rows of all folders, one per key; a successful row beats a failed one.
-/// Unreadable lines are skipped, each named (file:line) in `warnings` and logged.
+/// Unreadable lines are skipped, each named (file:line) in `warnings` and logged. `shared_keys`
+/// counts the keys that more than one folder holds.
 std::vector<RunRow> union_rows(const std::vector<fs::path>& folders,
-                               std::vector<std::string>* warnings = nullptr) {
+                               std::vector<std::string>* warnings = nullptr,
+                               std::size_t* shared_keys = nullptr) {
   std::vector<RunRow> rows;
   std::unordered_map<std::string, std::size_t> position;
-  for (const auto& folder : folders) {
-    RowFile file = read_rows(folder / kRunsJsonl);
-    for (const auto& message : bad_line_messages(folder / kRunsJsonl, file)) {
+  std::vector<std::size_t> first_folder;  // per row: the folder it was first found in
+  std::vector<bool> shared;               // per row: found in another folder too
+  for (std::size_t f = 0; f < folders.size(); ++f) {
+    RowFile file = read_rows(folders[f] / kRunsJsonl);
+    for (const auto& message : bad_line_messages(folders[f] / kRunsJsonl, file)) {
       log_warning(message);
       if (warnings) warnings->push_back(message);
     }
@@ -63,11 +66,15 @@ std::vector<RunRow> union_rows(const std::vector<fs::path>& folders,
       if (it == position.end()) {
         position[row.key] = rows.size();
         rows.push_back(std::move(row));
-      } else if (row.ok || !rows[it->second].ok) {
-        rows[it->second] = std::move(row);
+        first_folder.push_back(f);
+        shared.push_back(false);
+        continue;
       }
+      if (first_folder[it->second] != f) shared[it->second] = true;
+      if (row.ok || !rows[it->second].ok) rows[it->second] = std::move(row);
     }
   }
+  if (shared_keys) *shared_keys = static_cast<std::size_t>(std::count(shared.begin(), shared.end(), true));
   return rows;
 }
 
@@ -303,16 +310,10 @@ MergeSummary merge_results(const std::vector<fs::path>& inputs, const fs::path& 
     merged.name = name;
     merged.inputs = folders.size();
     merged.expected = runs.size();
-    std::map<std::string, std::size_t> holders;  // run key → input folders that hold a row of it
-    for (const fs::path& f : folders) {
-      std::set<std::string> keys;
-      for (const RunRow& row : read_rows(f / kRunsJsonl).rows) keys.insert(row.key);
-      for (const std::string& key : keys) ++holders[key];
-    }
-    for (const auto& [key, count] : holders) merged.duplicated += count > 1 ? 1 : 0;
     // Rows in the expansion order of the config they were run with: the merged files do not depend
     // on how many shards there were or in which order their runs finished.
-    const std::vector<RunRow> rows = in_expansion_order(union_rows(folders), runs);
+    const std::vector<RunRow> rows =
+        in_expansion_order(union_rows(folders, nullptr, &merged.duplicated), runs);
     std::set<std::string> present;
     for (const RunRow& row : rows)
       if (row.ok) present.insert(row.key);

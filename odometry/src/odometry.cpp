@@ -122,22 +122,20 @@ struct Worker {
   /// (a corner, an open space; measured on the campus: right poses 0.70 where the median is 0.87).
   void recover(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
                const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed) const {
-    if (step.trusted() || !settings.recover || starts.empty()) return;
+    if (step.trusted() || !recovery || starts.empty()) return;  // recovery: null when it is off
     double seconds = step.seconds;
-    if (recovery) {
-      for (const Eigen::Isometry3d& start : starts) {
-        if (!wide_basin && start.isApprox(step.guess, 1e-12)) continue;  // tried already
-        Rng rng(seed);                                                   // the same sample
-        const PairMatch w = match_pair(*recovery, *sampler, reference, input, start, rng, settings.quality);
-        OdometryStep again = to_step(w, reference, step.guess);
-        seconds += again.seconds;
-        if (again.trusted()) {
-          again.first_trust = step.first_trust;
-          again.recovery = wide_basin ? "wide_basin" : "restart";
-          again.seconds = seconds;
-          step = std::move(again);
-          return;
-        }
+    for (const Eigen::Isometry3d& start : starts) {
+      if (!wide_basin && start.isApprox(step.guess, 1e-12)) continue;  // tried already
+      Rng rng(seed);                                                   // the same sample
+      const PairMatch w = match_pair(*recovery, *sampler, reference, input, start, rng, settings.quality);
+      OdometryStep again = to_step(w, reference, step.guess);
+      seconds += again.seconds;
+      if (again.trusted()) {
+        again.first_trust = step.first_trust;
+        again.recovery = wide_basin ? "wide_basin" : "restart";
+        again.seconds = seconds;
+        step = std::move(again);
+        return;
       }
     }
     step.recovery = starts.back().isApprox(step.guess, 1e-12) ? "guess" : "last_motion";
@@ -173,15 +171,15 @@ struct Worker {
 };
 
 /// Where the recovery of step k starts its wide-basin searches: the guess, then (constant velocity)
-/// the last motion unscaled and no motion (a vehicle that stopped between keyframes), last the
-/// motion to chain when nothing is trusted: the last trusted one (the guess for the odometry guess).
+/// no motion (a vehicle that stopped between keyframes) and the last trusted motion unscaled, which is
+/// also the motion chained when nothing is trusted (the guess for the odometry guess). Consecutive
+/// repeats are left out.
 std::vector<Eigen::Isometry3d> recovery_starts(const OdometrySettings& s, const Eigen::Isometry3d& guess,
                                                const Eigen::Isometry3d& last_motion) {
-  if (s.guess == OdometryGuess::odometry) return {guess};
   std::vector<Eigen::Isometry3d> starts{guess};
+  if (s.guess == OdometryGuess::odometry) return starts;
   for (const Eigen::Isometry3d& other : {Eigen::Isometry3d(Eigen::Isometry3d::Identity()), last_motion})
     if (!other.isApprox(starts.back(), 1e-9)) starts.push_back(other);
-  if (!starts.back().isApprox(last_motion, 1e-9)) starts.push_back(last_motion);
   return starts;
 }
 

@@ -199,9 +199,10 @@ int run_match(MatchOptions o) {
   auto matcher = make_matcher(o.method, search_first ? *wide : config.matcher, where);
   Rng rng(o.seed);
   PairMatch m = match_pair(*matcher, *sampler, reference, input, initial, rng);
-  std::string search = has_own_wide_basin || search_first ? "wide basin" : "from the guess";
+  const bool searched = has_own_wide_basin || search_first;  // the first registration was the wide basin
+  std::string search = searched ? "wide basin" : "from the guess";
   if (search_first) search += " (no --init; --no-wide-basin: off)";
-  if (!m.result.quality.trusted() && !search_first && !has_own_wide_basin && !o.no_wide_basin && wide) {
+  if (!m.result.quality.trusted() && !searched && !o.no_wide_basin && wide) {
     const auto wide_matcher = make_matcher(o.method, *wide, where);
     Rng again(o.seed);
     PairMatch w = match_pair(*wide_matcher, *sampler, reference, input, initial, again);

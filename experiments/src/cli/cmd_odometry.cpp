@@ -187,8 +187,8 @@ int run_odometry_command(const OdometryOptions& o) {
             << seconds << " s (" << std::setprecision(3)
             << (result.steps.empty() ? 0.0 : seconds / static_cast<double>(result.steps.size()))
             << " s per pair), " << counts.not_converged << " not converged, " << counts.untrusted
-            << " untrusted" << (s.recover ? " (the last trusted motion chained)" : "") << ", " << counts.recovered
-            << " recovered\n";
+            << " untrusted" << (s.recover ? " (the last trusted motion or the guess chained)" : "") << ", "
+            << counts.recovered << " recovered\n";
   if (estimate_accuracy) {
     std::cout << "estimate: " << accuracy_line(*estimate_accuracy) << "\n";
     if (odometry_accuracy)
