@@ -262,6 +262,21 @@ TEST(BadInput, DoubtfulLayoutsAndIgnoredDataAreCounted) {
   EXPECT_EQ(read_cloud(dir / "extra.ply", &report).size(), 2u);
   EXPECT_TRUE(has_warning(report, "1 vertex rows have more values than the 3 declared properties"));
   EXPECT_TRUE(has_warning(report, "1 rows after the header's element counts, ignored"));
+
+  const std::string pcd_header =
+      "VERSION .7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH 2\nHEIGHT 1\n"
+      "VIEWPOINT 0 0 0 1 0 0 0\nPOINTS 2\n";
+  write_text(dir / "beyond.pcd", pcd_header + "DATA ascii\n1 2 3\n4 5 6\n7 8 9\n\n10 11 12\n");
+  report = {};
+  EXPECT_EQ(read_cloud(dir / "beyond.pcd", &report).size(), 2u);
+  EXPECT_TRUE(has_warning(report, "2 rows after the header's 2 POINTS, ignored"));
+  const float values[9] = {1, 2, 3, 4, 5, 6, 7, 8, 9};
+  write_text(
+      dir / "beyond_binary.pcd",
+      pcd_header + "DATA binary\n" + std::string(reinterpret_cast<const char*>(values), sizeof values));
+  report = {};
+  EXPECT_EQ(read_cloud(dir / "beyond_binary.pcd", &report).size(), 2u);
+  EXPECT_TRUE(has_warning(report, "12 bytes after the header's 2 POINTS (1 whole points), ignored"));
 }
 
 }  // namespace

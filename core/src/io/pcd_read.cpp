@@ -191,9 +191,14 @@ PointCloud read_pcd(const std::filesystem::path& file, ScanLoadReport* report) {
     std::vector<double> v;
     std::string bad;
     std::uint64_t seen = 0;
+    std::uint64_t beyond = 0;  // rows after the declared POINTS, counted rather than read
     for_each_line(std::string_view(bytes).substr(h.data_offset), [&](std::string_view line, long n) {
       const long number = h.data_line + n;
-      if (is_blank(line) || seen >= h.points) return;
+      if (is_blank(line)) return;
+      if (seen >= h.points) {
+        ++beyond;
+        return;
+      }
       if (!parse_numbers(line, v, &bad)) fail(file, at_line(number), bad_number_problem(bad));
       if (v.size() != h.columns) {
         fail(file, at_line(number),
@@ -208,7 +213,11 @@ PointCloud read_pcd(const std::filesystem::path& file, ScanLoadReport* report) {
            "truncated: the header promises " + std::to_string(h.points) + " points, the file has " +
                std::to_string(seen));
     }
-    return sink.take(report);
+    PointCloud cloud = sink.take(report);
+    if (report && beyond > 0)
+      report->warnings.push_back(std::to_string(beyond) + " rows after the header's " +
+                                 std::to_string(h.points) + " POINTS, ignored");
+    return cloud;
   }
   if (h.record == 0 || h.points > std::numeric_limits<std::uint64_t>::max() / h.record)
     fail(file, "", "point size overflows");
@@ -251,7 +260,12 @@ PointCloud read_pcd(const std::filesystem::path& file, ScanLoadReport* report) {
   for (std::uint64_t i = 0; i < h.points; ++i) {
     sink.add(at(*axes[0], i), at(*axes[1], i), at(*axes[2], i), intensity ? at(*intensity, i) : 0.0);
   }
-  return sink.take(report);
+  PointCloud cloud = sink.take(report);
+  if (report && h.encoding == "binary" && have > need)
+    report->warnings.push_back(std::to_string(have - need) + " bytes after the header's " +
+                               std::to_string(h.points) + " POINTS (" +
+                               std::to_string((have - need) / h.record) + " whole points), ignored");
+  return cloud;
 }
 
 }  // namespace sextant::detail
