@@ -121,14 +121,26 @@ std::string profile_of(const std::vector<fs::path>& folders) {
   return profile;
 }
 
+/// "Runs: 3 of 4 found; 1 failed (ekf, repetition 2: <error>)." Failed runs are named where users
+/// look, never only left out.
+std::string runs_line(std::size_t found, std::size_t expected, std::size_t failed,
+                      const RunRow* first_failed) {
+  std::string line = "Runs: " + std::to_string(found) + " of " + std::to_string(expected) + " found";
+  if (failed > 0) {
+    line += "; " + std::to_string(failed) + " failed (" + first_failed->method + ", repetition " +
+            std::to_string(first_failed->repetition) + ": " + first_failed->error + ")";
+  }
+  return line + " — missing and failed runs are left out of the statistics.";
+}
+
 std::string markdown_section(const std::string& title, const ExperimentConfig& config,
-                             const ReportSection& section, std::size_t found, std::size_t expected,
+                             const ReportSection& section, const std::string& runs,
                              const std::string& shown) {
   std::string md = "# " + title + "\n\n";
   if (!config.thesis.empty()) md += "Thesis: " + config.thesis + "\n\n";
   if (!config.description.empty()) md += config.description + "\n\n";
   if (!section.notes.empty()) md += section.notes + "\n\n";
-  md += "Runs: " + std::to_string(found) + " of " + std::to_string(expected) + " found.\n\n" + shown + "\n\n";
+  md += runs + "\n\n" + shown + "\n\n";
   for (const auto& table : section.tables) md += render_markdown(table) + "\n";
   for (const auto& figure : section.figures) md += "![" + figure.caption + "](" + figure.id + ".svg)\n\n";
   for (const auto& t : section.trajectories) md += "- [" + t.caption + "](" + t.id + ".tum) (TUM)\n";
@@ -177,16 +189,21 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
     entry.runs_expected = runs.size();
     std::vector<std::string> warnings;
     const std::vector<RunRow> rows = union_rows(folders, &warnings);
-    std::unordered_map<std::string, const RunRow*> by_key;
-    for (const auto& r : rows) {
-      if (r.ok) by_key[r.key] = &r;
-    }
+    std::unordered_map<std::string, const RunRow*> by_key, failed_by_key;
+    for (const auto& r : rows) (r.ok ? by_key : failed_by_key)[r.key] = &r;
     std::vector<const RunRow*> aligned;
+    const RunRow* first_failed = nullptr;
     for (const auto& run : runs) {
       const auto it = by_key.find(run.key);
       aligned.push_back(it == by_key.end() ? nullptr : it->second);
       entry.runs_found += aligned.back() != nullptr;
+      const auto failed = failed_by_key.find(run.key);
+      if (!aligned.back() && failed != failed_by_key.end()) {
+        ++entry.runs_failed;
+        if (!first_failed) first_failed = failed->second;
+      }
     }
+    const std::string runs_text = runs_line(entry.runs_found, runs.size(), entry.runs_failed, first_failed);
     const std::size_t found = entry.runs_found;
     // The heading says which profile the numbers come from and how many runs stand behind them.
     HtmlSection& html =
@@ -231,8 +248,7 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
     if (!config.thesis.empty()) html.add_paragraph("Thesis: " + config.thesis);
     if (!config.description.empty()) html.add_paragraph(config.description);
     if (!section.notes.empty()) html.add_paragraph(section.notes);
-    html.add_paragraph("Runs: " + std::to_string(found) + " of " + std::to_string(runs.size()) +
-                       " found (missing runs are left out of the statistics).");
+    html.add_paragraph(runs_text);
     html.add_paragraph(shown);
     for (const auto& table : section.tables) {
       write_table(table, TableFormat::markdown, dir / (table.label + ".md"));
@@ -267,7 +283,7 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
       for (const auto& file : provenance_files(folder)) provenance += read_text(file);
     }
     html.add_html("<details><summary>Provenance</summary><pre>" + escape(provenance) + "</pre></details>");
-    const std::string md = markdown_section(title, config, section, found, runs.size(), shown);
+    const std::string md = markdown_section(title, config, section, runs_text, shown);
     write_file_atomically(dir / (name + ".md"), md);
     all_md += md + "\n";
   }

@@ -36,7 +36,8 @@ std::string label(const OverviewEntry& e) {
 
 std::string runs_text(const OverviewEntry& e) {
   std::string text = std::to_string(e.runs_found) + "/" + std::to_string(e.runs_expected);
-  return e.profile.empty() ? text : text + " (" + e.profile + ")";
+  if (!e.profile.empty()) text += " (" + e.profile + ")";
+  return e.runs_failed > 0 ? text + ", " + std::to_string(e.runs_failed) + " failed" : text;
 }
 
 std::string held_text(const Counts& c) {
@@ -84,7 +85,8 @@ int experiment_number(const std::string& id) {
 
 std::string one_line_outcome(const OverviewEntry& entry) {
   if (!entry.failure.empty()) return "report failed: " + entry.failure;
-  if (entry.runs_found == 0) return "no runs found";
+  if (entry.runs_found == 0)
+    return entry.runs_failed > 0 ? "every run failed (see its section)" : "no runs found";
   const Counts c = count(entry.claims);
   if (c.thesis_total() == 0) return "no thesis claims to check";
   std::string text = std::to_string(c.thesis[0]) + " of " + std::to_string(c.thesis_total()) + " claims hold";

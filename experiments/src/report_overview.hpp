@@ -15,8 +15,9 @@ struct OverviewEntry {
   std::string thesis;   ///< e.g. "§5.1.1.2 A, tables 5.1-5.4, figs 5.7-5.10"
   std::string profile;  ///< "quick", "full" or "" when unknown
   std::size_t runs_found = 0, runs_expected = 0;
-  std::vector<Claim> claims;  ///< thesis claims and sanity checks
-  std::string failure;        ///< non-empty when the experiment's report failed
+  std::size_t runs_failed = 0;  ///< expected runs with only a failed row
+  std::vector<Claim> claims;    ///< thesis claims and sanity checks
+  std::string failure;          ///< non-empty when the experiment's report failed
 };
 
 /// The experiment number of a folder name "eNN_…" (0 when the name has no such prefix).

@@ -200,6 +200,33 @@ TEST(PlaneSlamKind, ExtractedLandmarksRunThroughPlaneSlam) {
   }
 }
 
+// Issue 23: a plane-SLAM run that maps nothing was an "ok" row with a trajectory of pure
+// odometry; it is a failed run that names why.
+TEST(PlaneSlamKind, ARunThatMapsNothingIsAFailedRun) {
+  TempDir tmp;
+  std::string text = kTiny;
+  text.replace(text.find("min_points: 40"), 14, "min_points: 100000000");
+  text.replace(text.find("repetitions: 2"), 14, "repetitions: 1");
+  test::write_text(tmp / "e99_slam_tiny.yaml", text);
+  RunnerOptions o;
+  o.results_root = tmp / "results";
+  o.jobs = 2;
+  o.progress = false;
+  const RunnerSummary s = run_experiment(tmp / "e99_slam_tiny.yaml", o);
+  EXPECT_EQ(s.failed, 2u);
+  for (const auto& row : read_rows(s.folder / kRunsJsonl).rows) {
+    EXPECT_FALSE(row.ok) << row.method;
+    EXPECT_NE(row.error.find("the filter mapped no landmark"), std::string::npos) << row.error;
+  }
+  const ReportSummary r = write_report({tmp / "results"}, tmp / "report");
+  EXPECT_TRUE(r.failed.empty()) << r.failed.front();
+  const std::string page = test::read_text(r.index_html);
+  EXPECT_NE(page.find("0/2 (full), 2 failed"), std::string::npos) << "the front page counts them";
+  EXPECT_NE(page.find("every run failed"), std::string::npos);
+  EXPECT_NE(page.find("Runs: 0 of 2 found; 2 failed (ekf, repetition 0: the filter mapped no landmark)"),
+            std::string::npos);
+}
+
 void expect_rejected(const std::string& from, const std::string& to, const std::string& key) {
   TempDir tmp;
   std::string text = kTiny;

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include <tbb/parallel_for.h>
 #include <Eigen/Cholesky>
@@ -19,6 +21,7 @@
 #include "sextant/core/units.hpp"
 #include "sextant/eval/statistics.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
+#include "sextant/filters/slam_run_failure.hpp"
 #include "sextant/synth/settings.hpp"
 
 namespace sextant {
@@ -169,6 +172,8 @@ void fill_row(const FilterSequenceRun& r, const synth::Campus& campus, const Pla
     truth.push_back(campus.ground_truth[k]);
     odometry.push_back(to_isometry(r.odometry[k]));
   }
+  const std::string failure = slam_run_failure(r.map.size(), failed, n);
+  if (!failure.empty()) throw std::runtime_error(failure);
   for (const Eigen::Vector4d& m : r.map)
     for (int i = 0; i < 4; ++i) s["map"].push_back(m[i]);
   for (int id : r.map_truth) s["map_truth"].push_back(id);

@@ -12,6 +12,7 @@
 #include "sequence_report.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
+#include "sextant/filters/slam_run_failure.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/posegraph/relative_pose_factor.hpp"
 #include "sextant/synth/odometry.hpp"
@@ -334,6 +335,9 @@ void run_filter_method(const PreloadedCampus& data, const PoseGraphParams& param
     estimate.push_back(x.allFinite() ? to_isometry(Pose6::from_vector(x)) : truth.back());
     failed += run.steps[k].ok ? 0.0 : 1.0;
   }
+  const std::string failure =
+      slam_run_failure(run.map.size(), static_cast<std::size_t>(failed), run.steps.size());
+  if (!failure.empty()) throw std::runtime_error(failure);
   put_metrics(estimate, truth, "filter_", row);
   row.series["truth"] = poses_to_series(truth);
   row.values["scans"] = static_cast<double>(n);

@@ -28,6 +28,7 @@
 #include "sextant/core/units.hpp"
 #include "sextant/filters/filter.hpp"
 #include "sextant/filters/range_bearing_sim.hpp"
+#include "sextant/filters/slam_run_failure.hpp"
 #include "simulation.hpp"
 #include "simulation_monte_carlo_report.hpp"
 
@@ -137,12 +138,10 @@ class RangeBearingMonteCarlo : public SimulationModel {
     filter->initialize(Eigen::VectorXd::Zero(3), p.initial_sigma.cwiseAbs2().asDiagonal().toDenseMatrix());
     const SlamRunResult result =
         run_slam(*filter, sim.steps, p.sim.control_noise(), p.sim.observation_noise());
-    // A SLAM run that maps nothing, or whose filter fails most steps, is a failed run, not a result.
-    if (result.landmark_index.empty())
-      throw std::runtime_error("the filter mapped no landmark of " + std::to_string(p.landmarks));
-    if (2 * result.failed_steps > result.steps.size())
-      throw std::runtime_error("the filter failed " + std::to_string(result.failed_steps) + " of " +
-                               std::to_string(result.steps.size()) + " steps");
+    const std::string failure =
+        slam_run_failure(result.landmark_index.size(), result.failed_steps, result.steps.size());
+    if (!failure.empty())
+      throw std::runtime_error(failure + " (of " + std::to_string(p.landmarks) + " landmarks)");
 
     // Dead reckoning of the same noisy controls (eq. 5.7 without noise terms).
     Eigen::VectorXd odo = Eigen::VectorXd::Zero(3);
