@@ -11,6 +11,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/core/units.hpp"
 
 namespace sextant {
 
@@ -154,9 +155,10 @@ bool PlaneExtractionSettings::valid(std::string* why) const {
     return false;
   };
   PlaneRefit method;
-  if (!(cell_size > 0.0 && std::isfinite(cell_size))) return fail("cell_size must be positive");
-  if (!(distance_threshold > 0.0 && std::isfinite(distance_threshold)))
-    return fail("distance_threshold must be positive");
+  if (!(cell_size > 0.0 && cell_size <= kMaxSettingLength))
+    return fail("cell_size must be positive and at most 1000 m");
+  if (!(distance_threshold > 0.0 && distance_threshold <= cell_size))
+    return fail("distance_threshold must be positive and at most cell_size");
   if (ransac_iterations < 1) return fail("ransac_iterations must be ≥ 1");
   if (!(ransac_confidence > 0.0 && ransac_confidence < 1.0))
     return fail("ransac_confidence must be in (0, 1)");

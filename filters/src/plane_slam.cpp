@@ -5,6 +5,7 @@
 
 #include "sextant/core/chi_square.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/features/merging.hpp"
 #include "sextant/filters/innovation_gate.hpp"
 #include "sextant/filters/plane_slam_model.hpp"
@@ -23,6 +24,13 @@ void keep_first_failure(StepStatus& slot, StepStatus status) {
   if (slot == StepStatus::kOk) slot = status;
 }
 
+bool length_sigma(double sigma) {
+  return sigma > 0 && sigma <= kMaxSettingLength;
+}
+bool angle_sigma(double sigma) {
+  return sigma > 0 && sigma <= kPi;
+}
+
 }  // namespace
 
 bool PlaneSlamSettings::valid(std::string* why) const {
@@ -31,12 +39,20 @@ bool PlaneSlamSettings::valid(std::string* why) const {
     problem = "unknown filter (see the filter registry: ekf, ukf, ckf, rspkf, seif, eif)";
   else if (filter_settings && !filter_settings.IsNull() && !filter_settings.IsMap())
     problem = "filter_settings must be a map";
-  else if (!(sigma_xy > 0 && sigma_z > 0 && sigma_roll_pitch > 0 && sigma_yaw > 0))
-    problem = "odometry sigmas (sigma_xy, sigma_z, sigma_roll_pitch, sigma_yaw) must be > 0";
-  else if (!(sigma_normal > 0 && sigma_distance > 0))
-    problem = "observation sigmas (sigma_normal, sigma_distance) must be > 0";
-  else if (!(initial_sigma_translation > 0 && initial_sigma_rotation > 0 && p0_scale > 0))
-    problem = "initial sigmas and p0_scale must be > 0";
+  else if (!(length_sigma(sigma_xy) && length_sigma(sigma_z) && angle_sigma(sigma_roll_pitch) &&
+             angle_sigma(sigma_yaw)))
+    problem =
+        "odometry sigmas must be > 0: sigma_xy and sigma_z at most 1000 m, sigma_roll_pitch and "
+        "sigma_yaw at most π rad";
+  else if (!(sigma_normal > 0 && sigma_normal <= 1 && length_sigma(sigma_distance)))
+    problem =
+        "observation sigmas must be > 0: sigma_normal at most 1 (a unit normal's component), "
+        "sigma_distance at most 1000 m";
+  else if (!(length_sigma(initial_sigma_translation) && angle_sigma(initial_sigma_rotation) && p0_scale > 0 &&
+             p0_scale <= kMaxP0Scale))
+    problem =
+        "initial sigmas must be > 0 (translation at most 1000 m, rotation at most π rad) and p0_scale at "
+        "most 1e12";
   else if (!(gate_probability >= 0 && gate_probability < 1))
     problem = "gate_probability must lie in [0, 1) (0 turns the gate off)";
   if (problem) {

@@ -157,5 +157,21 @@ TEST(PlaneSlamCampus, SettingsFromYaml) {
                InputError);
 }
 
+// Issue 23: absurd but finite noises ran "ok" with nothing mapped. Each gets a physical bound.
+TEST(PlaneSlamCampus, AbsurdButFiniteNoisesAreRefused) {
+  for (const char* text : {"{sigma_xy: 1.0e300}", "{sigma_yaw: 7}", "{sigma_normal: 2}",
+                           "{sigma_distance: 1e4}", "{initial_sigma_rotation: 4}", "{p0_scale: 1e13}",
+                           "{extraction: {cell_size: 1e30}}", "{extraction: {distance_threshold: 3}}"}) {
+    try {
+      (void)read_plane_slam_settings(YAML::Load(text), "t.yaml");
+      ADD_FAILURE() << text << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("at most"), std::string::npos) << text << ": " << e.what();
+    }
+  }
+  EXPECT_NO_THROW((void)read_plane_slam_settings(
+      YAML::Load("{sigma_xy: 1000, sigma_yaw: 3.14, sigma_normal: 1, p0_scale: 1e6}"), "t.yaml"));
+}
+
 }  // namespace
 }  // namespace sextant

@@ -248,6 +248,13 @@ TEST(SettingsBounds, AbsurdButFiniteSettingsAreRefused) {  // issue 23
     EXPECT_NE(std::string(e.what()).find("cell_size must be ≤ 1000 m"), std::string::npos) << e.what();
   }
   EXPECT_NO_THROW((void)make_matcher("ndt", YAML::Load("{cell_size: 2.0}"), "t.yaml"));
+  try {
+    (void)make_matcher("icp_p2l", YAML::Load("{max_correspondence_distance: 1.0e30}"), "t.yaml");
+    ADD_FAILURE() << "max_correspondence_distance 1e30 accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("at most 1000"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW((void)make_matcher("icp_p2l", YAML::Load("{max_correspondence_distance: 2.0}"), "t.yaml"));
 }
 
 }  // namespace

@@ -20,8 +20,8 @@
 namespace sextant {
 
 struct PlaneExtractionSettings {
-  double cell_size = 2.0;                 ///< edge of the cubic extraction cells [m]
-  double distance_threshold = 0.05;       ///< RANSAC inlier distance to the plane [m]
+  double cell_size = 2.0;                 ///< edge of the cubic extraction cells [m, ≤ 1000]
+  double distance_threshold = 0.05;       ///< RANSAC inlier distance to the plane [m, ≤ cell_size]
   int ransac_iterations = 100;            ///< maximum RANSAC hypotheses per plane [count]
   double ransac_confidence = 0.99;        ///< stop early once this confidence is reached [0, 1)
   std::size_t min_inliers = 10;           ///< a cell plane needs at least this many inliers (thesis: 10)

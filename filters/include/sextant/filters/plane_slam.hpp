@@ -34,12 +34,17 @@
 #include "sextant/core/point_cloud.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/rng.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/features/association.hpp"
 #include "sextant/features/extraction.hpp"
 #include "sextant/filters/filter.hpp"
 #include "sextant/filters/slam_runner.hpp"
 
 namespace sextant {
+
+/// The largest P0 scale [-]: E13 scales P0 by up to 1e6 to show the UKF failing; beyond 1e12
+/// the initial σ passes kilometres and the covariances overflow their precision.
+inline constexpr double kMaxP0Scale = 1e12;
 
 struct PlaneSlamSettings {
   std::string filter = "ekf";          ///< filter registry name: ekf, ukf, ckf, rspkf, seif, eif
@@ -58,10 +63,10 @@ struct PlaneSlamSettings {
   // P0 = p0_scale · diag(σ_t², σ_t², σ_t², σ_r², σ_r², σ_r²) for the initial pose.
   double initial_sigma_translation = 0.01;  ///< [m]
   double initial_sigma_rotation = 0.001;    ///< [rad]
-  double p0_scale = 1.0;                    ///< the thesis scales P0 up to show UKF failures [-]
-  double gate_probability = 0.99;           ///< χ² gate of step 4 at this probability; 0 turns it off [-]
-  bool merge_semantics = true;              ///< step 6 (off: map semantics stay as first seen)
-  bool record_pose_covariance = true;       ///< pose covariance per step (O(n³) for information filters)
+  double p0_scale = 1.0;               ///< the thesis scales P0 up to show UKF failures [-, ≤ kMaxP0Scale]
+  double gate_probability = 0.99;      ///< χ² gate of step 4 at this probability; 0 turns it off [-]
+  bool merge_semantics = true;         ///< step 6 (off: map semantics stay as first seen)
+  bool record_pose_covariance = true;  ///< pose covariance per step (O(n³) for information filters)
 
   bool valid(std::string* why) const;
   Matrix6d process_noise() const;             ///< Q

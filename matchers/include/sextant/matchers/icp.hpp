@@ -27,7 +27,7 @@ enum class IcpObjective {
 };
 
 struct IcpSettings {
-  double max_correspondence_distance = 1.0;  ///< pairs farther apart are rejected [m]
+  double max_correspondence_distance = 1.0;  ///< pairs farther apart are rejected [m, ≤ 1000]
   int max_iterations = 50;                   ///< iteration cap
   double epsilon = 1e-4;                     ///< stop when ‖Δξ‖ < ε [m and rad combined]
   int min_correspondences = 10;              ///< fewer matched points → too_few_correspondences

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "sextant/core/units.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/ndt_grid.hpp"
 #include "sextant/matchers/optimizer.hpp"
@@ -14,7 +15,7 @@
 namespace sextant {
 
 /// The largest cell edge `ndt` accepts [m] (1e30 used to "converge" 140 m / 157° off).
-inline constexpr double kMaxNdtCellSize = 1000.0;
+inline constexpr double kMaxNdtCellSize = kMaxSettingLength;
 
 struct NdtSettings {
   double cell_size = 0.0;       ///< cell edge [m, ≤ kMaxNdtCellSize]; 0 → from volume_divisions
