@@ -40,7 +40,7 @@ struct MatchOptions : MatcherOptions {
   bool no_wide_basin = false;
 };
 
-/// Error of a registration against ground truth: E = T_gt⁻¹·T_est (DESIGN.md).
+/// Error of a registration against ground truth: E = T_gt⁻¹·T_est (docs/design.md, "Conventions").
 struct PoseError {
   double cm = 0.0;
   double deg = 0.0;

@@ -1,7 +1,8 @@
-// E20 layout (thesis §7.2 future work, EXPERIMENTS.md "Extensions"): ATE, Wulf and Kümmerle of
-// the chained scan-matching odometry, the pose graph with loop closures, the graph with an
-// injected false closure (with and without the robust loss) and the plane-SLAM filters; the loop
-// closures found, accepted and rejected; the cost of the graph solve; figures and claims.
+// E20 layout (thesis §7.2 future work; docs/experiments.md, "Extensions beyond the thesis"):
+// ATE, Wulf and Kümmerle of the chained scan-matching odometry, the pose graph with loop
+// closures, the graph with an injected false closure (with and without the robust loss) and the
+// plane-SLAM filters; the loop closures found, accepted and rejected; the cost of the graph solve;
+// figures and claims.
 #include "pose_graph_report.hpp"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #pragma once
-// The one optimiser loop shared by NDT and ML-NDT (DESIGN.md, "Matchers share one optimiser
-// loop"). An objective has one or more stages (ML-NDT layers s..n, or NDT's single grid); each
+// The one optimiser loop shared by NDT and ML-NDT (docs/design.md, "Module contracts"). An
+// objective has one or more stages (ML-NDT layers s..n, or NDT's single grid); each
 // stage but the last runs a fixed number of iterations (Table 3.1: three), the last runs until
 // ‖Δξ‖ < ε or the iteration cap. Solvers: Newton (eq. 3.16, H + γI when H is not positive
 // definite) with a step control (none: the update as printed; an Armijo line search; or a trust

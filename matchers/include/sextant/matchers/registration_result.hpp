@@ -1,5 +1,5 @@
 #pragma once
-// What every matcher returns (DESIGN.md, "Module contracts"). A diverged registration is a
+// What every matcher returns (docs/design.md, "Module contracts"). A diverged registration is a
 // result with converged = false and a reason, never an exception.
 #include <cstddef>
 #include <string>

@@ -1,7 +1,8 @@
 #pragma once
-// The built-in synthetic campus (DESIGN.md): world, 6D ground truth, 2D odometry, GNSS, and
-// scans generated on demand per index — scan(i) draws from its own Rng derived from (seed, i),
-// so generating the scans in any order or on any number of threads gives identical bytes.
+// The built-in synthetic campus (docs/design.md, "The synthetic campus"; docs/synthetic_campus.md):
+// world, 6D ground truth, 2D odometry, GNSS, and scans generated on demand per index — scan(i)
+// draws from its own Rng derived from (seed, i), so generating the scans in any order or on any
+// number of threads gives identical bytes.
 #include <cstdint>
 #include <filesystem>
 #include <memory>

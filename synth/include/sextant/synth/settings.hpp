@@ -1,6 +1,7 @@
 #pragma once
-// Every parameter of the synthetic campus, with the thesis-like defaults (DESIGN.md, "The
-// built-in synthetic campus"; EXPERIMENTS.md). World frame: x east, y north, z up, metres.
+// Every parameter of the synthetic campus, with the thesis-like defaults (docs/design.md, "The
+// synthetic campus"; docs/experiments.md, "How to read this page"). World frame: x east,
+// y north, z up, metres.
 #include <cstdint>
 #include <string>
 
