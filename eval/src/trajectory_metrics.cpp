@@ -135,9 +135,14 @@ KummerleResult kummerle_metric(const PoseList& estimate, const PoseList& referen
 AteResult absolute_trajectory_error(const PoseList& estimate, const PoseList& reference,
                                     Alignment alignment) {
   AteResult r;
-  r.status = check_pair(estimate, reference, alignment == Alignment::none ? 1 : 2);
+  r.status =
+      check_pair(estimate, reference, alignment == Alignment::se3 || alignment == Alignment::sim3 ? 2 : 1);
   if (!r.status.ok) return r;
-  if (alignment != Alignment::none) {
+  if (alignment == Alignment::origin) {
+    const Eigen::Isometry3d T = reference.front() * estimate.front().inverse();
+    r.alignment.rotation = T.linear();
+    r.alignment.translation = T.translation();
+  } else if (alignment != Alignment::none) {
     std::vector<Eigen::Vector3d> src, dst;
     for (std::size_t i = 0; i < estimate.size(); ++i) {
       src.push_back(estimate[i].translation());

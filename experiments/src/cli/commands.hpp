@@ -22,6 +22,7 @@ std::filesystem::path default_experiments_folder();
 
 // One line per subcommand (keep sorted).
 void add_convert_command(CLI::App& app, int& exit_code);
+void add_eval_command(CLI::App& app, int& exit_code);
 void add_info_command(CLI::App& app, int& exit_code);
 void add_match_command(CLI::App& app, int& exit_code);
 void add_merge_command(CLI::App& app, int& exit_code);

@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   int exit_code = 0;
   // One line per subcommand (keep sorted).
   add_convert_command(app, exit_code);
+  add_eval_command(app, exit_code);
   add_info_command(app, exit_code);
   add_match_command(app, exit_code);
   add_merge_command(app, exit_code);

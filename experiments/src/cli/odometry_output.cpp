@@ -31,19 +31,6 @@ Trajectory kitti_frame(const Dataset& dataset, Trajectory t) {
   return t;
 }
 
-std::string accuracy_json(const TrajectoryAccuracy& a) {
-  std::ostringstream out;
-  out << "{\"ate_m\": " << json_number(a.ate_translation)
-      << ", \"ate_deg\": " << json_number(a.ate_rotation * kDegPerRad)
-      << ", \"rpe_m\": " << json_number(a.rpe_translation)
-      << ", \"rpe_deg\": " << json_number(a.rpe_rotation * kDegPerRad)
-      << ", \"drift_segments\": " << a.drift_segments
-      << ", \"drift_percent\": " << (a.drift_segments ? json_number(a.drift_percent) : "null")
-      << ", \"drift_deg_per_100m\": " << (a.drift_segments ? json_number(a.drift_deg_per_100m) : "null")
-      << "}";
-  return out.str();
-}
-
 std::optional<std::vector<Eigen::Isometry3d>> poses_of_dataset(
     std::size_t first, std::size_t count,
     const std::function<std::optional<Eigen::Isometry3d>(std::size_t)>& pose) {
@@ -66,38 +53,6 @@ std::optional<std::vector<Eigen::Isometry3d>> ground_truth_of(const Dataset& dat
 std::optional<std::vector<Eigen::Isometry3d>> odometry_of(const Dataset& dataset, std::size_t first,
                                                           std::size_t count) {
   return poses_of_dataset(first, count, [&](std::size_t i) { return dataset.odometry(i); });
-}
-
-TrajectoryAccuracy trajectory_accuracy(const std::vector<Eigen::Isometry3d>& estimate,
-                                       const std::vector<Eigen::Isometry3d>& truth) {
-  TrajectoryAccuracy a;
-  const AteResult ate = absolute_trajectory_error(estimate, truth, Alignment::se3);
-  a.ate_translation = ate.translation.rms;
-  a.ate_rotation = ate.rotation.rms;
-  const RpeResult rpe = relative_pose_error(estimate, truth);  // consecutive scans
-  a.rpe_translation = rpe.translation.rms;
-  a.rpe_rotation = rpe.rotation.rms;
-  const KittiDriftResult drift = kitti_drift(estimate, truth);
-  if (drift.status.ok && drift.segments > 0) {
-    a.drift_segments = drift.segments;
-    a.drift_percent = 100.0 * drift.translation;
-    a.drift_deg_per_100m = 100.0 * kDegPerRad * drift.rotation;
-  }
-  return a;
-}
-
-std::string accuracy_line(const TrajectoryAccuracy& a) {
-  std::ostringstream out;
-  out << std::fixed << std::setprecision(3) << "ATE " << a.ate_translation << " m / " << std::setprecision(2)
-      << a.ate_rotation * kDegPerRad << "°, RPE " << std::setprecision(3) << a.rpe_translation << " m / "
-      << std::setprecision(2) << a.rpe_rotation * kDegPerRad << "° per scan, drift ";
-  if (a.drift_segments == 0) {
-    out << "n/a (path shorter than 100 m)";
-  } else {
-    out << a.drift_percent << " % / " << std::setprecision(3) << a.drift_deg_per_100m << "°/100 m ("
-        << a.drift_segments << " segments)";
-  }
-  return out.str();
 }
 
 void write_trajectories(const std::filesystem::path& out, const Dataset& dataset, std::size_t first,

@@ -12,16 +12,9 @@
 
 #include "sextant/core/dataset.hpp"
 #include "sextant/odometry/odometry.hpp"
+#include "trajectory_accuracy.hpp"
 
 namespace sextant::cli {
-
-/// Accuracy of a trajectory against the ground truth (translations in m, rotations in rad).
-struct TrajectoryAccuracy {
-  double ate_translation = 0, ate_rotation = 0;  ///< RMS after SE(3) Umeyama alignment
-  double rpe_translation = 0, rpe_rotation = 0;  ///< RMS over consecutive scans
-  std::size_t drift_segments = 0;                ///< KITTI segments (0: path shorter than 100 m)
-  double drift_percent = 0, drift_deg_per_100m = 0;
-};
 
 /// The poses of scans first … first + count − 1 with the dataset's ground truth, or nothing when
 /// any of them lacks it.
@@ -30,12 +23,6 @@ std::optional<std::vector<Eigen::Isometry3d>> ground_truth_of(const Dataset& dat
 /// Same for the dataset's odometry.
 std::optional<std::vector<Eigen::Isometry3d>> odometry_of(const Dataset& dataset, std::size_t first,
                                                           std::size_t count);
-
-TrajectoryAccuracy trajectory_accuracy(const std::vector<Eigen::Isometry3d>& estimate,
-                                       const std::vector<Eigen::Isometry3d>& truth);
-
-/// "ATE 0.123 m / 0.45°, RPE 0.012 m / 0.10° per scan, drift 1.23 % / 0.45°/100 m".
-std::string accuracy_line(const TrajectoryAccuracy& a);
 
 /// Writes trajectory.tum and trajectory.kitti.txt (and groundtruth.* when `truth` is given) into
 /// `out`. Stamps: the dataset's clock, else the scan index. For a KITTI dataset the KITTI files are

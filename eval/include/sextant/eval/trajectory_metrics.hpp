@@ -74,9 +74,10 @@ KummerleResult kummerle_metric(const PoseList& estimate, const PoseList& referen
 // ---- ATE -----------------------------------------------------------------------------------
 
 enum class Alignment {
-  none,  ///< compare as given
-  se3,   ///< rigid Umeyama alignment of the estimate's positions onto the reference's
-  sim3,  ///< with scale (monocular-style)
+  none,    ///< compare as given
+  se3,     ///< rigid Umeyama alignment of the estimate's positions onto the reference's
+  sim3,    ///< with scale (monocular-style)
+  origin,  ///< the estimate's first pose moved onto the reference's first (T = ref₀ · est₀⁻¹)
 };
 
 struct AteResult {

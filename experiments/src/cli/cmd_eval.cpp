@@ -1,0 +1,214 @@
+// `sextant eval REFERENCE ESTIMATE [--format auto|tum|kitti] [--max-diff S] [--align se3|sim3|origin|none]
+// [--delta N] [--delta-unit frames|m] [--json] [--plot DIR]`: the accuracy of a trajectory one already
+// has (evo_ape / evo_rpe's job, plus KITTI drift, Wulf and Kümmerle). TUM files pair by timestamp,
+// KITTI files (no time) by index. For `sextant odometry`'s own files, with the defaults, it prints the
+// very line odometry printed (both go through evaluate_trajectory).
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include "commands.hpp"
+#include "sextant/core/atomic_file.hpp"
+#include "sextant/core/error.hpp"
+#include "sextant/core/io/trajectory_io.hpp"
+#include "sextant/core/units.hpp"
+#include "sextant/eval/plots.hpp"
+#include "sextant/eval/trajectory_evaluation.hpp"
+#include "sextant/experiments/json.hpp"
+#include "trajectory_accuracy.hpp"
+
+namespace sextant::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct EvalOptions {
+  std::string reference, estimate;
+  std::string format = "auto";
+  double max_diff = 0.01;
+  std::string align = "se3";
+  double delta = 1.0;
+  std::string delta_unit = "frames";
+  bool json = false;
+  std::string plot;
+};
+
+struct LoadedTrajectory {
+  Trajectory poses;
+  TrajectoryFormat format = TrajectoryFormat::kTum;
+};
+
+LoadedTrajectory load(const std::string& file, const std::string& format) {
+  LoadedTrajectory t;
+  t.format = format == "tum"     ? TrajectoryFormat::kTum
+             : format == "kitti" ? TrajectoryFormat::kKitti
+                                 : detect_trajectory_format(file);
+  t.poses = t.format == TrajectoryFormat::kTum ? read_tum_trajectory(file) : read_kitti_trajectory(file);
+  return t;
+}
+
+const char* format_name(TrajectoryFormat f) {
+  return f == TrajectoryFormat::kTum ? "TUM" : "KITTI";
+}
+
+std::string fixed(double value, int digits) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(digits) << value;
+  return out.str();
+}
+
+std::string stats_row(const std::string& name, const SampleStats& s, double scale, int digits) {
+  return "| " + name + " | " + fixed(s.rms * scale, digits) + " | " + fixed(s.mean * scale, digits) + " | " +
+         fixed(s.median * scale, digits) + " | " + fixed(s.max * scale, digits) + " | " +
+         std::to_string(s.count) + " |\n";
+}
+
+std::string stats_json(const SampleStats& s, double scale) {
+  return "{\"rms\": " + json_number(s.rms * scale) + ", \"mean\": " + json_number(s.mean * scale) +
+         ", \"median\": " + json_number(s.median * scale) + ", \"max\": " + json_number(s.max * scale) +
+         ", \"count\": " + std::to_string(s.count) + "}";
+}
+
+/// Top view of both trajectories, and the ATE's translation error along the reference's path.
+void write_plots(const fs::path& dir, const AssociatedPoses& pairs, const TrajectoryEvaluation& e) {
+  TrajectoryPlot top;
+  top.title = "Top view (estimate aligned: the ATE's alignment)";
+  TrajectorySeries reference{"reference", {}, "#222222", {}, 10, 2.0};
+  TrajectorySeries estimate{"estimate", {}, "#d62728", {}, 10, 2.0};
+  for (const auto& T : pairs.reference) reference.positions.push_back(T.translation());
+  for (const auto& T : e.aligned_estimate) estimate.positions.push_back(T.translation());
+  top.trajectories = {reference, estimate};
+  write_svg(render_svg(top), dir / "trajectories.svg");
+
+  XYPlot along;
+  along.title = "ATE translation error along the path";
+  along.x_label = "distance along the reference [m]";
+  along.y_label = "error [m]";
+  along.legend = false;
+  along.add_line("", path_distances(pairs.reference), e.ate.translation_errors);
+  write_svg(render_svg(along), dir / "error_along_path.svg");
+}
+
+int run_eval(const EvalOptions& o) {
+  const LoadedTrajectory reference = load(o.reference, o.format);
+  const LoadedTrajectory estimate = load(o.estimate, o.format);
+  TrajectoryEvaluationSettings settings;
+  if (!parse_alignment(o.align, &settings.alignment))
+    throw std::invalid_argument("--align must be se3, sim3, origin or none, not '" + o.align + "'");
+  settings.rpe.unit = o.delta_unit == "m" ? RpeSettings::Unit::meters : RpeSettings::Unit::frames;
+  settings.rpe.delta = o.delta;
+  std::string why;
+  if (!settings.rpe.valid(&why)) throw std::invalid_argument("--delta: " + why);
+
+  // Pair by time when both files have it (TUM); KITTI files have none: by index.
+  const bool by_stamp =
+      reference.format == TrajectoryFormat::kTum && estimate.format == TrajectoryFormat::kTum;
+  const AssociatedPoses pairs = by_stamp ? associate_by_stamp(estimate.poses, reference.poses, o.max_diff)
+                                         : associate_by_index(estimate.poses, reference.poses);
+  if (!pairs.status.ok) throw InputError(o.estimate, "", pairs.status.message);
+  const TrajectoryEvaluation e = evaluate_trajectory(pairs.estimate, pairs.reference, settings);
+  if (!e.status.ok) throw InputError(o.estimate, "", e.status.message);
+  const TrajectoryAccuracy a = trajectory_accuracy(e);
+  const std::string per =
+      o.delta == 1.0 && o.delta_unit == "frames"
+          ? "scan"
+          : fixed(o.delta, o.delta_unit == "m" ? 1 : 0) + (o.delta_unit == "m" ? " m" : " frames");
+  if (!o.plot.empty()) write_plots(o.plot, pairs, e);
+
+  const double deg = kDegPerRad;
+  if (o.json) {
+    std::ostringstream j;
+    j << "{\"reference\": " << json_string(o.reference) << ", \"estimate\": " << json_string(o.estimate)
+      << ", \"pairs\": " << pairs.estimate.size() << ", \"associated_by\": \""
+      << (by_stamp ? "stamp" : "index") << "\", \"unmatched_estimate\": " << pairs.unmatched_estimate
+      << ", \"unmatched_reference\": " << pairs.unmatched_reference
+      << ", \"largest_stamp_difference_s\": " << json_number(pairs.largest_difference)
+      << ", \"alignment\": {\"kind\": \"" << o.align
+      << "\", \"scale\": " << json_number(e.ate.alignment.scale)
+      << ", \"translation_m\": " << json_number(e.ate.alignment.translation.norm()) << "}"
+      << ", \"summary\": " << accuracy_json(a) << ", \"ate_m\": " << stats_json(e.ate.translation, 1.0)
+      << ", \"ate_deg\": " << stats_json(e.ate.rotation, deg)
+      << ", \"rpe_m\": " << stats_json(e.rpe.translation, 1.0)
+      << ", \"rpe_deg\": " << stats_json(e.rpe.rotation, deg) << ", \"rpe_delta\": " << json_number(o.delta)
+      << ", \"rpe_delta_unit\": \"" << o.delta_unit
+      << "\", \"wulf_position_m\": " << json_number(e.wulf.position_rms)
+      << ", \"wulf_orientation_deg\": " << json_number(e.wulf.orientation_rms * deg)
+      << ", \"kummerle_translation_m\": " << json_number(e.kummerle.translation_rms)
+      << ", \"kummerle_rotation_deg\": " << json_number(e.kummerle.rotation_rms * deg) << "}\n";
+    std::cout << j.str();
+    return 0;
+  }
+  std::cout << "reference: " << o.reference << " (" << format_name(reference.format) << ", "
+            << reference.poses.size() << " poses)\n"
+            << "estimate:  " << o.estimate << " (" << format_name(estimate.format) << ", "
+            << estimate.poses.size() << " poses)\n";
+  if (by_stamp) {
+    std::cout << "paired:    " << pairs.estimate.size() << " by timestamp (within " << o.max_diff
+              << " s; largest difference " << pairs.largest_difference
+              << " s); unmatched: " << pairs.unmatched_estimate << " of the estimate, "
+              << pairs.unmatched_reference << " of the reference\n";
+  } else {
+    std::cout << "paired:    " << pairs.estimate.size() << " by index (KITTI files have no time)\n";
+  }
+  std::cout << "alignment: " << o.align;
+  if (settings.alignment != Alignment::none) {
+    std::cout << " (translation " << fixed(e.ate.alignment.translation.norm(), 3) << " m";
+    if (settings.alignment == Alignment::sim3) std::cout << ", scale " << fixed(e.ate.alignment.scale, 4);
+    std::cout << ")";
+  }
+  std::cout << "\n" << accuracy_line(a, per) << "\n\n";
+  std::cout << "| metric | RMS | mean | median | max | N |\n|---|---|---|---|---|---|\n"
+            << stats_row("ATE translation [m]", e.ate.translation, 1.0, 3)
+            << stats_row("ATE rotation [°]", e.ate.rotation, deg, 3)
+            << stats_row("RPE translation [m], per " + per, e.rpe.translation, 1.0, 3)
+            << stats_row("RPE rotation [°], per " + per, e.rpe.rotation, deg, 3) << "\n"
+            << "Wulf (eqs. 6.1–6.3): position " << fixed(e.wulf.position_rms, 3) << " m, orientation "
+            << fixed(e.wulf.orientation_rms * deg, 3)
+            << "°; Kümmerle (eq. 6.6, consecutive poses): translation "
+            << fixed(e.kummerle.translation_rms, 3) << " m, rotation "
+            << fixed(e.kummerle.rotation_rms * deg, 3) << "°\n";
+  if (!o.plot.empty())
+    std::cout << "wrote: " << (fs::path(o.plot) / "trajectories.svg").string() << ", error_along_path.svg\n";
+  return 0;
+}
+
+}  // namespace
+
+void add_eval_command(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<EvalOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "eval",
+      "Accuracy of a trajectory against a reference (TUM or KITTI files): ATE, RPE, KITTI drift, Wulf "
+      "and Kümmerle, after an alignment");
+  cmd->add_option("reference", o->reference, "Reference (ground truth) trajectory: TUM or KITTI file")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("estimate", o->estimate, "Estimated trajectory: TUM or KITTI file")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--format", o->format, "File format: auto (8 numbers a line TUM, 12 KITTI), tum, kitti")
+      ->check(CLI::IsMember({"auto", "tum", "kitti"}))
+      ->capture_default_str();
+  cmd->add_option("--max-diff", o->max_diff, "TUM: largest time difference of a pose pair [s]")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  cmd->add_option("--align", o->align,
+                  "Alignment of the estimate before every metric: se3 (Umeyama), sim3 (with scale), origin "
+                  "(first poses), none")
+      ->check(CLI::IsMember({"se3", "sim3", "origin", "none"}))
+      ->capture_default_str();
+  cmd->add_option("--delta", o->delta, "RPE step between the poses of a pair")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option("--delta-unit", o->delta_unit, "Unit of --delta: frames, or m along the reference's path")
+      ->check(CLI::IsMember({"frames", "m"}))
+      ->capture_default_str();
+  cmd->add_flag("--json", o->json, "Print the results as one JSON object");
+  cmd->add_option("--plot", o->plot,
+                  "Write trajectories.svg (top view) and error_along_path.svg into this folder");
+  cmd->callback([o, &exit_code] { exit_code = guarded([&] { return run_eval(*o); }); });
+}
+
+}  // namespace sextant::cli

@@ -1,0 +1,110 @@
+// `sextant eval` end to end: on `sextant odometry`'s own files it prints the very accuracy line
+// odometry printed (TUM by time, KITTI by index); a copy of the reference moved by 5 m gives ATE 5
+// without alignment and 0 with it; JSON, plots, unmatched stamps counted; bad input exits 1 or 2.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "sextant/core/io/trajectory_io.hpp"
+#include "sextant_test/cli_run.hpp"
+#include "sextant_test/temp_dir.hpp"
+
+namespace sextant {
+namespace {
+
+namespace fs = std::filesystem;
+
+test::CliRun run_cli(const std::string& arguments) {
+  return test::run_cli(SEXTANT_CLI, arguments);
+}
+
+/// The rest of the line that starts with `prefix` (empty when there is none).
+std::string line_after(const std::string& text, const std::string& prefix) {
+  const auto at = text.find(prefix);
+  if (at == std::string::npos) return "";
+  const auto start = at + prefix.size();
+  return text.substr(start, text.find('\n', start) - start);
+}
+
+TEST(EvalCli, PrintsWhatOdometryPrintedForItsOwnFiles) {
+  test::TempDir tmp;
+  const test::CliRun odo = run_cli("odometry campus --scans 60 --no-progress --out " + (tmp / "o").string());
+  ASSERT_EQ(odo.exit_code, 0) << odo.output;
+  const std::string printed = line_after(odo.output, "estimate: ");
+  ASSERT_NE(printed.find("ATE "), std::string::npos) << odo.output;
+  for (const char* suffix : {".tum", ".kitti.txt"}) {
+    const test::CliRun e = run_cli("eval " + (tmp / "o" / (std::string("groundtruth") + suffix)).string() +
+                                   " " + (tmp / "o" / (std::string("trajectory") + suffix)).string());
+    ASSERT_EQ(e.exit_code, 0) << e.output;
+    EXPECT_NE(e.output.find("\n" + printed + "\n"), std::string::npos) << suffix << "\n"
+                                                                       << printed << "\n"
+                                                                       << e.output;
+    EXPECT_NE(e.output.find(std::string(suffix) == ".tum" ? "60 by timestamp" : "60 by index"),
+              std::string::npos)
+        << e.output;
+  }
+}
+
+TEST(EvalCli, KnownOffsetJsonPlotsAndUnmatchedStamps) {
+  test::TempDir tmp;
+  Trajectory ref, est;
+  for (int i = 0; i < 30; ++i) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.translation() = Eigen::Vector3d(2.0 * i, 0.05 * i * i, 0.0);
+    ref.push_back({10.0 + i, T});
+    T.translation() += Eigen::Vector3d(3, 4, 0);
+    est.push_back({10.0 + i + 0.002, T});
+  }
+  est.push_back({99.0, Eigen::Isometry3d::Identity()});  // no reference pose near
+  write_tum_trajectory(tmp / "ref.tum", ref);
+  write_tum_trajectory(tmp / "est.tum", est);
+  const std::string files = (tmp / "ref.tum").string() + " " + (tmp / "est.tum").string();
+
+  const test::CliRun none = run_cli("eval " + files + " --align none --plot " + (tmp / "plots").string());
+  ASSERT_EQ(none.exit_code, 0) << none.output;
+  EXPECT_NE(none.output.find("ATE 5.000 m / 0.00°"), std::string::npos) << none.output;
+  EXPECT_NE(none.output.find("unmatched: 1 of the estimate, 0 of the reference"), std::string::npos)
+      << none.output;
+  for (const char* svg : {"trajectories.svg", "error_along_path.svg"})
+    EXPECT_GT(fs::file_size(tmp / "plots" / svg), 500u) << svg;
+
+  const test::CliRun json = run_cli("eval " + files + " --json");
+  ASSERT_EQ(json.exit_code, 0) << json.output;
+  EXPECT_NE(json.output.find("\"pairs\": 30"), std::string::npos) << json.output;
+  EXPECT_NE(json.output.find("\"unmatched_estimate\": 1"), std::string::npos) << json.output;
+  EXPECT_NE(json.output.find("\"ate_m\": {\"rms\": "), std::string::npos) << json.output;
+  EXPECT_NE(json.output.find("\"kind\": \"se3\""), std::string::npos) << json.output;
+  const test::CliRun aligned = run_cli("eval " + files);
+  EXPECT_NE(aligned.output.find("ATE 0.000 m"), std::string::npos) << aligned.output;
+
+  const test::CliRun tight = run_cli("eval " + files + " --max-diff 0.001");
+  EXPECT_EQ(tight.exit_code, 1) << tight.output;
+  EXPECT_NE(tight.output.find("no estimate pose has a reference pose within"), std::string::npos)
+      << tight.output;
+}
+
+TEST(EvalCli, BadInputIsAClearError) {
+  test::TempDir tmp;
+  Trajectory a, b;
+  for (int i = 0; i < 5; ++i) a.push_back({double(i), Eigen::Isometry3d::Identity()});
+  b = a;
+  b.pop_back();
+  write_kitti_trajectory(tmp / "a.txt", a);
+  write_kitti_trajectory(tmp / "b.txt", b);
+  const test::CliRun lengths = run_cli("eval " + (tmp / "a.txt").string() + " " + (tmp / "b.txt").string());
+  EXPECT_EQ(lengths.exit_code, 1);
+  EXPECT_NE(lengths.output.find("the estimate has 4 poses and the reference 5"), std::string::npos)
+      << lengths.output;
+  std::ofstream(tmp / "bad.txt") << "1 2 3\n";
+  const test::CliRun bad = run_cli("eval " + (tmp / "a.txt").string() + " " + (tmp / "bad.txt").string());
+  EXPECT_EQ(bad.exit_code, 1);
+  EXPECT_NE(bad.output.find("bad.txt"), std::string::npos) << bad.output;
+  const test::CliRun usage =
+      run_cli("eval " + (tmp / "a.txt").string() + " " + (tmp / "a.txt").string() + " --align affine");
+  EXPECT_EQ(usage.exit_code, 2) << usage.output;
+}
+
+}  // namespace
+}  // namespace sextant
