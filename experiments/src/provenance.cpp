@@ -31,6 +31,10 @@ bool run_command(const std::string& command, std::string& output) {
 
 }  // namespace
 
+std::string sextant_version() {
+  return SEXTANT_VERSION;
+}
+
 GitState current_git_state() {
   GitState state;
   const std::string git = "git -C '" + std::string(SEXTANT_SOURCE_DIR) + "' ";

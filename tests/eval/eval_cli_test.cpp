@@ -44,6 +44,9 @@ TEST(EvalCli, PrintsWhatOdometryPrintedForItsOwnFiles) {
     EXPECT_NE(e.output.find(std::string(suffix) == ".tum" ? "60 by timestamp" : "60 by index"),
               std::string::npos)
         << e.output;
+    const test::CliRun v = run_cli("eval -v " + (tmp / "o" / (std::string("groundtruth") + suffix)).string() +
+                                   " " + (tmp / "o" / (std::string("trajectory") + suffix)).string());
+    EXPECT_NE(v.output.find("| 100 | "), std::string::npos) << v.output;
   }
 }
 
@@ -76,6 +79,9 @@ TEST(EvalCli, KnownOffsetJsonPlotsAndUnmatchedStamps) {
   EXPECT_NE(json.output.find("\"unmatched_estimate\": 1"), std::string::npos) << json.output;
   EXPECT_NE(json.output.find("\"ate_m\": {\"rms\": "), std::string::npos) << json.output;
   EXPECT_NE(json.output.find("\"kind\": \"se3\""), std::string::npos) << json.output;
+  const test::CliRun quiet = run_cli("-q eval " + files);
+  EXPECT_EQ(quiet.output,
+            "ATE 0.000 m / 0.00°, RPE 0.000 m / 0.00° per scan, drift n/a (path shorter than 100 m)\n");
   const test::CliRun aligned = run_cli("eval " + files);
   EXPECT_NE(aligned.output.find("ATE 0.000 m"), std::string::npos) << aligned.output;
 

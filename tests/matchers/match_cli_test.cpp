@@ -5,7 +5,11 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
+
+#include <Eigen/Core>
 
 #include "sextant/core/io/uos.hpp"
 #include "sextant_test/cli_run.hpp"
@@ -138,6 +142,73 @@ TEST(MatchCliErrors, BadInputIsAnErrorWithExitCode1) {
     EXPECT_EQ(r.exit_code, 1) << arguments << "\n" << r.output;
     EXPECT_NE(r.output.find("sextant: error: "), std::string::npos) << r.output;
   }
+}
+
+/// The 4×4 numbers `sextant -q match` prints, row-major; empty when the output is not 4 lines of 4.
+std::vector<double> quiet_transform(const std::string& output) {
+  std::vector<double> values;
+  std::stringstream in(output);
+  for (double v; in >> v;) values.push_back(v);
+  return values.size() == 16 && in.eof() ? values : std::vector<double>{};
+}
+
+// Issue 26: --init takes what PCL and small_gicp users hold (a 4×4 or 3×4 matrix, as numbers or a
+// file); the same guess in every form gives the same result.
+TEST(MatchCliConventions, InitAsEulerNumbersMatrixOrFile) {
+  const std::string pair = std::string(SEXTANT_DATA_DIR) + "/velodyne_pair/fast_gicp_251370668.pcd " +
+                           SEXTANT_DATA_DIR + "/velodyne_pair/fast_gicp_251371071.pcd";
+  const CliRun euler = run_cli("-q match " + pair + " --init 0.5,0.1,0,0,0,90");
+  const std::vector<double> expected = quiet_transform(euler.output);
+  ASSERT_EQ(expected.size(), 16u) << euler.output;
+  const std::string rows = "0,-1,0,0.5, 1,0,0,0.1, 0,0,1,0";  // Rz(90°), the 3×4 form
+  const std::string file = ::testing::TempDir() + "init_4x4.txt";
+  std::ofstream(file) << "0 -1 0 0.5\n1 0 0 0.1\n0 0 1 0\n0 0 0 1\n";
+  for (const std::string& init : {"'" + rows + "'", "'" + rows + ", 0,0,0,1'", file}) {
+    const CliRun r = run_cli("match " + pair + " --init " + init + " --quiet");
+    const std::vector<double> got = quiet_transform(r.output);
+    ASSERT_EQ(got.size(), 16u) << init << "\n" << r.output;
+    for (int k = 0; k < 16; ++k) EXPECT_NEAR(got[k], expected[k], 1e-6) << init << " element " << k;
+  }
+  const CliRun mirror = run_cli("match " + pair + " --init '1,0,0,0, 0,1,0,0, 0,0,-1,0'");
+  EXPECT_EQ(mirror.exit_code, 1);
+  EXPECT_NE(mirror.output.find("--init: not a rigid transform"), std::string::npos) << mirror.output;
+  const CliRun five = run_cli("match " + pair + " --init 1,2,3,4,5");
+  EXPECT_NE(five.output.find("found 5 numbers"), std::string::npos) << five.output;
+}
+
+/// The 36 numbers after "key": [[ (row-major).
+Eigen::Matrix<double, 6, 6> matrix6(const std::string& json, const std::string& key) {
+  Eigen::Matrix<double, 6, 6> M = Eigen::Matrix<double, 6, 6>::Constant(NAN);
+  const auto at = json.find("\"" + key + "\": [[");
+  if (at == std::string::npos) return M;
+  const char* p = json.c_str() + at + key.size() + 6;
+  for (int k = 0; k < 36; ++k) {
+    while (*p == ' ' || *p == ',' || *p == '[' || *p == ']') ++p;
+    char* end = nullptr;
+    M(k / 6, k % 6) = std::strtod(p, &end);
+    p = end;
+  }
+  return M;
+}
+
+// Issue 26: --json carries H and its covariance (symmetric, = H⁻¹), the matched fraction and
+// where --out wrote; -v prints the iterations.
+TEST(MatchCliConventions, JsonHasHessianCovarianceAndMatchedFraction) {
+  const std::string out = ::testing::TempDir() + "aligned.pcd";
+  const CliRun r = run_cli("match " + kPair + kNearGuess + " --json --out " + out);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  const std::string json = r.output.substr(r.output.rfind("{\"method\""));
+  for (const char* key : {"\"hessian\": [[", "\"covariance\": [[", "\"parameters\": [\"x_m\"", "\"out\": \""})
+    EXPECT_NE(json.find(key), std::string::npos) << key << "\n" << json;
+  const Eigen::Matrix<double, 6, 6> H = matrix6(json, "hessian"), C = matrix6(json, "covariance");
+  EXPECT_TRUE((C * H).isApprox(Eigen::Matrix<double, 6, 6>::Identity(), 1e-6)) << C * H;
+  EXPECT_TRUE(C.isApprox(C.transpose(), 1e-9));
+  EXPECT_NEAR(json_number(json, "matched_fraction"),
+              json_number(json, "matched_points") / json_number(json, "input_points"), 1e-9);
+  std::ifstream written(out);
+  EXPECT_TRUE(written.good()) << out;
+  const CliRun verbose = run_cli("match " + kPair + kNearGuess + " -v");
+  EXPECT_NE(verbose.output.find("iterations:  layer"), std::string::npos) << verbose.output;
 }
 
 }  // namespace

@@ -180,5 +180,24 @@ TEST(OdometryCli, BadArgumentsAreClearErrors) {
   EXPECT_NE(no_out.output.find("--out"), std::string::npos) << no_out.output;
 }
 
+// Issue 26: -q keeps the results (the trust counts and the accuracy) and drops the rest; -v adds a
+// line per registration.
+TEST(OdometryCli, QuietAndVerbose) {
+  TempDir tmp;
+  const CliRun quiet = run_cli("odometry campus --scans 6 -q --out " + (tmp / "q").string());
+  ASSERT_EQ(quiet.exit_code, 0) << quiet.output;
+  EXPECT_EQ(quiet.output.find("dataset:"), std::string::npos) << quiet.output;
+  EXPECT_EQ(quiet.output.find("wrote:"), std::string::npos) << quiet.output;
+  EXPECT_NE(quiet.output.find("estimate: ATE"), std::string::npos) << quiet.output;
+  EXPECT_NE(quiet.output.find("untrusted"), std::string::npos) << quiet.output;
+  const CliRun verbose =
+      run_cli("--verbose odometry campus --scans 6 --no-progress --out " + (tmp / "v").string());
+  ASSERT_EQ(verbose.exit_code, 0) << verbose.output;
+  for (int k = 0; k < 5; ++k)
+    EXPECT_NE(verbose.output.find("step " + std::to_string(k) + " (scans " + std::to_string(k) + "→"),
+              std::string::npos)
+        << verbose.output;
+}
+
 }  // namespace
 }  // namespace sextant

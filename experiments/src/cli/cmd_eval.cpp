@@ -140,6 +140,10 @@ int run_eval(const EvalOptions& o) {
     std::cout << j.str();
     return 0;
   }
+  if (verbosity() == Verbosity::kQuiet) {
+    std::cout << accuracy_line(a, per) << "\n";
+    return 0;
+  }
   std::cout << "reference: " << o.reference << " (" << format_name(reference.format) << ", "
             << reference.poses.size() << " poses)\n"
             << "estimate:  " << o.estimate << " (" << format_name(estimate.format) << ", "
@@ -169,6 +173,13 @@ int run_eval(const EvalOptions& o) {
             << "°; Kümmerle (eq. 6.6, consecutive poses): translation "
             << fixed(e.kummerle.translation_rms, 3) << " m, rotation "
             << fixed(e.kummerle.rotation_rms * deg, 3) << "°\n";
+  if (verbosity() == Verbosity::kVerbose) {
+    std::cout << "\n| KITTI segment [m] | segments | drift [%] | [°/100 m] |\n|---|---|---|---|\n";
+    for (const KittiSegmentDrift& d : e.drift.per_length)
+      std::cout << "| " << fixed(d.length, 0) << " | " << d.segments << " | "
+                << (d.segments ? fixed(100.0 * d.translation, 2) : "–") << " | "
+                << (d.segments ? fixed(100.0 * deg * d.rotation, 3) : "–") << " |\n";
+  }
   if (!o.plot.empty())
     std::cout << "wrote: " << (fs::path(o.plot) / "trajectories.svg").string() << ", error_along_path.svg\n";
   return 0;

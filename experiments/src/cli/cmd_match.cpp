@@ -8,6 +8,7 @@
 // the wide basin. Exit status: 0 trusted, 3 not converged or not trusted (why is printed), 1 bad
 // input, 2 a usage error.
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -16,6 +17,8 @@
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <Eigen/Cholesky>
 
 #include "commands.hpp"
 #include "matcher_options.hpp"
@@ -49,61 +52,86 @@ struct PoseError {
 /// A guess beyond this is no guess between two scans (PCL's peers abort the process on 1e39) [m].
 constexpr double kMaxGuessMetres = 1e6;
 
-Eigen::Isometry3d parse_init(const std::string& text) {
-  std::vector<double> values;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ',')) {
-    try {
-      std::size_t used = 0;
-      values.push_back(std::stod(item, &used));
-      if (item.find_first_not_of(" \t", used) != std::string::npos) throw std::invalid_argument(item);
-    } catch (const std::exception&) {
-      throw InputError("--init", "",
-                       "'" + item + "' is not a number (expected x,y,z,alpha,beta,gamma in m and deg)");
-    }
-  }
-  if (values.size() != 6 || !Eigen::Map<const Vector6d>(values.data()).allFinite())
-    throw InputError("--init", "",
-                     "expected six finite numbers x,y,z,alpha,beta,gamma (m, deg), got '" + text + "'");
-  if (Eigen::Map<const Eigen::Vector3d>(values.data()).norm() > kMaxGuessMetres)
-    throw InputError("--init", "",
-                     "the translation is farther than 10^6 m (" + text + "): not a guess between two scans");
-  return to_isometry(Pose6{values[0], values[1], values[2], values[3] / kDegPerRad, values[4] / kDegPerRad,
-                           values[5] / kDegPerRad});
-}
-
-/// A 3×4 or 4×4 row-major matrix text file (whitespace separated) mapping input into reference.
-Eigen::Isometry3d read_ground_truth(const std::string& file) {
-  std::ifstream in(file);
-  if (!in) throw InputError(file, "", "cannot open the ground-truth matrix file");
-  std::vector<double> values;
-  std::string token;
-  while (in >> token) {
-    try {
-      std::size_t used = 0;
-      values.push_back(std::stod(token, &used));
-      if (used != token.size()) throw std::invalid_argument(token);
-    } catch (const std::exception&) {
-      throw InputError(file, "", "'" + token + "' is not a number (expected a 3×4 or 4×4 matrix)");
-    }
-  }
+/// A 3×4 or 4×4 row-major matrix (12 or 16 numbers) as a rigid transform; InputError at `where`.
+Eigen::Isometry3d rigid_matrix(const std::vector<double>& values, const std::string& where) {
   if (values.size() != 12 && values.size() != 16)
-    throw InputError(file, "",
+    throw InputError(where, "",
                      "expected 12 (3×4) or 16 (4×4) numbers, found " + std::to_string(values.size()));
   Eigen::Matrix4d M = Eigen::Matrix4d::Identity();
   for (std::size_t i = 0; i < values.size(); ++i)
     M(static_cast<int>(i / 4), static_cast<int>(i % 4)) = values[i];
-  if (const std::string why = rigid_problem(M.topLeftCorner<3, 3>(), M.topRightCorner<3, 1>()); !why.empty())
-    throw InputError(file, "", "not a rigid transform: " + why);
   if (!M.allFinite() || !M.row(3).isApprox(Eigen::RowVector4d(0, 0, 0, 1)))
-    throw InputError(file, "", "the matrix is not finite or its last row is not 0 0 0 1");
-  const Eigen::Matrix3d R = M.topLeftCorner<3, 3>();
-  if (!(R.transpose() * R).isApprox(Eigen::Matrix3d::Identity(), 1e-4) || R.determinant() < 0.0)
-    throw InputError(file, "", "the rotation part is not a rotation matrix");
+    throw InputError(where, "", "the matrix is not finite or its last row is not 0 0 0 1");
+  if (const std::string why = rigid_problem(M.topLeftCorner<3, 3>(), M.topRightCorner<3, 1>()); !why.empty())
+    throw InputError(where, "", "not a rigid transform: " + why);
   Eigen::Isometry3d T;
   T.matrix() = M;
   return T;
+}
+
+/// The numbers of `text`, separated by commas and/or white space; InputError naming the first
+/// that is not one.
+std::vector<double> numbers_in(const std::string& text, const std::string& where,
+                               const std::string& expected) {
+  std::vector<double> values;
+  std::string item;
+  std::stringstream in(text);
+  while (in >> item) {
+    std::stringstream parts(item);
+    for (std::string part; std::getline(parts, part, ',');) {
+      if (part.empty()) continue;
+      try {
+        std::size_t used = 0;
+        values.push_back(std::stod(part, &used));
+        if (used != part.size()) throw std::invalid_argument(part);
+      } catch (const std::exception&) {
+        throw InputError(where, "", "'" + part + "' is not a number (expected " + expected + ")");
+      }
+    }
+  }
+  return values;
+}
+
+std::string file_text(const std::string& file, const std::string& what) {
+  std::ifstream in(file);
+  if (!in) throw InputError(file, "", "cannot open the " + what);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// --init: six numbers x,y,z,alpha,beta,gamma [m, deg]; 12 or 16 numbers (a 3×4 or 4×4 row-major
+/// matrix, as PCL and small_gicp users hold it); or a file holding such a matrix.
+Eigen::Isometry3d parse_init(const std::string& text) {
+  const char* expected = "x,y,z,alpha,beta,gamma in m and deg, a 3×4 or 4×4 matrix, or a matrix file";
+  const bool file = std::filesystem::is_regular_file(text);
+  const std::string where = file ? text : "--init";
+  const std::vector<double> values =
+      numbers_in(file ? file_text(text, "--init matrix file") : text, where, expected);
+  Eigen::Isometry3d T;
+  if (values.size() == 6 && !file) {
+    if (!Eigen::Map<const Vector6d>(values.data()).allFinite())
+      throw InputError("--init", "",
+                       "expected six finite numbers x,y,z,alpha,beta,gamma (m, deg), got '" + text + "'");
+    T = to_isometry(Pose6{values[0], values[1], values[2], values[3] / kDegPerRad, values[4] / kDegPerRad,
+                          values[5] / kDegPerRad});
+  } else if (values.size() == 12 || values.size() == 16) {
+    T = rigid_matrix(values, where);
+  } else {
+    throw InputError(
+        where, "",
+        "expected " + std::string(expected) + "; found " + std::to_string(values.size()) + " numbers");
+  }
+  if (T.translation().norm() > kMaxGuessMetres)
+    throw InputError("--init", "",
+                     "the translation is farther than 10^6 m (" + text + "): not a guess between two scans");
+  return T;
+}
+
+/// A 3×4 or 4×4 row-major matrix text file (whitespace separated) mapping input into reference.
+Eigen::Isometry3d read_ground_truth(const std::string& file) {
+  return rigid_matrix(numbers_in(file_text(file, "ground-truth matrix file"), file, "a 3×4 or 4×4 matrix"),
+                      file);
 }
 
 PoseError pose_error(const Eigen::Isometry3d& truth, const Eigen::Isometry3d& estimate) {
@@ -127,18 +155,38 @@ std::string json_string(const std::string& s) {
   return out + "\"";
 }
 
+template <class Matrix>
+std::string json_matrix(const Matrix& M) {
+  std::string out = "[";
+  for (int i = 0; i < M.rows(); ++i) {
+    out += i ? ", [" : "[";
+    for (int j = 0; j < M.cols(); ++j) out += (j ? ", " : "") + json_number(M(i, j));
+    out += "]";
+  }
+  return out + "]";
+}
+
+/// R = H⁻¹ (eq. 3.50) when H is positive definite; NaN otherwise (a degenerate or failed result).
+Matrix6d covariance_of(const Matrix6d& H) {
+  const Eigen::LLT<Matrix6d> llt(H);
+  if (llt.info() != Eigen::Success || !H.allFinite()) return Matrix6d::Constant(kNaN);
+  return llt.solve(Matrix6d::Identity());
+}
+
 void print_json(const MatchOptions& o, const PairMatch& m, const std::string& search,
                 const std::optional<PoseError>& error) {
   const RegistrationResult& r = m.result;
   std::ostringstream out;
   out << "{\"method\": " << json_string(o.method) << ", \"sampling\": " << json_string(o.sampling)
-      << ", \"transform\": [";
-  for (int i = 0; i < 4; ++i) {
-    out << (i ? ", [" : "[");
-    for (int j = 0; j < 4; ++j) out << (j ? ", " : "") << json_number(r.T.matrix()(i, j));
-    out << "]";
-  }
-  out << "], \"converged\": " << (r.converged ? "true" : "false")
+      << ", \"transform\": " << json_matrix(r.T.matrix())
+      << ", \"parameters\": [\"x_m\", \"y_m\", \"z_m\", \"alpha_rad\", \"beta_rad\", \"gamma_rad\"]"
+      << ", \"hessian\": " << json_matrix(r.H) << ", \"covariance\": " << json_matrix(covariance_of(r.H))
+      << ", \"matched_fraction\": "
+      << json_number(r.input_points
+                         ? static_cast<double>(r.matched_points) / static_cast<double>(r.input_points)
+                         : kNaN)
+      << ", \"out\": " << (o.out.empty() ? "null" : json_string(o.out))
+      << ", \"converged\": " << (r.converged ? "true" : "false")
       << ", \"termination\": " << json_string(to_string(r.why)) << ", \"iterations\": " << r.iterations
       << ", \"seconds\": " << json_number(r.seconds)
       << ", \"reference_seconds\": " << json_number(m.reference_seconds)
@@ -154,9 +202,26 @@ void print_json(const MatchOptions& o, const PairMatch& m, const std::string& se
   std::cout << out.str();
 }
 
+/// -v: the optimiser's iterations (layer, score, step, matched points).
+void print_trace(const RegistrationResult& r) {
+  std::cout << "iterations:  layer  score  |Δξ|  matched\n";
+  for (const IterationTrace& t : r.trace)
+    std::cout << "  " << std::setw(3) << t.iteration << "  " << t.layer << "  " << t.score << "  "
+              << t.step_norm << "  " << t.matched_points << "\n";
+}
+
 void print_text(const MatchOptions& o, const PairMatch& m, const std::string& search,
                 const std::optional<PoseError>& error) {
   const RegistrationResult& r = m.result;
+  if (verbosity() == Verbosity::kQuiet) {  // the transform alone, and why it is not trusted
+    std::cout << std::setprecision(9);
+    for (int i = 0; i < 4; ++i)
+      std::cout << r.T.matrix()(i, 0) << " " << r.T.matrix()(i, 1) << " " << r.T.matrix()(i, 2) << " "
+                << r.T.matrix()(i, 3) << "\n";
+    if (!r.quality.trusted())
+      std::cerr << "not trusted: " << to_string(r.quality.trust) << " (" << r.quality.reason << ")\n";
+    return;
+  }
   const Pose6 p = to_pose6(r.T);
   std::cout << std::fixed << std::setprecision(6) << "method:      " << describe_matcher(o) << ", sampling "
             << o.sampling << ": " << r.input_points << " points (" << std::setprecision(1)
@@ -179,6 +244,7 @@ void print_text(const MatchOptions& o, const PairMatch& m, const std::string& se
             << std::setprecision(4) << "time:        " << r.seconds << " s registration, "
             << m.reference_seconds << " s reference model, " << m.sampling_seconds << " s sampling\n";
   if (error) std::cout << "error:       " << error->cm << " cm, " << error->deg << " deg (against --gt)\n";
+  if (verbosity() == Verbosity::kVerbose) print_trace(r);
 }
 
 int run_match(MatchOptions o) {
@@ -218,7 +284,8 @@ int run_match(MatchOptions o) {
   if (truth) error = pose_error(*truth, m.result.T);
   if (!o.out.empty()) {
     write_cloud(o.out, input.transformed(m.result.T));
-    if (!o.json) std::cout << "wrote:       " << o.out << " (the input in the reference frame)\n";
+    if (!o.json && verbosity() != Verbosity::kQuiet)
+      std::cout << "wrote:       " << o.out << " (the input in the reference frame)\n";
   }
   if (o.json) {
     print_json(o, m, search, error);
@@ -245,12 +312,18 @@ void add_match_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--solver", o->solver, "Solver for the NDT family (newton, lm, ceres)");
   cmd->add_option("--sampling", o->sampling, "Input sampler (all, regular, random, gbs, ...)")
       ->capture_default_str();
-  cmd->add_option("--init", o->init, "Initial guess x,y,z,alpha,beta,gamma [m, deg]");
+  cmd->add_option(
+      "--init", o->init,
+      "Initial guess (p_reference = T · p_input): x,y,z,alpha,beta,gamma [m, deg]; 12 or 16 numbers "
+      "(a 3x4 or 4x4 row-major matrix); or a file holding such a matrix");
   cmd->add_option("--gt", o->gt, "Ground truth: 3x4 or 4x4 matrix text file mapping input into reference");
   cmd->add_option("--config", o->config, "YAML file with optional 'matcher:' and 'sampler:' settings maps");
   cmd->add_option("--out", o->out, "Write the aligned input cloud here (format by extension)");
   cmd->add_option("--seed", o->seed, "Seed of the sampler's random choices")->capture_default_str();
-  cmd->add_flag("--json", o->json, "Print one JSON object instead of text");
+  cmd->add_flag(
+      "--json", o->json,
+      "Print one JSON object instead of text: transform, hessian and covariance (= H⁻¹, eq. 3.50; rows "
+      "and columns x y z [m], alpha beta gamma [rad]), trust, matched_fraction, …");
   cmd->add_flag("--no-wide-basin", o->no_wide_basin,
                 "Without --init: register from the identity only (default: the wide basin searches "
                 "yaw and x/y around it); with --init: no wide-basin retry of an untrusted result");

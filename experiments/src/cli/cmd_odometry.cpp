@@ -101,6 +101,18 @@ std::string provenance_json(const OdometryOptions& o, const MatcherConfig& confi
   return out.str();
 }
 
+/// -v: one line per registration (steps.csv has every column).
+void print_steps(const OdometryResult& result, std::size_t first) {
+  for (std::size_t k = 0; k < result.steps.size(); ++k) {
+    const OdometryStep& st = result.steps[k];
+    std::cout << "step " << k << " (scans " << first + k << "→" << first + k + 1
+              << "): " << (st.converged ? "converged" : "not converged") << ", " << st.iterations
+              << " iterations, trust " << to_string(st.quality.trust)
+              << (st.quality.reason.empty() ? "" : " (" + st.quality.reason + ")")
+              << (st.recovery.empty() ? "" : ", recovery " + st.recovery) << "\n";
+  }
+}
+
 int run_odometry_command(const OdometryOptions& o) {
   const std::string start = iso_time_now();
   // Arguments first (cheap), then the dataset.
@@ -141,21 +153,25 @@ int run_odometry_command(const OdometryOptions& o) {
                          "constant_velocity (or identity)");
   s.guess = guess.value_or(meta.has_odometry ? OdometryGuess::odometry : OdometryGuess::constant_velocity);
 
-  std::cout << "dataset:  " << (meta.path.empty() ? meta.name : meta.path.string()) << " (" << meta.format
-            << ", " << dataset->size() << " scans; odometry " << yes_no(meta.has_odometry)
-            << ", ground truth " << yes_no(meta.has_ground_truth) << "), scans " << o.first << "–"
-            << o.first + scans - 1 << "\n"
-            << "method:   " << describe_matcher(o) << ", sampling " << o.sampling << ", guess "
-            << to_string(s.guess) << (o.guess.empty() ? " (default for this dataset)" : "") << ", map "
-            << to_string(s.map)
-            << (s.map == OdometryMap::local_map ? " of " + std::to_string(s.local_map_scans) + " scans" : "")
-            << "\n";
-  for (const std::string& note : meta.notes) std::cout << "note:     " << note << "\n";
+  const bool quiet = verbosity() == Verbosity::kQuiet;
+  if (!quiet)
+    std::cout << "dataset:  " << (meta.path.empty() ? meta.name : meta.path.string()) << " (" << meta.format
+              << ", " << dataset->size() << " scans; odometry " << yes_no(meta.has_odometry)
+              << ", ground truth " << yes_no(meta.has_ground_truth) << "), scans " << o.first << "–"
+              << o.first + scans - 1 << "\n"
+              << "method:   " << describe_matcher(o) << ", sampling " << o.sampling << ", guess "
+              << to_string(s.guess) << (o.guess.empty() ? " (default for this dataset)" : "") << ", map "
+              << to_string(s.map)
+              << (s.map == OdometryMap::local_map ? " of " + std::to_string(s.local_map_scans) + " scans"
+                                                  : "")
+              << "\n";
+  if (!quiet)
+    for (const std::string& note : meta.notes) std::cout << "note:     " << note << "\n";
   std::cout << std::flush;
 
   const auto t0 = std::chrono::steady_clock::now();
   std::optional<Progress> progress;  // drawn only on a terminal
-  if (o.no_progress) {
+  if (o.no_progress || quiet) {
     progress.emplace(scans - 1, "odometry", nullptr);
   } else {
     progress.emplace(scans - 1, "odometry");
@@ -196,9 +212,11 @@ int run_odometry_command(const OdometryOptions& o) {
   } else {
     std::cout << "no ground truth for these scans: no ATE, RPE or drift\n";
   }
-  std::cout << "wrote:    " << (out / "trajectory.tum").string() << ", trajectory.kitti.txt"
-            << (truth ? ", groundtruth.tum, groundtruth.kitti.txt" : "")
-            << ", steps.csv, metrics.json, provenance.json\n";
+  if (verbosity() == Verbosity::kVerbose) print_steps(result, o.first);
+  if (!quiet)
+    std::cout << "wrote:    " << (out / "trajectory.tum").string() << ", trajectory.kitti.txt"
+              << (truth ? ", groundtruth.tum, groundtruth.kitti.txt" : "")
+              << ", steps.csv, metrics.json, provenance.json\n";
   return 0;
 }
 

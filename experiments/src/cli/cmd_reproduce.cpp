@@ -45,7 +45,7 @@ void add_reproduce_command(CLI::App& app, int& exit_code) {
       options.results_root = args->results;
       options.jobs = args->jobs;
       options.quick = args->quick;
-      options.progress = !args->no_progress;
+      options.progress = !args->no_progress && verbosity() != Verbosity::kQuiet;
       int status = 0;
       for (const auto& config : configs) {
         const RunnerSummary s = run_experiment(config, options);

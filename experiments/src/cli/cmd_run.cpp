@@ -33,7 +33,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
       options.jobs = args->jobs;
       options.shard = parse_shard(args->shard);
       options.quick = args->quick;
-      options.progress = !args->no_progress;
+      options.progress = !args->no_progress && verbosity() != Verbosity::kQuiet;
       int status = 0;
       for (const auto& config : args->configs) {
         const RunnerSummary s = run_experiment(config, options);

@@ -1,8 +1,8 @@
 // `sextant version`: the versions of Sextant and of the libraries it was built against.
-#include <Eigen/Core>
 #include <iostream>
 
 #include "commands.hpp"
+#include "sextant/experiments/provenance.hpp"
 
 namespace sextant::cli {
 
@@ -10,9 +10,8 @@ void add_version_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("version", "Print the versions of Sextant and its libraries");
   cmd->callback([&exit_code] {
     exit_code = guarded([] {
-      std::cout << "sextant 0.1.0\n"
-                << "eigen " << EIGEN_WORLD_VERSION << "." << EIGEN_MAJOR_VERSION << "." << EIGEN_MINOR_VERSION
-                << "\n";
+      std::cout << version_line() << "\n"
+                << "libraries: " << library_versions_json() << "\n";
       return 0;
     });
   });

@@ -4,6 +4,7 @@
 // The subcommand's callback sets exit_code = guarded([&] { ... return 0; }).
 #include <filesystem>
 #include <functional>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -13,6 +14,17 @@ namespace sextant::cli {
 inline constexpr int kExitRuntimeError = 1;
 inline constexpr int kExitUsage = 2;
 inline constexpr int kExitUntrusted = 3;  ///< a registration that is not converged or not trusted
+
+/// How much a subcommand prints besides its results and errors (main.cpp's -q/--quiet and
+/// -v/--verbose): quiet leaves the results alone (no progress, notes or summaries), verbose adds
+/// the detail behind them (match: the iterations; odometry: one line per step; eval: the drift per
+/// segment length).
+enum class Verbosity { kQuiet, kNormal, kVerbose };
+Verbosity verbosity();
+void set_verbosity(Verbosity v);
+
+/// "sextant 0.1.0 (commit 1a2b3c4d5e6f, dirty)": --version and the first line of `sextant version`.
+std::string version_line();
 
 /// Runs a subcommand body: an exception becomes "sextant: error: <message>" on stderr and exit code 1.
 int guarded(const std::function<int()>& body);

@@ -4,8 +4,27 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "sextant/experiments/provenance.hpp"
 
 namespace sextant::cli {
+namespace {
+
+Verbosity g_verbosity = Verbosity::kNormal;
+
+}  // namespace
+
+Verbosity verbosity() {
+  return g_verbosity;
+}
+void set_verbosity(Verbosity v) {
+  g_verbosity = v;
+}
+
+std::string version_line() {
+  const GitState git = current_git_state();
+  return "sextant " + sextant_version() + " (commit " + git.sha.substr(0, 12) + (git.dirty ? ", dirty" : "") +
+         ")";
+}
 
 int guarded(const std::function<int()>& body) {
   try {
@@ -22,6 +41,16 @@ int main(int argc, char** argv) {
   using namespace sextant::cli;
   CLI::App app{"Sextant: reproduces the experiments of a 2012 thesis on 3D LiDAR SLAM"};
   app.require_subcommand(1);
+  app.fallthrough();  // the global flags below also after the subcommand: `sextant match a b -q`
+  app.set_version_flag(
+      "--version", [] { return version_line(); }, "Print the version and exit");
+  auto* quiet = app.add_flag_callback(
+      "-q,--quiet", [] { set_verbosity(Verbosity::kQuiet); },
+      "Print only results and errors (no progress, notes or summaries)");
+  app.add_flag_callback(
+         "-v,--verbose", [] { set_verbosity(Verbosity::kVerbose); },
+         "Print the detail behind the results (iterations, steps)")
+      ->excludes(quiet);
   int exit_code = 0;
   // One line per subcommand (keep sorted).
   add_convert_command(app, exit_code);

@@ -1,7 +1,12 @@
 #include "matcher_options.hpp"
 
+#include <algorithm>
+#include <vector>
+
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/matchers/mlndt_presets.hpp"
+#include "sextant/matchers/optimizer.hpp"
 
 namespace sextant::cli {
 namespace {
@@ -27,7 +32,23 @@ MatcherConfig read_matcher_config(const MatcherOptions& o) {
   // The --config file's own `preset:` wins over --preset; its other keys override the preset's.
   if (ndt_family(o.method) && config.matcher.IsMap() && !config.matcher["preset"].IsDefined())
     config.matcher["preset"] = o.preset.empty() ? "default" : o.preset;
-  if (!o.solver.empty()) config.matcher["solver"] = o.solver;
+  if (!o.preset.empty()) {
+    const std::vector<std::string> names = mlndt_preset_names();
+    if (std::find(names.begin(), names.end(), o.preset) == names.end()) {
+      std::string known;
+      for (const std::string& n : names) known += (known.empty() ? "" : ", ") + n;
+      throw InputError("--preset", "", "unknown preset '" + o.preset + "' (known: " + known + ")");
+    }
+  }
+  if (!o.solver.empty()) {
+    SolverKind kind;
+    if (!ndt_family(o.method))
+      throw InputError("--solver", "",
+                       "a solver is a setting of mlndt and fbmlndt, not of '" + o.method + "'");
+    if (!solver_from_name(o.solver, kind))
+      throw InputError("--solver", "", "unknown solver '" + o.solver + "' (known: newton, lm, ceres)");
+    config.matcher["solver"] = o.solver;
+  }
   return config;
 }
 

@@ -11,6 +11,8 @@ struct GitState {
   std::string source;  ///< "git" (asked at run time) or "configure" (baked in at configure time)
 };
 
+/// The project version, "0.1.0".
+std::string sextant_version();
 /// Asks `git` in the source tree at run time; falls back to the SHA baked in at configure time.
 GitState current_git_state();
 /// {"eigen": "3.4.0", "yaml-cpp": ..., "tbb": ..., "ceres": ..., "pcl": ..., "fmt": ...} as JSON.
