@@ -17,8 +17,11 @@ function(run step)
 endfunction()
 
 file(REMOVE_RECURSE "${WORK_DIR}")
-set(prefix "${WORK_DIR}/prefix")
-run("install" ${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
+# Installed into one prefix, then moved: everything below runs from where the prefix was moved to.
+run("install" ${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${WORK_DIR}/installed")
+set(prefix "${WORK_DIR}/moved")
+file(RENAME "${WORK_DIR}/installed" "${prefix}")
+run("installed sextant version" "${prefix}/bin/sextant" version)
 # CONSUMER_CXX_FLAGS (optional): the instrumentation of a sanitizer build, for compiling and linking.
 run("configure consumer" ${CMAKE_COMMAND} -S "${CONSUMER_SOURCE_DIR}" -B "${WORK_DIR}/build"
     -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_CXX_COMPILER=${CXX_COMPILER} -DCMAKE_BUILD_TYPE=${BUILD_TYPE}
