@@ -94,6 +94,35 @@ TEST(CloudIo, CsvHeaderNonFiniteAndMalformed) {
   expect_input_error([&] { read_cloud(dir / "b.csv"); }, dir / "b.csv", "line 3", "'1.2.3'");
 }
 
+// Issue 26: a CSV with the header x,y,z,nx,ny,nz was refused ("expected 3 or 4 numbers"). Columns
+// are found by the header's names, in any order; the columns not read are named in a warning.
+TEST(CloudIo, CsvColumnsByName) {
+  TempDir dir;
+  write_text(dir / "normals.csv", "x,y,z,nx,ny,nz\n1,2,3,0,0,1\n4,5,6,0,1,0\n");
+  ScanLoadReport report;
+  const PointCloud normals = read_cloud(dir / "normals.csv", &report);
+  ASSERT_EQ(normals.size(), 2u);
+  EXPECT_EQ(normals[1], Eigen::Vector3f(4, 5, 6));
+  EXPECT_FALSE(normals.has_intensity());
+  ASSERT_EQ(report.warnings.size(), 1u);
+  EXPECT_EQ(report.warnings[0], "columns not read (no point field of Sextant's): nx, ny, nz");
+
+  // CloudCompare's header, reordered axes, quotes and a reflectance column.
+  write_text(dir / "cc.txt", "//Z,\"Y\",X,Reflectance,R\n3,2,1,0.5,255\n6,5,4,0.25,0\n");
+  const PointCloud reordered = read_cloud(dir / "cc.txt");
+  ASSERT_EQ(reordered.size(), 2u);
+  EXPECT_EQ(reordered[0], Eigen::Vector3f(1, 2, 3));
+  ASSERT_TRUE(reordered.has_intensity());
+  EXPECT_FLOAT_EQ(reordered.intensity()[1], 0.25f);
+
+  write_text(dir / "nameless.csv", "a,b,c\n1,2,3\n");
+  expect_input_error([&] { read_cloud(dir / "nameless.csv"); }, dir / "nameless.csv", "line 1",
+                     "the header names no 'x' column (columns: a, b, c)");
+  write_text(dir / "short.csv", "x,y,z,nx\n1,2,3,0\n1,2,3\n");
+  expect_input_error([&] { read_cloud(dir / "short.csv"); }, dir / "short.csv", "line 3",
+                     "found 3 numbers, but the header names 4");
+}
+
 TEST(CloudIo, AllNonFiniteIsAnError) {
   TempDir dir;
   write_text(dir / "n.xyz", "nan 1 2\ninf 1 2\n");
