@@ -6,8 +6,6 @@
 // Rows per pair:
 //   mlndt          the `default` preset (the library's defaults) on a GBS sample (GBS timed)
 //   mlndt_outdoor  the `outdoor` preset (n = 6) on the same GBS sample
-// (`sextant match` without --preset takes one of the two by the reference's span,
-// choose_mlndt_preset; the pair's header line names it)
 //   pcl_ndt        PCL's NDT, resolution 1 m, step 0.1, on the same GBS points as ours
 //   pcl_ndt_best   PCL's NDT at its most accurate setting on this pair, from a grid over
 //                  resolution {0.5, 1, 2} m × input {our GBS sample, voxel-grid centroids of the
@@ -182,11 +180,8 @@ int main(int argc, char** argv) {
     std::vector<Timing> timings(methods.size());
     for (int r = 0; r < repetitions; ++r)  // alternating, so drifts in machine load hit all
       for (std::size_t m = 0; m < methods.size(); ++m) run_once(methods[m], pair, timings[m]);
-    const PresetChoice choice = choose_mlndt_preset(pair.reference);
-    std::printf(
-        "%s: reference %zu points, input %zu points (GBS sample %zu); sextant match picks %s (span %.0f m)\n",
-        pair.name.c_str(), pair.reference.size(), pair.input.size(), gbs_sample(pair).size(),
-        choice.name.c_str(), choice.span);
+    std::printf("%s: reference %zu points, input %zu points (GBS sample %zu)\n", pair.name.c_str(),
+                pair.reference.size(), pair.input.size(), gbs_sample(pair).size());
     for (std::size_t m = 0; m < methods.size(); ++m) report(methods[m], pair, timings[m]);
     for (std::size_t ours = 0; ours < 2; ++ours) {
       const Error e = error_of(pair, timings[ours].last);

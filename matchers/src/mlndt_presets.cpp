@@ -38,20 +38,6 @@ std::string known_names() {
 
 }  // namespace
 
-PresetChoice choose_mlndt_preset(const PointCloud& reference) {
-  PresetChoice choice;
-  if (!reference.empty()) {
-    Eigen::Vector3f low = reference.points().front(), high = low;
-    for (const Eigen::Vector3f& p : reference.points()) {
-      low = low.cwiseMin(p);
-      high = high.cwiseMax(p);
-    }
-    choice.span = std::max(high.x() - low.x(), high.y() - low.y());
-  }
-  choice.name = choice.span >= kOutdoorSpan ? "outdoor" : "default";
-  return choice;
-}
-
 std::vector<std::string> mlndt_preset_names() {
   std::vector<std::string> names;
   for (const Preset& p : kPresets) names.emplace_back(p.name);

@@ -254,24 +254,6 @@ TEST(MlndtPresets, LibraryDefaultsAreTheDefaultPresetAndThesisPinsTheThesis) {
             SolverKind::kLevenbergMarquardt);
 }
 
-// What `sextant match` picks without --preset: the outdoor scans are far wider than kOutdoorSpan,
-// the indoor ones far narrower (so the choice does not hinge on a few metres).
-TEST(MlndtPresets, ReferenceSpanChoosesOutdoorForTheOutdoorScans) {
-  const std::string d = std::string(SEXTANT_DATA_DIR) + "/";
-  const auto choice = [&](const std::string& file) { return choose_mlndt_preset(read_cloud(d + file)); };
-  for (const char* outdoor : {"velodyne_pair/fast_gicp_251370668.pcd", "kitti00_pair/000000.xyz32.bin"}) {
-    const PresetChoice c = choice(outdoor);
-    EXPECT_EQ(c.name, "outdoor") << outdoor;
-    EXPECT_GT(c.span, 1.2 * kOutdoorSpan) << outdoor;
-  }
-  for (const char* indoor : {"uos_3dtk/scan000.3d", "pcl_room_scan/room_scan1.pcd"}) {
-    const PresetChoice c = choice(indoor);
-    EXPECT_EQ(c.name, "default") << indoor;
-    EXPECT_LT(c.span, 0.8 * kOutdoorSpan) << indoor;
-  }
-  EXPECT_EQ(choose_mlndt_preset(PointCloud()).name, "default");
-}
-
 // The legacy boolean and the named setting: line_search: true = step_control: line_search; both at
 // once is an error naming the key.
 TEST(RealPairs, StepControlSettingIsNamed) {

@@ -1,6 +1,7 @@
 #pragma once
 // Named settings of the `mlndt` matcher (and `fbmlndt`, which forwards the mlndt keys). A YAML map
-// may say `preset: <name>`; its other keys override the preset's. `sextant match --preset` uses them.
+// may say `preset: <name>`; its other keys override the preset's. One rule everywhere: `default`
+// unless a preset is named (`sextant match`, `sextant odometry`, the Python module, the library).
 //
 //   default — the measured best over every shared real pair and three campus pairs from the guess a
 //             user has (bench/bench_matcher_defaults, docs/matcher_defaults.md): LM, q = 8, n = 4,
@@ -18,26 +19,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "sextant/core/point_cloud.hpp"
-
 namespace sextant {
-
-/// Horizontal span [m] from which `choose_mlndt_preset` takes `outdoor`: between the shared indoor
-/// scans (uos 32 m, PCL's room 29 m) and the outdoor ones (Velodyne 84 m, KITTI 156 m).
-constexpr double kOutdoorSpan = 50.0;
-
-struct PresetChoice {
-  std::string name;   ///< "default" or "outdoor"
-  double span = 0.0;  ///< the reference's horizontal span [m]
-};
-
-/// The preset for a reference scan when none is named (`sextant match` without --preset): `outdoor`
-/// when the scene spans at least kOutdoorSpan horizontally (the larger side of its bounding box in
-/// x and y, as `sextant info` prints it; percentiles would not do: 99 % of a Velodyne scan's points
-/// lie within 30 m), `default` otherwise. A stray far return in an indoor scan makes it `outdoor`.
-/// Measured (docs/matcher_defaults.md): the finer layers of `outdoor` are what large outdoor scans
-/// need for sub-0.25° rotation and what pulls small indoor scans off.
-PresetChoice choose_mlndt_preset(const PointCloud& reference);
 
 /// The preset's settings map; InputError (naming `file`) for an unknown name.
 YAML::Node mlndt_preset(const std::string& name, const std::string& file = "<settings>");
