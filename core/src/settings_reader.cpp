@@ -67,10 +67,29 @@ YAML::Node load_yaml_file(const std::string& path) {
   return root;
 }
 
+namespace {
+
+thread_local SettingsRecording* t_recording = nullptr;
+
+}  // namespace
+
+SettingsRecording::SettingsRecording() : previous_(t_recording) {
+  t_recording = this;
+}
+SettingsRecording::~SettingsRecording() {
+  t_recording = previous_;
+}
+
 SettingsReader::SettingsReader(const YAML::Node& node, std::string file)
     : node_(node), file_(std::move(file)) {
   if (node_.IsDefined() && !node_.IsNull() && !node_.IsMap()) {
     throw InputError(file_, at_line(yaml_line(node_)), "expected a map of settings");
+  }
+  if (SettingsRecording* r = t_recording) {
+    // The reader of a child handed out by child() records under its key; any other into the root.
+    record_.reset(r->child_pending_ ? r->next_child_ : r->root_);  // reset: bind, never write through
+    recording_ = true;
+    r->child_pending_ = false;
   }
 }
 
@@ -79,6 +98,12 @@ bool SettingsReader::has(const std::string& key) const {
 }
 
 YAML::Node SettingsReader::child(const std::string& key) {
+  if (recording_ && t_recording) {
+    YAML::Node nested(YAML::NodeType::Map);
+    record_[key] = nested;
+    t_recording->next_child_.reset(nested);
+    t_recording->child_pending_ = true;
+  }
   if (!node_.IsMap()) return YAML::Node();
   const YAML::Node v = node_[key];
   if (v.IsDefined()) read_.insert(key);

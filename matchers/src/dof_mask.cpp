@@ -37,14 +37,17 @@ bool DofMask::from_names(const std::vector<std::string>& names, DofMask& mask, s
   return mask.valid(why);
 }
 
-std::string DofMask::to_string() const {
+std::vector<std::string> DofMask::names() const {
   static const char* const kNames[6] = {"x", "y", "z", "roll", "pitch", "yaw"};
+  std::vector<std::string> out;
+  for (int i = 0; i < 6; ++i)
+    if (active[static_cast<std::size_t>(i)]) out.emplace_back(kNames[i]);
+  return out;
+}
+
+std::string DofMask::to_string() const {
   std::string out = "[";
-  for (int i = 0; i < 6; ++i) {
-    if (!active[static_cast<std::size_t>(i)]) continue;
-    if (out.size() > 1) out += ", ";
-    out += kNames[i];
-  }
+  for (const std::string& name : names()) out += (out.size() > 1 ? ", " : "") + name;
   return out + "]";
 }
 
@@ -55,7 +58,7 @@ bool DofMask::valid(std::string* why) const {
 }
 
 void read_dof_mask(SettingsReader& in, const std::string& key, DofMask& mask) {
-  std::vector<std::string> names;
+  std::vector<std::string> names = mask.names();  // the default, recorded when the key is absent
   if (!in.read(key, names)) return;
   std::string why;
   if (!DofMask::from_names(names, mask, &why)) in.fail(key, why);

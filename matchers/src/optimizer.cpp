@@ -306,13 +306,13 @@ std::string to_string(StepControl control) {
 }
 
 void read_optimizer_settings(SettingsReader& in, const std::string& known_solvers, OptimizerSettings& s) {
-  std::string solver, control;
+  std::string solver = to_string(s.solver), control = to_string(s.step_control);  // the defaults
   if (in.read("solver", solver) && !solver_from_name(solver, s.solver))
     in.fail("solver", "unknown solver '" + solver + "' (known: " + known_solvers + ")");
   in.read("max_iterations", s.max_iterations);
   in.read("epsilon", s.epsilon);
   bool line_search = false;
-  const bool legacy = in.read("line_search", line_search);
+  const bool legacy = in.read_alias("line_search", line_search);
   if (legacy) s.step_control = line_search ? StepControl::kLineSearch : StepControl::kNone;
   if (in.read("step_control", control)) {
     if (legacy) in.fail("step_control", "give step_control or line_search, not both");

@@ -10,8 +10,10 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/cloud_io.hpp"
 #include "sextant/core/rng.hpp"
+#include "sextant/core/settings_reader.hpp"
 #include "sextant/matchers/feature_based_sampler.hpp"
 #include "sextant/matchers/match_pair.hpp"
+#include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 #include "sextant/matchers/sampler.hpp"
@@ -255,6 +257,39 @@ TEST(SettingsBounds, AbsurdButFiniteSettingsAreRefused) {  // issue 23
     EXPECT_NE(std::string(e.what()).find("at most 1000"), std::string::npos) << e.what();
   }
   EXPECT_NO_THROW((void)make_matcher("icp_p2l", YAML::Load("{max_correspondence_distance: 2.0}"), "t.yaml"));
+}
+
+// Issue 26: `--print-config` and provenance.json record every setting a matcher or sampler runs
+// with. The record of each registered one reads back (every key is a real key) to the same record.
+TEST(ResolvedSettings, EveryMatcherAndSamplerRecordReadsBackToItself) {
+  const auto round_trip = [](const auto& make, const std::string& name, const YAML::Node& given) {
+    YAML::Node first;
+    {
+      SettingsRecording recording;
+      (void)make(name, given, "t.yaml");
+      first = YAML::Clone(recording.resolved());
+    }
+    ASSERT_GT(first.size(), 0u) << name;
+    SettingsRecording recording;
+    (void)make(name, first, "resolved");
+    EXPECT_EQ(YAML::Dump(recording.resolved()), YAML::Dump(first)) << name;
+  };
+  const auto matcher = [](const std::string& n, const YAML::Node& s, const std::string& f) {
+    return make_matcher(n, s, f);
+  };
+  const auto sampler = [](const std::string& n, const YAML::Node& s, const std::string& f) {
+    return make_sampler(n, s, f);
+  };
+  for (const std::string& name : matcher_registry().names()) round_trip(matcher, name, YAML::Node());
+  for (const std::string& name : sampler_registry().names())
+    if (name != "all") round_trip(sampler, name, YAML::Node());
+  round_trip(matcher, "mlndt", YAML::Load("{preset: thesis, wide_basin: {}}"));
+  // A given value and a preset's value are recorded as they end, not as the defaults.
+  SettingsRecording recording;
+  (void)make_matcher("mlndt", YAML::Load("{preset: thesis, layers: 5}"), "t.yaml");
+  EXPECT_EQ(recording.resolved()["layers"].as<int>(), 5);
+  EXPECT_EQ(recording.resolved()["solver"].as<std::string>(), "newton");
+  EXPECT_EQ(recording.resolved()["step_control"].as<std::string>(), "none");
 }
 
 }  // namespace

@@ -190,6 +190,11 @@ TEST(OdometryCli, QuietAndVerbose) {
   EXPECT_EQ(quiet.output.find("wrote:"), std::string::npos) << quiet.output;
   EXPECT_NE(quiet.output.find("estimate: ATE"), std::string::npos) << quiet.output;
   EXPECT_NE(quiet.output.find("untrusted"), std::string::npos) << quiet.output;
+  // provenance.json holds every setting the run used, the defaults included (issue 26).
+  const std::string provenance = read_text(tmp / "q" / "provenance.json");
+  EXPECT_NE(provenance.find("\"matcher_resolved\": {"), std::string::npos) << provenance;
+  EXPECT_NE(provenance.find("\"step_control\":\"trust_region_last\""), std::string::npos) << provenance;
+  EXPECT_NE(provenance.find("\"sampler_resolved\": {\"cell_size\":1,"), std::string::npos) << provenance;
   const CliRun verbose =
       run_cli("--verbose odometry campus --scans 6 --no-progress --out " + (tmp / "v").string());
   ASSERT_EQ(verbose.exit_code, 0) << verbose.output;

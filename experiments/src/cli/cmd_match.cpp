@@ -41,6 +41,7 @@ struct MatchOptions : MatcherOptions {
   std::uint64_t seed = 1;
   bool json = false;
   bool no_wide_basin = false;
+  bool print_config = false;
 };
 
 /// Error of a registration against ground truth: E = T_gt⁻¹·T_est (docs/design.md, "Conventions").
@@ -248,8 +249,15 @@ void print_text(const MatchOptions& o, const PairMatch& m, const std::string& se
 }
 
 int run_match(MatchOptions o) {
-  const PointCloud reference = read_cloud(o.reference);
   const MatcherConfig config = read_matcher_config(o);
+  if (o.print_config) {  // what the first registration runs with: with the wide basin without --init
+    MatcherConfig first = config;
+    const std::optional<YAML::Node> wide = with_wide_basin(o.method, config.matcher);
+    if (o.init.empty() && !o.no_wide_basin && wide) first.matcher = *wide;
+    std::cout << YAML::Dump(resolved_settings(o, first, "matcher settings")) << "\n";
+    return 0;
+  }
+  const PointCloud reference = read_cloud(o.reference);
   const std::string where = o.config.empty() ? "matcher settings (--solver)" : o.config;
   const auto sampler =
       make_sampler(o.sampling, config.sampler, o.config.empty() ? "sampler settings" : o.config);
@@ -320,6 +328,9 @@ void add_match_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--config", o->config, "YAML file with optional 'matcher:' and 'sampler:' settings maps");
   cmd->add_option("--out", o->out, "Write the aligned input cloud here (format by extension)");
   cmd->add_option("--seed", o->seed, "Seed of the sampler's random choices")->capture_default_str();
+  cmd->add_flag("--print-config", o->print_config,
+                "Print every matcher and sampler setting the registration would use (the defaults included) "
+                "as YAML, and exit");
   cmd->add_flag(
       "--json", o->json,
       "Print one JSON object instead of text: transform, hessian and covariance (= H⁻¹, eq. 3.50; rows "

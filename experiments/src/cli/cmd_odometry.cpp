@@ -46,6 +46,7 @@ struct OdometryOptions : MatcherOptions {
   int jobs = 0;
   bool no_progress = false;
   bool no_recover = false;
+  bool print_config = false;
 };
 
 std::unique_ptr<Dataset> open_cli_dataset(const OdometryOptions& o) {
@@ -73,7 +74,7 @@ std::string yes_no(bool b) {
   return b ? "yes" : "no";
 }
 
-std::string provenance_json(const OdometryOptions& o, const MatcherConfig& config,
+std::string provenance_json(const OdometryOptions& o, const MatcherConfig& config, const YAML::Node& resolved,
                             const DatasetMetadata& meta, const OdometrySettings& s, std::size_t scans,
                             const std::string& start, double seconds) {
   const GitState git = current_git_state();
@@ -88,6 +89,8 @@ std::string provenance_json(const OdometryOptions& o, const MatcherConfig& confi
       << ",\n  \"config_file\": " << json_string(o.config)
       << ",\n  \"matcher_settings\": " << to_json(config.matcher) << ",\n  \"sampler_settings\": "
       << (config.sampler.IsDefined() && !config.sampler.IsNull() ? to_json(config.sampler) : "null")
+      << ",\n  \"matcher_resolved\": " << to_json(resolved["matcher"])
+      << ",\n  \"sampler_resolved\": " << to_json(resolved["sampler"])
       << ",\n  \"guess\": " << json_string(to_string(s.guess))
       << ",\n  \"map\": " << json_string(to_string(s.map))
       << ",\n  \"local_map_scans\": " << s.local_map_scans
@@ -122,9 +125,12 @@ int run_odometry_command(const OdometryOptions& o) {
   if (!o.guess.empty()) guess = parse_odometry_guess(o.guess, "--guess");
   const MatcherConfig config = read_matcher_config(o);
   const std::string where = o.config.empty() ? "matcher settings (--method, --preset, --solver)" : o.config;
-  (void)make_matcher(o.method, config.matcher, where);  // unknown names and bad settings stop here
-  (void)make_sampler(o.sampling, config.sampler,
-                     o.config.empty() ? "sampler settings (--sampling)" : o.config);
+  // Unknown names and bad settings stop here; `resolved` is every setting they run with.
+  const YAML::Node resolved = resolved_settings(o, config, where);
+  if (o.print_config) {
+    std::cout << YAML::Dump(resolved) << "\n";
+    return 0;
+  }
   s.method = {o.method, config.matcher, o.sampling, config.sampler};
   s.local_map_scans = o.local_map_scans;
   s.min_range = o.min_range;
@@ -197,7 +203,8 @@ int run_odometry_command(const OdometryOptions& o) {
   write_trajectories(out, *dataset, o.first, result.poses, truth);
   write_steps_csv(out / "steps.csv", o.first, result, truth);
   write_metrics_json(out / "metrics.json", estimate_accuracy, odometry_accuracy, scans, counts, seconds);
-  write_file_atomically(out / "provenance.json", provenance_json(o, config, meta, s, scans, start, seconds));
+  write_file_atomically(out / "provenance.json",
+                        provenance_json(o, config, resolved, meta, s, scans, start, seconds));
 
   std::cout << std::fixed << std::setprecision(1) << "registered " << result.steps.size() << " pairs in "
             << seconds << " s (" << std::setprecision(3)
@@ -261,6 +268,9 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--campus-seed", o->campus_seed, "Seed of the built-in campus")->capture_default_str();
   cmd->add_option("--jobs,-j", o->jobs, "Worker threads (0 = all)")->check(CLI::NonNegativeNumber);
   cmd->add_flag("--no-progress", o->no_progress, "No progress bar");
+  cmd->add_flag("--print-config", o->print_config,
+                "Print every matcher and sampler setting this run would use (the defaults included) as YAML, "
+                "and exit");
   cmd->add_flag("--no-recover", o->no_recover,
                 "Chain every registration as the matcher returns it (default: an untrusted one is "
                 "registered again with the wide basin, else its guess is chained)");

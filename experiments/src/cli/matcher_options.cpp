@@ -5,8 +5,10 @@
 
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/mlndt_presets.hpp"
 #include "sextant/matchers/optimizer.hpp"
+#include "sextant/matchers/sampler.hpp"
 
 namespace sextant::cli {
 namespace {
@@ -50,6 +52,22 @@ MatcherConfig read_matcher_config(const MatcherOptions& o) {
     config.matcher["solver"] = o.solver;
   }
   return config;
+}
+
+YAML::Node resolved_settings(const MatcherOptions& o, const MatcherConfig& config, const std::string& where) {
+  YAML::Node out(YAML::NodeType::Map);
+  {
+    SettingsRecording recording;
+    (void)make_matcher(o.method, config.matcher, where);
+    out["matcher"] = YAML::Clone(recording.resolved());
+  }
+  {
+    SettingsRecording recording;
+    (void)make_sampler(o.sampling, config.sampler,
+                       o.config.empty() ? "sampler settings (--sampling)" : o.config);
+    out["sampler"] = YAML::Clone(recording.resolved());
+  }
+  return out;
 }
 
 std::string describe_matcher(const MatcherOptions& o) {

@@ -25,6 +25,10 @@ struct MatcherConfig {
 /// preset's) and --solver. InputError for --preset on a matcher without presets.
 MatcherConfig read_matcher_config(const MatcherOptions& o);
 
+/// Every setting the matcher and the sampler run with — the given ones and the defaults they keep
+/// (SettingsRecording): {matcher: {…}, sampler: {…}}. Also checks them (InputError naming `where`).
+YAML::Node resolved_settings(const MatcherOptions& o, const MatcherConfig& config, const std::string& where);
+
 /// "mlndt (preset default)", "icp_p2l (solver lm)", …
 std::string describe_matcher(const MatcherOptions& o);
 

@@ -61,20 +61,25 @@ FbmlndtSettings read_fbmlndt_settings(const YAML::Node& node, const std::string&
   FbmlndtSettings s;
   YAML::Node rest;
   bool verify_given = false;
-  if (node && node.IsMap()) {
-    SettingsReader in(node, file);
+  {
+    // The nested settings are read even when absent (their defaults), so that a SettingsRecording
+    // holds them all.
+    SettingsReader in(node && node.IsMap() ? node : YAML::Node(), file);
     in.read("seed", s.seed);
-    if (in.has("features")) s.features = read_plane_extraction_settings(in.child("features"), file);
+    s.features = read_plane_extraction_settings(in.child("features"), file);
     s.fallback = read_fallback(in);
-    if (in.has("constraints")) s.constraints = read_constraint_thresholds(in.child("constraints"), file);
-    if (in.has("fallback_gbs")) s.fallback_gbs = read_grid_sampler_settings(in.child("fallback_gbs"), file);
-    if (in.read("verify", s.verify)) verify_given = true;
-    rest = YAML::Clone(node);  // the remaining keys belong to mlndt (which rejects unknown ones)
-    for (const char* own : {"seed", "features", "fallback", "constraints", "fallback_gbs", "verify"})
-      rest.remove(own);
+    s.constraints = read_constraint_thresholds(in.child("constraints"), file);
+    s.fallback_gbs = read_grid_sampler_settings(in.child("fallback_gbs"), file);
+    verify_given = in.has("verify");
+    if (node && node.IsMap()) {
+      rest = YAML::Clone(node);  // the remaining keys belong to mlndt (which rejects unknown ones)
+      for (const char* own : {"seed", "features", "fallback", "constraints", "fallback_gbs", "verify"})
+        rest.remove(own);
+    }
+    s.mlndt = read_mlndt_settings(rest, file);
+    if (!verify_given) s.verify = s.mlndt.refine_first;
+    in.read("verify", s.verify);  // after mlndt: its default follows refine_first
   }
-  s.mlndt = read_mlndt_settings(rest, file);
-  if (!verify_given) s.verify = s.mlndt.refine_first;
   return s;
 }
 

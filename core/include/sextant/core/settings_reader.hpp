@@ -17,15 +17,45 @@
 
 namespace sextant {
 
+/// While one is alive on this thread, every SettingsReader records each key it reads with the
+/// value the setting ends with (the file's, or the default it kept): the fully resolved settings,
+/// for provenance.json and --print-config. A child read through child() nests under its key; a
+/// second top-level reader (FbML-NDT's ML-NDT keys) adds its keys to the same map.
+///
+///   SettingsRecording recording;
+///   auto matcher = make_matcher("mlndt", node, file);
+///   YAML::Node resolved = recording.resolved();
+class SettingsRecording {
+ public:
+  SettingsRecording();
+  ~SettingsRecording();
+  SettingsRecording(const SettingsRecording&) = delete;
+  SettingsRecording& operator=(const SettingsRecording&) = delete;
+  const YAML::Node& resolved() const { return root_; }
+
+ private:
+  friend class SettingsReader;
+  YAML::Node root_{YAML::NodeType::Map};
+  YAML::Node next_child_;  ///< where the reader of the child just handed out records (a map)
+  bool child_pending_ = false;
+  SettingsRecording* previous_ = nullptr;
+};
+
 class SettingsReader {
  public:
   /// `node` may be null/undefined (all defaults); otherwise it must be a map.
   SettingsReader(const YAML::Node& node, std::string file);
 
-  /// Reads `key` into `value` if present (scalar types, std::string, std::vector of scalars).
+  /// Reads `key` into `value` if present (scalar types, std::string, std::vector of scalars). A
+  /// SettingsRecording records `value` as it ends: initialise it with the default.
   template <class T>
   bool read(const std::string& key, T& value);
 
+  /// Reads a deprecated spelling of another key: as read(), but not recorded (the other key is).
+  template <class T>
+  bool read_alias(const std::string& key, T& value) {
+    return read_value(key, value);
+  }
   /// Reads a required key.
   template <class T>
   void require(const std::string& key, T& value);
@@ -42,9 +72,14 @@ class SettingsReader {
   const YAML::Node& node() const { return node_; }
 
  private:
+  template <class T>
+  bool read_value(const std::string& key, T& value);
+
   YAML::Node node_;
   std::string file_;
   std::set<std::string> read_;
+  bool recording_ = false;
+  YAML::Node record_;  ///< the resolved map this reader writes to, when recording_
 };
 
 /// 1-based line of a node (0 when unknown).
@@ -54,6 +89,13 @@ YAML::Node load_yaml_file(const std::string& path);
 
 template <class T>
 bool SettingsReader::read(const std::string& key, T& value) {
+  const bool found = read_value(key, value);
+  if (recording_) record_[key] = value;
+  return found;
+}
+
+template <class T>
+bool SettingsReader::read_value(const std::string& key, T& value) {
   if (!node_.IsMap()) return false;
   const YAML::Node v = node_[key];
   if (!v.IsDefined() || v.IsNull()) {

@@ -18,6 +18,8 @@ struct DofMask {
   static bool from_names(const std::vector<std::string>& names, DofMask& mask, std::string* why);
   /// "[x, y, yaw]".
   std::string to_string() const;
+  /// {"x", "y", "yaw"}: what from_names reads back.
+  std::vector<std::string> names() const;
   bool valid(std::string* why) const;
 };
 
