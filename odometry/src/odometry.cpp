@@ -6,6 +6,7 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <optional>
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
@@ -124,6 +125,16 @@ struct Worker {
                const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed) const {
     if (step.trusted() || !recovery || starts.empty()) return;  // recovery: null when it is off
     double seconds = step.seconds;
+    // The least suspect registration so far: converged, enough overlap, every direction
+    // constrained, only its fit above the bar. The first registration counts as it was judged on
+    // its own (a sequence check may have flagged an absolutely sound one).
+    std::optional<OdometryStep> least_suspect;
+    const auto consider = [&](const OdometryStep& candidate, Trust absolute) {
+      if (!candidate.converged || (absolute != Trust::kSuspect && absolute != Trust::kOk)) return;
+      if (!least_suspect || candidate.quality.fit_ratio < least_suspect->quality.fit_ratio)
+        least_suspect = candidate;
+    };
+    consider(step, step.first_trust);
     for (const Eigen::Isometry3d& start : starts) {
       if (!wide_basin && start.isApprox(step.guess, 1e-12)) continue;  // tried already
       Rng rng(seed);                                                   // the same sample
@@ -137,9 +148,20 @@ struct Worker {
         step = std::move(again);
         return;
       }
+      consider(again, again.quality.trust);
     }
-    step.recovery = starts.back().isApprox(step.guess, 1e-12) ? "guess" : "last_motion";
-    step.relative = starts.back();
+    if (least_suspect) {
+      // Nothing trusted, but a registration whose only flaw is its fit: evidence from the scans,
+      // where the prior (the guess, the last trusted motion) has none. The step stays untrusted.
+      const Trust first = step.first_trust;
+      step = std::move(*least_suspect);
+      step.first_trust = first;
+      step.quality.trust = Trust::kSuspect;
+      step.recovery = "least_suspect";
+    } else {
+      step.recovery = starts.back().isApprox(step.guess, 1e-12) ? "guess" : "last_motion";
+      step.relative = starts.back();
+    }
     step.seconds = seconds;
   }
 

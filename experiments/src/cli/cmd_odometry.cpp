@@ -193,10 +193,11 @@ int run_odometry_command(const OdometryOptions& o) {
   counts.recovered = result.recovered();
   const auto truth = ground_truth_of(*dataset, o.first, scans);
   std::optional<TrajectoryAccuracy> estimate_accuracy, odometry_accuracy;
+  std::string estimate_problem, odometry_problem;  // why an accuracy could not be computed
   if (truth && scans >= 2) {
-    estimate_accuracy = trajectory_accuracy(result.poses, *truth);
+    estimate_accuracy = trajectory_accuracy(result.poses, *truth, &estimate_problem);
     if (const auto odometry = odometry_of(*dataset, o.first, scans))
-      odometry_accuracy = trajectory_accuracy(*odometry, *truth);
+      odometry_accuracy = trajectory_accuracy(*odometry, *truth, &odometry_problem);
   }
 
   const fs::path out(o.out);
@@ -210,14 +211,21 @@ int run_odometry_command(const OdometryOptions& o) {
             << seconds << " s (" << std::setprecision(3)
             << (result.steps.empty() ? 0.0 : seconds / static_cast<double>(result.steps.size()))
             << " s per pair), " << counts.not_converged << " not converged, " << counts.untrusted
-            << " untrusted" << (s.recover ? " (the last trusted motion or the guess chained)" : "") << ", "
-            << counts.recovered << " recovered\n";
-  if (estimate_accuracy) {
-    std::cout << "estimate: " << accuracy_line(*estimate_accuracy) << "\n";
-    if (odometry_accuracy)
-      std::cout << "odometry: " << accuracy_line(*odometry_accuracy) << " (the dataset's)\n";
-  } else {
+            << " untrusted"
+            << (s.recover ? " (the least suspect registration, the last trusted motion or the guess chained)"
+                          : "")
+            << ", " << counts.recovered << " recovered\n";
+  if (!truth) {
     std::cout << "no ground truth for these scans: no ATE, RPE or drift\n";
+  } else if (scans >= 2) {
+    std::cout << "estimate: "
+              << (estimate_accuracy ? accuracy_line(*estimate_accuracy) : "no accuracy: " + estimate_problem)
+              << "\n";
+    if (odometry_accuracy || !odometry_problem.empty())
+      std::cout << "odometry: "
+                << (odometry_accuracy ? accuracy_line(*odometry_accuracy)
+                                      : "no accuracy: " + odometry_problem)
+                << " (the dataset's)\n";
   }
   if (verbosity() == Verbosity::kVerbose) print_steps(result, o.first);
   if (!quiet)

@@ -2,7 +2,6 @@
 
 #include <iomanip>
 #include <sstream>
-#include <stdexcept>
 
 #include "sextant/core/units.hpp"
 #include "sextant/experiments/json.hpp"
@@ -23,10 +22,14 @@ TrajectoryAccuracy trajectory_accuracy(const TrajectoryEvaluation& e) {
   return a;
 }
 
-TrajectoryAccuracy trajectory_accuracy(const std::vector<Eigen::Isometry3d>& estimate,
-                                       const std::vector<Eigen::Isometry3d>& truth) {
+std::optional<TrajectoryAccuracy> trajectory_accuracy(const std::vector<Eigen::Isometry3d>& estimate,
+                                                      const std::vector<Eigen::Isometry3d>& truth,
+                                                      std::string* why) {
   const TrajectoryEvaluation e = evaluate_trajectory(estimate, truth);
-  if (!e.status.ok) throw std::runtime_error("accuracy against the ground truth: " + e.status.message);
+  if (!e.status.ok) {
+    if (why) *why = e.status.message;
+    return std::nullopt;
+  }
   return trajectory_accuracy(e);
 }
 

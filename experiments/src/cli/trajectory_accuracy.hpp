@@ -2,6 +2,7 @@
 // The accuracy summary that `sextant odometry` and `sextant eval` print and write: one
 // evaluate_trajectory (eval library) per trajectory, so that both commands give the same numbers
 // for the same poses by construction.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,10 +21,11 @@ struct TrajectoryAccuracy {
 };
 
 TrajectoryAccuracy trajectory_accuracy(const TrajectoryEvaluation& evaluation);
-/// SE(3)-aligned ATE, RPE over consecutive poses, KITTI drift; throws when a metric fails
-/// (a non-finite pose is an error, never a zero).
-TrajectoryAccuracy trajectory_accuracy(const std::vector<Eigen::Isometry3d>& estimate,
-                                       const std::vector<Eigen::Isometry3d>& truth);
+/// SE(3)-aligned ATE, RPE over consecutive poses, KITTI drift; nothing when a metric cannot be
+/// computed (a non-finite pose, positions that all coincide), with the reason in `why`: never zeros.
+std::optional<TrajectoryAccuracy> trajectory_accuracy(const std::vector<Eigen::Isometry3d>& estimate,
+                                                      const std::vector<Eigen::Isometry3d>& truth,
+                                                      std::string* why);
 
 /// "ATE 0.123 m / 0.45°, RPE 0.012 m / 0.10° per scan, drift 1.23 % / 0.45°/100 m (N segments)";
 /// `rpe_per` names the RPE's step ("scan", "5 frames", "10 m").

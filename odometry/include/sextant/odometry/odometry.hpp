@@ -103,9 +103,11 @@ struct OdometryStep {
   RegistrationQuality quality;
   /// How the step was recovered: "" (not needed, or recovery off), "wide_basin" (the first
   /// registration was not trusted; a wide-basin one is), "restart" (a matcher without a wide
-  /// basin, registered again from another start, is), "guess" / "last_motion" (no trusted
-  /// registration: the odometry guess, or the last trusted motion of a constant-velocity run, is
-  /// chained and the step stays untrusted).
+  /// basin, registered again from another start, is), "least_suspect" (none is trusted, but one
+  /// converged with enough overlap and every direction constrained and only its fit above the bar:
+  /// the lowest fit of them is chained, the step stays untrusted), "guess" / "last_motion" (no such
+  /// registration either: the odometry guess, or the last trusted motion of a constant-velocity run,
+  /// is chained and the step stays untrusted).
   std::string recovery;
   Trust first_trust = Trust::kOk;  ///< the first registration's trust, before any recovery
   bool trusted() const { return quality.trusted(); }
