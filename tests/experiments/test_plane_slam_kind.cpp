@@ -131,14 +131,19 @@ reference:
   max_error_m: {odometry: 22, ekf: 8}
 )";
 
-TEST(PlaneSlamKind, TrueLandmarkMapHoldsEveryPlaneSeenWithEnoughPoints) {
-  TempDir tmp;
-  test::write_text(tmp / "e99_slam_tiny.yaml", kTiny);
+/// Writes `text` as e99_slam_tiny.yaml in `tmp` and runs it in full (two workers).
+RunnerSummary run_tiny(const std::string& text, const TempDir& tmp) {
+  test::write_text(tmp / "e99_slam_tiny.yaml", text);
   RunnerOptions o;
   o.results_root = tmp / "results";
   o.jobs = 2;
   o.progress = false;
-  const RunnerSummary s = run_experiment(tmp / "e99_slam_tiny.yaml", o);
+  return run_experiment(tmp / "e99_slam_tiny.yaml", o);
+}
+
+TEST(PlaneSlamKind, TrueLandmarkMapHoldsEveryPlaneSeenWithEnoughPoints) {
+  TempDir tmp;
+  const RunnerSummary s = run_tiny(kTiny, tmp);
   ASSERT_EQ(s.executed, 4u);
   ASSERT_EQ(s.failed, 0u);
   // Known answer: the distinct true landmarks with ≥ 40 points in scans 0..7.
@@ -186,12 +191,7 @@ TEST(PlaneSlamKind, ExtractedLandmarksRunThroughPlaneSlam) {
   const std::string tiny_campus =
       "campus: {trajectory: {scans: 12}, sensor: {yaw_steps: 60, elevation_steps: 60}}";
   text.replace(text.find(tiny_campus), tiny_campus.size(), "campus: {}");
-  test::write_text(tmp / "e99_slam_tiny.yaml", text);
-  RunnerOptions o;
-  o.results_root = tmp / "results";
-  o.jobs = 2;
-  o.progress = false;
-  const RunnerSummary s = run_experiment(tmp / "e99_slam_tiny.yaml", o);
+  const RunnerSummary s = run_tiny(text, tmp);
   ASSERT_EQ(s.failed, 0u);
   for (const auto& row : read_rows(s.folder / kRunsJsonl).rows) {
     EXPECT_EQ(row.series.at("error_m").size(), 3u);
@@ -207,12 +207,7 @@ TEST(PlaneSlamKind, ARunThatMapsNothingIsAFailedRun) {
   std::string text = kTiny;
   text.replace(text.find("min_points: 40"), 14, "min_points: 100000000");
   text.replace(text.find("repetitions: 2"), 14, "repetitions: 1");
-  test::write_text(tmp / "e99_slam_tiny.yaml", text);
-  RunnerOptions o;
-  o.results_root = tmp / "results";
-  o.jobs = 2;
-  o.progress = false;
-  const RunnerSummary s = run_experiment(tmp / "e99_slam_tiny.yaml", o);
+  const RunnerSummary s = run_tiny(text, tmp);
   EXPECT_EQ(s.failed, 2u);
   for (const auto& row : read_rows(s.folder / kRunsJsonl).rows) {
     EXPECT_FALSE(row.ok) << row.method;
