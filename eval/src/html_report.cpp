@@ -10,7 +10,17 @@ namespace sextant {
 namespace {
 
 const char* kStyle =
-    R"(body{font-family:DejaVu Sans,Arial,sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;color:#222}
+    R"(body{font-family:DejaVu Sans,Arial,sans-serif;margin:0;color:#222}
+main.sx-main{max-width:1100px;margin:2em auto;padding:0 1em}
+nav.sx-toc{position:fixed;top:0;left:0;bottom:0;width:240px;box-sizing:border-box;overflow-y:auto;padding:1em .9em;background:#f5f6f8;border-right:1px solid #d8dbe0;font-size:.82em;line-height:1.3;z-index:10}
+nav.sx-toc p{margin:0 0 .6em;font-weight:bold}nav.sx-toc ol{list-style:none;margin:0;padding:0}nav.sx-toc li{margin:0 0 .45em}
+nav.sx-toc a{color:#1a4f9c;text-decoration:none}nav.sx-toc a:hover{text-decoration:underline}
+main.sx-main.sx-with-toc{margin-left:max(260px,calc((100vw - 1100px) / 2))}
+section{scroll-margin-top:1em}div.sx-wide{overflow-x:auto}p.sx-top{text-align:right;font-size:.85em;margin:1.5em 0 0}p.sx-top a{color:#1a4f9c}
+p.sx-view{padding:.4em .6em;background:#eef3fb;border-left:4px solid #3b6fd8}p.sx-view a{font-weight:bold}
+@media (max-width:900px){nav.sx-toc{position:sticky;bottom:auto;width:auto;padding:.5em .8em;border-right:0;border-bottom:1px solid #d8dbe0}
+nav.sx-toc p{display:none}nav.sx-toc ol{display:flex;gap:1.2em;overflow-x:auto;white-space:nowrap}nav.sx-toc li{margin:0}
+main.sx-main.sx-with-toc{margin-left:auto}section{scroll-margin-top:3em}}
 h1{margin-bottom:.2em}h2{border-bottom:1px solid #ccc;padding-bottom:.2em;margin-top:2em}
 table.sx-table{border-collapse:collapse;margin:1em 0;font-size:.9em}
 table.sx-table caption{caption-side:top;text-align:left;font-weight:bold;padding-bottom:.3em}
@@ -73,7 +83,8 @@ HtmlSection& HtmlSection::add_html(const std::string& html) {
 }
 
 HtmlSection& HtmlSection::add_table(const Table& table) {
-  blocks_.push_back(render_html(table));
+  // A table wider than the column beside the contents bar scrolls on its own, not the page.
+  blocks_.push_back("<div class=\"sx-wide\">\n" + render_html(table) + "</div>\n");
   return *this;
 }
 
@@ -81,6 +92,14 @@ HtmlSection& HtmlSection::add_figure(const std::string& src, const std::string& 
   figures_.push_back(src);
   blocks_.push_back("<figure><img src=\"" + escape_html(src) + "\" alt=\"" + escape_html(caption) +
                     "\"><figcaption>" + escape_html(caption) + "</figcaption></figure>\n");
+  return *this;
+}
+
+HtmlSection& HtmlSection::add_view(const std::string& src, const std::string& caption) {
+  views_.push_back(src);
+  blocks_.push_back("<p class=\"sx-view\"><a href=\"" + escape_html(src) +
+                    "\">3D view: " + escape_html(caption) +
+                    "</a> (an interactive page: drag to rotate, right-drag to pan, wheel to zoom)</p>\n");
   return *this;
 }
 
@@ -102,12 +121,13 @@ std::string HtmlSection::render() const {
         << "<ul class=\"claims\">\n"
         << items << "</ul>\n";
   }
-  out << "</section>\n";
+  out << "<p class=\"sx-top\"><a href=\"#top\">↑ Back to top</a></p>\n</section>\n";
   return out.str();
 }
 
-HtmlSection& HtmlReport::add_section(const std::string& id, const std::string& title) {
-  sections.emplace_back(id, title);
+HtmlSection& HtmlReport::add_section(const std::string& id, const std::string& title,
+                                     const std::string& toc_title) {
+  sections.emplace_back(id, title, toc_title);
   return sections.back();
 }
 
@@ -126,7 +146,16 @@ std::string HtmlReport::render() const {
   std::ostringstream out;
   out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>"
       << escape_html(title) << "</title>\n<style>\n"
-      << kStyle << "</style>\n</head>\n<body>\n<h1>" << escape_html(title) << "</h1>\n";
+      << kStyle << "</style>\n</head>\n<body>\n";
+  if (!sections.empty()) {
+    out << "<nav class=\"sx-toc\" aria-label=\"Contents\">\n<p><a href=\"#top\">Contents</a></p>\n<ol>\n";
+    for (const HtmlSection& s : sections)
+      out << "<li><a href=\"#" << escape_html(s.id()) << "\">" << escape_html(s.toc_title()) << "</a></li>\n";
+    if (!provenance.empty()) out << "<li><a href=\"#provenance\">Provenance</a></li>\n";
+    out << "</ol>\n</nav>\n";
+  }
+  out << "<main class=\"sx-main" << (sections.empty() ? "" : " sx-with-toc") << "\">\n<h1 id=\"top\">"
+      << escape_html(title) << "</h1>\n";
   if (!subtitle.empty()) out << "<p>" << escape_html(subtitle) << "</p>\n";
   if (counts[0] + counts[1] + counts[2] + counts[3] > 0)
     out << "<p class=\"summary\">Claims: <span class=\"verdict v-holds\">" << counts[0]
@@ -139,20 +168,14 @@ std::string HtmlReport::render() const {
                 : std::string())
         << "</p>\n";
   out << front_html;
-  if (!sections.empty()) {
-    out << "<nav><ul>\n";
-    for (const HtmlSection& s : sections)
-      out << "<li><a href=\"#" << escape_html(s.id()) << "\">" << escape_html(s.title()) << "</a></li>\n";
-    out << "</ul></nav>\n";
-  }
   for (const HtmlSection& s : sections) out << s.render();
   if (!provenance.empty()) {
     out << "<section id=\"provenance\">\n<h2>Provenance</h2>\n<dl class=\"provenance\">\n";
     for (const auto& [key, value] : provenance)
       out << "<dt>" << escape_html(key) << "</dt><dd>" << escape_html(value) << "</dd>\n";
-    out << "</dl>\n</section>\n";
+    out << "</dl>\n<p class=\"sx-top\"><a href=\"#top\">↑ Back to top</a></p>\n</section>\n";
   }
-  out << "</body>\n</html>\n";
+  out << "</main>\n</body>\n</html>\n";
   return out.str();
 }
 

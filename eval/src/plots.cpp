@@ -190,10 +190,14 @@ std::string render_svg(const XYPlot& plot) {
   }
 
   svg::LegendEntries legend;
-  for (std::size_t k = 0; k < plot.series.size(); ++k)
-    if (!plot.series[k].name.empty())
-      legend.emplace_back(plot.series[k].name,
-                          plot.series[k].color.empty() ? svg::palette(k) : plot.series[k].color);
+  for (std::size_t k = 0; k < plot.series.size(); ++k) {
+    const PlotSeries& s = plot.series[k];
+    if (s.name.empty()) continue;
+    // The sample: the line in the series' dash pattern, with its marker when it has markers.
+    legend.emplace_back(s.name, s.color.empty() ? svg::palette(k) : s.color,
+                        s.style == PlotSeries::Style::markers ? "" : s.dash,
+                        s.style != PlotSeries::Style::line, s.marker, s.style != PlotSeries::Style::markers);
+  }
   if (!plot.legend) legend.clear();
   const double legend_width = plot.width - kLeft - kRight;
   const int rows = svg::legend_rows(legend, legend_width);
@@ -205,10 +209,12 @@ std::string render_svg(const XYPlot& plot) {
     const std::string color = s.color.empty() ? svg::palette(k) : s.color;
     std::vector<double> px, py;
     auto flush = [&] {
-      if (s.style != PlotSeries::Style::markers && px.size() > 1) doc.polyline(px, py, color);
+      if (s.style != PlotSeries::Style::markers && px.size() > 1)
+        doc.polyline(px, py, color, 1.5, false, s.dash);
       px.clear();
       py.clear();
     };
+    const std::size_t every = std::max<std::size_t>(1, s.marker_every);
     for (std::size_t i = 0; i < std::min(s.x.size(), s.y.size()); ++i) {
       // Points outside a fixed range are dropped, not clipped.
       const bool inside = x.usable(s.x[i]) && y.usable(s.y[i]) && s.x[i] >= x.lo && s.x[i] <= x.hi &&
@@ -219,7 +225,8 @@ std::string render_svg(const XYPlot& plot) {
       }
       px.push_back(x.to_px(s.x[i]));
       py.push_back(y.to_px(s.y[i]));
-      if (s.style != PlotSeries::Style::line) doc.circle(px.back(), py.back(), 2.5, color);
+      if (s.style != PlotSeries::Style::line && i >= s.marker_offset && (i - s.marker_offset) % every == 0)
+        doc.marker(px.back(), py.back(), s.marker_size, s.marker, color);
     }
     flush();
   }

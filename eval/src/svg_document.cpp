@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <locale>
 
 #include "sextant/eval/table.hpp"
@@ -42,10 +43,12 @@ void Document::line(double x1, double y1, double x2, double y2, const std::strin
 }
 
 void Document::polyline(const std::vector<double>& xs, const std::vector<double>& ys,
-                        const std::string& stroke, double width, bool closed) {
+                        const std::string& stroke, double width, bool closed, const std::string& dash) {
   if (xs.empty()) return;
   body_ << (closed ? "<polygon" : "<polyline") << " fill=\"none\" stroke=\"" << escape_html(stroke)
-        << "\" stroke-width=\"" << num(width) << "\" stroke-linejoin=\"round\" points=\"";
+        << "\" stroke-width=\"" << num(width) << "\" stroke-linejoin=\"round\"";
+  if (!dash.empty()) body_ << " stroke-dasharray=\"" << escape_html(dash) << "\"";
+  body_ << " points=\"";
   for (std::size_t i = 0; i < xs.size() && i < ys.size(); ++i)
     body_ << (i ? " " : "") << num(xs[i]) << "," << num(ys[i]);
   body_ << "\"/>\n";
@@ -54,6 +57,28 @@ void Document::polyline(const std::vector<double>& xs, const std::vector<double>
 void Document::circle(double cx, double cy, double r, const std::string& fill) {
   body_ << "<circle cx=\"" << num(cx) << "\" cy=\"" << num(cy) << "\" r=\"" << num(r) << "\" fill=\""
         << escape_html(fill) << "\"/>\n";
+}
+
+void Document::marker(double cx, double cy, double r, PlotSeries::Marker shape, const std::string& color) {
+  const auto polygon = [&](std::initializer_list<std::pair<double, double>> corners) {
+    body_ << "<polygon fill=\"" << escape_html(color) << "\" points=\"";
+    bool first = true;
+    for (const auto& [dx, dy] : corners) {
+      body_ << (first ? "" : " ") << num(cx + dx * r) << "," << num(cy + dy * r);
+      first = false;
+    }
+    body_ << "\"/>\n";
+  };
+  switch (shape) {
+    case PlotSeries::Marker::circle: circle(cx, cy, r, color); break;
+    case PlotSeries::Marker::square: rect(cx - 0.85 * r, cy - 0.85 * r, 1.7 * r, 1.7 * r, color); break;
+    case PlotSeries::Marker::triangle: polygon({{0.0, -1.2}, {1.1, 0.8}, {-1.1, 0.8}}); break;
+    case PlotSeries::Marker::diamond: polygon({{0.0, -1.25}, {1.0, 0.0}, {0.0, 1.25}, {-1.0, 0.0}}); break;
+    case PlotSeries::Marker::cross:
+      line(cx - r, cy - r, cx + r, cy + r, color, 1.6);
+      line(cx - r, cy + r, cx + r, cy - r, color, 1.6);
+      break;
+  }
 }
 
 void Document::text(double x, double y, const std::string& content, double size, const std::string& anchor,
@@ -100,7 +125,7 @@ int legend_rows(const LegendEntries& entries, double width) {
   int rows = 1;
   double x = 0;
   for (const auto& e : entries) {
-    const double w = legend_entry_width(e.first);
+    const double w = legend_entry_width(e.name);
     if (x > 0 && x + w > width) {
       ++rows;
       x = 0;
@@ -113,17 +138,19 @@ int legend_rows(const LegendEntries& entries, double width) {
 void draw_legend(Document& doc, const LegendEntries& entries, double left, double top, double width,
                  bool squares) {
   double x = 0, y = top + 12;
-  for (const auto& [name, color] : entries) {
-    const double w = legend_entry_width(name);
+  for (const LegendEntry& e : entries) {
+    const double w = legend_entry_width(e.name);
     if (x > 0 && x + w > width) {
       x = 0;
       y += kLegendRow;
     }
-    if (squares)
-      doc.rect(left + x + 4, y - 10, 12, 12, color);
-    else
-      doc.line(left + x, y - 4, left + x + 18, y - 4, color, 2.5);
-    doc.text(left + x + 24, y, name, 11);
+    if (squares) {
+      doc.rect(left + x + 4, y - 10, 12, 12, e.color);
+    } else {
+      if (e.line) doc.line(left + x, y - 4, left + x + 18, y - 4, e.color, 2.5, e.dash);
+      if (e.marked) doc.marker(left + x + 9, y - 4, 3.5, e.marker, e.color);
+    }
+    doc.text(left + x + 24, y, e.name, 11);
     x += w + 12;
   }
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <unordered_map>
@@ -15,6 +16,7 @@
 #include "sextant/core/io/trajectory_io.hpp"
 #include "sextant/core/log.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/eval/cloud_view.hpp"
 #include "sextant/eval/html_report.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/table.hpp"
@@ -142,6 +144,9 @@ std::string markdown_section(const std::string& title, const ExperimentConfig& c
   if (!section.notes.empty()) md += section.notes + "\n\n";
   md += runs + "\n\n" + shown + "\n\n";
   for (const auto& table : section.tables) md += render_markdown(table) + "\n";
+  for (const auto& scene : section.scenes)
+    md += "- [3D view: " + scene.caption + "](" + scene.id + ".html)\n";
+  if (!section.scenes.empty()) md += "\n";
   for (const auto& figure : section.figures) md += "![" + figure.caption + "](" + figure.id + ".svg)\n\n";
   for (const auto& t : section.trajectories) md += "- [" + t.caption + "](" + t.id + ".tum) (TUM)\n";
   if (!section.trajectories.empty()) md += "\n";
@@ -151,6 +156,34 @@ std::string markdown_section(const std::string& title, const ExperimentConfig& c
       md += "| " + c.statement + " | " + to_string(c.verdict) + " | " + c.evidence + " |\n";
   }
   return md;
+}
+
+/// Writes a section's 3D scenes as `<out>/<name>/<id>.html` and links them from the section. The
+/// pages share one three.min.js, copied into `out` at the first scene (`three_js` keeps the outcome:
+/// empty = copied, else why not; without it the section says so and keeps its static figures).
+std::size_t write_scenes(const std::vector<ReportScene>& scenes, const std::string& name, const fs::path& out,
+                         std::optional<std::string>& three_js, HtmlSection& html) {
+  if (scenes.empty()) return 0;
+  if (!three_js) {
+    try {
+      write_three_js(out);
+      three_js = "";
+    } catch (const InputError& e) {
+      three_js = e.what();
+      log_warning("report: no 3D views: " + *three_js);
+    }
+  }
+  if (!three_js->empty()) {
+    html.add_paragraph("3D views not written: " + *three_js);
+    return 0;
+  }
+  CloudViewOptions options;
+  options.three_js_src = "../three.min.js";
+  for (const auto& scene : scenes) {
+    write_cloud_view(scene.view, out / name / (scene.id + ".html"), options);
+    html.add_view(name + "/" + scene.id + ".html", scene.caption);
+  }
+  return scenes.size();
 }
 
 }  // namespace
@@ -172,6 +205,7 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
 
   std::string all_md = "# Sextant report\n\n";
   std::vector<OverviewEntry> overview;
+  std::optional<std::string> three_js;  // three.min.js copied for the 3D views: "" = yes, else why not
   for (const auto& [name, folders] : find_experiments(results)) {
     const fs::path config_path = folders.front() / kEffectiveConfig;
     ExperimentConfig config =
@@ -206,9 +240,10 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
     const std::string runs_text = runs_line(entry.runs_found, runs.size(), entry.runs_failed, first_failed);
     const std::size_t found = entry.runs_found;
     // The heading says which profile the numbers come from and how many runs stand behind them.
-    HtmlSection& html =
-        page.add_section(name, title + " [" + (entry.profile.empty() ? "" : entry.profile + ", ") +
-                                   "n = " + std::to_string(found) + " runs]");
+    HtmlSection& html = page.add_section(name,
+                                         title + " [" + (entry.profile.empty() ? "" : entry.profile + ", ") +
+                                             "n = " + std::to_string(found) + " runs]",
+                                         title);
     const fs::path dir = out / name;
     fs::create_directories(dir);
     if (!run_kind_registry().contains(config.kind)) {
@@ -261,6 +296,7 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
                     ".csv\">CSV</a></p>");
       ++summary.tables;
     }
+    summary.views += write_scenes(section.scenes, name, out, three_js, html);
     for (const auto& figure : section.figures) {
       write_svg(figure.svg, dir / (figure.id + ".svg"));
       html.add_figure(name + "/" + figure.id + ".svg", figure.caption);

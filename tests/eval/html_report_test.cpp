@@ -49,6 +49,51 @@ TEST(HtmlReport, RendersSectionsClaimsAndProvenance) {
   EXPECT_EQ(to_string(Verdict::not_comparable), "not comparable");
 }
 
+std::size_t occurrences(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+// The table of contents stays in view (fixed side bar), lists every section (by its short title
+// when given) and the provenance, and every section leads back to the top.
+TEST(HtmlReport, StickyContentsListEverySectionAndSectionsLeadBackToTheTop) {
+  HtmlReport page = sample_report();
+  page.add_section("e01", "E1 — Basin <quick, n = 4 runs>", "E1 — Basin");
+  const std::string html = page.render();
+  const std::size_t nav = html.find("<nav class=\"sx-toc\"");
+  ASSERT_NE(nav, std::string::npos);
+  const std::string toc = html.substr(nav, html.find("</nav>", nav) - nav);
+  EXPECT_NE(html.find("nav.sx-toc{position:fixed;"), std::string::npos);
+  EXPECT_NE(html.find("nav.sx-toc{position:sticky;"), std::string::npos);  // narrow screens: a top bar
+  std::size_t sections = 0;
+  for (std::size_t at = html.find("<section id=\""); at != std::string::npos;
+       at = html.find("<section id=\"", at + 1)) {
+    const std::string id = html.substr(at + 13, html.find('"', at + 13) - at - 13);
+    EXPECT_NE(toc.find("<a href=\"#" + id + "\">"), std::string::npos) << id;
+    ++sections;
+  }
+  EXPECT_EQ(sections, 4u);  // e18, e19, e01 and the provenance
+  EXPECT_EQ(occurrences(toc, "<li>"), sections);
+  EXPECT_NE(toc.find("<a href=\"#e01\">E1 — Basin</a>"), std::string::npos);  // the short title
+  EXPECT_NE(html.find("<h2>E1 — Basin &lt;quick, n = 4 runs&gt;</h2>"), std::string::npos);
+  // One "back to top" per section, and the top exists.
+  EXPECT_EQ(occurrences(html, "<p class=\"sx-top\"><a href=\"#top\">"), sections);
+  EXPECT_NE(html.find("<h1 id=\"top\">"), std::string::npos);
+  // Without sections there is no contents bar.
+  HtmlReport empty;
+  EXPECT_EQ(empty.render().find("<nav"), std::string::npos);
+}
+
+TEST(HtmlReport, ViewsAreLinkedAndEscaped) {
+  HtmlReport page;
+  page.add_section("e01", "E1").add_view("e01/clouds_3d.html", "before & after").add_figure("e01/a.svg", "A");
+  const std::string html = page.render();
+  EXPECT_NE(html.find("<a href=\"e01/clouds_3d.html\">3D view: before &amp; after</a>"), std::string::npos);
+  EXPECT_EQ(page.sections[0].views(), (std::vector<std::string>{"e01/clouds_3d.html"}));
+  EXPECT_EQ(page.sections[0].figures().size(), 1u);  // a view is not a figure
+}
+
 /// Writes the sample page with its figures into `dir`; `skip_png` leaves one image missing.
 fs::path write_sample(const fs::path& dir, bool skip_png) {
   fs::remove_all(dir);

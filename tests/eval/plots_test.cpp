@@ -43,8 +43,8 @@ TEST(Plots, LinePlotIsWellFormedWithSeriesLegendAndGaps) {
   const auto xml = check_xml(svg);
   ASSERT_TRUE(xml.ok) << xml.error;
   EXPECT_EQ(xml.elements.at("svg"), 1);
-  EXPECT_EQ(xml.elements.at("polyline"), 2);  // the NDT line in two pieces (legend samples are <line>s)
-  EXPECT_EQ(xml.elements.at("circle"), 3);
+  EXPECT_EQ(xml.elements.at("polyline"), 2);    // the NDT line in two pieces (legend samples are <line>s)
+  EXPECT_EQ(xml.elements.at("circle"), 3 + 1);  // the scatter's points and its legend sample's marker
   EXPECT_NE(svg.find("Error &lt;per&gt; scan &amp; iteration"), std::string::npos);
   EXPECT_NE(svg.find(">NDT</text>"), std::string::npos);
   EXPECT_NE(svg.find(">ML-NDT</text>"), std::string::npos);

@@ -2,7 +2,8 @@
 # ctest: the quick profile of E1, E4, E10, E17 and E18 through the `sextant` binary, then the whole
 # generated report rendered in headless Chromium (scripts/check_report_html.sh): every figure the
 # report wrote must appear on the page and render, every experiment must have its section, tables
-# and overview row. Usage: quick_report_renders.sh <sextant binary> <source dir>
+# and overview row, and every linked 3D view must exist and draw.
+# Usage: quick_report_renders.sh <sextant binary> <source dir>
 set -euo pipefail
 sextant=$1
 source_dir=$2
@@ -26,4 +27,15 @@ images=$(grep -o '<img ' "$index" | wc -l)
 [[ $figures -gt 0 && $figures -eq $images ]] || fail "$figures SVG files but $images images on the page"
 output=$("$source_dir/scripts/check_report_html.sh" "$index") || fail "broken images: $output"
 echo "$output"
-echo "quick_report_renders: ${#configs[@]} experiments, $figures figures render"
+# The 3D views the report links (E1's snapshot) exist and draw in Chromium (WebGL via SwiftShader).
+views=$(grep -o '<p class="sx-view"><a href="[^"]*"' "$index" | sed -E 's/.*href="([^"]*)"/\1/' || true)
+[[ -n $views ]] || fail "no 3D view linked (E1's snapshot)"
+[[ -f $work/report/three.min.js ]] || fail "no three.min.js beside the 3D views"
+for view in $views; do
+  [[ -f $work/report/$view ]] || fail "3D view $view is linked but missing"
+  dom=$(timeout 120 chromium --headless --no-sandbox --disable-gpu --use-gl=swiftshader --enable-unsafe-swiftshader \
+    --no-first-run --disable-background-networking --user-data-dir="$work/chromium" --virtual-time-budget=10000 \
+    --dump-dom "file://$work/report/$view" 2>/dev/null) || fail "chromium failed on $view"
+  grep -q 'data-sx-webgl="ok"' <<<"$dom" || fail "3D view $view did not draw"
+done
+echo "quick_report_renders: ${#configs[@]} experiments, $figures figures render, 3D views draw: $views"

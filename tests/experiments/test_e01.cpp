@@ -47,7 +47,7 @@ TEST(E01, QuickProfileWritesEveryTableAndFigure) {
   ASSERT_EQ(s.executed, 5u * 4u * 4u * 3u * 2u);
   ASSERT_EQ(s.failed, 0u);
 
-  std::size_t snapshots = 0;
+  std::size_t snapshots = 0, snapshot_reference = 0, snapshot_input = 0;
   std::set<double> scenes;
   for (const auto& row : read_rows(s.folder / kRunsJsonl).rows) {
     ASSERT_TRUE(row.ok) << row.error;
@@ -59,6 +59,8 @@ TEST(E01, QuickProfileWritesEveryTableAndFigure) {
       ++snapshots;
       EXPECT_EQ(row.point.at("scene"), "velodyne");
       EXPECT_GT(row.series.at("snapshot_reference").size(), 300u);
+      snapshot_reference = row.series.at("snapshot_reference").size() / 3;
+      snapshot_input = row.series.at("snapshot_input").size() / 3;
     }
   }
   EXPECT_EQ(snapshots, 5u);  // one per method
@@ -92,6 +94,28 @@ TEST(E01, QuickProfileWritesEveryTableAndFigure) {
   EXPECT_NE(html.find("n = 480 registrations"), std::string::npos);
   EXPECT_NE(html.find("McNemar"), std::string::npos);
   EXPECT_NE(html.find("basin is ≈ 2.5×"), std::string::npos);
+  // The snapshot in 3D (figs 5.1/5.2): linked from E1's section, beside the static figures, and
+  // written with the report's shared three.js; reference and input, before/after/truth states.
+  const std::vector<std::string> views =
+      test::view_links(test::report_section(html, "e01_convergence_basin"));
+  ASSERT_EQ(views, (std::vector<std::string>{"e01_convergence_basin/clouds_3d.html"}));
+  EXPECT_EQ(r.views, 1u);
+  const auto page_path = tmp / "report" / views.front();
+  ASSERT_TRUE(std::filesystem::is_regular_file(page_path));
+  EXPECT_TRUE(std::filesystem::is_regular_file(page_path.parent_path() / ".." / "three.min.js"));
+  const std::string page = test::read_text(page_path);
+  EXPECT_NE(page.find("<script src=\"../three.min.js\"></script>"), std::string::npos);
+  EXPECT_EQ(page.find("http://"), std::string::npos);
+  EXPECT_EQ(page.find("https://"), std::string::npos);
+  for (const char* state :
+       {">before: identity guess</button>", ">after mlndt_lm_s1 (", ">after ndt (", ">ground truth</button>"})
+    EXPECT_NE(page.find(state), std::string::npos) << state;
+  // Every point the run stored (fewer than the viewer's cap), reference first.
+  const std::size_t first = page.find("\"count\":" + std::to_string(snapshot_reference) + ",");
+  const std::size_t second = page.find("\"count\":" + std::to_string(snapshot_input) + ",", first + 1);
+  EXPECT_NE(first, std::string::npos);
+  EXPECT_NE(second, std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(folder / "clouds_before.svg"));  // the static figures stay
 }
 
 TEST(E01, MissingPairFileIsNamed) {

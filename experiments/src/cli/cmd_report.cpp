@@ -19,7 +19,8 @@ void add_report_command(CLI::App& app, int& exit_code) {
     exit_code = guarded([&] {
       const ReportSummary s = write_report({results->begin(), results->end()}, *out);
       std::cout << "report: " << s.experiments << " experiments, " << s.tables << " tables, " << s.figures
-                << " figures, " << s.claims << " claims → " << s.index_html.string() << "\n";
+                << " figures, " << s.views << " 3D views, " << s.claims << " claims → "
+                << s.index_html.string() << "\n";
       for (const auto& failure : s.failed) std::cerr << "sextant: error: report of " << failure << "\n";
       return s.failed.empty() ? 0 : 1;
     });

@@ -14,11 +14,24 @@ namespace {
 
 const char* const kColours[3] = {"#1f77b4", "#d62728", "#2ca02c"};
 const char* const kTints[3] = {"#9ecae1", "#f4a6a6", "#a1d99b"};
+// Methods drawn in one figure also differ in dash pattern and marker (their curves may coincide).
+const char* const kDashes[3] = {"", "7 4", "2 3"};
+const PlotSeries::Marker kMarkers[3] = {PlotSeries::Marker::circle, PlotSeries::Marker::square,
+                                        PlotSeries::Marker::triangle};
 
 const std::vector<double>& series_of(const RunRow& row, const char* name) {
   static const std::vector<double> empty;
   const auto it = row.series.find(name);
   return it == row.series.end() ? empty : it->second;
+}
+
+PointCloud cloud_of(const std::vector<double>& xyz) {
+  PointCloud cloud;
+  cloud.reserve(xyz.size() / 3);
+  for (std::size_t k = 0; k + 3 <= xyz.size(); k += 3)
+    cloud.push_back(Eigen::Vector3f(static_cast<float>(xyz[k]), static_cast<float>(xyz[k + 1]),
+                                    static_cast<float>(xyz[k + 2])));
+  return cloud;
 }
 
 /// Iterate k's six parameters (k = 0: the initial guess) in m and deg.
@@ -71,6 +84,31 @@ ReportFigure cloud_figure(const std::string& id, const std::string& caption, con
   return {id, caption, render_svg(plot)};
 }
 
+ReportScene cloud_scene(const std::string& id, const std::string& caption, const std::string& title,
+                        const RunRow& snapshot,
+                        const std::vector<std::pair<std::string, const RunRow*>>& after) {
+  ReportScene scene{id, caption, {}};
+  CloudView& view = scene.view;
+  view.title = title;
+  view.caption =
+      "The reference, and the displaced input placed by the identity guess, by each method's "
+      "estimate and by the ground truth (buttons or keys 1–" +
+      std::to_string(after.size() + 2) +
+      "); the clouds as the run stored them (about snapshot_points per cloud, above the ground).";
+  std::vector<Eigen::Isometry3d> poses{Eigen::Isometry3d::Identity()};
+  view.states.push_back("before: identity guess");
+  for (const auto& [name, row] : after) {
+    poses.push_back(series_to_isometry(series_of(*row, "estimate")));
+    view.states.push_back("after " + name + " (" + format_number(row->value("translation_cm") / 100.0, 2) +
+                          " m, " + format_number(row->value("rotation_deg"), 1) + "° off)");
+  }
+  poses.push_back(series_to_isometry(series_of(snapshot, "ground_truth")));
+  view.states.push_back("ground truth");
+  view.clouds.push_back({"reference", cloud_of(series_of(snapshot, "snapshot_reference")), "", {}, {}});
+  view.clouds.push_back({"input", cloud_of(series_of(snapshot, "snapshot_input")), "", std::move(poses), {}});
+  return scene;
+}
+
 std::vector<ReportFigure> parameter_figures(const std::string& method, const std::string& figure,
                                             const RunRow& row) {
   const std::vector<Vector6d> steps = iterates(row);
@@ -93,6 +131,7 @@ std::vector<ReportFigure> parameter_figures(const std::string& method, const std
       const double last = x.empty() ? 1.0 : std::max(1.0, x.back());
       plot.add_line(std::string(kNames[p]) + " true", {0.0, last}, {scale * truth[p], scale * truth[p]});
       plot.series.back().color = kTints[j];
+      plot.series.back().dash = "6 4";
       plot.add_line(kNames[p], std::move(x), std::move(y));
       plot.series.back().color = kColours[j];
       plot.series.back().style = PlotSeries::Style::line_and_markers;
@@ -129,6 +168,8 @@ ReportFigure score_figure(const std::string& id, const std::string& caption, con
       plot.add_line(begin == 0 ? rows[m].first : "", std::move(xs), std::move(ys));
       plot.series.back().color = kColours[m % 3];
       plot.series.back().style = PlotSeries::Style::line_and_markers;
+      plot.series.back().dash = kDashes[m % 3];
+      plot.series.back().marker = kMarkers[m % 3];
       begin = end;
     }
   }
@@ -152,6 +193,8 @@ ReportFigure error_figure(const std::string& id, const std::string& caption, con
     plot.add_line(rows[m].first, std::move(x), std::move(y));
     plot.series.back().color = kColours[m % 3];
     plot.series.back().style = PlotSeries::Style::line_and_markers;
+    plot.series.back().dash = kDashes[m % 3];
+    plot.series.back().marker = kMarkers[m % 3];
   }
   return {id, caption, render_svg(plot)};
 }

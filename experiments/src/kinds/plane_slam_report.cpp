@@ -144,6 +144,8 @@ ReportFigure error_figure(const PlaneSlamRows& data, const std::string& point, c
     const auto& y = series_or_empty(row, series_name);
     plot.add_line(g->method, scan_axis(y.size()), y);
   }
+  // Filters with near-equal errors (UKF and CKF) overlap: each method its own dashes and markers.
+  distinguish_series(plot, odometry_series.empty() || plot.series.empty() ? 0 : 1);
   return {id + point_stem(point),
           caption + (point.empty() ? "" : ", " + point_text(point)) + " (repetition 1)", render_svg(plot)};
 }

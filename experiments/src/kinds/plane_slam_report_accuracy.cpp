@@ -105,6 +105,7 @@ ReportFigure nees_figure(const PlaneSlamRows& data, const PlaneSlamParams& param
     bound = g->first()->value("nees_bound");
     plot.add_line(g->method, scan_axis(y.size()), y);
   }
+  distinguish_series(plot);  // the methods only: the bound stays a plain line
   if (n > 0 && std::isfinite(bound))
     plot.series.push_back({"χ²₆(" + number_text(params.nees_probability, 2) + ") bound",
                            {0.0, double(n - 1)},

@@ -65,6 +65,7 @@ ReportFigure metric_figure(const PlaneSlamRows& data, const std::string& name, c
     plot.add_line(g->method + " (σ = " + number_text(g->first()->value(value), 3) + ")", scan_axis(y.size()),
                   y);
   }
+  distinguish_series(plot);  // UKF and CKF coincide almost everywhere; the revisit lines stay plain
   for (std::size_t k = 0; k < revisits.size(); ++k)
     plot.series.push_back({k == 0 ? "loop closure (revisit start)" : "",
                            {double(revisits[k]), double(revisits[k])},

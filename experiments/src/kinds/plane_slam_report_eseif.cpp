@@ -82,6 +82,7 @@ ReportFigure nees_figure(const PlaneSlamRows& data) {
     if (g->method == "seif" && r.series.count("nees_marginal"))
       plot.add_line("seif (exact marginal of Ω)", scan_axis(v.size()), series_or_empty(r, "nees_marginal"));
   }
+  distinguish_series(plot);  // the filters only: the χ² band stays plain
   const double lo = chi_square_quantile(0.025, 6.0), hi = chi_square_quantile(0.975, 6.0);
   plot.add_line("χ²₆ 2.5 %", {0.0, double(n)}, {lo, lo});
   plot.add_line("χ²₆ 97.5 %", {0.0, double(n)}, {hi, hi});

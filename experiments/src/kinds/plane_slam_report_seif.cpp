@@ -53,6 +53,7 @@ ReportFigure time_figure(const PlaneSlamRows& data, const std::string& time, con
     else
       plot.add_line(g->method, scan_axis(y.size()), y);
   }
+  distinguish_series(plot);
   return {
       id,
       what + (against_map ? " against the number of landmarks" : " per scan") + " (repetition 1; log scale)",

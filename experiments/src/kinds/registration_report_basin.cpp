@@ -198,6 +198,13 @@ void add_snapshot_figures(const BasinData& d, const RegistrationParams& params, 
   const RunRow* any =
       p >= 0 && snap[static_cast<std::size_t>(p)] ? snap[static_cast<std::size_t>(p)] : nullptr;
   if (!any) return;
+  std::vector<std::pair<std::string, const RunRow*>> after;
+  for (const long m : {p, b})
+    if (m >= 0 && snap[static_cast<std::size_t>(m)])
+      after.emplace_back(d.methods[static_cast<std::size_t>(m)], snap[static_cast<std::size_t>(m)]);
+  section.scenes.push_back(cloud_scene(
+      "clouds_3d", "reference and input before and after alignment (figs 5.1/5.2 in 3D; " + where + ")",
+      "E1 snapshot: " + where, *any, after));
   section.figures.push_back(cloud_figure(
       "clouds_before",
       "Reference and displaced input before alignment (fig 5.1; " + where + "; top-down, subsampled)",

@@ -88,6 +88,9 @@ ReportSection monte_carlo_report(const ExperimentConfig& config, const MonteCarl
     auto [th, h] = mean_curve(methods[m.name], "heading_error_deg");
     heading.add_line(m.name, th, h);
   }
+  // The UKF's and the RSPKF's curves nearly coincide: dash patterns and markers keep both visible.
+  distinguish_series(position);
+  distinguish_series(heading);
   section.figures.push_back({"average_position_error", "Fig. 5.35: average position error norm against time",
                              render_svg(position)});
   section.figures.push_back(
@@ -99,6 +102,7 @@ ReportSection monte_carlo_report(const ExperimentConfig& config, const MonteCarl
   for (const auto& l : world.landmarks) lx.push_back(l.x()), ly.push_back(l.y());
   map.series.push_back({"true landmarks", lx, ly, PlotSeries::Style::markers, "#000000"});
   bool truth_drawn = false;
+  std::size_t drawn = 0;  // methods drawn so far: each its own dash pattern and landmark marker
   for (const auto& m : config.methods) {
     const auto found = methods.find(m.name);
     if (found == methods.end() || !found->second.by_repetition.count(0)) continue;
@@ -108,14 +112,21 @@ ReportSection monte_carlo_report(const ExperimentConfig& config, const MonteCarl
                             PlotSeries::Style::line, "#000000"});
       truth_drawn = true;
     }
+    static const char* const kDashes[] = {"", "7 4", "2 3"};
+    static const PlotSeries::Marker kShapes[] = {PlotSeries::Marker::square, PlotSeries::Marker::triangle,
+                                                 PlotSeries::Marker::diamond};
     map.add_line(m.name + " path", series_of(r, "est_x"), series_of(r, "est_y"));
+    map.series.back().dash = kDashes[drawn % 3];
     map.series.push_back({m.name + " landmarks", series_of(r, "map_x"), series_of(r, "map_y"),
                           PlotSeries::Style::markers, ""});
+    map.series.back().marker = kShapes[drawn % 3];
+    map.series.back().marker_size = 3.5;
+    ++drawn;
   }
   section.figures.push_back(
       {"map_and_paths",
        "Fig. 5.36: true and estimated landmarks, true and estimated paths (repetition 0; where the UKF's "
-       "and the RSPKF's estimates coincide, the RSPKF's, drawn last, cover them)",
+       "and the RSPKF's estimates coincide, their dash patterns and landmark markers tell them apart)",
        render_svg(map)});
 
   Table table;

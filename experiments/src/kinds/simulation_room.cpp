@@ -268,6 +268,7 @@ ReportSection Room2dModel::report(const ExperimentConfig& config, const std::vec
     section.tables.push_back(table);
     if (first) {
       if (ReportFigure f = scan_match_figure(*first); !f.id.empty()) section.figures.push_back(std::move(f));
+      if (ReportScene v = scan_match_scene(*first); !v.id.empty()) section.scenes.push_back(std::move(v));
       section.figures.push_back(trajectory_figure(p, *first, method));
       XYPlot cost{"Alignment of estimate and truth against the time shift (repetition 0)",
                   "time shift τ [s]",

@@ -1,6 +1,6 @@
 #pragma once
 // E8's fig. 5.17 (one scan match of the room simulation): recorded by the run of repetition 0,
-// drawn by the report (simulation_room_scan_match.cpp).
+// drawn by the report as a figure and a 3D scene (simulation_room_scan_match.cpp).
 #include <cstdint>
 
 #include "sextant/experiments/report_model.hpp"
@@ -19,5 +19,8 @@ void record_scan_match(const RoomSim2dSettings& settings, const RoomSim2dRun& ru
 
 /// Fig. 5.17 from the series record_scan_match wrote; a figure with an empty id when they are missing.
 ReportFigure scan_match_figure(const RunRow& row);
+/// Fig. 5.17 as a 3D scene (the previous scan, and the new scan at the dead-reckoning guess and after
+/// ML-NDT, one state each); a scene with an empty id when the series are missing.
+ReportScene scan_match_scene(const RunRow& row);
 
 }  // namespace sextant

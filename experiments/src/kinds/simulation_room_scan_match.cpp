@@ -29,6 +29,16 @@ void store(const PointCloud& cloud, const Eigen::Isometry3d& T, const std::strin
   row.series["match_" + name + "_x"] = x, row.series["match_" + name + "_y"] = y;
 }
 
+/// The points of series match_<name>_x/_y, in the plane z = 0.
+PointCloud planar_cloud(const RunRow& row, const std::string& name) {
+  const std::vector<double>&x = series_or_empty(row, "match_" + name + "_x"),
+        &y = series_or_empty(row, "match_" + name + "_y");
+  PointCloud cloud;
+  for (std::size_t i = 0; i < x.size() && i < y.size(); ++i)
+    cloud.push_back(Eigen::Vector3f(static_cast<float>(x[i]), static_cast<float>(y[i]), 0.0f));
+  return cloud;
+}
+
 }  // namespace
 
 void record_scan_match(const RoomSim2dSettings& settings, const RoomSim2dRun& run, Matcher& matcher,
@@ -100,6 +110,29 @@ ReportFigure scan_match_figure(const RunRow& row) {
               "noise; ML-NDT (x, y, yaw) from the dead-reckoning increment, as in the filter" +
               (row.value("match_converged") > 0 ? "" : "; the match did not converge"),
           render_svg(plot)};
+}
+
+ReportScene scan_match_scene(const RunRow& row) {
+  if (series_or_empty(row, "match_reference_x").empty()) return {};
+  ReportScene scene{"scan_match_3d",
+                    "fig. 5.17 in 3D: the previous scan, and the new scan at the dead-reckoning guess and "
+                    "after ML-NDT (repetition " +
+                        std::to_string(row.repetition) + ", scan " +
+                        format_number(row.value("match_scan"), 0) + ")",
+                    {}};
+  CloudView& view = scene.view;
+  view.title = "Fig. 5.17: scan match at t = " + format_number(row.value("match_time_s"), 1) + " s";
+  view.caption =
+      "2D scans (z = 0) in the frame of the previous scan; the new scan's placement differs by "
+      "state.";
+  view.states = {"dead-reckoning guess (" + format_number(row.value("match_guess_error_m"), 2) + " m, " +
+                     format_number(row.value("match_guess_error_deg"), 1) + "° off)",
+                 "after ML-NDT (" + format_number(row.value("match_error_m"), 3) + " m, " +
+                     format_number(row.value("match_error_deg"), 2) + "° off)"};
+  view.clouds.push_back({"previous scan (reference)", planar_cloud(row, "reference"), "", {}, {}});
+  view.clouds.push_back({"new scan at the guess", planar_cloud(row, "guess"), "", {}, {true, false}});
+  view.clouds.push_back({"new scan after ML-NDT", planar_cloud(row, "matched"), "", {}, {false, true}});
+  return scene;
 }
 
 }  // namespace sextant

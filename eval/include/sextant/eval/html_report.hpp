@@ -1,7 +1,9 @@
 #pragma once
-// The report's index.html: sections holding paragraphs, tables, figures and the thesis' claims
-// with a verdict computed from our numbers, then a provenance block. Self-contained (inline CSS),
-// images referenced by relative path.
+// The report's index.html: sections holding paragraphs, tables, figures, links to interactive 3D
+// views and the thesis' claims with a verdict computed from our numbers, then a provenance block.
+// A table of contents stays in view (a fixed side bar; a sticky top bar on narrow screens) and
+// every section ends with a link back to the top. Self-contained (inline CSS, no script), images
+// and views referenced by relative path.
 //
 //   HtmlReport page;
 //   page.title = "Sextant reproduction report";
@@ -39,26 +41,32 @@ struct Claim {
 
 class HtmlSection {
  public:
-  HtmlSection(std::string id, std::string title) : id_(std::move(id)), title_(std::move(title)) {}
+  HtmlSection(std::string id, std::string title, std::string toc_title = "")
+      : id_(std::move(id)), title_(std::move(title)), toc_title_(std::move(toc_title)) {}
 
   HtmlSection& add_paragraph(const std::string& text);  ///< plain text (escaped)
   HtmlSection& add_html(const std::string& html);       ///< raw HTML fragment (not escaped)
   HtmlSection& add_table(const Table& table);
   /// `src` relative to the page (e.g. "e02/errors.svg"); `caption` below the image.
   HtmlSection& add_figure(const std::string& src, const std::string& caption);
+  /// A link to an interactive page (e.g. a cloud_view 3D scene), `src` relative to the page.
+  HtmlSection& add_view(const std::string& src, const std::string& caption);
   HtmlSection& add_claim(const Claim& claim);
 
   const std::string& id() const { return id_; }
   const std::string& title() const { return title_; }
+  /// The entry in the table of contents: the short title when given, else the title.
+  const std::string& toc_title() const { return toc_title_.empty() ? title_ : toc_title_; }
   const std::vector<std::string>& figures() const { return figures_; }
+  const std::vector<std::string>& views() const { return views_; }
   const std::vector<Claim>& claims() const { return claims_; }
   /// The section as HTML (blocks in insertion order, then the thesis' claims, then the sanity checks).
   std::string render() const;
 
  private:
-  std::string id_, title_;
+  std::string id_, title_, toc_title_;
   std::vector<std::string> blocks_;
-  std::vector<std::string> figures_;
+  std::vector<std::string> figures_, views_;
   std::vector<Claim> claims_;
 };
 
@@ -69,9 +77,11 @@ struct HtmlReport {
   std::vector<HtmlSection> sections;
   std::vector<std::pair<std::string, std::string>> provenance;  ///< key, value
 
-  HtmlSection& add_section(const std::string& id, const std::string& title);
-  /// Whole page: a claim summary (thesis claims per verdict, sanity checks apart), the front HTML, a table
-  /// of contents, sections, provenance.
+  /// `toc_title`: a shorter entry for the table of contents (empty = the title).
+  HtmlSection& add_section(const std::string& id, const std::string& title,
+                           const std::string& toc_title = "");
+  /// Whole page: the table of contents (every section and the provenance), a claim summary (thesis
+  /// claims per verdict, sanity checks apart), the front HTML, sections, provenance.
   std::string render() const;
   /// Renders and writes atomically.
   void write(const std::filesystem::path& path) const;

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -15,10 +16,21 @@ namespace sextant {
 
 struct PlotSeries {
   enum class Style { line, markers, line_and_markers };
+  enum class Marker { circle, square, triangle, diamond, cross };
+  /// `{name, x, y, style, color}` as before; the line style below keeps its defaults.
+  PlotSeries(std::string name_ = "", std::vector<double> x_ = {}, std::vector<double> y_ = {},
+             Style style_ = Style::line, std::string color_ = "")
+      : name(std::move(name_)), x(std::move(x_)), y(std::move(y_)), style(style_), color(std::move(color_)) {}
+
   std::string name;  ///< legend entry; empty = not in the legend
   std::vector<double> x, y;
   Style style = Style::line;
   std::string color;  ///< CSS colour; empty = the palette's next colour
+  std::string dash;   ///< the line's SVG stroke-dasharray, e.g. "7 4" [px]; empty = solid
+  Marker marker = Marker::circle;
+  double marker_size = 2.5;       ///< marker radius [px]
+  std::size_t marker_every = 1;   ///< a marker on every n-th point only (0 counts as 1)
+  std::size_t marker_offset = 0;  ///< … from this point on (staggers the markers of overlapping series)
 };
 
 struct XYPlot {
@@ -68,6 +80,13 @@ struct TrajectoryPlot {
   std::vector<TrajectorySeries> trajectories;
   int width = 640, height = 560;
 };
+
+/// Gives the series from `first` on distinct line styles, so curves that overlap (e.g. two filters
+/// with near-equal errors) stay apart where their colours cannot: the k-th styled series gets the
+/// k-th dash pattern (solid, dashed, dotted, dash-dot, …) unless it has its own, and the k-th marker
+/// shape on about `markers` of its points, staggered between series. Scatter series get the shape
+/// only. Call it before adding reference lines (bounds, thresholds) that should stay plain.
+void distinguish_series(XYPlot& plot, std::size_t first = 0, std::size_t markers = 12);
 
 std::string render_svg(const XYPlot& plot);
 std::string render_svg(const Heatmap& map);

@@ -1,7 +1,8 @@
 #pragma once
 // `sextant report`: reads one or more result folders (a results root with one folder per
 // experiment, shards included), and writes per experiment Markdown, LaTeX and CSV tables and SVG
-// figures, plus an index.html showing every table, figure, claim verdict and the provenance.
+// figures, 3D views (HTML pages sharing one three.min.js in the output folder), plus an index.html
+// showing every table, figure, link to a 3D view, claim verdict and the provenance.
 #include <cstddef>
 #include <filesystem>
 #include <string>
@@ -13,6 +14,7 @@ struct ReportSummary {
   std::size_t experiments = 0;
   std::size_t tables = 0;
   std::size_t figures = 0;
+  std::size_t views = 0;  ///< interactive 3D pages (<experiment>/<id>.html)
   std::size_t claims = 0;
   std::filesystem::path index_html;
   std::vector<std::string> failed;  ///< "<experiment>: <error>" for each experiment whose report failed
