@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -207,6 +208,16 @@ TEST(MatchCliConventions, JsonHasHessianCovarianceAndMatchedFraction) {
               json_number(json, "matched_points") / json_number(json, "input_points"), 1e-9);
   std::ifstream written(out);
   EXPECT_TRUE(written.good()) << out;
+  // --view: one self-contained page (three.js inlined, no network) with both clouds.
+  const std::string view = ::testing::TempDir() + "pair.html";
+  const CliRun viewed = run_cli("match " + kPair + kNearGuess + " --view " + view);
+  ASSERT_EQ(viewed.exit_code, 0) << viewed.output;
+  EXPECT_NE(viewed.output.find("wrote:       " + view + " (3D view"), std::string::npos) << viewed.output;
+  std::ifstream page_file(view);
+  const std::string page((std::istreambuf_iterator<char>(page_file)), std::istreambuf_iterator<char>());
+  EXPECT_GT(page.size(), 500000u) << "three.js and two clouds inlined";
+  EXPECT_NE(page.find("fast_gicp_251370668.pcd ← fast_gicp_251371071.pcd (ok)"), std::string::npos);
+  EXPECT_EQ(page.find("<script src=\"http"), std::string::npos);
   const CliRun verbose = run_cli("match " + kPair + kNearGuess + " -v");
   EXPECT_NE(verbose.output.find("iterations:  layer"), std::string::npos) << verbose.output;
 }

@@ -26,6 +26,7 @@
 #include "sextant/core/io/cloud_io.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/core/units.hpp"
+#include "sextant/eval/cloud_view.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/mlndt_presets.hpp"
@@ -38,6 +39,7 @@ struct MatchOptions : MatcherOptions {
   std::string reference, input;
   std::string init;  ///< "x,y,z,alpha,beta,gamma" [m, deg]
   std::string gt, out;
+  std::string view;  ///< an HTML page with both clouds before and after, in 3D
   std::uint64_t seed = 1;
   bool json = false;
   bool no_wide_basin = false;
@@ -135,6 +137,10 @@ Eigen::Isometry3d read_ground_truth(const std::string& file) {
                       file);
 }
 
+std::string fs_name(const std::string& path) {
+  return std::filesystem::path(path).filename().string();
+}
+
 PoseError pose_error(const Eigen::Isometry3d& truth, const Eigen::Isometry3d& estimate) {
   const Eigen::Isometry3d E = inverse(truth) * estimate;
   return {100.0 * translation_norm(E), kDegPerRad * rotation_angle(E)};
@@ -187,6 +193,7 @@ void print_json(const MatchOptions& o, const PairMatch& m, const std::string& se
                          ? static_cast<double>(r.matched_points) / static_cast<double>(r.input_points)
                          : kNaN)
       << ", \"out\": " << (o.out.empty() ? "null" : json_string(o.out))
+      << ", \"view\": " << (o.view.empty() ? "null" : json_string(o.view))
       << ", \"converged\": " << (r.converged ? "true" : "false")
       << ", \"termination\": " << json_string(to_string(r.why)) << ", \"iterations\": " << r.iterations
       << ", \"seconds\": " << json_number(r.seconds)
@@ -295,6 +302,13 @@ int run_match(MatchOptions o) {
     if (!o.json && verbosity() != Verbosity::kQuiet)
       std::cout << "wrote:       " << o.out << " (the input in the reference frame)\n";
   }
+  if (!o.view.empty()) {
+    write_registration_view(
+        o.view, reference, input, initial, m.result.T,
+        fs_name(o.reference) + " ← " + fs_name(o.input) + " (" + to_string(m.result.quality.trust) + ")");
+    if (!o.json && verbosity() != Verbosity::kQuiet)
+      std::cout << "wrote:       " << o.view << " (3D view: before and after; open it in a browser)\n";
+  }
   if (o.json) {
     print_json(o, m, search, error);
   } else {
@@ -327,6 +341,9 @@ void add_match_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--gt", o->gt, "Ground truth: 3x4 or 4x4 matrix text file mapping input into reference");
   cmd->add_option("--config", o->config, "YAML file with optional 'matcher:' and 'sampler:' settings maps");
   cmd->add_option("--out", o->out, "Write the aligned input cloud here (format by extension)");
+  cmd->add_option("--view", o->view,
+                  "Write a self-contained HTML page showing both clouds before and after the registration in "
+                  "3D (rotate, zoom, toggle)");
   cmd->add_option("--seed", o->seed, "Seed of the sampler's random choices")->capture_default_str();
   cmd->add_flag("--print-config", o->print_config,
                 "Print every matcher and sampler setting the registration would use (the defaults included) "
