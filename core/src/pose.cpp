@@ -70,8 +70,13 @@ Eigen::Isometry3d relative(const Eigen::Isometry3d& a, const Eigen::Isometry3d& 
 }
 
 double rotation_angle(const Eigen::Isometry3d& T) {
-  const double cos_angle = std::clamp((T.linear().trace() - 1.0) / 2.0, -1.0, 1.0);
-  return std::acos(cos_angle);
+  // atan2(sin θ, cos θ) with sin θ from the skew part of R and cos θ from its trace: exact for small
+  // angles too, where acos((tr R − 1) / 2) cannot resolve anything below about 1.5e-8 rad.
+  const Eigen::Matrix3d& R = T.linear();
+  const double sin_angle =
+      0.5 * Eigen::Vector3d(R(2, 1) - R(1, 2), R(0, 2) - R(2, 0), R(1, 0) - R(0, 1)).norm();
+  const double cos_angle = (R.trace() - 1.0) / 2.0;
+  return std::atan2(sin_angle, cos_angle);
 }
 
 double translation_norm(const Eigen::Isometry3d& T) {

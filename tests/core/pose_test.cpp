@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "sextant/core/pose.hpp"
+#include "sextant/core/units.hpp"
 #include "test_util.hpp"
 
 namespace sextant {
@@ -77,6 +78,16 @@ TEST(Pose, NonFiniteIsDetected) {
   pose.beta = std::nan("");
   EXPECT_FALSE(is_finite(pose));
   EXPECT_FALSE(is_finite(to_isometry(pose)));
+}
+
+// The angle of a rotation is exact at every size: acos of the trace could not resolve angles
+// below about 1.5e-8 rad (identical rotations came out 1.4e-8 rad apart), nor near π.
+TEST(RotationAngle, ExactForTinyMiddleAndNearHalfTurnAngles) {
+  for (const double angle : {0.0, 1e-12, 1e-9, 3e-8, 0.3, 2.0, kPi - 1e-9}) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.linear() = Eigen::AngleAxisd(angle, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+    EXPECT_NEAR(rotation_angle(T), angle, 1e-15 + 1e-12 * angle) << angle;
+  }
 }
 
 }  // namespace
