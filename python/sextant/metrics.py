@@ -1,0 +1,15 @@
+"""Trajectory metrics over N×4×4 pose arrays: ate, rpe, kitti_drift, wulf, kuemmerle.
+
+The C++ library's eval/trajectory_metrics.hpp (the extension's submodule sextant._sextant.metrics),
+importable as ``sextant.metrics`` or ``from sextant.metrics import ate``. Each takes
+(reference, estimate) and returns a dict of floats and per-pose error arrays (metres, radians).
+"""
+from ._sextant import metrics as _metrics
+
+ate = _metrics.ate
+rpe = _metrics.rpe
+kitti_drift = _metrics.kitti_drift
+wulf = _metrics.wulf
+kuemmerle = _metrics.kuemmerle
+
+__all__ = ["ate", "rpe", "kitti_drift", "wulf", "kuemmerle"]

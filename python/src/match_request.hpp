@@ -1,0 +1,54 @@
+#pragma once
+// The choices `sextant match` makes around match_pair (experiments/src/cli/cmd_match.cpp and
+// matcher_options.cpp), made again here so that sextant.match() gives the CLI's result for the same
+// inputs and options:
+//   - mlndt/fbmlndt get `preset: <preset or "default">` unless the settings name their own preset
+//     (a preset for another matcher is an InputError);
+//   - without an initial guess the wide basin searches around the identity (wide_basin_retry off:
+//     a plain registration from the identity);
+//   - with a guess the guess is refined, and an untrusted result is registered again with the wide
+//     basin (same sampler seed); the retry replaces the first result only when it is trusted;
+//   - settings that hold their own `wide_basin:` map always search with it.
+// No Python here: run_match_request runs with the GIL released.
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <yaml-cpp/yaml.h>
+#include <Eigen/Geometry>
+
+#include "sextant/core/point_cloud.hpp"
+#include "sextant/matchers/match_pair.hpp"
+
+namespace sextant::python {
+
+struct MatchRequest {
+  std::string method = "mlndt";
+  std::string preset;  ///< empty: "default" for mlndt/fbmlndt (the CLI's --preset)
+  std::string sampling = "gbs";
+  YAML::Node settings;          ///< matcher settings map (the CLI's --config `matcher:` and --solver)
+  YAML::Node sampler_settings;  ///< null: the sampler's defaults (the CLI's --config `sampler:`)
+  std::optional<Eigen::Isometry3d> init;  ///< the CLI's --init; none: the identity, searched
+  bool wide_basin_retry = true;           ///< false: the CLI's --no-wide-basin
+  std::uint64_t seed = 1;                 ///< the CLI's --seed
+};
+
+struct MatchOutcome {
+  PairMatch match;
+  std::string preset;     ///< the preset applied ("" for matchers without presets)
+  bool searched = false;  ///< the result came from the wide basin
+  std::string search;     ///< how, in the CLI's words ("wide basin", "from the guess", …)
+};
+
+/// The matcher settings `sextant match` and `sextant odometry` build from --method, --preset and
+/// the `matcher:` map (the CLI's read_matcher_config): mlndt/fbmlndt get `preset:` unless the map
+/// names one; InputError for a preset on a matcher without presets. `applied`: the preset in effect
+/// ("" for other matchers).
+YAML::Node matcher_settings(const std::string& method, const std::string& preset, const YAML::Node& settings,
+                            std::string* applied);
+
+/// Registers `input` against `reference` as `sextant match` does (see above).
+MatchOutcome run_match_request(const PointCloud& reference, const PointCloud& input,
+                               const MatchRequest& request);
+
+}  // namespace sextant::python

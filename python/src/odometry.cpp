@@ -1,0 +1,208 @@
+// sextant.odometry(): run_odometry (odometry.hpp) over a dataset folder, the built-in campus or a
+// list of arrays, with `sextant odometry`'s defaults (cmd_odometry.cpp), and its OdometryRun: the
+// poses, the per-step table with the columns of the CLI's steps.csv, the Hessians.
+#include <chrono>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <oneapi/tbb/global_control.h>
+#include <pybind11/stl.h>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "match_request.hpp"
+#include "odometry_dataset.hpp"
+#include "python_yaml.hpp"
+#include "sextant/core/error.hpp"
+#include "sextant/matchers/matcher.hpp"
+#include "sextant/matchers/sampler.hpp"
+#include "sextant/odometry/odometry.hpp"
+#include "steps_table.hpp"
+
+namespace sextant::python {
+namespace {
+
+/// What sextant.odometry() returns (see the docstrings in bind_odometry).
+struct OdometryRun {
+  py::object poses, relative, hessians, ground_truth, steps, dataset;
+  std::string guess, map;
+  std::size_t first = 0, scans = 0, not_converged = 0, untrusted = 0, recovered = 0;
+  double seconds = 0.0;
+};
+
+std::optional<std::vector<Eigen::Isometry3d>> ground_truth_of(const Dataset& dataset, std::size_t first,
+                                                              std::size_t count) {
+  std::vector<Eigen::Isometry3d> poses;
+  for (std::size_t i = first; i < first + count; ++i) {
+    const auto p = dataset.ground_truth(i);
+    if (!p) return std::nullopt;
+    poses.push_back(*p);
+  }
+  return poses;
+}
+
+py::dict metadata_dict(const DatasetMetadata& m) {
+  py::dict d;
+  d["name"] = m.name;
+  d["format"] = m.format;
+  d["path"] = m.path.string();
+  d["scans"] = m.scan_count;
+  d["has_odometry"] = m.has_odometry;
+  d["has_ground_truth"] = m.has_ground_truth;
+  d["notes"] = py::cast(m.notes);
+  return d;
+}
+
+OdometryRun odometry(const py::object& source, const std::string& method, const py::object& preset,
+                     const std::string& sampling, const py::object& guess, const std::string& map,
+                     std::size_t first, std::size_t scans, std::size_t local_map_scans, double min_range,
+                     std::uint64_t seed, bool recover, const py::object& poses,
+                     const py::object& odometry_poses, const py::object& times, std::uint64_t campus_seed,
+                     int jobs, const py::object& sampler_settings, const py::kwargs& settings) {
+  // Arguments first (cheap), then the dataset, as the CLI.
+  OdometrySettings s;
+  s.map = parse_odometry_map(map, "map");
+  std::optional<OdometryGuess> guess_mode;
+  if (!guess.is_none()) guess_mode = parse_odometry_guess(guess.cast<std::string>(), "guess");
+  const YAML::Node matcher = matcher_settings(method, preset.is_none() ? "" : preset.cast<std::string>(),
+                                              yaml_map_from_kwargs(settings, "odometry() setting"), nullptr);
+  const YAML::Node sampler =
+      sampler_settings.is_none() ? YAML::Node() : yaml_from_python(sampler_settings, "sampler_settings");
+  (void)make_matcher(method, matcher, "odometry() settings");  // unknown names and bad settings stop here
+  (void)make_sampler(sampling, sampler, "odometry() sampler settings");
+  s.method = {method, matcher, sampling, sampler};
+  s.local_map_scans = local_map_scans;
+  s.min_range = min_range;
+  s.seed = seed;
+  s.recover = recover;
+  if (const std::string why = s.problem(); !why.empty()) throw InputError("arguments", "", why);
+  if (jobs < 0) throw py::value_error("jobs: expected 0 (all cores) or a positive number of threads");
+
+  const std::unique_ptr<Dataset> dataset =
+      open_odometry_dataset(source, poses, odometry_poses, times, campus_seed);
+  const DatasetMetadata& meta = dataset->metadata();
+  if (first >= dataset->size())
+    throw InputError(
+        "first", "",
+        std::to_string(first) + " is past the dataset's " + std::to_string(dataset->size()) + " scans");
+  const std::size_t count = scans == 0 ? dataset->size() - first : scans;
+  if (count > dataset->size() - first)
+    throw InputError("scans", "",
+                     "scans " + std::to_string(first) + "–" + std::to_string(first + count - 1) +
+                         " go past the dataset's " + std::to_string(dataset->size()) + " scans");
+  if (guess_mode == OdometryGuess::odometry && !meta.has_odometry)
+    throw InputError(
+        meta.path.empty() ? meta.name : meta.path.string(), "",
+        "this " + meta.format +
+            " dataset has no odometry, which guess='odometry' needs; use guess='constant_velocity' "
+            "(or 'identity')");
+  s.guess =
+      guess_mode.value_or(meta.has_odometry ? OdometryGuess::odometry : OdometryGuess::constant_velocity);
+
+  OdometryResult result;
+  std::optional<std::vector<Eigen::Isometry3d>> truth;
+  double seconds = 0.0;
+  {
+    const py::gil_scoped_release release;
+    std::optional<tbb::global_control> threads;
+    if (jobs > 0)
+      threads.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(jobs));
+    const auto t0 = std::chrono::steady_clock::now();
+    result = run_odometry(*dataset, s, first, count);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    truth = ground_truth_of(*dataset, first, count);
+  }
+
+  OdometryRun run;
+  run.poses = poses_array(result.poses);
+  std::vector<Eigen::Isometry3d> relative;
+  for (const OdometryStep& step : result.steps) relative.push_back(step.relative);
+  run.relative = poses_array(relative);
+  py::array_t<double> hessians(
+      {static_cast<py::ssize_t>(result.steps.size()), py::ssize_t{6}, py::ssize_t{6}});
+  auto h = hessians.mutable_unchecked<3>();
+  for (std::size_t k = 0; k < result.steps.size(); ++k)
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j) h(static_cast<py::ssize_t>(k), i, j) = result.steps[k].hessian(i, j);
+  run.hessians = std::move(hessians);
+  run.ground_truth = truth ? py::object(poses_array(*truth)) : py::object(py::none());
+  run.steps = steps_table(result, first, truth);
+  run.dataset = metadata_dict(meta);
+  run.guess = to_string(s.guess);
+  run.map = to_string(s.map);
+  run.first = first;
+  run.scans = count;
+  for (const OdometryStep& step : result.steps) run.not_converged += step.converged ? 0 : 1;
+  run.untrusted = result.untrusted();
+  run.recovered = result.recovered();
+  run.seconds = seconds;
+  return run;
+}
+
+constexpr char kOdometryDoc[] = R"doc(Chain registrations over a sequence, as ``sextant odometry`` does.
+
+dataset: a folder (a folder of scans with optional poses.txt/times.txt, a uos folder, a KITTI
+    sequence folder; opened by the library's open_dataset), "campus" (the built-in synthetic campus,
+    seed campus_seed), or a list of scans (N×3/N×4 float32/float64 arrays or file paths) held in memory.
+method, preset, sampling, sampler_settings, **settings: the matcher and sampler, as for match()
+    (mlndt with preset "default" and GBS by default).
+guess: where each registration starts: "odometry", "constant_velocity", "identity"; None: odometry
+    when the dataset has it, else constant_velocity (the CLI's default).
+map: "scan" (register against the previous scan) or "local_map" (the last local_map_scans scans).
+first, scans: the scans first … first + scans − 1 (scans = 0: to the end).
+min_range: drop points closer than this to the sensor [m]. seed: sampler seed (per-step seeds derive
+    from it). recover: an untrusted step is registered again with the wide basin (the CLI's default;
+    False = --no-recover). jobs: worker threads (0: all cores).
+poses: ground truth. For a folder of scans: a TUM or KITTI file (the CLI's --poses); for a list: an
+    N×4×4 array (world ← scan). odometry_poses (N×4×4) and times (N seconds): a list's odometry and
+    clock.
+
+Returns an OdometryRun; its poses are those ``sextant odometry`` writes to trajectory.tum (world ←
+scan, starting at the first scan's ground truth, else odometry, else the identity) and its steps
+table holds the columns of steps.csv. Raises InputError for bad folders, files, names or settings.)doc";
+
+}  // namespace
+
+void bind_odometry(py::module_& m) {
+  py::class_<OdometryRun>(m, "OdometryRun", "The result of odometry(): poses, per-step table, Hessians.")
+      .def_readonly("poses", &OdometryRun::poses,
+                    "N×4×4 float64 world ← scan poses of scans first … first+N−1")
+      .def_readonly("relative", &OdometryRun::relative,
+                    "(N−1)×4×4 relative poses: relative[i] maps scan first+i+1 into scan first+i")
+      .def_readonly("hessians", &OdometryRun::hessians,
+                    "(N−1)×6×6 matcher Hessians over (x, y, z, alpha, beta, gamma) of relative[i] "
+                    "(see MatchResult.H); R = H⁻¹, eq. 3.50")
+      .def_readonly("ground_truth", &OdometryRun::ground_truth,
+                    "N×4×4 ground-truth poses of the same scans, or None when any lacks one")
+      .def_readonly("steps", &OdometryRun::steps,
+                    "dict of NumPy columns, one row per registration, the columns of the CLI's steps.csv: "
+                    "step, from_scan, to_scan, x_m, y_m, z_m, roll_deg, pitch_deg, yaw_deg (the relative "
+                    "pose; roll/pitch/yaw are alpha/beta/gamma), guess_x_m, guess_y_m, guess_yaw_deg, "
+                    "converged, iterations, score, matched_points, reference_points, seconds, error_m, "
+                    "error_deg (against the ground truth; NaN without), status, trust, first_trust, "
+                    "recovery, overlap, constraint_ratio, fit_ratio, trust_reason, fallback")
+      .def_readonly(
+          "dataset", &OdometryRun::dataset,
+          "the dataset's metadata: name, format, path, scans, has_odometry, has_ground_truth, notes")
+      .def_readonly("guess", &OdometryRun::guess, "the guess mode used")
+      .def_readonly("map", &OdometryRun::map, "the map mode used")
+      .def_readonly("first", &OdometryRun::first, "the first scan's index")
+      .def_readonly("scans", &OdometryRun::scans, "number of scans (poses)")
+      .def_readonly("not_converged", &OdometryRun::not_converged, "steps whose registration did not converge")
+      .def_readonly("untrusted", &OdometryRun::untrusted, "steps whose chained motion is not trusted")
+      .def_readonly("recovered", &OdometryRun::recovered, "steps the wide basin (or a restart) recovered")
+      .def_readonly("seconds", &OdometryRun::seconds, "wall time of the registrations [s]")
+      .def("__repr__", [](const OdometryRun& r) {
+        return "OdometryRun(scans=" + std::to_string(r.scans) + ", first=" + std::to_string(r.first) +
+               ", guess='" + r.guess + "', untrusted=" + std::to_string(r.untrusted) + ")";
+      });
+  m.def("odometry", &odometry, kOdometryDoc, py::arg("dataset"), py::arg("method") = "mlndt",
+        py::arg("preset") = py::none(), py::arg("sampling") = "gbs", py::arg("guess") = py::none(),
+        py::arg("map") = "scan", py::arg("first") = 0, py::arg("scans") = 0, py::arg("local_map_scans") = 5,
+        py::arg("min_range") = 0.0, py::arg("seed") = 1, py::arg("recover") = true,
+        py::arg("poses") = py::none(), py::arg("odometry_poses") = py::none(), py::arg("times") = py::none(),
+        py::arg("campus_seed") = 1, py::arg("jobs") = 0, py::arg("sampler_settings") = py::none());
+}
+
+}  // namespace sextant::python

@@ -1,0 +1,88 @@
+// sextant.odometry()'s dataset argument (odometry_dataset.hpp): a folder, the campus or a list.
+#include "odometry_dataset.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <pybind11/numpy.h>
+
+#include "arrays.hpp"
+#include "memory_dataset.hpp"
+#include "sextant/core/error.hpp"
+#include "sextant/synth/campus.hpp"
+
+namespace sextant::python {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A folder (open_dataset, or open_scan_folder with a poses file, as --poses) or the campus.
+std::unique_ptr<Dataset> open_folder(const std::string& name, const py::object& poses,
+                                     std::uint64_t campus_seed) {
+  if (name == "campus" || name == "synthetic") {
+    if (!poses.is_none()) throw py::value_error("poses: the campus brings its own ground truth");
+    const py::gil_scoped_release release;
+    return std::make_unique<synth::CampusDataset>(
+        synth::generate_campus(synth::CampusSettings{}, campus_seed));
+  }
+  const fs::path folder(name);
+  if (!fs::exists(folder))
+    throw InputError(name, "",
+                     "no such dataset folder (expected a folder of scans, a uos folder, a KITTI sequence "
+                     "folder, or 'campus')");
+  if (!fs::is_directory(folder))
+    throw InputError(name, "",
+                     "is a file, expected a dataset folder (a folder of scans, uos or KITTI) or 'campus'");
+  std::optional<std::string> poses_file;
+  if (!poses.is_none()) poses_file = py::module_::import("os").attr("fspath")(poses).cast<std::string>();
+  const py::gil_scoped_release release;
+  std::unique_ptr<Dataset> dataset = open_dataset(folder);
+  if (!poses_file) return dataset;
+  if (dataset->metadata().format != "folder")
+    throw InputError("poses", "",
+                     "only for a plain folder of scans: this " + dataset->metadata().format +
+                         " folder brings its own poses");
+  return open_scan_folder(folder, *poses_file);
+}
+
+/// A list of clouds (arrays or paths) with optional ground truth, odometry and times.
+std::unique_ptr<Dataset> open_list(const py::sequence& clouds, const py::object& poses,
+                                   const py::object& odometry, const py::object& times) {
+  std::vector<PointCloud> scans;
+  for (std::size_t i = 0; i < clouds.size(); ++i)
+    scans.push_back(cloud_from_object(clouds[i], "scans[" + std::to_string(i) + "]"));
+  if (scans.empty()) throw py::value_error("odometry: the list of scans is empty");
+  std::vector<Eigen::Isometry3d> truth, odometry_poses;
+  if (!poses.is_none()) truth = poses_from_array(poses, "poses");
+  if (!odometry.is_none()) odometry_poses = poses_from_array(odometry, "odometry_poses");
+  std::vector<double> stamps;
+  if (!times.is_none()) {
+    const auto t = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(times);
+    if (!t || t.ndim() != 1) throw py::value_error("times: expected a 1-D array of seconds");
+    stamps.assign(t.data(), t.data() + t.shape(0));
+  }
+  return std::make_unique<MemoryDataset>(std::move(scans), std::move(truth), std::move(odometry_poses),
+                                         std::move(stamps));
+}
+
+}  // namespace
+
+std::unique_ptr<Dataset> open_odometry_dataset(const py::object& source, const py::object& poses,
+                                               const py::object& odometry_poses, const py::object& times,
+                                               std::uint64_t campus_seed) {
+  if (py::isinstance<py::str>(source) || py::hasattr(source, "__fspath__")) {
+    if (!odometry_poses.is_none() || !times.is_none())
+      throw py::value_error("odometry_poses and times are for a list of arrays; a folder brings its own");
+    return open_folder(py::module_::import("os").attr("fspath")(source).cast<std::string>(), poses,
+                       campus_seed);
+  }
+  if (py::isinstance<py::array>(source))
+    throw py::type_error("odometry: got one array; expected a list of scans (N×3/N×4 arrays)");
+  if (!py::isinstance<py::sequence>(source))
+    throw py::type_error("odometry: expected a dataset folder, 'campus', or a list of N×3/N×4 arrays");
+  return open_list(source.cast<py::sequence>(), poses, odometry_poses, times);
+}
+
+}  // namespace sextant::python

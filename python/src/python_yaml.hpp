@@ -1,0 +1,17 @@
+#pragma once
+// Python values as YAML nodes, so that keyword settings reach the library's SettingsReader the way
+// a YAML file's `matcher:` map does: None → null, bool, int, float (inf/nan as .inf/.nan), str,
+// dict (string keys) → map, list/tuple → sequence. Anything else is a TypeError naming `what`.
+#include <string>
+
+#include <pybind11/pybind11.h>
+#include <yaml-cpp/yaml.h>
+
+namespace sextant::python {
+
+YAML::Node yaml_from_python(const pybind11::handle& value, const std::string& what);
+
+/// A map node from keyword arguments (empty map for none).
+YAML::Node yaml_map_from_kwargs(const pybind11::kwargs& kwargs, const std::string& what);
+
+}  // namespace sextant::python

@@ -1,0 +1,131 @@
+"""sextant.odometry: the same poses and steps as `sextant odometry` on the first keyframes of MulRan
+Riverside02 (skipped without the shared data), a folder and the same scans as arrays agree, a
+synthetic sequence of known poses is recovered, bad input raises."""
+import csv
+import json
+
+import numpy as np
+import pytest
+
+import sextant
+from conftest import run
+
+SCANS = 10
+
+
+def kitti_poses(path):
+    rows = np.loadtxt(path, ndmin=2)
+    poses = np.tile(np.eye(4), (len(rows), 1, 1))
+    poses[:, :3, :] = rows.reshape(-1, 3, 4)
+    return poses
+
+
+@pytest.fixture(scope="module")
+def cli_run(mulran, sextant_binary, tmp_path_factory):
+    out = tmp_path_factory.mktemp("odometry")
+    done = run([sextant_binary, "odometry", mulran, "--scans", SCANS, "--out", out, "--no-progress"])
+    assert done.returncode == 0, done.stdout + done.stderr
+    with open(out / "steps.csv", newline="") as f:
+        steps = list(csv.DictReader(f))
+    return kitti_poses(out / "trajectory.kitti.txt"), steps, out
+
+
+@pytest.fixture(scope="module")
+def python_run(mulran):
+    return sextant.odometry(mulran, scans=SCANS)
+
+
+def test_same_poses_as_cli_on_mulran(cli_run, python_run):
+    cli_poses, _, _ = cli_run
+    assert python_run.poses.shape == (SCANS, 4, 4)
+    assert python_run.guess == "constant_velocity"  # no odometry in the folder: the CLI's default
+    # trajectory.kitti.txt holds 9 significant digits
+    np.testing.assert_allclose(python_run.poses, cli_poses, rtol=1e-8, atol=1e-8)
+
+
+def test_same_steps_table_as_cli(cli_run, python_run):
+    _, cli_steps, _ = cli_run
+    steps = python_run.steps
+    assert list(steps) == list(cli_steps[0].keys())  # the columns of steps.csv, in its order
+    assert all(len(column) == SCANS - 1 for column in steps.values())
+    for name, column in steps.items():
+        expected = [row[name] for row in cli_steps]
+        if column.dtype.kind in "U":
+            assert list(column) == expected, name
+        elif column.dtype.kind == "b":
+            assert list(column) == [v == "1" for v in expected], name
+        else:
+            if name == "seconds":
+                continue  # timing
+            values = np.array([float(v) if v else np.nan for v in expected])
+            np.testing.assert_allclose(column.astype(float), values, rtol=1e-7, atol=1e-7, err_msg=name)
+
+
+def test_ground_truth_and_metrics_of_the_run(python_run, mulran, cli_run):
+    truth = kitti_poses(mulran / "poses.txt")[:SCANS]
+    np.testing.assert_allclose(python_run.ground_truth, truth, atol=1e-12)
+    errors = python_run.steps["error_m"]
+    rpe = sextant.metrics.rpe(python_run.ground_truth, python_run.poses)
+    # The same errors from the relative poses (steps) and from the chained ones (metrics); they differ
+    # in rounding only: poses.txt's rotations are orthonormal to 6 digits.
+    assert rpe["translation_rms"] == pytest.approx(np.sqrt(np.mean(errors**2)), rel=1e-6)
+    estimate = json.loads((cli_run[2] / "metrics.json").read_text())["estimate"]
+    assert rpe["translation_rms"] == pytest.approx(estimate["rpe_m"], rel=1e-9)
+    ate = sextant.metrics.ate(python_run.ground_truth, python_run.poses)
+    assert ate["translation_rms"] == pytest.approx(estimate["ate_m"], rel=1e-9)
+    assert rpe["translation_rms"] < 0.1  # a few cm per keyframe step on this stretch
+    assert python_run.hessians.shape == (SCANS - 1, 6, 6) and python_run.relative.shape == (SCANS - 1, 4, 4)
+    np.testing.assert_allclose(python_run.poses[1:], python_run.poses[:-1] @ python_run.relative, atol=1e-9)
+
+
+def test_arrays_give_the_folders_result(mulran):
+    count = 5
+    scans = [sextant.read_cloud(path, intensity=True) for path in sorted((mulran / "scans").glob("*.pcd"))[:count]]
+    arrays = [np.column_stack([points, intensity]) for points, intensity in scans]
+    truth = kitti_poses(mulran / "poses.txt")[:count]
+    times = np.loadtxt(mulran / "times.txt")[:count]
+    from_arrays = sextant.odometry(arrays, poses=truth, times=times)
+    from_folder = sextant.odometry(mulran, scans=count)
+    assert from_arrays.dataset["format"] == "arrays" and from_arrays.scans == count
+    np.testing.assert_allclose(from_arrays.poses, from_folder.poses, rtol=0, atol=1e-12)
+
+
+def test_recovers_a_synthetic_sequence_of_known_poses(data_dir):
+    """One real scan seen from five poses 0.6 m and 2° apart: odometry must find those poses."""
+    world = sextant.read_cloud(data_dir / "velodyne_pair" / "fast_gicp_251370668.pcd").astype(np.float64)
+    poses = np.array([sextant.pose_to_matrix(0.6 * k, 0.05 * k, 0, 0, 0, 2.0 * k, degrees=True) for k in range(5)])
+    scans = []
+    for pose in poses:
+        inverse = np.linalg.inv(pose)  # world → scan frame
+        scans.append(world @ inverse[:3, :3].T + inverse[:3, 3])
+    result = sextant.odometry(scans, poses=poses, guess="identity", jobs=1)
+    assert result.untrusted == 0
+    errors = [np.linalg.norm((np.linalg.inv(p) @ e)[:3, 3]) for p, e in zip(poses, result.poses)]
+    assert max(errors) < 0.02, errors
+    assert np.all(result.steps["error_m"] < 0.01)
+    assert list(result.steps["trust"]) == ["ok"] * 4
+
+
+def test_bad_ranges_and_modes_raise(mulran):
+    with pytest.raises(sextant.InputError, match="past the dataset"):
+        sextant.odometry(mulran, first=500)
+    with pytest.raises(sextant.InputError, match="go past"):
+        sextant.odometry(mulran, first=160, scans=10)
+    with pytest.raises(sextant.InputError, match="no odometry"):
+        sextant.odometry(mulran, guess="odometry", scans=2)
+
+
+def test_bad_input_raises(data_dir, tmp_path):
+    cloud = sextant.read_cloud(data_dir / "velodyne_pair" / "fast_gicp_251370668.pcd")
+    with pytest.raises(sextant.InputError, match="unknown map mode"):
+        sextant.odometry([cloud, cloud], map="graph")
+    with pytest.raises(sextant.InputError, match="unknown guess mode"):
+        sextant.odometry([cloud, cloud], guess="psychic")
+    with pytest.raises(sextant.InputError, match="no such dataset folder"):
+        sextant.odometry(tmp_path / "missing")
+    with pytest.raises(ValueError, match="poses: 1 entries for 2 scans"):
+        sextant.odometry([cloud, cloud], poses=np.eye(4)[None])
+    with pytest.raises(ValueError, match="past the dataset"):
+        sextant.odometry([cloud, cloud], first=2)
+    with pytest.raises(TypeError, match="one array"):
+        sextant.odometry(cloud)
