@@ -6,12 +6,12 @@
 #include <string>
 
 #include <pybind11/stl.h>
-#include <Eigen/Cholesky>
 
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "match_request.hpp"
 #include "python_yaml.hpp"
+#include "sextant/matchers/register_pair.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 
 namespace sextant::python {
@@ -29,21 +29,12 @@ struct MatchResult {
   std::size_t matched_points = 0, input_points = 0;
 };
 
-/// R = H⁻¹ (eq. 3.50) when H is positive definite (a Cholesky factorisation of H succeeds), all NaN
-/// otherwise: the definition of `sextant match --json`'s covariance (cmd_match.cpp), so both agree.
-Matrix6d covariance_of(const Matrix6d& H) {
-  const Eigen::LLT<Matrix6d> llt(H);
-  if (llt.info() != Eigen::Success || !H.allFinite())
-    return Matrix6d::Constant(std::numeric_limits<double>::quiet_NaN());
-  return llt.solve(Matrix6d::Identity());
-}
-
 MatchResult to_python(const MatchOutcome& o, const MatchRequest& request) {
   const RegistrationResult& r = o.match.result;
   MatchResult out;
   out.T = transform_array(r.T);
   out.H = matrix6_array(r.H);
-  out.covariance = matrix6_array(covariance_of(r.H));
+  out.covariance = matrix6_array(registration_covariance(r.H));
   const Pose6 p = to_pose6(r.T);
   out.pose = py::make_tuple(p.x, p.y, p.z, p.alpha, p.beta, p.gamma);
   out.converged = r.converged;

@@ -1,14 +1,11 @@
-// sextant.match()'s registration, the same calls in the same order as `sextant match`
-// (match_request.hpp says which choices; cmd_match.cpp's run_match is the original).
+// sextant.match()'s registration: the CLI's preset rule, then register_pair (matchers), the one
+// policy `sextant match` runs too.
 #include "match_request.hpp"
 
 #include <utility>
 
 #include "sextant/core/error.hpp"
-#include "sextant/core/rng.hpp"
-#include "sextant/matchers/matcher.hpp"
-#include "sextant/matchers/mlndt_presets.hpp"
-#include "sextant/matchers/sampler.hpp"
+#include "sextant/matchers/register_pair.hpp"
 
 namespace sextant::python {
 namespace {
@@ -35,31 +32,21 @@ YAML::Node matcher_settings(const std::string& method, const std::string& preset
 MatchOutcome run_match_request(const PointCloud& reference, const PointCloud& input,
                                const MatchRequest& request) {
   MatchOutcome out;
-  const YAML::Node settings = matcher_settings(request.method, request.preset, request.settings, &out.preset);
-  const auto sampler = make_sampler(request.sampling, request.sampler_settings, "match() sampler settings");
-  const Eigen::Isometry3d initial = request.init.value_or(Eigen::Isometry3d::Identity());
-  const std::optional<YAML::Node> wide = with_wide_basin(request.method, settings);
-  const bool has_own_wide_basin = settings["wide_basin"].IsDefined();
-  const bool search_first = !request.init && request.wide_basin_retry && wide.has_value();
-  auto matcher = make_matcher(request.method, search_first ? *wide : settings, kWhere);
-  Rng rng(request.seed);
-  out.match = match_pair(*matcher, *sampler, reference, input, initial, rng);
-  out.searched = has_own_wide_basin || search_first;
-  out.search = out.searched ? "wide basin" : "from the guess";
-  if (search_first) out.search += " (no init; wide_basin=False: off)";
-  if (!out.match.result.quality.trusted() && !out.searched && request.wide_basin_retry && wide) {
-    const auto wide_matcher = make_matcher(request.method, *wide, kWhere);
-    Rng again(request.seed);
-    PairMatch retry = match_pair(*wide_matcher, *sampler, reference, input, initial, again);
-    const std::string first = to_string(out.match.result.quality.trust);
-    if (retry.result.quality.trusted()) {
-      out.match = std::move(retry);
-      out.searched = true;
-      out.search += ", " + first + ": recovered by the wide basin";
-    } else {
-      out.search += ", " + first + ": the wide basin found no trusted pose either";
-    }
-  }
+  PairRegistrationRequest pair;
+  pair.method = request.method;
+  pair.settings = matcher_settings(request.method, request.preset, request.settings, &out.preset);
+  pair.sampling = request.sampling;
+  pair.sampler_settings = request.sampler_settings;
+  pair.init = request.init;
+  pair.wide_basin = request.wide_basin_retry;
+  pair.seed = request.seed;
+  pair.where = kWhere;
+  pair.sampler_where = "match() sampler settings";
+  PairRegistration registered = register_pair(reference, input, pair);
+  out.match = std::move(registered.match);
+  out.searched = registered.searched;
+  out.search = registered.search;
+  if (registered.searched_without_guess) out.search += " (no init; wide_basin=False: off)";
   return out;
 }
 

@@ -1,14 +1,8 @@
 #pragma once
-// The choices `sextant match` makes around match_pair (experiments/src/cli/cmd_match.cpp and
-// matcher_options.cpp), made again here so that sextant.match() gives the CLI's result for the same
-// inputs and options:
-//   - mlndt/fbmlndt get `preset: <preset or "default">` unless the settings name their own preset
-//     (a preset for another matcher is an InputError);
-//   - without an initial guess the wide basin searches around the identity (wide_basin_retry off:
-//     a plain registration from the identity);
-//   - with a guess the guess is refined, and an untrusted result is registered again with the wide
-//     basin (same sampler seed); the retry replaces the first result only when it is trusted;
-//   - settings that hold their own `wide_basin:` map always search with it.
+// sextant.match()'s choices: the CLI's preset rule (mlndt/fbmlndt get `preset: <preset or
+// "default">` unless the settings name their own; a preset for another matcher is an InputError),
+// then register_pair (matchers/register_pair.hpp), the policy `sextant match` runs too: the wide
+// basin without a guess, a retry with it of an untrusted result with one.
 // No Python here: run_match_request runs with the GIL released.
 #include <cstdint>
 #include <optional>

@@ -15,6 +15,7 @@
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
+#include "sextant/matchers/register_pair.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 #include "sextant/matchers/sampler.hpp"
 
@@ -290,6 +291,39 @@ TEST(ResolvedSettings, EveryMatcherAndSamplerRecordReadsBackToItself) {
   EXPECT_EQ(recording.resolved()["layers"].as<int>(), 5);
   EXPECT_EQ(recording.resolved()["solver"].as<std::string>(), "newton");
   EXPECT_EQ(recording.resolved()["step_control"].as<std::string>(), "none");
+}
+
+// register_pair, the policy `sextant match` and Python's match() share: without a guess the wide
+// basin searches from the identity and finds the Velodyne pair's pose; with a guess 6 m off along
+// the road, the first registration is not trusted and the wide-basin retry recovers the pose.
+TEST(RegisterPair, SearchesWithoutAGuessAndRetriesAnUntrustedOne) {
+  const std::string dir = std::string(SEXTANT_DATA_DIR) + "/velodyne_pair/";
+  const Eigen::Isometry3d truth = read_matrix(dir + "fast_gicp_relative.txt");
+  const PointCloud ref = read_cloud(dir + "fast_gicp_251370668.pcd");
+  const PointCloud in = read_cloud(dir + "fast_gicp_251371071.pcd");
+  PairRegistrationRequest request;
+  const PairRegistration searched = register_pair(ref, in, request);
+  EXPECT_TRUE(searched.searched_without_guess);
+  EXPECT_EQ(searched.search, "wide basin");
+  EXPECT_TRUE(searched.match.result.quality.trusted()) << searched.match.result.quality.reason;
+  EXPECT_LT(translation_norm(relative(truth, searched.match.result.T)), 0.05);
+
+  Eigen::Isometry3d far = truth;
+  far.translation().x() += 6.0;
+  request.init = far;
+  const PairRegistration retried = register_pair(ref, in, request);
+  EXPECT_FALSE(retried.searched_without_guess);
+  EXPECT_EQ(retried.search.rfind("from the guess, ", 0), 0u) << retried.search;
+  EXPECT_LT(translation_norm(relative(truth, retried.match.result.T)), 0.05) << retried.search;
+  request.wide_basin = false;  // --no-wide-basin: the guess alone
+  EXPECT_EQ(register_pair(ref, in, request).search, "from the guess");
+}
+
+TEST(RegisterPair, CovarianceIsTheInverseHessianOrNaN) {
+  Matrix6d H = Matrix6d::Identity() * 4.0;
+  EXPECT_TRUE(registration_covariance(H).isApprox(Matrix6d::Identity() * 0.25));
+  H(5, 5) = 0.0;  // a direction the registration leaves unconstrained
+  EXPECT_TRUE(registration_covariance(H).array().isNaN().all());
 }
 
 }  // namespace

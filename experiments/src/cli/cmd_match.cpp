@@ -18,8 +18,6 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Cholesky>
-
 #include "commands.hpp"
 #include "matcher_options.hpp"
 #include "sextant/core/error.hpp"
@@ -30,6 +28,7 @@
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/mlndt_presets.hpp"
+#include "sextant/matchers/register_pair.hpp"
 #include "sextant/matchers/sampler.hpp"
 
 namespace sextant::cli {
@@ -173,13 +172,6 @@ std::string json_matrix(const Matrix& M) {
   return out + "]";
 }
 
-/// R = H⁻¹ (eq. 3.50) when H is positive definite; NaN otherwise (a degenerate or failed result).
-Matrix6d covariance_of(const Matrix6d& H) {
-  const Eigen::LLT<Matrix6d> llt(H);
-  if (llt.info() != Eigen::Success || !H.allFinite()) return Matrix6d::Constant(kNaN);
-  return llt.solve(Matrix6d::Identity());
-}
-
 void print_json(const MatchOptions& o, const PairMatch& m, const std::string& search,
                 const std::optional<PoseError>& error) {
   const RegistrationResult& r = m.result;
@@ -187,8 +179,8 @@ void print_json(const MatchOptions& o, const PairMatch& m, const std::string& se
   out << "{\"method\": " << json_string(o.method) << ", \"sampling\": " << json_string(o.sampling)
       << ", \"transform\": " << json_matrix(r.T.matrix())
       << ", \"parameters\": [\"x_m\", \"y_m\", \"z_m\", \"alpha_rad\", \"beta_rad\", \"gamma_rad\"]"
-      << ", \"hessian\": " << json_matrix(r.H) << ", \"covariance\": " << json_matrix(covariance_of(r.H))
-      << ", \"matched_fraction\": "
+      << ", \"hessian\": " << json_matrix(r.H)
+      << ", \"covariance\": " << json_matrix(registration_covariance(r.H)) << ", \"matched_fraction\": "
       << json_number(r.input_points
                          ? static_cast<double>(r.matched_points) / static_cast<double>(r.input_points)
                          : kNaN)
@@ -265,36 +257,24 @@ int run_match(MatchOptions o) {
     return 0;
   }
   const PointCloud reference = read_cloud(o.reference);
-  const std::string where = o.config.empty() ? "matcher settings (--solver)" : o.config;
-  const auto sampler =
-      make_sampler(o.sampling, config.sampler, o.config.empty() ? "sampler settings" : o.config);
   const Eigen::Isometry3d initial = o.init.empty() ? Eigen::Isometry3d::Identity() : parse_init(o.init);
   std::optional<Eigen::Isometry3d> truth;
   if (!o.gt.empty()) truth = read_ground_truth(o.gt);
   const PointCloud input = read_cloud(o.input);
-  // Without a guess the wide basin searches around the identity; with one, the guess is refined and
-  // the wide basin is the recovery of an untrusted result.
-  const std::optional<YAML::Node> wide = with_wide_basin(o.method, config.matcher);
-  const bool has_own_wide_basin = config.matcher.IsMap() && config.matcher["wide_basin"].IsDefined();
-  const bool search_first = o.init.empty() && !o.no_wide_basin && wide.has_value();
-  auto matcher = make_matcher(o.method, search_first ? *wide : config.matcher, where);
-  Rng rng(o.seed);
-  PairMatch m = match_pair(*matcher, *sampler, reference, input, initial, rng);
-  const bool searched = has_own_wide_basin || search_first;  // the first registration was the wide basin
-  std::string search = searched ? "wide basin" : "from the guess";
-  if (search_first) search += " (no --init; --no-wide-basin: off)";
-  if (!m.result.quality.trusted() && !searched && !o.no_wide_basin && wide) {
-    const auto wide_matcher = make_matcher(o.method, *wide, where);
-    Rng again(o.seed);
-    PairMatch w = match_pair(*wide_matcher, *sampler, reference, input, initial, again);
-    const std::string first = to_string(m.result.quality.trust);
-    if (w.result.quality.trusted()) {
-      m = std::move(w);
-      search += ", " + first + ": recovered by the wide basin";
-    } else {
-      search += ", " + first + ": the wide basin found no trusted pose either";
-    }
-  }
+  PairRegistrationRequest request;
+  request.method = o.method;
+  request.settings = config.matcher;
+  request.sampling = o.sampling;
+  request.sampler_settings = config.sampler;
+  if (!o.init.empty()) request.init = initial;
+  request.wide_basin = !o.no_wide_basin;
+  request.seed = o.seed;
+  request.where = o.config.empty() ? "matcher settings (--solver)" : o.config;
+  request.sampler_where = o.config.empty() ? "sampler settings" : o.config;
+  const PairRegistration registered = register_pair(reference, input, request);
+  const PairMatch& m = registered.match;
+  std::string search = registered.search;
+  if (registered.searched_without_guess) search += " (no --init; --no-wide-basin: off)";
   std::optional<PoseError> error;
   if (truth) error = pose_error(*truth, m.result.T);
   if (!o.out.empty()) {

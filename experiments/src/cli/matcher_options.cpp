@@ -72,9 +72,8 @@ YAML::Node resolved_settings(const MatcherOptions& o, const MatcherConfig& confi
 
 std::string describe_matcher(const MatcherOptions& o) {
   return o.method +
-         (ndt_family(o.method)
-              ? " (preset " + (o.preset.empty() ? std::string("default") : o.preset) + o.preset_note + ")"
-              : "") +
+         (ndt_family(o.method) ? " (preset " + (o.preset.empty() ? std::string("default") : o.preset) + ")"
+                               : "") +
          (o.solver.empty() ? "" : " (solver " + o.solver + ")");
 }
 

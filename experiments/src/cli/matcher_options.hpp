@@ -9,9 +9,8 @@ namespace sextant::cli {
 
 struct MatcherOptions {
   std::string method = "mlndt";
-  std::string preset;       ///< mlndt / fbmlndt settings preset; empty: "default" (mlndt_presets.hpp)
-  std::string preset_note;  ///< why the preset was chosen when the user named none (printed)
-  std::string solver;       ///< empty: the preset's
+  std::string preset;  ///< mlndt / fbmlndt settings preset; empty: "default" (mlndt_presets.hpp)
+  std::string solver;  ///< empty: the preset's
   std::string sampling = "gbs";
   std::string config;  ///< YAML file with optional `matcher:` and `sampler:` maps
 };

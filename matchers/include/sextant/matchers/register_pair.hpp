@@ -1,0 +1,53 @@
+#pragma once
+// How `sextant match` and the Python module's match() register one pair, in one place so that both
+// give the same result for the same inputs and options (match_pair does one registration):
+//   - without an initial guess the wide basin searches around the identity (`wide_basin` false: a
+//     plain registration from the identity);
+//   - with a guess the guess is refined, and an untrusted result is registered again with the wide
+//     basin from the same guess (same sampler seed); the retry replaces the first result only when
+//     it is trusted;
+//   - settings that hold their own `wide_basin:` map always search with it.
+// Matchers without a wide basin (ICP, the PCL peers) register once, from the guess or the identity.
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <yaml-cpp/yaml.h>
+#include <Eigen/Geometry>
+
+#include "sextant/core/point_cloud.hpp"
+#include "sextant/matchers/match_pair.hpp"
+
+namespace sextant {
+
+struct PairRegistrationRequest {
+  std::string method = "mlndt";
+  YAML::Node settings;  ///< the matcher's settings (mlndt/fbmlndt: may name a `preset:`)
+  std::string sampling = "gbs";
+  YAML::Node sampler_settings;            ///< null: the sampler's defaults
+  std::optional<Eigen::Isometry3d> init;  ///< p_reference ≈ init · p_input; none: the identity, searched
+  bool wide_basin = true;                 ///< false: no search without a guess, no retry with one
+  std::uint64_t seed = 1;                 ///< the sampler's random choices
+  std::string where = "<settings>";       ///< named in the errors of bad matcher settings
+  std::string sampler_where = "<sampler settings>";  ///< … and of bad sampler settings
+};
+
+struct PairRegistration {
+  PairMatch match;
+  bool searched = false;  ///< the result came from the wide basin
+  /// How: "wide basin", "from the guess", with ", <trust>: recovered by the wide basin" or
+  /// ", <trust>: the wide basin found no trusted pose either" after a retry.
+  std::string search;
+  bool searched_without_guess = false;  ///< no guess: the wide basin searched (callers name their switch)
+};
+
+/// Registers `input` against `reference` (see above). Never throws for bad data; bad settings are
+/// InputErrors naming request.where.
+PairRegistration register_pair(const PointCloud& reference, const PointCloud& input,
+                               const PairRegistrationRequest& request);
+
+/// The registration's covariance R = H⁻¹ (eq. 3.50), rows and columns [x y z α β γ] (m, rad) for
+/// the NDT family; NaN everywhere when H is not positive definite (a degenerate or failed result).
+Matrix6d registration_covariance(const Matrix6d& H);
+
+}  // namespace sextant

@@ -1,0 +1,51 @@
+#include "sextant/matchers/register_pair.hpp"
+
+#include <limits>
+#include <utility>
+
+#include <Eigen/Cholesky>
+
+#include "sextant/core/rng.hpp"
+#include "sextant/matchers/matcher.hpp"
+#include "sextant/matchers/mlndt_presets.hpp"
+#include "sextant/matchers/sampler.hpp"
+
+namespace sextant {
+
+PairRegistration register_pair(const PointCloud& reference, const PointCloud& input,
+                               const PairRegistrationRequest& request) {
+  PairRegistration out;
+  const auto sampler = make_sampler(request.sampling, request.sampler_settings, request.sampler_where);
+  const Eigen::Isometry3d initial = request.init.value_or(Eigen::Isometry3d::Identity());
+  const std::optional<YAML::Node> wide = with_wide_basin(request.method, request.settings);
+  const bool own_wide_basin = request.settings.IsMap() && request.settings["wide_basin"].IsDefined();
+  out.searched_without_guess = !request.init && request.wide_basin && wide.has_value();
+  auto matcher =
+      make_matcher(request.method, out.searched_without_guess ? *wide : request.settings, request.where);
+  Rng rng(request.seed);
+  out.match = match_pair(*matcher, *sampler, reference, input, initial, rng);
+  out.searched = own_wide_basin || out.searched_without_guess;
+  out.search = out.searched ? "wide basin" : "from the guess";
+  if (out.match.result.quality.trusted() || out.searched || !request.wide_basin || !wide) return out;
+  const auto wide_matcher = make_matcher(request.method, *wide, request.where);
+  Rng again(request.seed);  // the same sample
+  PairMatch retry = match_pair(*wide_matcher, *sampler, reference, input, initial, again);
+  const std::string first = to_string(out.match.result.quality.trust);
+  if (retry.result.quality.trusted()) {
+    out.match = std::move(retry);
+    out.searched = true;
+    out.search += ", " + first + ": recovered by the wide basin";
+  } else {
+    out.search += ", " + first + ": the wide basin found no trusted pose either";
+  }
+  return out;
+}
+
+Matrix6d registration_covariance(const Matrix6d& H) {
+  const Eigen::LLT<Matrix6d> llt(H);
+  if (!H.allFinite() || llt.info() != Eigen::Success)
+    return Matrix6d::Constant(std::numeric_limits<double>::quiet_NaN());
+  return llt.solve(Matrix6d::Identity());
+}
+
+}  // namespace sextant
