@@ -1,5 +1,5 @@
-// distinguish_series: dash patterns and marker shapes per series, so overlapping curves of an
-// XYPlot stay distinguishable (plots.hpp).
+// distinguish_series and distinguish_trajectories: dash patterns, widths and marker shapes per
+// series, so overlapping curves of a plot stay distinguishable (plots.hpp).
 #include <algorithm>
 #include <array>
 
@@ -7,9 +7,22 @@
 
 namespace sextant {
 
+namespace {
+
+const std::array<const char*, 6> kDashes{"", "8 4", "2 3", "10 3 2 3", "4 2", "12 3 2 3 2 3"};
+
+}  // namespace
+
+void distinguish_trajectories(TrajectoryPlot& plot) {
+  for (std::size_t k = 0; k < plot.trajectories.size(); ++k) {
+    TrajectorySeries& t = plot.trajectories[k];
+    if (k == 0) t.width = 3.5;
+    if (t.dash.empty()) t.dash = kDashes[k % kDashes.size()];
+  }
+}
+
 void distinguish_series(XYPlot& plot, std::size_t first, std::size_t markers) {
   using Marker = PlotSeries::Marker;
-  static const std::array<const char*, 6> kDashes{"", "8 4", "2 3", "10 3 2 3", "4 2", "12 3 2 3 2 3"};
   static const std::array<Marker, 5> kMarkers{Marker::circle, Marker::square, Marker::triangle,
                                               Marker::diamond, Marker::cross};
   if (first >= plot.series.size()) return;

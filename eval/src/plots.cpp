@@ -320,7 +320,8 @@ std::string render_svg(const TrajectoryPlot& plot) {
   for (std::size_t k = 0; k < plot.trajectories.size(); ++k)
     if (!plot.trajectories[k].name.empty())
       legend.emplace_back(plot.trajectories[k].name,
-                          plot.trajectories[k].color.empty() ? svg::palette(k) : plot.trajectories[k].color);
+                          plot.trajectories[k].color.empty() ? svg::palette(k) : plot.trajectories[k].color,
+                          plot.trajectories[k].dash);
   const int rows = svg::legend_rows(legend, right - left);
   svg::Document doc(plot.width, plot.height + static_cast<int>(rows * svg::kLegendRow));
   draw_title(doc, plot.width, plot.title);
@@ -330,7 +331,7 @@ std::string render_svg(const TrajectoryPlot& plot) {
     const std::string color = t.color.empty() ? svg::palette(k) : t.color;
     std::vector<double> px, py;
     auto flush = [&] {
-      if (px.size() > 1) doc.polyline(px, py, color);
+      if (px.size() > 1) doc.polyline(px, py, color, t.width, false, t.dash);
       px.clear();
       py.clear();
     };

@@ -108,5 +108,24 @@ TEST(PlotStyles, EveryMarkerShapeRendersWellFormed) {
   EXPECT_EQ(count(svg, "<rect"), 1 + 1 + 3 + 1);  // background, frame, three squares, legend sample
 }
 
+// Issue 26: E7's chained estimate ran on its ground truth indistinguishably. The first trajectory
+// is drawn wide and solid underneath, the others dashed, in the plot and in the legend.
+TEST(PlotStyles, OverlappingTrajectoriesGetAWideReferenceAndDashes) {
+  TrajectoryPlot plot;
+  for (const char* name : {"truth", "estimate", "odometry"})
+    plot.trajectories.push_back(
+        {name, {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 0)}, "", {}, 10, 2.0});
+  plot.trajectories[2].dash = "1 1";  // its own pattern is kept
+  distinguish_trajectories(plot);
+  EXPECT_EQ(plot.trajectories[0].width, 3.5);
+  EXPECT_EQ(plot.trajectories[0].dash, "");
+  EXPECT_EQ(plot.trajectories[1].dash, "8 4");
+  EXPECT_EQ(plot.trajectories[2].dash, "1 1");
+  const std::string svg = render_svg(plot);
+  EXPECT_TRUE(sextant::testing::check_xml(svg).ok);
+  EXPECT_EQ(count(svg, "stroke-width=\"3.5\""), 1u);
+  EXPECT_EQ(count(svg, "stroke-dasharray=\"8 4\""), 2u);  // the line and its legend sample
+}
+
 }  // namespace
 }  // namespace sextant

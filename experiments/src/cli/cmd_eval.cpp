@@ -80,6 +80,7 @@ void write_plots(const fs::path& dir, const AssociatedPoses& pairs, const Trajec
   for (const auto& T : pairs.reference) reference.positions.push_back(T.translation());
   for (const auto& T : e.aligned_estimate) estimate.positions.push_back(T.translation());
   top.trajectories = {reference, estimate};
+  distinguish_trajectories(top);  // the estimate dashed over the wide reference
   write_svg(render_svg(top), dir / "trajectories.svg");
 
   XYPlot along;

@@ -163,12 +163,12 @@ ReportFigure map_figure(const ExperimentConfig& config, const PlaneSlamParams& p
     planes.positions.emplace_back(kNaN, kNaN, kNaN);
   }
   if (!planes.positions.empty()) plot.trajectories.push_back(planes);
-  plot.trajectories.push_back(
-      {"ground truth", positions(series_or_empty(row, "truth")), "#2ca02c", {}, 10, 2.0});
+  plot.trajectories.push_back(  // wide underneath, the estimate dashed on it
+      {"ground truth", positions(series_or_empty(row, "truth")), "#2ca02c", {}, 10, 2.0, "", 3.5});
   plot.trajectories.push_back(
       {"odometry", positions(series_or_empty(row, "odometry")), "#ff7f0e", {}, 10, 2.0});
   TrajectorySeries est{
-      method, positions(series_or_empty(row, "trajectory")), "#1f77b4", {}, params.ellipse_every, 2.0};
+      method, positions(series_or_empty(row, "trajectory")), "#1f77b4", {}, params.ellipse_every, 2.0, "8 4"};
   const auto& c = series_or_empty(row, "position_covariance");
   for (std::size_t k = 0; k + 5 < c.size(); k += 6) {
     Eigen::Matrix3d P;

@@ -123,6 +123,7 @@ ReportFigure trajectory_figure(const std::string& id, const std::string& caption
     s.ellipse_sigma = e.ellipse_sigma;
     plot.trajectories.push_back(std::move(s));
   }
+  distinguish_trajectories(plot);  // the estimate runs on the ground truth: dashed over a wide line
   return {id, caption, render_svg(plot)};
 }
 

@@ -175,7 +175,9 @@ ReportFigure trajectory_figure(const RoomParams& p, const RunRow& row, const std
                                "#000000",
                                {},
                                10,
-                               2.0});
+                               2.0,
+                               "",
+                               3.5});  // wide underneath, the estimate dashed on it
   plot.trajectories.push_back({"odometry (noisy controls)",
                                polyline(series_or_empty(row, "odo_x"), series_or_empty(row, "odo_y")),
                                "#d62728",
@@ -187,7 +189,8 @@ ReportFigure trajectory_figure(const RoomParams& p, const RunRow& row, const std
                                "#1f77b4",
                                {},
                                10,
-                               2.0});
+                               2.0,
+                               "8 4"});
   return {"room_trajectory", "Fig. 5.18: true path, EKF + ML-NDT estimate and dead reckoning (x, y in m)",
           render_svg(plot)};
 }

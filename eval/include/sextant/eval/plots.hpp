@@ -71,6 +71,8 @@ struct TrajectorySeries {
   std::vector<Eigen::Matrix3d> covariances;
   std::size_t ellipse_every = 10;
   double ellipse_sigma = 2.0;  ///< ellipse radius in standard deviations
+  std::string dash = "";       ///< SVG stroke-dasharray [px]; empty = solid
+  double width = 1.5;          ///< line width [px]
 };
 
 struct TrajectoryPlot {
@@ -87,6 +89,10 @@ struct TrajectoryPlot {
 /// shape on about `markers` of its points, staggered between series. Scatter series get the shape
 /// only. Call it before adding reference lines (bounds, thresholds) that should stay plain.
 void distinguish_series(XYPlot& plot, std::size_t first = 0, std::size_t markers = 12);
+
+/// The same for trajectories that overlap (an estimate on its ground truth): the first is drawn
+/// wide and solid underneath, the k-th after it in the k-th dash pattern, unless they have their own.
+void distinguish_trajectories(TrajectoryPlot& plot);
 
 std::string render_svg(const XYPlot& plot);
 std::string render_svg(const Heatmap& map);
