@@ -6,34 +6,22 @@
 #include "sextant/core/rng.hpp"
 #include "sextant/filters/plane_slam_model.hpp"
 #include "sextant/filters/range_bearing_model.hpp"
+#include "sextant_test/finite_differences.hpp"
 
 namespace sextant {
 namespace {
 
+using test::central_jacobian;
 using Fn = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
 
+/// Central differences of f at x, with the given output entries wrapped as angles.
 Eigen::MatrixXd numeric_jacobian(const Fn& f, const Eigen::VectorXd& x,
                                  const std::vector<int>& output_angles = {}) {
-  const double h = 1e-6;
-  const Eigen::VectorXd f0 = f(x);
-  Eigen::MatrixXd J(f0.size(), x.size());
-  for (Eigen::Index i = 0; i < x.size(); ++i) {
-    Eigen::VectorXd a = x, b = x;
-    a[i] += h;
-    b[i] -= h;
-    Eigen::VectorXd d = f(a) - f(b);
-    wrap_entries(d, output_angles);
-    J.col(i) = d / (2 * h);
-  }
-  return J;
+  return central_jacobian(f, x, 1e-6, [&](Eigen::VectorXd& d) { wrap_entries(d, output_angles); });
 }
 
 void expect_near(const Eigen::MatrixXd& analytic, const Eigen::MatrixXd& numeric, const char* what) {
-  ASSERT_EQ(analytic.rows(), numeric.rows()) << what;
-  ASSERT_EQ(analytic.cols(), numeric.cols()) << what;
-  EXPECT_LT((analytic - numeric).cwiseAbs().maxCoeff(), 1e-6) << what << "\nanalytic\n"
-                                                              << analytic << "\nnumeric\n"
-                                                              << numeric;
+  test::expect_jacobian_near(analytic, numeric, 1e-6, what);
 }
 
 void check_model(const SlamModel& model, const Eigen::VectorXd& pose, const Eigen::VectorXd& u,

@@ -4,6 +4,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "sextant/matchers/ndt_score.hpp"
+#include "sextant_test/finite_differences.hpp"
 #include "test_clouds.hpp"
 
 namespace sextant {
@@ -29,20 +30,17 @@ template <class Score>
 void check_derivatives(const Score& score, const Vector6d& xi) {
   const ScoreEvaluation at = score(xi, Derivatives::kHessian);
   ASSERT_GT(at.matched, 100u);
-  const double h = 1e-6;
-  for (int i = 0; i < 6; ++i) {
-    Vector6d plus = xi, minus = xi;
-    plus(i) += h;
-    minus(i) -= h;
-    const ScoreEvaluation ep = score(plus, Derivatives::kHessian), em = score(minus, Derivatives::kHessian);
-    ASSERT_EQ(ep.matched, at.matched) << "a point changed cell; choose another pose";
-    const double fd_gradient = (ep.score - em.score) / (2 * h);
-    EXPECT_NEAR(at.gradient(i), fd_gradient, 1e-5 * (1 + std::abs(fd_gradient))) << "gradient " << i;
-    const Vector6d fd_row = (ep.gradient - em.gradient) / (2 * h);
-    for (int j = 0; j < 6; ++j)
-      EXPECT_NEAR(at.hessian(i, j), fd_row(j), 1e-4 * (1 + std::abs(fd_row(j))))
-          << "hessian " << i << "," << j;
-  }
+  const auto evaluate = [&](const Eigen::VectorXd& x) {
+    const ScoreEvaluation e = score(Vector6d(x), Derivatives::kHessian);
+    EXPECT_EQ(e.matched, at.matched) << "a point changed cell; choose another pose";
+    return e;
+  };
+  const auto value = [&](const Eigen::VectorXd& x) {
+    return Eigen::VectorXd::Constant(1, evaluate(x).score);
+  };
+  const auto gradient = [&](const Eigen::VectorXd& x) { return Eigen::VectorXd(evaluate(x).gradient); };
+  test::expect_jacobian_near(at.gradient.transpose(), test::central_jacobian(value, xi), 1e-5, "gradient");
+  test::expect_jacobian_near(at.hessian, test::central_jacobian(gradient, xi), 1e-4, "hessian");
   EXPECT_LT((at.hessian - at.hessian.transpose()).norm(), 1e-9 * at.hessian.norm());
 }
 
