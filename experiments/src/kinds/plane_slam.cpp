@@ -256,7 +256,7 @@ class PlaneSlamSession : public KindSession {
 
   void run(const RunSpec& run, RunRow& row) const override {
     const PlaneSlamMethod& method = methods_.at(run.method_index);
-    const auto it = run.point.find("p0_scale");
+    const auto it = run.point.find(kP0ScaleAxis);
     const double p0 = it == run.point.end() ? kNaN : std::stod(it->second);
     const PlaneSlamSettings settings = plane_slam_settings(params_, method, p0, file_);
     const std::size_t scans = method.scans ? std::min(method.scans, sequence_scans()) : sequence_scans();

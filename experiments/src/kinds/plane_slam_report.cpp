@@ -39,7 +39,7 @@ PlaneSlamRows collect_plane_slam_rows(const ExperimentConfig& config, const std:
     for (const MethodConfig& m : config.methods) data.groups.push_back({m.name, point, {}});
   for (std::size_t i = 0; i < runs.size(); ++i) {
     if (!rows[i] || !rows[i]->ok) continue;
-    const auto it = runs[i].point.find("p0_scale");
+    const auto it = runs[i].point.find(kP0ScaleAxis);
     const std::string point = it == runs[i].point.end() ? "" : it->second;
     for (PlaneSlamGroup& g : data.groups)
       if (g.method == runs[i].method && g.point == point) g.rows.push_back(rows[i]);

@@ -148,7 +148,7 @@ PlaneSlamSettings plane_slam_settings(const PlaneSlamParams& params, const Plane
   node["filter"] = method.filter;
   if (method.filter_settings && !method.filter_settings.IsNull())
     node["filter_settings"] = YAML::Clone(method.filter_settings);
-  if (std::isfinite(p0_scale)) node["p0_scale"] = p0_scale;
+  if (std::isfinite(p0_scale)) node[kP0ScaleAxis] = p0_scale;
   PlaneSlamSettings s = read_plane_slam_settings(node, file);
   s.record_pose_covariance = false;  // the kind reads the pose block itself (joint_covariance)
   return s;
@@ -156,7 +156,7 @@ PlaneSlamSettings plane_slam_settings(const PlaneSlamParams& params, const Plane
 
 void check_plane_slam_sweep(const ExperimentConfig& config) {
   for (const auto& axis : config.sweep) {
-    if (axis.name != "p0_scale")
+    if (axis.name != kP0ScaleAxis)
       throw InputError(config.file, at_line(axis.values.empty() ? 0 : yaml_line(axis.values.front())),
                        "key '" + axis.name + "': the plane_slam kind sweeps only p0_scale");
     for (const YAML::Node& v : axis.values) {

@@ -91,11 +91,8 @@ struct PlaneSlamMethod {
   YAML::Node matcher;  ///< motion: fbmlndt: mlndt settings of the registration (may be null)
 };
 
-/// The sweep axes the kind understands.
-inline const std::vector<std::string>& plane_slam_axes() {
-  static const std::vector<std::string> axes{"p0_scale"};
-  return axes;
-}
+/// The one sweep axis the kind understands: the scale of the initial covariance P0 (E13).
+inline constexpr const char* kP0ScaleAxis = "p0_scale";
 
 PlaneSlamParams read_plane_slam_params(const ExperimentConfig& config);
 PlaneSlamMethod read_plane_slam_method(const YAML::Node& node, const std::string& file);
