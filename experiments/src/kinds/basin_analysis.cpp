@@ -8,15 +8,10 @@
 #include "registration_report.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/units.hpp"
+#include "sextant/experiments/run_row.hpp"
 
 namespace sextant {
 namespace {
-
-const std::vector<double>& series_of(const RunRow& row, const char* name) {
-  static const std::vector<double> empty;
-  const auto it = row.series.find(name);
-  return it == row.series.end() ? empty : it->second;
-}
 
 double label_value(const RunSpec& run, const char* axis) {
   const auto it = run.point.find(axis);
@@ -32,14 +27,14 @@ std::string point_key(const RunSpec& run) {
 }  // namespace
 
 std::vector<std::pair<double, double>> iterate_errors(const RunRow& row) {
-  const Eigen::Isometry3d truth = series_to_isometry(series_of(row, "ground_truth"));
-  const std::vector<double>& xi = series_of(row, "trace_xi");
+  const Eigen::Isometry3d truth = series_to_isometry(series_or_empty(row, "ground_truth"));
+  const std::vector<double>& xi = series_or_empty(row, "trace_xi");
   std::vector<std::pair<double, double>> out;
   const auto add = [&](const Eigen::Isometry3d& T) {
     const Eigen::Isometry3d E = truth.inverse() * T;
     out.emplace_back(translation_norm(E), rotation_angle(E) * kDegPerRad);
   };
-  add(series_to_isometry(series_of(row, "initial")));
+  add(series_to_isometry(series_or_empty(row, "initial")));
   for (std::size_t k = 0; k + 6 <= xi.size(); k += 6) {
     Vector6d v;
     for (int j = 0; j < 6; ++j) v[j] = xi[k + static_cast<std::size_t>(j)];
@@ -57,7 +52,7 @@ double settle_iteration(const std::vector<std::pair<double, double>>& errors, co
 
 double post_settle_jitter_cm(const RunRow& row, double settle) {
   if (!std::isfinite(settle)) return kNaN;
-  const std::vector<double>& xi = series_of(row, "trace_xi");
+  const std::vector<double>& xi = series_or_empty(row, "trace_xi");
   const std::size_t n = xi.size() / 6;  // iterates 1..n are trace entries 0..n-1
   double sum = 0;
   int count = 0;

@@ -8,15 +8,10 @@
 #include "plane_features_extraction.hpp"
 #include "registration_report.hpp"
 #include "sextant/eval/plots.hpp"
+#include "sextant/experiments/run_row.hpp"
 
 namespace sextant {
 namespace {
-
-const std::vector<double>& series_of(const RunRow& row, const std::string& name) {
-  static const std::vector<double> empty;
-  const auto it = row.series.find(name);
-  return it == row.series.end() ? empty : it->second;
-}
 
 void append(std::vector<double>& to, const std::vector<double>& from) {
   to.insert(to.end(), from.begin(), from.end());
@@ -25,7 +20,8 @@ void append(std::vector<double>& to, const std::vector<double>& from) {
 /// An outline series `name` of `row` (x from name_x, y from name_y).
 PlotSeries outline(const RunRow& row, const std::string& name, const std::string& label,
                    const std::string& colour) {
-  return {label, series_of(row, name + "_x"), series_of(row, name + "_y"), PlotSeries::Style::line, colour};
+  return {label, series_or_empty(row, name + "_x"), series_or_empty(row, name + "_y"),
+          PlotSeries::Style::line, colour};
 }
 
 XYPlot top_view(const std::string& title, const std::string& frame) {
@@ -60,7 +56,7 @@ std::vector<ReportFigure> extraction_figures(const ExtractionStudyParams& p,
   };
   // Fig. 5.21: cell segments of the first figure scan.
   if (const RunRow* r = p.figure_scans.empty() ? nullptr : find(p.figure_scans.front());
-      r && !series_of(*r, "cell_hull_x").empty()) {
+      r && !series_or_empty(*r, "cell_hull_x").empty()) {
     const std::string scan = std::to_string(p.figure_scans.front());
     XYPlot plot = top_view("Fig. 5.21: extracted plane segments of scan " + scan, "sensor frame");
     plot.series.push_back(
@@ -87,7 +83,7 @@ std::vector<ReportFigure> extraction_figures(const ExtractionStudyParams& p,
                        render_svg(plot)});
   }
   // Fig. 5.24: correspondence across the turn under the predicted pose.
-  if (const RunRow* r = find(p.turn_scan); r && !series_of(*r, "turn_map_hull_x").empty()) {
+  if (const RunRow* r = find(p.turn_scan); r && !series_or_empty(*r, "turn_map_hull_x").empty()) {
     const std::string a = std::to_string(p.turn_scan), b = std::to_string(p.turn_scan + 1);
     XYPlot plot =
         top_view("Fig. 5.24: correspondence of features, scans " + a + " and " + b, "frame of scan " + a);
@@ -111,7 +107,8 @@ std::vector<ReportFigure> extraction_figures(const ExtractionStudyParams& p,
   PlotSeries hulls{"features of every scan (true poses)", {}, {}, PlotSeries::Style::line, "#2ca02c"};
   PlotSeries poses{"robot poses", {}, {}, PlotSeries::Style::markers, "#1f4fd6"};
   for (const auto& [scan, r] : by_scan) {
-    append(hulls.x, series_of(*r, "world_hull_x")), append(hulls.y, series_of(*r, "world_hull_y"));
+    append(hulls.x, series_or_empty(*r, "world_hull_x")),
+        append(hulls.y, series_or_empty(*r, "world_hull_y"));
     if (std::isfinite(r->value("pose_x")))
       poses.x.push_back(r->value("pose_x")), poses.y.push_back(r->value("pose_y"));
   }

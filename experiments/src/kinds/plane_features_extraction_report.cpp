@@ -9,15 +9,10 @@
 #include "registration_report.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/verdict.hpp"
+#include "sextant/experiments/run_row.hpp"
 
 namespace sextant {
 namespace {
-
-const std::vector<double>& series_of(const RunRow& row, const std::string& name) {
-  static const std::vector<double> empty;
-  const auto it = row.series.find(name);
-  return it == row.series.end() ? empty : it->second;
-}
 
 std::string count_text(double k, double n) {
   return format_number(k, 0) + "/" + format_number(n, 0);
@@ -37,10 +32,10 @@ Table criteria_table(const RunRow* row, const std::string& pose,
   t.add_column("feat.").add_compared_column("c1 (deg)", 2).add_compared_column("c2 (cm)", 2);
   t.add_compared_column("c3", 2).add_column("correct");
   const std::vector<double> empty;
-  const auto& co = row ? series_of(*row, "crit_" + pose + "_co") : empty;
-  const auto& ct = row ? series_of(*row, "crit_" + pose + "_ct") : empty;
-  const auto& cp = row ? series_of(*row, "crit_" + pose + "_cp") : empty;
-  const auto& ok = row ? series_of(*row, "crit_" + pose + "_correct") : empty;
+  const auto& co = row ? series_or_empty(*row, "crit_" + pose + "_co") : empty;
+  const auto& ct = row ? series_or_empty(*row, "crit_" + pose + "_ct") : empty;
+  const auto& cp = row ? series_or_empty(*row, "crit_" + pose + "_cp") : empty;
+  const auto& ok = row ? series_or_empty(*row, "crit_" + pose + "_correct") : empty;
   const std::size_t n = std::max(co.size(), thesis.size());
   for (std::size_t k = 0; k < n; ++k) {
     const bool ours = k < co.size();

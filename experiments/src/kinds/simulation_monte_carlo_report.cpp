@@ -8,16 +8,11 @@
 #include "registration_report.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/verdict.hpp"
+#include "sextant/experiments/run_row.hpp"
 #include "simulation_monte_carlo_report.hpp"
 
 namespace sextant {
 namespace {
-
-const std::vector<double>& series_of(const RunRow& row, const std::string& name) {
-  static const std::vector<double> empty;
-  const auto it = row.series.find(name);
-  return it == row.series.end() ? empty : it->second;
-}
 
 /// One method's rows by repetition.
 struct MethodRows {
@@ -45,8 +40,8 @@ void paired(const MethodRows& a, const MethodRows& b, const std::string& name, s
 std::pair<std::vector<double>, std::vector<double>> mean_curve(const MethodRows& m, const std::string& name) {
   std::vector<double> t, sum, count;
   for (const auto& [rep, row] : m.by_repetition) {
-    const auto& rt = series_of(*row, "t");
-    const auto& v = series_of(*row, name);
+    const auto& rt = series_or_empty(*row, "t");
+    const auto& v = series_or_empty(*row, name);
     if (rt.size() > t.size()) t = rt, sum.resize(t.size(), 0.0), count.resize(t.size(), 0.0);
     for (std::size_t k = 0; k < std::min(rt.size(), v.size()); ++k) sum[k] += v[k], count[k] += 1;
   }
@@ -108,16 +103,16 @@ ReportSection monte_carlo_report(const ExperimentConfig& config, const MonteCarl
     if (found == methods.end() || !found->second.by_repetition.count(0)) continue;
     const RunRow& r = *found->second.by_repetition.at(0);
     if (!truth_drawn) {
-      map.series.push_back({"true path", series_of(r, "truth_x"), series_of(r, "truth_y"),
+      map.series.push_back({"true path", series_or_empty(r, "truth_x"), series_or_empty(r, "truth_y"),
                             PlotSeries::Style::line, "#000000"});
       truth_drawn = true;
     }
     static const char* const kDashes[] = {"", "7 4", "2 3"};
     static const PlotSeries::Marker kShapes[] = {PlotSeries::Marker::square, PlotSeries::Marker::triangle,
                                                  PlotSeries::Marker::diamond};
-    map.add_line(m.name + " path", series_of(r, "est_x"), series_of(r, "est_y"));
+    map.add_line(m.name + " path", series_or_empty(r, "est_x"), series_or_empty(r, "est_y"));
     map.series.back().dash = kDashes[drawn % 3];
-    map.series.push_back({m.name + " landmarks", series_of(r, "map_x"), series_of(r, "map_y"),
+    map.series.push_back({m.name + " landmarks", series_or_empty(r, "map_x"), series_or_empty(r, "map_y"),
                           PlotSeries::Style::markers, ""});
     map.series.back().marker = kShapes[drawn % 3];
     map.series.back().marker_size = 3.5;
