@@ -10,6 +10,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "sextant/eval/trajectory_evaluation.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
 
 namespace sextant::python {
@@ -35,23 +36,27 @@ py::dict stats(const SampleStats& s) {
   return d;
 }
 
-Alignment parse_alignment(const std::string& name) {
-  if (name == "none") return Alignment::none;
-  if (name == "se3") return Alignment::se3;
-  if (name == "sim3") return Alignment::sim3;
-  if (name == "origin") return Alignment::origin;
-  throw py::value_error("alignment: unknown '" + name + "' (known: none, se3, sim3, origin)");
+Alignment alignment_named(const std::string& name) {
+  Alignment a;
+  if (!parse_alignment(name, &a))
+    throw py::value_error("alignment: unknown '" + name + "' (known: none, se3, sim3, origin)");
+  return a;
+}
+
+/// The RMS and the statistics of a metric's translation and rotation errors.
+void put_errors(py::dict& d, const SampleStats& translation, const SampleStats& rotation) {
+  d["translation_rms"] = translation.rms;
+  d["rotation_rms"] = rotation.rms;
+  d["translation"] = stats(translation);
+  d["rotation"] = stats(rotation);
 }
 
 py::dict ate(const py::object& reference, const py::object& estimate, const std::string& alignment) {
   const AteResult r = absolute_trajectory_error(
-      read_poses(estimate, "estimate"), read_poses(reference, "reference"), parse_alignment(alignment));
+      read_poses(estimate, "estimate"), read_poses(reference, "reference"), alignment_named(alignment));
   check(r.status, "ate");
   py::dict d;
-  d["translation_rms"] = r.translation.rms;
-  d["rotation_rms"] = r.rotation.rms;
-  d["translation"] = stats(r.translation);
-  d["rotation"] = stats(r.rotation);
+  put_errors(d, r.translation, r.rotation);
   d["translation_errors"] = vector_array(r.translation_errors);
   py::array_t<double> rotation({3, 3}), translation(3);
   auto R = rotation.mutable_unchecked<2>();
@@ -85,10 +90,7 @@ py::dict rpe(const py::object& reference, const py::object& estimate, double del
       relative_pose_error(read_poses(estimate, "estimate"), read_poses(reference, "reference"), s);
   check(r.status, "rpe");
   py::dict d;
-  d["translation_rms"] = r.translation.rms;
-  d["rotation_rms"] = r.rotation.rms;
-  d["translation"] = stats(r.translation);
-  d["rotation"] = stats(r.rotation);
+  put_errors(d, r.translation, r.rotation);
   d["translation_errors"] = vector_array(r.translation_errors);
   d["rotation_errors"] = vector_array(r.rotation_errors);
   py::array_t<long long> pairs({static_cast<py::ssize_t>(r.pairs.size()), py::ssize_t{2}});
