@@ -115,23 +115,23 @@ TrajectoryEvaluation evaluate_trajectory(const PoseList& estimate, const PoseLis
 }
 
 bool parse_alignment(const std::string& text, Alignment* alignment) {
-    for (Alignment a : {Alignment::se3, Alignment::sim3, Alignment::origin, Alignment::none}) {
-      if (text == alignment_name(a)) {
-        *alignment = a;
-        return true;
-      }
+  for (Alignment a : {Alignment::se3, Alignment::sim3, Alignment::origin, Alignment::none}) {
+    if (text == alignment_name(a)) {
+      *alignment = a;
+      return true;
     }
-    return false;
+  }
+  return false;
 }
 
 std::string alignment_name(Alignment alignment) {
-    switch (alignment) {
-      case Alignment::se3: return "se3";
-      case Alignment::sim3: return "sim3";
-      case Alignment::origin: return "origin";
-      case Alignment::none: return "none";
-    }
-    return "?";
+  switch (alignment) {
+    case Alignment::se3: return "se3";
+    case Alignment::sim3: return "sim3";
+    case Alignment::origin: return "origin";
+    case Alignment::none: return "none";
+  }
+  return "?";
 }
 
 }  // namespace sextant
