@@ -1,16 +1,13 @@
 #include "sextant/experiments/report.hpp"
 
 #include <algorithm>
-#include <fstream>
-#include <map>
 #include <optional>
-#include <set>
 #include <sstream>
 #include <unordered_map>
 #include <unordered_set>
 
 #include "report_overview.hpp"
-#include "results_lock.hpp"
+#include "result_folders.hpp"
 #include "sextant/core/atomic_file.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/trajectory_io.hpp"
@@ -29,74 +26,10 @@ namespace sextant {
 namespace {
 
 namespace fs = std::filesystem;
-
-/// experiment name → its result folders (one per results root that has it).
-std::map<std::string, std::vector<fs::path>> find_experiments(const std::vector<fs::path>& roots) {
-  std::map<std::string, std::vector<fs::path>> found;
-  for (const auto& root : roots) {
-    if (!fs::is_directory(root)) throw InputError(root.string(), "", "not a results folder");
-    if (fs::exists(root / kEffectiveConfig)) {  // a single experiment's folder given directly
-      found[root.filename().string()].push_back(root);
-      continue;
-    }
-    for (const auto& entry : fs::directory_iterator(root)) {
-      if (entry.is_directory() && fs::exists(entry.path() / kEffectiveConfig))
-        found[entry.path().filename().string()].push_back(entry.path());
-    }
-  }
-  return found;
-}
-
-/// Rows of all folders, one per key; a successful row beats a failed one.
-/// Unreadable lines are skipped, each named (file:line) in `warnings` and logged. `shared_keys`
-/// counts the keys that more than one folder holds.
-std::vector<RunRow> union_rows(const std::vector<fs::path>& folders,
-                               std::vector<std::string>* warnings = nullptr,
-                               std::size_t* shared_keys = nullptr) {
-  std::vector<RunRow> rows;
-  std::unordered_map<std::string, std::size_t> position;
-  std::vector<std::size_t> first_folder;  // per row: the folder it was first found in
-  std::vector<bool> shared;               // per row: found in another folder too
-  for (std::size_t f = 0; f < folders.size(); ++f) {
-    RowFile file = read_rows(folders[f] / kRunsJsonl);
-    for (const auto& message : bad_line_messages(folders[f] / kRunsJsonl, file)) {
-      log_warning(message);
-      if (warnings) warnings->push_back(message);
-    }
-    for (auto& row : file.rows) {
-      const auto it = position.find(row.key);
-      if (it == position.end()) {
-        position[row.key] = rows.size();
-        rows.push_back(std::move(row));
-        first_folder.push_back(f);
-        shared.push_back(false);
-        continue;
-      }
-      if (first_folder[it->second] != f) shared[it->second] = true;
-      if (row.ok || !rows[it->second].ok) rows[it->second] = std::move(row);
-    }
-  }
-  if (shared_keys) *shared_keys = static_cast<std::size_t>(std::count(shared.begin(), shared.end(), true));
-  return rows;
-}
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-std::vector<fs::path> provenance_files(const fs::path& folder) {
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(folder)) {
-    const std::string name = entry.path().filename().string();
-    if (name.rfind("provenance", 0) == 0 && entry.path().extension() == ".json")
-      files.push_back(entry.path());
-  }
-  std::sort(files.begin(), files.end());
-  return files;
-}
+using detail::find_experiments;
+using detail::provenance_files;
+using detail::read_text;
+using detail::union_rows;
 
 std::string escape(const std::string& s) {
   return escape_html(s);
@@ -332,70 +265,6 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
   write_file_atomically(out / "report.md", all_md);
   summary.index_html = out / "index.html";
   page.write(summary.index_html);
-  return summary;
-}
-
-MergeSummary merge_results(const std::vector<fs::path>& inputs, const fs::path& out) {
-  MergeSummary summary;
-  for (auto [name, folders] : find_experiments(inputs)) {
-    const fs::path dir = out / name;
-    const detail::ResultsLock lock(dir);  // no runner and no other merge writes here meanwhile
-    // The target's own rows are an input too: a merge never drops what is already there.
-    if (fs::exists(dir / kEffectiveConfig)) folders.insert(folders.begin(), dir);
-    // The same folder named twice counts once.
-    std::vector<fs::path> distinct;
-    std::set<fs::path> seen;
-    for (const fs::path& f : folders)
-      if (seen.insert(fs::weakly_canonical(f)).second) distinct.push_back(f);
-    folders = std::move(distinct);
-    // Results of two configs are not one experiment: refuse rather than mix them.
-    const fs::path config_path = folders.front() / kEffectiveConfig;
-    const std::string config_text = read_text(config_path);
-    for (const fs::path& f : folders)
-      if (read_text(f / kEffectiveConfig) != config_text)
-        throw InputError((f / kEffectiveConfig).string(), "",
-                         "differs from " + config_path.string() +
-                             ": these are results of two configs; merge each config's folders apart");
-    const std::vector<RunSpec> runs = expand_runs(
-        parse_experiment_config(load_yaml_file(config_path.string()), config_path.string(), false));
-    MergedExperiment& merged = summary.experiments.emplace_back();
-    merged.name = name;
-    merged.inputs = folders.size();
-    merged.expected = runs.size();
-    // Rows in the expansion order of the config they were run with: the merged files do not depend
-    // on how many shards there were or in which order their runs finished.
-    const std::vector<RunRow> rows =
-        in_expansion_order(union_rows(folders, nullptr, &merged.duplicated), runs);
-    std::set<std::string> present;
-    for (const RunRow& row : rows)
-      if (row.ok) present.insert(row.key);
-    for (const RunSpec& run : runs) {
-      if (present.count(run.key)) continue;
-      ++merged.missing;
-      std::string label = run.method;
-      for (const auto& [axis, value] : run.point) label += ", " + axis + " = " + value;
-      merged.missing_runs.push_back(label + ", repetition " + std::to_string(run.repetition));
-    }
-    std::string text;
-    for (const auto& row : rows) text += to_json_line(row) + "\n";
-    write_file_atomically(dir / kRunsJsonl, text);
-    write_rows_csv(dir / kRunsCsv, rows);
-    write_file_atomically(dir / kEffectiveConfig, config_text);
-    std::set<std::string> names;  // provenance files written by this merge
-    for (std::size_t k = 0; k < folders.size(); ++k) {
-      for (const auto& file : provenance_files(folders[k])) {
-        std::string target = file.filename().string();
-        if (!names.insert(target).second) {
-          target = file.stem().string() + ".input-" + std::to_string(k + 1) + ".json";
-          names.insert(target);
-        }
-        if (fs::weakly_canonical(file) != fs::weakly_canonical(dir / target))
-          write_file_atomically(dir / target, read_text(file));
-      }
-    }
-    merged.rows = rows.size();
-    summary.rows += rows.size();
-  }
   return summary;
 }
 
