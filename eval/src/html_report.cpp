@@ -34,7 +34,7 @@ ul.claims{list-style:none;padding-left:0}ul.claims li{margin:.4em 0;padding:.4em
 .v-holds{background:#2a7d2a}.v-does-not-hold{background:#b22222}.v-inconclusive{background:#b8860b}.v-not-comparable{background:#777}
 li.c-holds{border-left-color:#2a7d2a}li.c-does-not-hold{border-left-color:#b22222}
 li.c-inconclusive{border-left-color:#b8860b}
-table.overview td{vertical-align:top}tr.c-holds td:first-child{border-left:4px solid #2a7d2a}tr.c-does-not-hold td:first-child{border-left:4px solid #b22222}tr.c-inconclusive td:first-child{border-left:4px solid #b8860b}
+p.headline{font-size:1.1em;font-weight:600}table.overview td{vertical-align:top}tr.c-holds td:first-child{border-left:4px solid #2a7d2a}tr.c-does-not-hold td:first-child{border-left:4px solid #b22222}tr.c-inconclusive td:first-child{border-left:4px solid #b8860b}
 .evidence{display:block;font-size:.88em;color:#444;margin-top:.2em}
 dl.provenance{display:grid;grid-template-columns:max-content auto;gap:.2em 1em;font-size:.9em}
 dl.provenance dt{font-weight:bold}dl.provenance dd{margin:0;font-family:monospace;white-space:pre-wrap}

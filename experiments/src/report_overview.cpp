@@ -29,6 +29,11 @@ Counts count(const std::vector<Claim>& claims) {
   return c;
 }
 
+bool is_thesis_experiment(const OverviewEntry& e) {
+  const int n = experiment_number(e.id);
+  return n >= 1 && n <= kThesisExperiments;
+}
+
 std::string label(const OverviewEntry& e) {
   const int n = experiment_number(e.id);
   return n > 0 ? "E" + std::to_string(n) : e.id;
@@ -49,8 +54,7 @@ std::string held_text(const Counts& c) {
 std::string html_rows(const std::vector<OverviewEntry>& entries, bool extensions) {
   std::string out;
   for (const OverviewEntry& e : entries) {
-    const int n = experiment_number(e.id);
-    if ((n >= 1 && n <= kThesisExperiments) == extensions) continue;
+    if (is_thesis_experiment(e) == extensions) continue;
     const Counts c = count(e.claims);
     const std::string cls = !e.failure.empty()                ? "does-not-hold"
                             : c.thesis[1] > 0                 ? "does-not-hold"
@@ -73,7 +77,35 @@ std::string html_table(const std::string& caption, const std::string& rows) {
          rows + "</tbody></table>\n";
 }
 
+std::string verdict_counts_text(const Counts& c) {
+  const char* names[] = {"hold", "do not hold", "inconclusive", "not comparable"};
+  std::string text = std::to_string(c.thesis_total()) + (c.thesis_total() == 1 ? " claim: " : " claims: ");
+  bool first = true;
+  for (std::size_t v = 0; v < 4; ++v) {
+    if (c.thesis[v] == 0 && v > 0) continue;
+    text += (first ? "" : ", ") + std::to_string(c.thesis[v]) + " " + names[v];
+    first = false;
+  }
+  return text;
+}
+
 }  // namespace
+
+std::string headline_text(const std::vector<OverviewEntry>& entries) {
+  std::vector<Claim> thesis, extensions;
+  for (const OverviewEntry& e : entries) {
+    std::vector<Claim>& group = is_thesis_experiment(e) ? thesis : extensions;
+    group.insert(group.end(), e.claims.begin(), e.claims.end());
+  }
+  const Counts t = count(thesis), x = count(extensions);
+  std::string text = "The thesis (E1–E19): " + verdict_counts_text(t) + ".";
+  if (x.thesis_total() > 0) text += " Extensions beyond the thesis: " + verdict_counts_text(x) + ".";
+  const std::size_t sanity = t.sanity + x.sanity, held = t.sanity_held + x.sanity_held;
+  if (sanity > 0)
+    text += " Sanity checks of the experiments themselves: " + std::to_string(held) + " of " +
+            std::to_string(sanity) + " hold.";
+  return text;
+}
 
 int experiment_number(const std::string& id) {
   if (id.size() < 3 || id[0] != 'e' || !std::isdigit(static_cast<unsigned char>(id[1]))) return 0;
@@ -104,13 +136,15 @@ std::string one_line_outcome(const OverviewEntry& entry) {
 }
 
 std::string overview_html(const std::vector<OverviewEntry>& entries) {
-  return html_table("The thesis' experiments", html_rows(entries, false)) +
+  return "<p class=\"headline\">" + escape_html(headline_text(entries)) + "</p>\n" +
+         html_table("The thesis' experiments", html_rows(entries, false)) +
          html_table("Extensions beyond the thesis", html_rows(entries, true));
 }
 
 std::string overview_markdown(const std::vector<OverviewEntry>& entries) {
   std::string md =
-      "| exp. | title | thesis | runs | claims held / total | outcome |\n|---|---|---|---|---|---|\n";
+      headline_text(entries) +
+      "\n\n| exp. | title | thesis | runs | claims held / total | outcome |\n|---|---|---|---|---|---|\n";
   for (const OverviewEntry& e : entries) {
     md += "| [" + label(e) + "](" + e.id + "/" + e.id + ".md) | " + e.title + " | " + e.thesis + " | " +
           runs_text(e) + " | " + held_text(count(e.claims)) + " | " + one_line_outcome(e) + " |\n";

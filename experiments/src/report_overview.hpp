@@ -24,7 +24,10 @@ struct OverviewEntry {
 int experiment_number(const std::string& id);
 /// "3 of 4 claims hold; 1 inconclusive: <statement>" — counts thesis claims only.
 std::string one_line_outcome(const OverviewEntry& entry);
-/// Two HTML tables (the thesis' experiments E1–E19, then extensions E20+ and others).
+/// One sentence for the top of the front page: the thesis' claims (E1–E19) by verdict, apart from
+/// the extensions' claims and from the sanity checks (which test the experiments, not the thesis).
+std::string headline_text(const std::vector<OverviewEntry>& entries);
+/// The headline, then two HTML tables (the thesis' experiments E1–E19, then extensions E20+ and others).
 std::string overview_html(const std::vector<OverviewEntry>& entries);
 /// The same as Markdown (report/overview.md).
 std::string overview_markdown(const std::vector<OverviewEntry>& entries);

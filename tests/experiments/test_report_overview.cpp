@@ -1,0 +1,43 @@
+// The front page's headline counts the thesis' claims (E1–E19) apart from the extensions' claims
+// and from the sanity checks.
+#include <gtest/gtest.h>
+
+#include "report_overview.hpp"
+
+namespace sextant {
+namespace {
+
+OverviewEntry entry(const std::string& id, std::vector<Claim> claims) {
+  OverviewEntry e;
+  e.id = id;
+  e.claims = std::move(claims);
+  return e;
+}
+
+TEST(ReportOverview, TheHeadlineCountsThesisClaimsApartFromExtensionsAndSanityChecks) {
+  const std::vector<OverviewEntry> entries = {
+      entry("e02_accuracy", {{"a", Verdict::holds, "", ClaimKind::thesis},
+                             {"b", Verdict::does_not_hold, "", ClaimKind::thesis},
+                             {"c", Verdict::holds, "", ClaimKind::sanity}}),
+      entry("e19_unbiased", {{"d", Verdict::inconclusive, "", ClaimKind::thesis},
+                             {"e", Verdict::does_not_hold, "", ClaimKind::sanity}}),
+      entry("e20_pose_graph",
+            {{"f", Verdict::holds, "", ClaimKind::thesis}, {"g", Verdict::holds, "", ClaimKind::sanity}}),
+  };
+  EXPECT_EQ(
+      headline_text(entries),
+      "The thesis (E1–E19): 3 claims: 1 hold, 1 do not hold, 1 inconclusive. Extensions beyond the thesis: "
+      "1 claim: 1 hold. Sanity checks of the experiments themselves: 2 of 3 hold.");
+  const std::string html = overview_html(entries);
+  EXPECT_NE(html.find("<p class=\"headline\">The thesis (E1–E19): 3 claims"), std::string::npos);
+  EXPECT_LT(html.find("headline"), html.find("The thesis' experiments"));
+}
+
+TEST(ReportOverview, WithoutExtensionsOrSanityChecksTheHeadlineSaysOnlyTheThesis) {
+  const std::vector<OverviewEntry> entries = {
+      entry("e05_x", {{"a", Verdict::not_comparable, "", ClaimKind::thesis}})};
+  EXPECT_EQ(headline_text(entries), "The thesis (E1–E19): 1 claim: 0 hold, 1 not comparable.");
+}
+
+}  // namespace
+}  // namespace sextant
