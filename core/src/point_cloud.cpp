@@ -1,5 +1,6 @@
 #include "sextant/core/point_cloud.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -10,24 +11,56 @@ double Bounds::volume() const {
   return e.x() * e.y() * e.z();
 }
 
+bool PointsView::operator==(const PointsView& other) const {
+  return size_ == other.size_ && std::equal(begin(), end(), other.begin());
+}
+
+PointCloud PointCloud::borrow(const Eigen::Vector3f* points, std::size_t size) {
+  PointCloud cloud;
+  if (size == 0) return cloud;
+  cloud.borrowed_ = points;
+  cloud.borrowed_size_ = size;
+  return cloud;
+}
+
+PointCloud::PointCloud(const PointCloud& other)
+    : points_(other.points().begin(), other.points().end()), intensity_(other.intensity_) {}
+
+PointCloud& PointCloud::operator=(const PointCloud& other) {
+  if (this == &other) return *this;
+  const PointsView source = other.points();
+  points_.assign(source.begin(), source.end());
+  intensity_ = other.intensity_;
+  borrowed_ = nullptr;
+  borrowed_size_ = 0;
+  return *this;
+}
+
+void PointCloud::own() {
+  points_.assign(borrowed_, borrowed_ + borrowed_size_);
+  borrowed_ = nullptr;
+  borrowed_size_ = 0;
+}
+
 void PointCloud::reserve(std::size_t n) {
-  points_.reserve(n);
+  mutable_points().reserve(n);
   if (has_intensity()) intensity_.reserve(n);
 }
 
 void PointCloud::push_back(const Eigen::Vector3f& p, float intensity) {
-  if (intensity_.size() != points_.size()) {
+  if (intensity_.size() != size()) {
     throw std::logic_error("PointCloud::push_back: mixing points with and without intensity");
   }
-  points_.push_back(p);
+  mutable_points().push_back(p);
   intensity_.push_back(intensity);
 }
 
 Bounds PointCloud::bounds() const {
   Bounds b;
-  if (points_.empty()) return b;
-  b.min = b.max = points_.front();
-  for (const auto& p : points_) {
+  const PointsView points = this->points();
+  if (points.empty()) return b;
+  b.min = b.max = points.front();
+  for (const auto& p : points) {
     b.min = b.min.cwiseMin(p);
     b.max = b.max.cwiseMax(p);
   }
@@ -37,8 +70,8 @@ Bounds PointCloud::bounds() const {
 PointCloud PointCloud::transformed(const Eigen::Isometry3d& T) const {
   const Eigen::Isometry3f Tf = T.cast<float>();
   PointCloud out;
-  out.points_.reserve(points_.size());
-  for (const auto& p : points_) out.points_.push_back(Tf * p);
+  out.points_.reserve(size());
+  for (const auto& p : points()) out.points_.push_back(Tf * p);
   out.intensity_ = intensity_;
   return out;
 }
@@ -46,7 +79,11 @@ PointCloud PointCloud::transformed(const Eigen::Isometry3d& T) const {
 PointCloud PointCloud::subset(const std::vector<std::size_t>& indices) const {
   PointCloud out;
   out.points_.reserve(indices.size());
-  for (std::size_t i : indices) out.points_.push_back(points_.at(i));
+  const PointsView points = this->points();
+  for (std::size_t i : indices) {
+    if (i >= points.size()) throw std::out_of_range("PointCloud::subset: index beyond the cloud");
+    out.points_.push_back(points[i]);
+  }
   if (has_intensity()) {
     out.intensity_.reserve(indices.size());
     for (std::size_t i : indices) out.intensity_.push_back(intensity_[i]);
@@ -55,7 +92,13 @@ PointCloud PointCloud::subset(const std::vector<std::size_t>& indices) const {
 }
 
 std::size_t remove_non_finite(PointCloud& cloud) {
-  auto& pts = cloud.points();
+  const PointCloud& read = cloud;
+  const bool all_finite =
+      std::all_of(read.points().begin(), read.points().end(),
+                  [](const Eigen::Vector3f& p) { return p.allFinite(); }) &&
+      std::all_of(read.intensity().begin(), read.intensity().end(), [](float v) { return std::isfinite(v); });
+  if (all_finite) return 0;  // a borrowed cloud stays borrowed
+  auto& pts = cloud.mutable_points();
   auto& inten = cloud.intensity();
   const bool with_intensity = cloud.has_intensity();
   std::size_t kept = 0;

@@ -31,8 +31,7 @@ std::uint64_t cell_key(const Eigen::Vector3f& p, double inv_cell) {
   return key;
 }
 
-std::size_t count_distinct(const std::vector<Eigen::Vector3f>& points,
-                           const std::vector<std::size_t>& indices) {
+std::size_t count_distinct(PointsView points, const std::vector<std::size_t>& indices) {
   std::vector<std::array<float, 3>> copy;
   copy.reserve(indices.size());
   for (std::size_t i : indices) copy.push_back({points[i].x(), points[i].y(), points[i].z()});
@@ -46,16 +45,15 @@ struct Hypothesis {
   std::size_t inliers = 0;
 };
 
-std::size_t count_inliers(const std::vector<Eigen::Vector3f>& points, const std::vector<std::size_t>& indices,
+std::size_t count_inliers(PointsView points, const std::vector<std::size_t>& indices,
                           const Eigen::Vector3f& n, float d, float threshold) {
   std::size_t count = 0;
   for (std::size_t i : indices) count += std::abs(n.dot(points[i]) - d) <= threshold ? 1 : 0;
   return count;
 }
 
-std::vector<std::size_t> collect_inliers(const std::vector<Eigen::Vector3f>& points,
-                                         const std::vector<std::size_t>& indices, const Plane& plane,
-                                         double threshold) {
+std::vector<std::size_t> collect_inliers(PointsView points, const std::vector<std::size_t>& indices,
+                                         const Plane& plane, double threshold) {
   std::vector<std::size_t> out;
   for (std::size_t i : indices) {
     if (std::abs(plane.signed_distance(points[i].cast<double>())) <= threshold) out.push_back(i);
@@ -65,7 +63,7 @@ std::vector<std::size_t> collect_inliers(const std::vector<Eigen::Vector3f>& poi
 
 // RANSAC [16]: planes through three random distinct points; the hypothesis with most inliers.
 // The number of hypotheses adapts to the best inlier share w: N = log(1 − p) / log(1 − w³).
-Hypothesis ransac_plane(const std::vector<Eigen::Vector3f>& points, const std::vector<std::size_t>& indices,
+Hypothesis ransac_plane(PointsView points, const std::vector<std::size_t>& indices,
                         const PlaneExtractionSettings& s, Rng& rng) {
   Hypothesis best;
   const std::size_t n = indices.size();
@@ -94,7 +92,7 @@ Hypothesis ransac_plane(const std::vector<Eigen::Vector3f>& points, const std::v
 
 enum class CellVerdict { ok, too_few, duplicated, collinear };
 
-CellVerdict classify_cell(const std::vector<Eigen::Vector3f>& points, const std::vector<std::size_t>& indices,
+CellVerdict classify_cell(PointsView points, const std::vector<std::size_t>& indices,
                           const PlaneExtractionSettings& s) {
   if (indices.size() < s.min_inliers) return CellVerdict::too_few;
   if (count_distinct(points, indices) < s.min_inliers) return CellVerdict::duplicated;
@@ -105,8 +103,8 @@ CellVerdict classify_cell(const std::vector<Eigen::Vector3f>& points, const std:
   return CellVerdict::ok;
 }
 
-void extract_in_cell(const std::vector<Eigen::Vector3f>& points, std::vector<std::size_t> remaining,
-                     const PlaneExtractionSettings& s, PlaneRefit refit, Rng& rng, PlaneExtraction* out) {
+void extract_in_cell(PointsView points, std::vector<std::size_t> remaining, const PlaneExtractionSettings& s,
+                     PlaneRefit refit, Rng& rng, PlaneExtraction* out) {
   switch (classify_cell(points, remaining, s)) {
     case CellVerdict::too_few: ++out->stats.cells_too_few_points; return;
     case CellVerdict::duplicated: ++out->stats.cells_duplicated_points; return;
@@ -214,7 +212,7 @@ PlaneExtraction extract_cell_planes(const PointCloud& cloud, const PlaneExtracti
   PlaneExtraction out;
   PlaneRefit refit = PlaneRefit::pca;
   parse_plane_refit(settings.refit, &refit);
-  const std::vector<Eigen::Vector3f>& points = cloud.points();
+  const PointsView points = cloud.points();
 
   // Splitting: (cell key, point index) sorted by key, so each cell is a contiguous run.
   const double inv_cell = 1.0 / settings.cell_size;

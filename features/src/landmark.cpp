@@ -24,8 +24,8 @@ std::vector<PlaneLandmark> transform_landmarks(const std::vector<PlaneLandmark>&
   return out;
 }
 
-PlaneLandmark make_landmark(const std::vector<Eigen::Vector3f>& points, std::vector<std::size_t> inliers,
-                            const PlaneFit& fit, const Eigen::Vector3d& viewpoint) {
+PlaneLandmark make_landmark(PointsView points, std::vector<std::size_t> inliers, const PlaneFit& fit,
+                            const Eigen::Vector3d& viewpoint) {
   PlaneLandmark l;
   l.plane = fit.plane;
   orient_towards(l.plane, viewpoint);

@@ -38,8 +38,7 @@ PointMoments PointMoments::from_covariance(std::size_t count, const Eigen::Vecto
   return out;
 }
 
-PointMoments compute_moments(const std::vector<Eigen::Vector3f>& points,
-                             const std::vector<std::size_t>& indices) {
+PointMoments compute_moments(PointsView points, const std::vector<std::size_t>& indices) {
   PointMoments m;
   if (indices.empty()) return m;
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
@@ -90,8 +89,7 @@ namespace {
 
 // eqs. (3.23)–(3.25): β = right-singular vector of A = [x y z 1] for the smallest singular value,
 // taken as the eigenvector of AᵀA (same vectors). β_a x + β_b y + β_c z + β_d = 0, eq. (3.22).
-bool fit_plane_svd(const std::vector<Eigen::Vector3f>& points, const std::vector<std::size_t>& indices,
-                   Plane* plane) {
+bool fit_plane_svd(PointsView points, const std::vector<std::size_t>& indices, Plane* plane) {
   Eigen::Matrix4d AtA = Eigen::Matrix4d::Zero();
   for (std::size_t i : indices) {
     const Eigen::Vector4d a(points[i].x(), points[i].y(), points[i].z(), 1.0);
@@ -109,8 +107,7 @@ bool fit_plane_svd(const std::vector<Eigen::Vector3f>& points, const std::vector
 
 }  // namespace
 
-PlaneFit fit_plane(const std::vector<Eigen::Vector3f>& points, const std::vector<std::size_t>& indices,
-                   PlaneRefit method) {
+PlaneFit fit_plane(PointsView points, const std::vector<std::size_t>& indices, PlaneRefit method) {
   PlaneFit fit = fit_plane_pca(compute_moments(points, indices));
   if (!fit.ok || method == PlaneRefit::pca) return fit;
   Plane svd_plane;

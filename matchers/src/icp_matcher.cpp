@@ -49,7 +49,7 @@ class IcpMatcher final : public Matcher {
   }
 
   void set_reference(const PointCloud& reference) override {
-    reference_ = reference.points();
+    reference_.assign(reference.points().begin(), reference.points().end());
     tree_.build(reference_);
     normals_.clear();
     if (objective_ == IcpObjective::kPointToPlane)

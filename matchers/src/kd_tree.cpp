@@ -37,7 +37,7 @@ class KdTree::KnnHeap {
   std::vector<Neighbour>& out_;
 };
 
-void KdTree::build(const std::vector<Eigen::Vector3f>& points, int leaf_size) {
+void KdTree::build(PointsView points, int leaf_size) {
   nodes_.clear();
   points_.clear();
   original_.clear();

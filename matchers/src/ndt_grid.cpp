@@ -114,7 +114,7 @@ std::vector<CellSums> NdtGrid::split(const PointCloud& reference) {
   const int nx = dims_.x(), ny = dims_.y(), nz = dims_.z();
   // Points on the far face of the box belong to the last cell (the box is closed).
   const double fx_max = nx + 1e-9, fy_max = ny + 1e-9, fz_max = nz + 1e-9;
-  const std::vector<Eigen::Vector3f>& points = reference.points();
+  const PointsView points = reference.points();
   // First every point's cell (kOutside for points outside the box, or not finite: NaN fails every
   // comparison, ∞ exceeds the far face), so that the accumulation below can prefetch the cells of
   // points ahead: the index and the sums are read in the points' (random) order.

@@ -20,6 +20,7 @@ from ._sextant import (  # noqa: F401  (re-exported)
     odometry,
     pose_to_matrix,
     read_cloud,
+    reads_in_place,
     write_cloud,
 )
 from . import metrics  # noqa: F401
@@ -35,5 +36,6 @@ __all__ = [
     "odometry",
     "pose_to_matrix",
     "read_cloud",
+    "reads_in_place",
     "write_cloud",
 ]

@@ -1,8 +1,9 @@
-// NumPy ↔ library conversions (arrays.hpp): clouds in by one strided copy, clouds out by sharing
-// the cloud's memory through a capsule, transforms and pose stacks checked as rigid.
+// NumPy ↔ library conversions (arrays.hpp): clouds in read in place or by one strided copy, clouds out by
+// sharing the cloud's memory through a capsule, transforms and pose stacks checked as rigid.
 #include "arrays.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <utility>
 
@@ -62,25 +63,42 @@ Eigen::Isometry3d checked_transform(const Eigen::Matrix4d& M, const std::string&
 
 }  // namespace
 
-PointCloud cloud_from_array(const py::array& points, const std::string& what) {
+bool readable_in_place(const py::array& points) {
+  return points.ndim() == 2 && points.shape(1) == 3 && py::isinstance<py::array_t<float>>(points) &&
+         points.strides(1) == py::ssize_t{sizeof(float)} &&
+         points.strides(0) == py::ssize_t{3 * sizeof(float)} &&
+         reinterpret_cast<std::uintptr_t>(points.data()) % alignof(Eigen::Vector3f) == 0;
+}
+
+PointCloud cloud_from_array(const py::array& points, const std::string& what, Borrowing borrowing) {
   if (points.ndim() != 2 || (points.shape(1) != 3 && points.shape(1) != 4))
     throw py::value_error(what + ": expected an N×3 (x y z) or N×4 (x y z intensity) array, got shape " +
                           shape_text(points));
   if (points.shape(0) == 0) throw py::value_error(what + ": the cloud has no points");
+  if (borrowing == Borrowing::kInPlace && readable_in_place(points)) {
+    const auto* first = static_cast<const Eigen::Vector3f*>(points.data());
+    const auto n = static_cast<std::size_t>(points.shape(0));
+    for (std::size_t i = 0; i < n; ++i)
+      if (!first[i].allFinite())
+        throw py::value_error(what + ": row " + std::to_string(i) +
+                              " is not finite (NaN or Inf); drop such rows first");
+    return PointCloud::borrow(first, n);
+  }
   if (py::isinstance<py::array_t<float>>(points)) return copy_cloud<float>(points, what);
   if (py::isinstance<py::array_t<double>>(points)) return copy_cloud<double>(points, what);
   throw py::value_error(what + ": expected float32 or float64 values, got dtype " +
                         py::str(points.dtype()).cast<std::string>());
 }
 
-PointCloud cloud_from_object(const py::object& source, const std::string& what) {
+PointCloud cloud_from_object(const py::object& source, const std::string& what, Borrowing borrowing) {
   if (py::isinstance<py::str>(source) || py::hasattr(source, "__fspath__")) {
     const std::string path = py::module_::import("os").attr("fspath")(source).cast<std::string>();
     const py::gil_scoped_release release;
     return read_cloud(path);
   }
-  if (py::isinstance<py::array>(source)) return cloud_from_array(source, what);
-  return cloud_from_array(py::module_::import("numpy").attr("asarray")(source), what);
+  if (py::isinstance<py::array>(source)) return cloud_from_array(source, what, borrowing);
+  // A converted list is a temporary array: its memory is gone after this call, so it is copied.
+  return cloud_from_array(py::module_::import("numpy").attr("asarray")(source), what, Borrowing::kCopy);
 }
 
 CloudArrays cloud_arrays(PointCloud cloud) {

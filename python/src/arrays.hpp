@@ -1,7 +1,7 @@
 #pragma once
 // Conversions between NumPy arrays and the library's types, for every binding: point clouds
-// (N×3 or N×4 float32/float64 in, one copy; float32 out without a copy), 4×4 transforms, stacks of
-// N 4×4 poses and 6×6 matrices. Every shape or value problem is a ValueError naming the argument.
+// (N×3 or N×4 float32/float64 in, read in place or copied once; float32 out without a copy), 4×4 transforms,
+// stacks of N 4×4 poses and 6×6 matrices. Every shape or value problem is a ValueError naming the argument.
 #include <string>
 #include <vector>
 
@@ -16,14 +16,23 @@ namespace sextant::python {
 
 namespace py = pybind11;
 
-/// A cloud from an N×3 (x y z) or N×4 (x y z intensity) array of float32 or float64, any strides,
-/// copied once into the library's PointCloud (which owns its points). ValueError naming `what` for
-/// another shape or dtype, no points, or a NaN/Inf value (the row is named). Needs the GIL.
-PointCloud cloud_from_array(const py::array& points, const std::string& what);
+/// kInPlace: an array whose layout is the library's (readable_in_place) is read where it is, without
+/// a copy; the caller keeps the array alive and unchanged while the cloud is used. kCopy: always copied.
+enum class Borrowing { kCopy, kInPlace };
 
-/// A cloud from an array (as cloud_from_array) or a path (str or os.PathLike, read by the library's
-/// read_cloud with the GIL released). InputError for a bad file.
-PointCloud cloud_from_object(const py::object& source, const std::string& what);
+/// True for the library's own layout: float32, N×3, rows of 12 bytes packed, float-aligned data.
+bool readable_in_place(const py::array& points);
+
+/// A cloud from an N×3 (x y z) or N×4 (x y z intensity) array of float32 or float64, any strides:
+/// read in place (see Borrowing) or copied once into a PointCloud that owns its points. ValueError
+/// naming `what` for another shape or dtype, no points, or a NaN/Inf value (the row is named).
+/// Needs the GIL.
+PointCloud cloud_from_array(const py::array& points, const std::string& what, Borrowing borrowing);
+
+/// A cloud from an array (as cloud_from_array; anything else array-like is converted and copied)
+/// or a path (str or os.PathLike, read by the library's read_cloud with the GIL released).
+/// InputError for a bad file.
+PointCloud cloud_from_object(const py::object& source, const std::string& what, Borrowing borrowing);
 
 /// Arrays that share the memory of a cloud moved into them (the arrays keep it alive): points N×3
 /// float32 and, when the cloud has intensity, intensity N float32 (else None). No copy.

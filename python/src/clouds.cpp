@@ -27,7 +27,7 @@ py::object read(const py::object& path, bool intensity) {
 
 void write(const py::object& path, const py::array& points, const py::object& intensity) {
   const std::string file = path_of(path);
-  PointCloud cloud = cloud_from_array(points, "points");
+  PointCloud cloud = cloud_from_array(points, "points", Borrowing::kInPlace);
   if (!intensity.is_none()) {
     if (cloud.has_intensity())
       throw py::value_error("intensity is given twice (an N×4 array and intensity=)");
@@ -68,6 +68,11 @@ void bind_clouds(py::module_& m) {
   m.def("read_cloud", &read, kReadDoc, py::arg("path"), py::arg("intensity") = false);
   m.def("write_cloud", &write, kWriteDoc, py::arg("path"), py::arg("points"),
         py::arg("intensity") = py::none());
+  m.def(
+      "reads_in_place", [](const py::array& points) { return readable_in_place(points); },
+      "True when match() and write_cloud() read this array where it is, without a copy: a C-contiguous\n"
+      "N×3 float32 array, as read_cloud() returns. Other arrays are copied once.",
+      py::arg("points"));
 }
 
 }  // namespace sextant::python

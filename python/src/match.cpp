@@ -85,8 +85,8 @@ MatchResult match(const py::object& reference, const py::object& input, const py
   } else if (!wide_basin.is_none()) {
     throw py::type_error("wide_basin: expected None, True, False or a dict of wide-basin settings");
   }
-  const PointCloud reference_cloud = cloud_from_object(reference, "reference");
-  const PointCloud input_cloud = cloud_from_object(input, "input");
+  const PointCloud reference_cloud = cloud_from_object(reference, "reference", Borrowing::kInPlace);
+  const PointCloud input_cloud = cloud_from_object(input, "input", Borrowing::kInPlace);
   MatchOutcome outcome;
   {
     const py::gil_scoped_release release;
@@ -112,8 +112,10 @@ Returns the rigid transform T that maps input points into the reference frame
 
 Arguments:
   reference, input: the clouds, each an N×3 (x y z) or N×4 (x y z intensity) NumPy array of float32
-      or float64 in metres, or a file path read with read_cloud(). Arrays are copied once into the
-      library's float32 cloud; NaN/Inf rows are a ValueError.
+      or float64 in metres, or a file path read with read_cloud(). A C-contiguous N×3 float32 array
+      (what read_cloud() returns) is read in place, without a copy: do not change it from another
+      thread while match() runs (it releases the GIL). Other arrays are copied once into the
+      library's float32 cloud. NaN/Inf rows are a ValueError.
   init: 4×4 initial guess (rigid). None: the identity, and the wide basin searches yaw and x/y around
       it first (``sextant match`` without --init). With a guess the guess is refined and an untrusted
       result is registered again with the wide basin, as the CLI does.

@@ -52,7 +52,7 @@ std::unique_ptr<Dataset> open_list(const py::sequence& clouds, const py::object&
                                    const py::object& odometry, const py::object& times) {
   std::vector<PointCloud> scans;
   for (std::size_t i = 0; i < clouds.size(); ++i)
-    scans.push_back(cloud_from_object(clouds[i], "scans[" + std::to_string(i) + "]"));
+    scans.push_back(cloud_from_object(clouds[i], "scans[" + std::to_string(i) + "]", Borrowing::kCopy));
   if (scans.empty()) throw py::value_error("odometry: the list of scans is empty");
   std::vector<Eigen::Isometry3d> truth, odometry_poses;
   if (!poses.is_none()) truth = poses_from_array(poses, "poses");

@@ -93,8 +93,8 @@ TEST(Sampler, GridDrawsTheSamePointsAsSortingTheCellKeyIndexPairs) {
     cloud.push_back({static_cast<float>(layout.uniform(-40, 40)), static_cast<float>(layout.uniform(-40, 40)),
                      static_cast<float>(layout.normal(0.0, 3.0))});
   for (std::size_t i = 0; i < cloud.size(); i += 997)
-    cloud.points()[i].y() = std::numeric_limits<float>::quiet_NaN();
-  cloud.points()[5].z() = std::numeric_limits<float>::infinity();
+    cloud.mutable_points()[i].y() = std::numeric_limits<float>::quiet_NaN();
+  cloud.mutable_points()[5].z() = std::numeric_limits<float>::infinity();
   const auto gbs = make_sampler("gbs");
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
     Rng a(seed), b(seed);

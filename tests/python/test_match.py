@@ -117,6 +117,24 @@ def test_arrays_of_either_dtype_and_paths_give_the_same_result(pair):
         np.testing.assert_array_equal(other.T, by_path.T)
 
 
+def test_the_library_layout_is_read_in_place_and_others_are_copied(pair):
+    reference, _, _ = pair
+    points = sextant.read_cloud(reference)
+    assert sextant.reads_in_place(points)
+    assert sextant.reads_in_place(np.ascontiguousarray(points[10:]))
+    assert not sextant.reads_in_place(points.astype(np.float64))
+    assert not sextant.reads_in_place(np.asfortranarray(points))
+    assert not sextant.reads_in_place(points[::2])  # rows 24 bytes apart
+    assert not sextant.reads_in_place(np.column_stack([points, points[:, :1]]))  # N×4
+    # Read in place, the array is left as it was and a NaN row is still refused by its index.
+    before = points.copy()
+    sextant.match(points, points, init=np.eye(4))
+    np.testing.assert_array_equal(points, before)
+    points[7, 1] = np.nan
+    with pytest.raises(ValueError, match="row 7 is not finite"):
+        sextant.match(points, before)
+
+
 def test_recovers_a_known_transform_of_a_cloud_against_itself(pair):
     reference_path, _, _ = pair
     points, intensity = sextant.read_cloud(reference_path, intensity=True)

@@ -74,7 +74,7 @@ std::uint64_t parse_count(const std::filesystem::path& file, long line, std::str
 }
 
 PointSink::PointSink(std::size_t expected, bool with_intensity) : with_intensity_(with_intensity) {
-  cloud_.points().reserve(expected);
+  cloud_.mutable_points().reserve(expected);
   if (with_intensity_) cloud_.intensity().reserve(expected);
 }
 

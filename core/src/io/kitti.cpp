@@ -34,7 +34,7 @@ PointCloud read_float_records(const std::filesystem::path& file, std::size_t flo
   ScanLoadReport local;
   local.points_read = n;
   PointCloud cloud;
-  cloud.points().reserve(n);
+  cloud.mutable_points().reserve(n);
   if (floats_per_point == 4) cloud.intensity().reserve(n);
   float v[4] = {0, 0, 0, 0};
   std::size_t negative_intensity = 0;

@@ -35,8 +35,8 @@ std::vector<PlaneLandmark> transform_landmarks(const std::vector<PlaneLandmark>&
 
 /// Builds a landmark from the fitted inliers of a point set: plane from `fit`, normal oriented
 /// towards `viewpoint`, outline from the inlier points projected in their principal frame.
-PlaneLandmark make_landmark(const std::vector<Eigen::Vector3f>& points, std::vector<std::size_t> inliers,
-                            const PlaneFit& fit, const Eigen::Vector3d& viewpoint);
+PlaneLandmark make_landmark(PointsView points, std::vector<std::size_t> inliers, const PlaneFit& fit,
+                            const Eigen::Vector3d& viewpoint);
 
 /// Angle between the normal and the up axis (z) folded to [0°, 90°] [deg]; 0 for a horizontal plane.
 double tilt_from_horizontal_deg(const Plane& plane);

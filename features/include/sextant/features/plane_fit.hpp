@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "sextant/core/point_cloud.hpp"
 #include "sextant/features/plane.hpp"
 
 namespace sextant {
@@ -28,8 +29,7 @@ struct PointMoments {
                                       const Eigen::Matrix3d& covariance);
 };
 
-PointMoments compute_moments(const std::vector<Eigen::Vector3f>& points,
-                             const std::vector<std::size_t>& indices);
+PointMoments compute_moments(PointsView points, const std::vector<std::size_t>& indices);
 PointMoments compute_moments(const std::vector<Eigen::Vector3d>& points);
 
 enum class PlaneRefit {
@@ -51,8 +51,7 @@ struct PlaneFit {
 /// PCA fit from moments (normal = eigenvector of the smallest eigenvalue); ok = false when the
 /// second eigenvalue is not positive (points on a line or a single point).
 PlaneFit fit_plane_pca(const PointMoments& moments);
-PlaneFit fit_plane(const std::vector<Eigen::Vector3f>& points, const std::vector<std::size_t>& indices,
-                   PlaneRefit method);
+PlaneFit fit_plane(PointsView points, const std::vector<std::size_t>& indices, PlaneRefit method);
 
 /// Orients the plane so its normal points towards `viewpoint` (n·(v − c) ≥ 0, d = n·c).
 void orient_towards(Plane& plane, const Eigen::Vector3d& viewpoint);

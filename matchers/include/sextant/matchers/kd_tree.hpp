@@ -14,6 +14,8 @@
 
 #include <Eigen/Core>
 
+#include "sextant/core/point_cloud.hpp"
+
 namespace sextant {
 
 class KdTree {
@@ -24,10 +26,10 @@ class KdTree {
   };
 
   KdTree() = default;
-  explicit KdTree(const std::vector<Eigen::Vector3f>& points, int leaf_size = 8) { build(points, leaf_size); }
+  explicit KdTree(PointsView points, int leaf_size = 8) { build(points, leaf_size); }
 
   /// Rebuilds the tree; non-finite points are skipped (indices still refer to `points`).
-  void build(const std::vector<Eigen::Vector3f>& points, int leaf_size = 8);
+  void build(PointsView points, int leaf_size = 8);
 
   /// Number of (finite) points in the tree.
   std::size_t size() const { return points_.size(); }
