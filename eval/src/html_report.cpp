@@ -1,6 +1,5 @@
 #include "sextant/eval/html_report.hpp"
 
-#include <array>
 #include <sstream>
 
 #include "sextant/core/atomic_file.hpp"
@@ -132,17 +131,6 @@ HtmlSection& HtmlReport::add_section(const std::string& id, const std::string& t
 }
 
 std::string HtmlReport::render() const {
-  std::array<std::size_t, 4> counts{};
-  std::size_t sanity = 0, sanity_held = 0;
-  for (const HtmlSection& s : sections)
-    for (const Claim& c : s.claims()) {
-      if (c.kind == ClaimKind::sanity) {
-        ++sanity;
-        sanity_held += c.verdict == Verdict::holds;
-      } else {
-        ++counts[static_cast<std::size_t>(c.verdict)];
-      }
-    }
   std::ostringstream out;
   out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>"
       << escape_html(title) << "</title>\n<style>\n"
@@ -157,16 +145,6 @@ std::string HtmlReport::render() const {
   out << "<main class=\"sx-main" << (sections.empty() ? "" : " sx-with-toc") << "\">\n<h1 id=\"top\">"
       << escape_html(title) << "</h1>\n";
   if (!subtitle.empty()) out << "<p>" << escape_html(subtitle) << "</p>\n";
-  if (counts[0] + counts[1] + counts[2] + counts[3] > 0)
-    out << "<p class=\"summary\">Claims: <span class=\"verdict v-holds\">" << counts[0]
-        << " hold</span> <span class=\"verdict v-does-not-hold\">" << counts[1]
-        << " do not hold</span> <span class=\"verdict v-inconclusive\">" << counts[2]
-        << " inconclusive</span> <span class=\"verdict v-not-comparable\">" << counts[3]
-        << " not comparable</span>"
-        << (sanity > 0
-                ? "; sanity checks passed: " + std::to_string(sanity_held) + " of " + std::to_string(sanity)
-                : std::string())
-        << "</p>\n";
   out << front_html;
   for (const HtmlSection& s : sections) out << s.render();
   if (!provenance.empty()) {

@@ -83,10 +83,15 @@ std::string markdown_section(const std::string& title, const ExperimentConfig& c
   for (const auto& figure : section.figures) md += "![" + figure.caption + "](" + figure.id + ".svg)\n\n";
   for (const auto& t : section.trajectories) md += "- [" + t.caption + "](" + t.id + ".tum) (TUM)\n";
   if (!section.trajectories.empty()) md += "\n";
-  if (!section.claims.empty()) {
-    md += "## Claims\n\n| claim | verdict | evidence |\n|---|---|---|\n";
+  // The thesis' claims, then the sanity checks, as the HTML section has them.
+  for (ClaimKind kind : {ClaimKind::thesis, ClaimKind::sanity}) {
+    std::string rows;
     for (const auto& c : section.claims)
-      md += "| " + c.statement + " | " + to_string(c.verdict) + " | " + c.evidence + " |\n";
+      if (c.kind == kind)
+        rows += "| " + c.statement + " | " + to_string(c.verdict) + " | " + c.evidence + " |\n";
+    if (!rows.empty())
+      md += std::string(kind == ClaimKind::thesis ? "## Claims\n\n" : "\n## Sanity checks\n\n") +
+            "| claim | verdict | evidence |\n|---|---|---|\n" + rows;
   }
   return md;
 }

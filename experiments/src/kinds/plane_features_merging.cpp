@@ -166,13 +166,13 @@ ReportSection MergingStudy::report(const ExperimentConfig& config, const std::ve
       "Table 4.1: merging tests in two cases (ours, seed " + std::to_string(config.seed) + " | thesis)";
   t41.label = "table_4_1";
   t41.add_column("case").add_column("planes");
-  t41.add_compared_column("C_o [deg]").add_compared_column("C_t").add_compared_column("C_p");
-  t41.add_number_column("C_p² (printed form)", 2).add_compared_column("d_c");
+  t41.add_compared_column("C_o [deg]").add_compared_column("C_t [m]").add_compared_column("C_p");
+  t41.add_number_column("C_p² (printed form)", 2).add_compared_column("d_c [m]");
   Table spread;
   spread.caption = "Merging tests over the repetitions: mean [95 % interval]";
   spread.label = "merging_repetitions";
   spread.add_column("case").add_column("planes");
-  for (const char* h : {"C_o [deg]", "C_t", "C_p", "d_c"}) spread.add_column(h);
+  for (const char* h : {"C_o [deg]", "C_t [m]", "C_p", "d_c [m]"}) spread.add_column(h);
   for (int c = 1; c <= 2; ++c) {
     for (int pair = 0; pair < 2; ++pair) {
       const std::vector<double> ref = reference_row(config.reference, c, pair);
@@ -197,8 +197,10 @@ ReportSection MergingStudy::report(const ExperimentConfig& config, const std::ve
   section.figures.push_back(planes_figure(p, 1, config.seed));
   section.figures.push_back(planes_figure(p, 2, config.seed));
 
-  XYPlot scatter{
-      "C_p against d_c over the repetitions", "d_c (centre distance)", "C_p (Mahalanobis distance)", {}};
+  XYPlot scatter{"C_p against d_c over the repetitions",
+                 "d_c, centre distance [m]",
+                 "C_p (Mahalanobis distance, unitless)",
+                 {}};
   scatter.log_y = true;
   for (int c = 1; c <= 2; ++c)
     for (int pair = 0; pair < 2; ++pair)
@@ -221,10 +223,16 @@ ReportSection MergingStudy::report(const ExperimentConfig& config, const std::ve
   };
   const Interval dc12 = ratio(key(2, 0, "dc"), key(1, 0, "dc")),
                  dc13 = ratio(key(2, 1, "dc"), key(1, 1, "dc"));
+  // A sanity check, not a test of the thesis: d_c is fixed by the scene's geometry (case 2 moves the
+  // centres of planes 2 and 3 by the 5 m shift, d_c → √(d_c² + 5²)), and the point noise hardly moves
+  // the centres, so the ratio's interval has width ≈ 0 and cannot come out otherwise.
   section.claims.push_back(
-      {"The Euclidean centre distance d_c cannot tell the cases apart (case 2 / case 1 within ±10 %)",
+      {"The scene keeps d_c nearly the same in both cases (case 2 / case 1 within ±10 %), so only the "
+       "other criteria can tell them apart",
        verdict_all({verdict_in_band(dc12, 0.9, 1.1), verdict_in_band(dc13, 0.9, 1.1)}),
-       "d_c ratio planes 1–2 " + describe(dc12, "×", 3) + ", 1–3 " + describe(dc13, "×", 3)});
+       "d_c ratio planes 1–2 " + describe(dc12, "×", 3) + ", 1–3 " + describe(dc13, "×", 3) +
+           " (set by the scene: the 5 m shift gives √(d_c² + 5²) / d_c)",
+       ClaimKind::sanity});
   const Interval dcp =
       bootstrap_paired_mean_difference(values(key(1, 1, "cp")), values(key(1, 0, "cp")), config.seed);
   const Interval ddc =

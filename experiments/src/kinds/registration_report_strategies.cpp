@@ -241,9 +241,12 @@ ReportSection strategies_report(const ExperimentConfig& config, const Registrati
         Claim{"FbML-NDT's errors look zero-mean Gaussian (no parameter rejects mean within ±1.96·SE or "
               "Jarque–Bera at 5 %)",
               f_rejected ? Verdict::does_not_hold : Verdict::holds, normality_evidence(fn)});
-    section.claims.push_back(
-        Claim{"The odometry's errors are not zero-mean Gaussian (some parameter rejects)",
-              o_rejected ? Verdict::holds : Verdict::does_not_hold, normality_evidence(on)});
+    // A sanity check of the dataset, not a test of the thesis: the campus' odometry is generated with
+    // table 5.1's 77 cm mean error, so its errors cannot look zero-mean.
+    section.claims.push_back(Claim{
+        "The campus odometry's errors are not zero-mean Gaussian (some parameter rejects), as its "
+        "error model (table 5.1's biased odometry) makes them",
+        o_rejected ? Verdict::holds : Verdict::does_not_hold, normality_evidence(on), ClaimKind::sanity});
   }
   for (const auto& m : grouped) {
     if (!m.rows.empty())

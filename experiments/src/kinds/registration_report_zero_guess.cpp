@@ -1,7 +1,10 @@
 // E5 layout (§5.1.2.1, fig 5.12): FbML-NDT from a zero initial guess on a pair with a known motion
 // (the thesis: Ford scans 1000–1004, 2 m along y, "the correct transformation with a few centimetre
 // error in three iterations"). Per run: iterations, error, and the parameters after every iteration.
+#include <algorithm>
 #include <cmath>
+
+#include <Eigen/Core>
 
 #include "registration_claims.hpp"
 #include "registration_deviations.hpp"
@@ -9,6 +12,27 @@
 #include "sextant/eval/plots.hpp"
 
 namespace sextant {
+namespace {
+
+/// The translation error [cm] after iteration k (1-based; the last one when the run stopped
+/// earlier), from the trace of parameters (6 per iteration, metres first) and the final error: by
+/// the triangle inequality it lies within |t_k − t_final| ± final error.
+Interval error_after(const std::vector<double>& trace, std::size_t k, double final_error_cm) {
+  const std::size_t n = trace.size() / 6;
+  const std::size_t at = std::min(std::max<std::size_t>(k, 1), n) - 1;
+  const Eigen::Vector3d t_k(trace[6 * at], trace[6 * at + 1], trace[6 * at + 2]);
+  const Eigen::Vector3d t_final(trace[6 * (n - 1)], trace[6 * (n - 1) + 1], trace[6 * (n - 1) + 2]);
+  const double gap_cm = 100.0 * (t_k - t_final).norm();
+  Interval e;
+  e.estimate = gap_cm;
+  e.lo = std::max(0.0, gap_cm - final_error_cm);
+  e.hi = gap_cm + final_error_cm;
+  e.confidence = 1.0;  // a bound, not a statistical interval
+  e.n = 1;
+  return e;
+}
+
+}  // namespace
 
 ReportSection zero_guess_report(const ExperimentConfig& config, const RegistrationParams& params,
                                 const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows) {
@@ -34,6 +58,7 @@ ReportSection zero_guess_report(const ExperimentConfig& config, const Registrati
       .add_number_column("converged", 0)
       .add_number_column("initial error cm", 1);
   std::vector<double> its, errors;
+  std::vector<Interval> after;  // the translation error after `iterations` iterations, bounded
   for (const auto& m : grouped) {
     for (std::size_t i = 0; i < runs.size(); ++i) {
       if (!rows[i] || !rows[i]->ok || config.methods[runs[i].method_index].name != m.name) continue;
@@ -50,6 +75,8 @@ ReportSection zero_guess_report(const ExperimentConfig& config, const Registrati
       // Fig. 5.12: the six parameters against the iteration.
       const auto it = r.series.find("trace_xi");
       if (it == r.series.end() || it->second.size() < 6) continue;
+      after.push_back(
+          error_after(it->second, static_cast<std::size_t>(iterations), r.value("translation_cm")));
       XYPlot plot;
       plot.title = m.name + " (" + offset + "): parameters per iteration";
       plot.x_label = "iteration";
@@ -71,18 +98,23 @@ ReportSection zero_guess_report(const ExperimentConfig& config, const Registrati
   }
   section.tables.push_back(t);
 
-  // The claim on every run: converged within about `iterations` (band [1, 2·iterations]) to < few_cm.
-  Claim c{"FbML-NDT converges from a zero guess in about " + format_number(iterations, 0) +
-              " iterations (at most " + format_number(2 * iterations, 0) + ") to a few cm (< " +
-              format_number(few_cm, 0) + " cm)",
+  // Fig. 5.12 shows the parameters settled after three iterations; the thesis preset then goes on
+  // through its layers (three iterations in each but the last), so the total count cannot be about
+  // three. The claim is tested where the figure shows it: the error after `iterations` iterations.
+  Claim c{"FbML-NDT from a zero guess is within a few cm (< " + format_number(few_cm, 0) + " cm) after " +
+              format_number(iterations, 0) + " iterations (fig. 5.12)",
           Verdict::not_comparable, ""};
-  std::size_t ok = 0;
-  for (std::size_t i = 0; i < its.size(); ++i) ok += its[i] <= 2 * iterations && errors[i] < few_cm ? 1 : 0;
-  if (!its.empty()) {
-    c.verdict = ok == its.size() ? Verdict::holds : Verdict::does_not_hold;
-    c.evidence = std::to_string(ok) + " of " + std::to_string(its.size()) + " runs; iterations:";
+  if (!after.empty()) {
+    std::vector<Verdict> vs;
+    c.evidence = "translation error after " + format_number(iterations, 0) + " iterations [cm], per run:";
+    for (const Interval& e : after) {
+      vs.push_back(verdict_less(e, few_cm));
+      c.evidence += " " + describe(e);
+    }
+    c.verdict = verdict_all(vs);
+    c.evidence += " (bounded by the final error: |t₃ − t_final| ± final error); iterations in all:";
     for (double v : its) c.evidence += " " + format_number(v, 0);
-    c.evidence += "; errors [cm]:";
+    c.evidence += "; final errors [cm]:";
     for (double v : errors) c.evidence += " " + format_number(v, 1);
   }
   section.claims.push_back(c);

@@ -73,7 +73,7 @@ class HtmlSection {
 struct HtmlReport {
   std::string title = "Sextant report";
   std::string subtitle;
-  std::string front_html;  ///< raw HTML shown first, before the contents (e.g. the experiments' overview)
+  std::string front_html;  ///< raw HTML shown first (e.g. the experiments' headline and overview)
   std::vector<HtmlSection> sections;
   std::vector<std::pair<std::string, std::string>> provenance;  ///< key, value
 
