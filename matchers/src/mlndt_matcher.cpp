@@ -3,65 +3,14 @@
 #include <chrono>
 #include <cmath>
 
-#include "sextant/core/chi_square.hpp"
+#include "layer_objective.hpp"
+
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/matchers/mlndt_presets.hpp"
 
 namespace sextant {
 
-namespace {
-
-constexpr double kKeepAll = std::numeric_limits<double>::infinity();
-
-/// Layers s..n of the pyramid as the optimiser's stages.
-class LayerObjective final : public StagedObjective {
- public:
-  LayerObjective(const std::vector<NdtGrid>& layers, const MlndtSettings& settings, const PointCloud& input)
-      : layers_(layers),
-        first_(settings.start_layer - 1),
-        penalty_(settings.unmatched_penalty),
-        max_distance_(settings.max_distance),
-        first_truncated_(settings.pyramid.layers - settings.truncated_layers),
-        threads_(settings.threads),
-        input_(input) {}
-  int stages() const override { return static_cast<int>(layers_.size()) - first_; }
-  int stage_label(int stage) const override { return first_ + stage + 1; }
-  ScoreEvaluation evaluate(int stage, const Vector6d& xi, Derivatives d) const override {
-    // eqs. (3.11), (3.17), (3.18) with each term truncated at max_distance: min(eᵀC⁻¹e, τ)
-    const double tau = max_distance(stage);
-    ScoreEvaluation e = mahalanobis_score(grid(stage), input_, xi, d, tau, threads_);
-    e.matched_score = e.score;
-    const std::size_t unmatched = input_.size() - e.matched - e.rejected;
-    e.score += penalty_ * static_cast<double>(unmatched);
-    if (e.rejected > 0) e.score += tau * static_cast<double>(e.rejected);  // never ∞·0
-    return e;
-  }
-  double unmatched_penalty() const override { return penalty_; }
-  double max_distance(int stage) const override {
-    return first_ + stage >= first_truncated_ ? max_distance_ : kKeepAll;
-  }
-  const NdtGrid* mahalanobis_grid(int stage) const override { return &grid(stage); }
-  const PointCloud& input() const override { return input_; }
-  /// E[X | X ≤ τ] for X = eᵀC⁻¹e ~ χ²₃: 3·F₅(τ)/F₃(τ) (points beyond τ are not matched); 2.98 at
-  /// τ = 16, 3 for the plain sum
-  double predicted_matched_score() const override {
-    const double tau = max_distance(stages() - 1);
-    if (!std::isfinite(tau)) return 3.0;
-    return 3.0 * chi_square_cdf(tau, 5.0) / chi_square_cdf(tau, 3.0);
-  }
-
- private:
-  const NdtGrid& grid(int stage) const { return layers_[static_cast<std::size_t>(first_ + stage)]; }
-  const std::vector<NdtGrid>& layers_;
-  int first_;
-  double penalty_;
-  double max_distance_;
-  int first_truncated_;   ///< index of the first layer with truncated terms
-  ScoreThreads threads_;  ///< one TBB arena for all evaluations of the registration
-  const PointCloud& input_;
-};
-
-}  // namespace
+using mlndt_detail::LayerObjective;
 
 // The library's defaults are the `default` preset (mlndt_presets.hpp), measured best on the shared
 // real pairs and the campus (docs/matcher_defaults.md): LM, n = 4, s = 2, the finest layer's terms
@@ -82,6 +31,7 @@ MlndtSettings::MlndtSettings() {
 bool MlndtSettings::valid(std::string* why) const {
   if (!pyramid.valid(why) || !optimizer.valid(why)) return false;
   if (wide_basin.enabled && !wide_basin.valid(why)) return false;
+  if (!precision.valid(why)) return false;
   const char* problem = nullptr;
   if (start_layer < 1 || start_layer > pyramid.layers)
     problem = "start_layer must lie in [1, layers]";
@@ -106,6 +56,7 @@ MlndtSettings read_mlndt_settings(const YAML::Node& node, const std::string& fil
   in.read("bounds_quantile", s.pyramid.bounds_quantile);
   in.read("start_layer", s.start_layer);
   in.read("refine_first", s.refine_first);
+  read_precision_settings(in, s.precision);
   in.read("unmatched_penalty", s.unmatched_penalty);
   in.read("max_distance", s.max_distance);
   in.read("truncated_layers", s.truncated_layers);
@@ -125,6 +76,10 @@ MlndtMatcher::MlndtMatcher(MlndtSettings settings) : settings_(std::move(setting
 
 void MlndtMatcher::set_reference(const PointCloud& reference) {
   layers_ = build_layer_pyramid(reference, settings_.pyramid);  // splitting and generative processes
+  precision_.clear();
+  if (!layers_.empty())
+    precision_ =
+        build_precision_layers(reference, layers_.back(), settings_.precision, settings_.pyramid.cells);
   reference_points_ = reference.size();
 }
 
@@ -136,7 +91,7 @@ RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Iso
   const LayerObjective objective(layers_, settings_, input);
   if (!settings_.wide_basin.enabled) {
     if (!settings_.refine_first || settings_.start_layer == settings_.pyramid.layers)
-      return optimize(objective, initial, settings_.optimizer);
+      return refine(input, optimize(objective, initial, settings_.optimizer));
     MlndtSettings last_layer = settings_;
     last_layer.start_layer = settings_.pyramid.layers;
     RegistrationResult refined =
@@ -149,7 +104,7 @@ RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Iso
     RegistrationResult best =
         refined_usable && refined.score < full.score ? std::move(refined) : std::move(full);
     best.seconds = seconds;
-    return best;
+    return refine(input, std::move(best));
   }
   // Wide basin: refine the initial guess and the best coarse-layer hypotheses; keep the lowest
   // final score (same input, same last layer, so the scores compare directly).
@@ -165,7 +120,7 @@ RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Iso
     }
   }
   best.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return best;
+  return refine(input, std::move(best));
 }
 
 std::unique_ptr<Matcher> create_mlndt_matcher(const YAML::Node& settings, const std::string& file) {

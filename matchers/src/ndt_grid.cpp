@@ -196,6 +196,7 @@ void NdtGrid::generate(const std::vector<CellSums>& sums, const CellStatsSetting
     CellGaussian g{};
     if (!cell_gaussian(s, origin_, cell_edge_, settings, g)) continue;
     slot = static_cast<std::int32_t>(gaussians_.size());
+    modelled_points_ += static_cast<std::size_t>(s.count);
     gaussians_.push_back(g);
     cell_of_gaussian_.push_back(s.cell);
   }

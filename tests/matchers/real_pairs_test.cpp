@@ -150,9 +150,11 @@ std::vector<Eigen::Isometry3d> velodyne_with_each_solver(const std::string& sett
 // minimise the same objective, which is piecewise: LM and Ceres' LM agree to 1 mm / 0.01°;
 // Newton's steps stop on a neighbouring piece (measured 1.1 mm / 0.015° from LM). On smooth
 // synthetic data all three agree to 1 mm / 0.01° (Mlndt.RecoversKnownTransformWithEverySolver).
+// Without the precision stage: Ceres refines on one of its two grids only (precision_stage.hpp).
 TEST(RealPairs, SolversAgreeOnTruncatedObjective) {
   const std::vector<Eigen::Isometry3d> poses = velodyne_with_each_solver(
-      "{layers: 6, max_distance: 16, unmatched_penalty: 16, epsilon: 1.0e-7, max_iterations: 100, solver: ");
+      "{layers: 6, max_distance: 16, unmatched_penalty: 16, epsilon: 1.0e-7, max_iterations: 100, "
+      "precision_min_cell: 0, solver: ");
   const Error lm_ceres = difference(poses[1], poses[2]);
   EXPECT_LT(lm_ceres.metres, 1e-3);
   EXPECT_LT(lm_ceres.degrees, 0.01);
@@ -215,7 +217,7 @@ TEST(RealPairs, NewtonStepControlOnVelodyneFromIdentity) {
   const Error trust = run("{preset: thesis, solver: newton, step_control: trust_region_last}");
   const Error explicit_trust =
       run("{solver: newton, step_control: trust_region_last, unmatched_penalty: 50, max_distance: .inf, "
-          "bounds_quantile: 0, min_relative_spread: 0, refine_first: false}");
+          "bounds_quantile: 0, min_relative_spread: 0, refine_first: false, precision_min_cell: 0}");
   const Error line_search = run("{preset: thesis, solver: newton, step_control: line_search}");
   const Error plain = run("{preset: thesis}");  // the step as printed
   EXPECT_LT(lm.metres, 0.15);

@@ -4,7 +4,8 @@
 // until ‖Δξ‖ < ε. YAML keys: division, layers, start_layer, solver (newton | lm | ceres),
 // iterations_per_layer, max_iterations, unmatched_penalty, max_distance, truncated_layers, epsilon,
 // step_control (newton: trust_region_last by default; none = eq. 3.16 as printed), min_points,
-// max_eigen_ratio, min_spread, bounds_quantile, refine_first, dof, threads, wide_basin (a map, absent = off:
+// max_eigen_ratio, min_spread, bounds_quantile, refine_first, dof, threads, precision_min_cell,
+// precision_min_coverage (the precision stage of precision_stage.hpp), wide_basin (a map, absent = off:
 // the global initialisation of mlndt_global_init.hpp; `wide_basin: {}` uses its defaults).
 #include <limits>
 #include <memory>
@@ -15,6 +16,7 @@
 #include "sextant/matchers/mlndt_global_init.hpp"
 #include "sextant/matchers/ndt_grid.hpp"
 #include "sextant/matchers/optimizer.hpp"
+#include "sextant/matchers/precision_stage.hpp"
 
 namespace sextant {
 
@@ -48,6 +50,9 @@ struct MlndtSettings {
   /// kept for its local fit (the campus' biased odometry: 0.7 m off from the last layer alone, with a
   /// fit and overlap that pass the trust checks). Off in the `thesis` preset.
   bool refine_first = true;
+  /// Finer grids after the pyramid's pose, from that pose only (precision_stage.hpp); off
+  /// (min_cell 0) in the `thesis` preset
+  PrecisionSettings precision;
   MlndtSettings();
   bool valid(std::string* why) const;
 };
@@ -62,11 +67,18 @@ class MlndtMatcher final : public Matcher {
   RegistrationResult align(const PointCloud& input, const Eigen::Isometry3d& initial) override;
 
   const std::vector<NdtGrid>& layers() const { return layers_; }
+  /// The precision stage's grids for the current reference, coarse to fine (empty: no stage).
+  const std::vector<NdtGrid>& precision_layers() const { return precision_; }
   const MlndtSettings& settings() const { return settings_; }
 
  private:
+  /// The precision stage from `coarse`'s pose (precision_stage.cpp); `coarse` as it is when there is
+  /// no stage, coarse did not end usably, or the stage does not converge.
+  RegistrationResult refine(const PointCloud& input, RegistrationResult coarse) const;
+
   MlndtSettings settings_;
   std::vector<NdtGrid> layers_;
+  std::vector<NdtGrid> precision_;
   std::size_t reference_points_ = 0;
 };
 

@@ -65,6 +65,8 @@ class NdtGrid {
   const Eigen::Vector3i& dims() const { return dims_; }
   std::size_t cell_count() const { return index_.size(); }
   std::size_t gaussian_count() const { return gaussians_.size(); }
+  /// Reference points in the cells that got a Gaussian (the part of the reference this grid models).
+  std::size_t modelled_points() const { return modelled_points_; }
 
   /// Index of the Gaussian of the cell containing p, or −1 (outside, or too few points).
   int lookup(float x, float y, float z) const {
@@ -116,6 +118,7 @@ class NdtGrid {
   double cell_edge_ = 0.0;
   float ox_ = 0.f, oy_ = 0.f, oz_ = 0.f, inv_edge_ = 0.f, fdx_ = 0.f, fdy_ = 0.f, fdz_ = 0.f;
   bool too_large_ = false;
+  std::size_t modelled_points_ = 0;
   std::vector<std::int32_t> index_;  ///< cell → Gaussian index or −1
   std::vector<CellGaussian> gaussians_;
   std::vector<std::int32_t> cell_of_gaussian_;

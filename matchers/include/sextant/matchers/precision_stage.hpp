@@ -1,0 +1,61 @@
+#pragma once
+// ML-NDT's precision stage (issue 22). The pyramid's cells are fractions of the reference's box
+// (§3.2, Table 3.1: layer i splits it into qⁱ cubes), so a pose is only as precise as the last
+// layer's cells resolve the scene: on a 230 × 140 × 25 m outdoor keyframe the 4th layer's cells
+// are ≈ 6 m, and each holds several surfaces in one blurred Gaussian. More layers from the start
+// layer do not help: the finer layers then run from the coarse layers' early poses, and their
+// narrow basins pull a right pose away (the thesis' E4 guideline).
+//
+// The precision stage continues after the pyramid has chosen its pose (after refine_first and the
+// wide basin too), from that pose only, so that the coarse layers' reach is kept and a finer grid's
+// narrower basin never sees a bad guess. It registers once more against two overlapping grids
+// (Biber and Straßer's overlapping NDT grids, reduced to one diagonal shift): one on the pyramid's
+// origin and one shifted by half a cell along every axis, their truncated scores of eq. (3.11)
+// summed. A single grid's score jumps where a point crosses a cell boundary (its Gaussian changes);
+// with the shifted copy no boundary of one grid is a boundary of the other, so the pose is no longer
+// pulled towards positions that keep points inside their cells.
+//
+// The edge is that of layer n + 1 (half the last layer's), but never below `min_cell`, a metric floor,
+// and only when the finer cells still model the scene: when the aligned grid's Gaussians hold less than
+// `min_coverage` of the reference points the last layer's Gaussians hold (too fine for the point
+// density: a sparse or voxel-downsampled scan), the grids take the last layer's own edge instead.
+// Overlap and fit (the trust checks) stay those of the last layer at the final pose; the Hessian is
+// the precision stage's, whose minimum the pose is. A stage that does not converge leaves the
+// pyramid's result as it was.
+//
+// YAML keys of mlndt / fbmlndt: precision_min_cell (0 = off, the `thesis` preset), precision_min_coverage.
+#include <string>
+#include <vector>
+
+#include "sextant/core/point_cloud.hpp"
+#include "sextant/matchers/ndt_grid.hpp"
+
+namespace sextant {
+
+class SettingsReader;
+
+struct PrecisionSettings {
+  /// The smallest cell edge of the precision grids (their edge is max(this, half the last layer's),
+  /// at most the last layer's). 1 m: a lidar surface patch of 1 m holds enough returns at the ranges
+  /// that dominate a scan (beam spacing 0.2–0.5 m at 20–50 m) for a covariance, and the GBS input
+  /// sample (1 m cells) has about one cluster per cell. 0 turns the stage off [m, 0 or [0.05, 100]]
+  double min_cell = 1.0;
+  /// The finer edge is used only when its cells with a Gaussian hold at least this fraction of the
+  /// reference points the last layer's Gaussians hold; below it the grids take the last layer's edge
+  /// [fraction, (0, 1]]
+  double min_coverage = 0.8;
+  bool enabled() const { return min_cell > 0.0; }
+  bool valid(std::string* why) const;
+};
+
+/// Reads precision_min_cell and precision_min_coverage at the reader's level.
+void read_precision_settings(SettingsReader& in, PrecisionSettings& s);
+
+/// The precision stage's two grids for `reference`: aligned with `last_layer`'s origin, then shifted
+/// by half a cell along every axis, both over the last layer's box (plus one cell). Empty when the
+/// stage is off, the last layer is empty, or no grid can be built (NdtGrid::build's cell cap).
+std::vector<NdtGrid> build_precision_layers(const PointCloud& reference, const NdtGrid& last_layer,
+                                            const PrecisionSettings& settings,
+                                            const CellStatsSettings& cells);
+
+}  // namespace sextant

@@ -1,0 +1,145 @@
+// ML-NDT's precision stage (precision_stage.hpp): its grids' known edges, its settings' bounds,
+// the `thesis` preset without it, and a recovered transform against the ground truth on a large
+// synthetic scene whose last layer is coarse.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "sextant/core/error.hpp"
+#include "sextant/core/units.hpp"
+#include "sextant/matchers/mlndt_matcher.hpp"
+#include "sextant/matchers/samplers.hpp"
+#include "test_clouds.hpp"
+
+namespace sextant {
+namespace {
+
+/// A 200 × 200 m site: flat ground and 36 buildings on a jittered 6 × 6 lattice, densely sampled
+/// (≈ 160,000 points; a 1 m ground cell holds ≈ 2 points, a 1 m wall cell ≈ 9). Its box splits into
+/// 4th-layer cells of ≈ 4.5 m. The layout is fixed; `seed` draws the points.
+PointCloud site(std::uint64_t seed) {
+  Rng layout(7), rng(seed);
+  PointCloud cloud;
+  for (int i = 0; i < 80000; ++i)
+    cloud.push_back({static_cast<float>(rng.uniform(-100, 100)), static_cast<float>(rng.uniform(-100, 100)),
+                     0.02f * static_cast<float>(rng.normal())});
+  for (int i = 0; i < 6; ++i) {
+    for (int j = 0; j < 6; ++j) {
+      const auto x = static_cast<float>(-90 + 32 * i + layout.uniform(0, 8)),
+                 y = static_cast<float>(-90 + 32 * j + layout.uniform(0, 8));
+      const auto w = static_cast<float>(layout.uniform(4, 14)), d = static_cast<float>(layout.uniform(4, 14)),
+                 h = static_cast<float>(layout.uniform(3, 9));
+      test::add_box(cloud, {x, y, 0}, {x + w, y + d, h}, 2200, rng, 0.01);
+    }
+  }
+  return cloud;
+}
+
+double error_m(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+  return translation_norm(a.inverse() * b);
+}
+double error_deg(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+  return rotation_angle(a.inverse() * b) / kRadPerDeg;
+}
+
+TEST(PrecisionStage, TwoOverlappingGridsOfLayerNPlusOnesEdge) {
+  const PointCloud reference = site(1);
+  MlndtSettings s;
+  ASSERT_DOUBLE_EQ(s.precision.min_cell, 1.0);  // on by default
+  MlndtMatcher matcher(s);
+  matcher.set_reference(reference);
+  const NdtGrid& last = matcher.layers().back();
+  ASSERT_GT(last.cell_edge(), 4.0);  // ≈ 4.5 m: the box of 200 × 200 × 9 m in 8⁴ cubes
+  ASSERT_LT(last.cell_edge(), 5.0);
+  const auto edges = [&](const MlndtMatcher& m) {
+    std::vector<double> out;
+    for (const NdtGrid& g : m.precision_layers()) out.push_back(g.cell_edge());
+    return out;
+  };
+  // Half the last layer's edge (above the 1 m floor), aligned and shifted by half a cell.
+  const double half = 0.5 * last.cell_edge();
+  ASSERT_EQ(edges(matcher), (std::vector<double>{half, half}));
+  const std::vector<NdtGrid>& fine = matcher.precision_layers();
+  EXPECT_TRUE(fine[0].origin().isApprox(last.origin()));
+  EXPECT_TRUE((last.origin() - fine[1].origin()).isApprox(Eigen::Vector3d::Constant(0.5 * half)));
+  EXPECT_GE(static_cast<double>(fine[0].modelled_points()),
+            0.8 * static_cast<double>(last.modelled_points()));
+
+  // The floor: min_cell above half the edge sets the edge; above the last layer's edge, the last
+  // layer's edge is used.
+  s.precision.min_cell = 3.0;
+  MlndtMatcher floor3(s);
+  floor3.set_reference(reference);
+  EXPECT_EQ(edges(floor3), (std::vector<double>{3.0, 3.0}));
+  s.precision.min_cell = 50.0;
+  MlndtMatcher floor50(s);
+  floor50.set_reference(reference);
+  EXPECT_EQ(edges(floor50), (std::vector<double>{last.cell_edge(), last.cell_edge()}));
+  // The coverage rule: the finer cells model less than everything the last layer models (sparse
+  // ground cells fall under min_points), so asking for all of it keeps the last layer's edge, whose
+  // aligned grid has exactly the last layer's cells.
+  s.precision.min_cell = 1.0;
+  s.precision.min_coverage = 1.0;
+  MlndtMatcher strict(s);
+  strict.set_reference(reference);
+  EXPECT_EQ(edges(strict), (std::vector<double>{last.cell_edge(), last.cell_edge()}));
+  EXPECT_EQ(strict.precision_layers()[0].modelled_points(), last.modelled_points());
+  s.precision.min_cell = 0.0;  // off
+  MlndtMatcher off(s);
+  off.set_reference(reference);
+  EXPECT_TRUE(off.precision_layers().empty());
+}
+
+TEST(PrecisionStage, RefinesTheLastLayersPoseOnALargeScene) {
+  const PointCloud reference = site(2);
+  // The input: a fresh sampling of the same site, GBS-sampled as odometry does, seen from T.
+  const PointCloud scene = site(3);
+  Rng pick(5);
+  const PointCloud sampled = scene.subset(GridSampler(GridSamplerSettings{1.0, 5, 3}).select(scene, pick));
+  const Eigen::Isometry3d T =
+      to_isometry(Pose6{1.4, -0.6, 0.05, 0.3 * kRadPerDeg, -0.2 * kRadPerDeg, 2.0 * kRadPerDeg});
+  const PointCloud input = sampled.transformed(T.inverse());
+  const Eigen::Isometry3d guess = to_isometry(Pose6{1.2, -0.4, 0.0, 0.0, 0.0, 1.5 * kRadPerDeg});
+
+  const auto run = [&](double min_cell) {
+    MlndtSettings s;
+    s.precision.min_cell = min_cell;
+    MlndtMatcher m(s);
+    m.set_reference(reference);
+    return m.align(input, guess);
+  };
+  const RegistrationResult coarse = run(0.0), fine = run(1.0);
+  ASSERT_TRUE(coarse.converged) << coarse.summary();
+  ASSERT_TRUE(fine.converged) << fine.summary();
+  EXPECT_EQ(fine.trace.back().layer, 5);  // the precision stage ran (labelled n + 1)
+  EXPECT_EQ(coarse.trace.back().layer, 4);
+  // Measured: the last layer alone 6.4 mm / 0.0036°, with the precision stage 4.8 mm / 0.0004°.
+  EXPECT_LT(error_m(fine.T, T), 0.9 * error_m(coarse.T, T));
+  EXPECT_LT(error_deg(fine.T, T), 0.3 * error_deg(coarse.T, T));
+  EXPECT_LT(error_m(fine.T, T), 0.006);
+}
+
+TEST(PrecisionStage, SettingsAreReadAndChecked) {
+  const MlndtSettings thesis = read_mlndt_settings(YAML::Load("{preset: thesis}"), "x");
+  EXPECT_FALSE(thesis.precision.enabled());
+  const MlndtSettings on =
+      read_mlndt_settings(YAML::Load("{precision_min_cell: 2, precision_min_coverage: 0.5}"), "x");
+  EXPECT_DOUBLE_EQ(on.precision.min_cell, 2.0);
+  EXPECT_DOUBLE_EQ(on.precision.min_coverage, 0.5);
+  for (const char* bad :
+       {"{precision_min_cell: -1}", "{precision_min_cell: 0.01}", "{precision_min_cell: 500}",
+        "{precision_min_cell: .nan}", "{precision_min_coverage: 0}", "{precision_min_coverage: 1.5}",
+        "{precision_min_cell: x}"})
+    EXPECT_THROW(read_mlndt_settings(YAML::Load(bad), "x"), InputError) << bad;
+  PrecisionSettings p;
+  std::string why;
+  p.min_cell = 0.04;
+  EXPECT_FALSE(p.valid(&why));
+  EXPECT_NE(why.find("precision_min_cell"), std::string::npos);
+  p.min_cell = 0.0;
+  EXPECT_TRUE(p.valid(&why));
+}
+
+}  // namespace
+}  // namespace sextant
