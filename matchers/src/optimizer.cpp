@@ -127,6 +127,8 @@ class Loop {
         Vector6d full = mask_.expand(step);
         if (settings_.step_control == StepControl::kLineSearch)
           full = backtrack(stage, at, full, score);
+        else if (settings_.step_control == StepControl::kMoreThuente)
+          full = more_thuente_step(stage, at, full, score);
         else  // eq. (3.16) as printed: the full step, whatever it does to the score
           score = objective_.evaluate(stage, xi_ + full, Derivatives::kScore).score;
         xi_ += full;
@@ -205,6 +207,25 @@ class Loop {
     }
     score = at.score;
     return Vector6d::Zero();
+  }
+
+  /// Moré–Thuente along the Newton direction Δ: φ(α) = f(ξ + α·Δ), φ'(α) = ∇f·Δ; α ∈ [0, α_max]
+  /// with α_max = max_step / ‖Δ‖, first trial min(1, α_max). A trial with too few matched points
+  /// has no value (the search shortens the step). Returns the accepted step α·Δ.
+  Vector6d more_thuente_step(int stage, const ScoreEvaluation& at, const Vector6d& direction,
+                             double& score) const {
+    const MoreThuenteSettings& mt = settings_.line_search;
+    const double alpha_max = mt.max_step / direction.norm();
+    const auto phi = [&](double alpha) {
+      const ScoreEvaluation e = objective_.evaluate(stage, xi_ + alpha * direction, Derivatives::kGradient);
+      return LineSearchSample{e.score, e.gradient.dot(direction), e.matched >= settings_.min_matched};
+    };
+    const LineSearchSample origin{at.score, at.gradient.dot(direction), true};
+    const LineSearchResult r = std::isfinite(alpha_max)
+                                   ? more_thuente(phi, origin, std::min(1.0, alpha_max), 0.0, alpha_max, mt)
+                                   : LineSearchResult{};
+    score = r.step > 0.0 ? r.at.value : at.score;
+    return r.step * direction;
   }
 
   bool ceres_stage(int stage, int budget, bool last) {
@@ -286,6 +307,8 @@ bool step_control_from_name(const std::string& name, StepControl& control) {
     control = StepControl::kNone;
   else if (name == "line_search")
     control = StepControl::kLineSearch;
+  else if (name == "more_thuente")
+    control = StepControl::kMoreThuente;
   else if (name == "trust_region")
     control = StepControl::kTrustRegion;
   else if (name == "trust_region_last")
@@ -299,6 +322,7 @@ std::string to_string(StepControl control) {
   switch (control) {
     case StepControl::kNone: return "none";
     case StepControl::kLineSearch: return "line_search";
+    case StepControl::kMoreThuente: return "more_thuente";
     case StepControl::kTrustRegion: return "trust_region";
     case StepControl::kTrustRegionLast: return "trust_region_last";
   }
@@ -317,9 +341,14 @@ void read_optimizer_settings(SettingsReader& in, const std::string& known_solver
   if (in.read("step_control", control)) {
     if (legacy) in.fail("step_control", "give step_control or line_search, not both");
     if (!step_control_from_name(control, s.step_control))
-      in.fail("step_control", "key 'step_control': '" + control +
-                                  "' is not none, line_search, trust_region or trust_region_last");
+      in.fail("step_control",
+              "key 'step_control': '" + control +
+                  "' is not none, line_search, more_thuente, trust_region or trust_region_last");
   }
+  in.read("line_search_mu", s.line_search.mu);
+  in.read("line_search_eta", s.line_search.eta);
+  in.read("line_search_max_step", s.line_search.max_step);
+  in.read("line_search_iterations", s.line_search.iterations);
   read_dof_mask(in, "dof", s.dof);
 }
 
@@ -342,7 +371,7 @@ bool OptimizerSettings::valid(std::string* why) const {
     problem = "epsilon must be positive";
   if (problem && why) *why = problem;
   if (problem) return false;
-  return dof.valid(why);
+  return line_search.valid(why) && dof.valid(why);
 }
 
 RegistrationResult optimize(const StagedObjective& objective, const Eigen::Isometry3d& initial,

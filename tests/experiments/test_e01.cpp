@@ -43,8 +43,8 @@ TEST(E01, QuickProfileWritesEveryTableAndFigure) {
   o.quick = true;
   o.progress = false;
   const RunnerSummary s = run_experiment(kConfig, o);
-  // quick: 5 methods × 4 scenes × 4 offsets × 3 yaws × 2 directions.
-  ASSERT_EQ(s.executed, 5u * 4u * 4u * 3u * 2u);
+  // quick: 6 methods × 4 scenes × 4 offsets × 3 yaws × 2 directions.
+  ASSERT_EQ(s.executed, 6u * 4u * 4u * 3u * 2u);
   ASSERT_EQ(s.failed, 0u);
 
   std::size_t snapshots = 0, snapshot_reference = 0, snapshot_input = 0;
@@ -63,7 +63,7 @@ TEST(E01, QuickProfileWritesEveryTableAndFigure) {
       snapshot_input = row.series.at("snapshot_input").size() / 3;
     }
   }
-  EXPECT_EQ(snapshots, 5u);  // one per method
+  EXPECT_EQ(snapshots, 6u);  // one per method
   EXPECT_EQ(scenes.size(), 4u);
 
   const ReportSummary r = write_report({tmp / "results"}, tmp / "report");
@@ -74,24 +74,26 @@ TEST(E01, QuickProfileWritesEveryTableAndFigure) {
     EXPECT_TRUE(std::filesystem::exists(folder / (std::string(table) + ".csv"))) << table;
   // Success map: one row per method × |yaw| value, columns method, |yaw| and the 4 offsets.
   const std::string map = test::read_text(folder / "success_map.csv");
-  EXPECT_EQ(count_lines(map), 1u + 5u * 3u) << map;
+  EXPECT_EQ(count_lines(map), 1u + 6u * 3u) << map;
   EXPECT_EQ(count_fields(map.substr(0, map.find('\n'))), 2u + 4u) << map;
   const std::string basin = test::read_text(folder / "basin.md");
-  for (const char* method : {"ndt", "mlndt_lm_s2", "mlndt_lm_s1", "mlndt_lm_s1_i10", "mlndt_newton_s1"})
+  for (const char* method :
+       {"ndt", "ndt_magnusson", "mlndt_lm_s2", "mlndt_lm_s1", "mlndt_lm_s1_i10", "mlndt_newton_s1"})
     EXPECT_NE(basin.find("| " + std::string(method) + " |"), std::string::npos) << method << "\n" << basin;
   const std::string per_scene = test::read_text(folder / "basin_per_scene.md");
   for (const char* scene : {"campus_100", "campus_300", "velodyne", "room"})
     EXPECT_NE(per_scene.find(scene), std::string::npos) << scene;
   for (const char* figure :
-       {"clouds_before", "clouds_after_mlndt_lm_s1", "clouds_after_ndt", "parameters_ndt_translation",
-        "parameters_ndt_rotation", "parameters_mlndt_lm_s1_translation", "parameters_mlndt_lm_s1_rotation",
-        "score_ndt", "newton_vs_lm_score", "newton_vs_lm_error", "success_map_ndt", "success_map_mlndt_lm_s1",
-        "success_map_mlndt_lm_s2", "success_map_mlndt_lm_s1_i10", "success_map_mlndt_newton_s1",
-        "basin_translation", "basin_yaw"})
+       {"clouds_before", "clouds_after_mlndt_lm_s1", "clouds_after_ndt_magnusson",
+        "parameters_ndt_magnusson_translation", "parameters_ndt_magnusson_rotation",
+        "parameters_mlndt_lm_s1_translation", "parameters_mlndt_lm_s1_rotation", "score_ndt_magnusson",
+        "newton_vs_lm_score", "newton_vs_lm_error", "success_map_ndt", "success_map_ndt_magnusson",
+        "success_map_mlndt_lm_s1", "success_map_mlndt_lm_s2", "success_map_mlndt_lm_s1_i10",
+        "success_map_mlndt_newton_s1", "basin_translation", "basin_yaw"})
     EXPECT_TRUE(std::filesystem::exists(folder / (std::string(figure) + ".svg"))) << figure;
   const std::string html = test::read_text(r.index_html);
-  EXPECT_NE(html.find("[quick, n = 480 runs]"), std::string::npos);
-  EXPECT_NE(html.find("n = 480 registrations"), std::string::npos);
+  EXPECT_NE(html.find("[quick, n = 576 runs]"), std::string::npos);
+  EXPECT_NE(html.find("n = 576 registrations"), std::string::npos);
   EXPECT_NE(html.find("McNemar"), std::string::npos);
   EXPECT_NE(html.find("basin is ≈ 2.5×"), std::string::npos);
   // The snapshot in 3D (figs 5.1/5.2): linked from E1's section, beside the static figures, and
@@ -107,8 +109,8 @@ TEST(E01, QuickProfileWritesEveryTableAndFigure) {
   EXPECT_NE(page.find("<script src=\"../three.min.js\"></script>"), std::string::npos);
   EXPECT_EQ(page.find("http://"), std::string::npos);
   EXPECT_EQ(page.find("https://"), std::string::npos);
-  for (const char* state :
-       {">before: identity guess</button>", ">after mlndt_lm_s1 (", ">after ndt (", ">ground truth</button>"})
+  for (const char* state : {">before: identity guess</button>", ">after mlndt_lm_s1 (",
+                            ">after ndt_magnusson (", ">ground truth</button>"})
     EXPECT_NE(page.find(state), std::string::npos) << state;
   // Every point the run stored (fewer than the viewer's cap), reference first.
   const std::size_t first = page.find("\"count\":" + std::to_string(snapshot_reference) + ",");

@@ -3,7 +3,8 @@
 // outlier-mixture constants, Newton with a backtracking line search; optional trilinear
 // interpolation over the 8 neighbouring cells. YAML keys: cell_size, volume_divisions,
 // outlier_ratio, trilinear, max_iterations, epsilon, step_control (line_search by default; none = the plain
-// Newton step), min_points, max_eigen_ratio, dof, threads.
+// Newton step; more_thuente = Magnusson's Moré–Thuente line search, with line_search_mu, line_search_eta,
+// line_search_max_step, line_search_iterations), min_points, max_eigen_ratio, dof, threads.
 #include <memory>
 #include <string>
 

@@ -3,13 +3,15 @@
 // objective has one or more stages (ML-NDT layers s..n, or NDT's single grid); each
 // stage but the last runs a fixed number of iterations (Table 3.1: three), the last runs until
 // ‖Δξ‖ < ε or the iteration cap. Solvers: Newton (eq. 3.16, H + γI when H is not positive
-// definite) with a step control (none: the update as printed; an Armijo line search; or a trust
-// region by adaptive damping of H), Levenberg–Marquardt (eq. 3.21) and Ceres' LM.
+// definite) with a step control (none: the update as printed; an Armijo line search; the
+// Moré–Thuente line search; or a trust region by adaptive damping of H), Levenberg–Marquardt
+// (eq. 3.21) and Ceres' LM.
 #include <cstddef>
 #include <limits>
 #include <string>
 
 #include "sextant/matchers/dof_mask.hpp"
+#include "sextant/matchers/more_thuente.hpp"
 #include "sextant/matchers/ndt_score.hpp"
 #include "sextant/matchers/registration_result.hpp"
 
@@ -20,6 +22,10 @@ enum class SolverKind { kNewton, kLevenbergMarquardt, kCeres };
 /// How a Newton step is controlled:
 ///   none         — Δ of eq. (3.16) (H + γI) taken in full, as the thesis prints it;
 ///   line_search  — backtracking (Armijo) along Δ: halve until the score drops enough;
+///   more_thuente — the Moré–Thuente (1994) line search along Δ, as Magnusson's thesis (2009, [32]) runs
+///                  NDT: a step α·Δ meeting the strong Wolfe conditions, α ∈ [0, α_max] with
+///                  α_max = line_search_max_step / ‖Δ‖, first trial α = min(1, α_max)
+///                  (more_thuente.hpp);
 ///   trust_region — (H + γI + λ·d̄·I)Δ = −g with λ adapted like LM's (÷10 after a step that lowers
 ///                  the score, ×10 and retry otherwise; d̄ = mean |diag H|), λ₀ = 0 (a full Newton
 ///                  step is tried first);
@@ -27,9 +33,9 @@ enum class SolverKind { kNewton, kLevenbergMarquardt, kCeres };
 ///                  iterations each) take the full step, whose reach gives ML-NDT its capture range
 ///                  (a monotone step control there loses a 3 m / 15° offset that the full steps
 ///                  recover: Mlndt.LongRangeBeatsFixedCellNdt).
-enum class StepControl { kNone, kLineSearch, kTrustRegion, kTrustRegionLast };
+enum class StepControl { kNone, kLineSearch, kMoreThuente, kTrustRegion, kTrustRegionLast };
 
-/// "none", "line_search", "trust_region", "trust_region_last"; false for other names.
+/// "none", "line_search", "more_thuente", "trust_region", "trust_region_last"; false for others.
 bool step_control_from_name(const std::string& name, StepControl& control);
 std::string to_string(StepControl control);
 
@@ -43,14 +49,17 @@ struct OptimizerSettings {
   int max_iterations = 100;      ///< cap on all iterations [count]
   double epsilon = 1e-4;  ///< stop in the last stage when ‖Δξ‖ < ε [m and rad mixed, as eq. 3.12]
   StepControl step_control = StepControl::kNone;  ///< Newton only (LM and Ceres damp themselves)
-  std::size_t min_matched = 6;  ///< fewer matched points → too_few_correspondences [count]
+  std::size_t min_matched = 6;      ///< fewer matched points → too_few_correspondences [count]
+  MoreThuenteSettings line_search;  ///< μ, η, step bound and budget of step_control more_thuente
   DofMask dof;
   bool valid(std::string* why) const;
 };
 
 /// Reads the optimiser keys the NDT matchers share: solver (message lists `known_solvers`),
-/// max_iterations, epsilon, step_control (none | line_search | trust_region | trust_region_last; the boolean
-/// `line_search: true/false` means line_search / none) and dof.
+/// max_iterations, epsilon, step_control (none | line_search | more_thuente | trust_region |
+/// trust_region_last; the boolean `line_search: true/false` means line_search / none), the
+/// Moré–Thuente keys line_search_mu, line_search_eta, line_search_max_step, line_search_iterations
+/// (MoreThuenteSettings) and dof.
 void read_optimizer_settings(SettingsReader& in, const std::string& known_solvers, OptimizerSettings& s);
 
 /// What the loop optimises. Scores are minimised.
