@@ -153,7 +153,9 @@ TEST(OdometryCli, SyntheticKittiSequenceFolder) {
   const AteResult ate = absolute_trajectory_error(poses_of(kitti), camera);
   EXPECT_LT(ate.translation.rms, 0.2) << r.output;
   const std::string metrics = read_text(tmp / "out" / "metrics.json");
-  EXPECT_NEAR(json_number(metrics, "ate_m", "estimate"), ate.translation.rms, 1e-4) << metrics;
+  // The ten poses lie on a line, so the alignment's turn about it is barely determined (metrics.json
+  // reports a 5° ATE rotation): the files' rounding moves the ATE by a few 0.1 mm.
+  EXPECT_NEAR(json_number(metrics, "ate_m", "estimate"), ate.translation.rms, 1e-3) << metrics;
   EXPECT_NE(metrics.find("\"odometry\": null"), std::string::npos) << metrics;
 }
 

@@ -67,8 +67,9 @@ def test_ground_truth_and_metrics_of_the_run(python_run, mulran, cli_run):
     errors = python_run.steps["error_m"]
     rpe = sextant.metrics.rpe(python_run.ground_truth, python_run.poses)
     # The same errors from the relative poses (steps) and from the chained ones (metrics); they differ
-    # in rounding only: poses.txt's rotations are orthonormal to 6 digits.
-    assert rpe["translation_rms"] == pytest.approx(np.sqrt(np.mean(errors**2)), rel=1e-6)
+    # in rounding only: poses.txt's rotations are orthonormal to 6 digits, which moves a step of up
+    # to 14 m by ~1e-5 m.
+    assert rpe["translation_rms"] == pytest.approx(np.sqrt(np.mean(errors**2)), abs=2e-5)
     estimate = json.loads((cli_run[2] / "metrics.json").read_text())["estimate"]
     assert rpe["translation_rms"] == pytest.approx(estimate["rpe_m"], rel=1e-9)
     ate = sextant.metrics.ate(python_run.ground_truth, python_run.poses)
