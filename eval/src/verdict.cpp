@@ -8,6 +8,7 @@
 #include "sextant/core/chi_square.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/core/units.hpp"
+#include "sextant/eval/small_sample_intervals.hpp"
 
 namespace sextant {
 namespace {
@@ -84,22 +85,14 @@ Interval wilson_interval(std::size_t successes, std::size_t n, double confidence
 }
 
 Interval mean_interval(const std::vector<double>& values, double confidence) {
-  const std::vector<double> v = finite_values(values);
-  if (v.size() < 2) return undefined(confidence, v.size());
-  double mean = 0.0;
-  for (double x : v) mean += x;
-  mean /= static_cast<double>(v.size());
-  double ss = 0.0;
-  for (double x : v) ss += (x - mean) * (x - mean);
-  const double se = std::sqrt(ss / static_cast<double>(v.size() - 1) / static_cast<double>(v.size()));
-  const double z = two_sided_z(confidence);
-  return {mean, mean - z * se, mean + z * se, confidence, v.size()};
+  return t_mean_interval(values, confidence);
 }
 
 Interval bootstrap_median(const std::vector<double>& values, std::uint64_t seed, double confidence,
                           int resamples) {
   const std::vector<double> v = finite_values(values);
-  if (v.empty() || resamples < 1) return undefined(confidence, v.size());
+  if (v.size() < kSmallSample) return median_interval(v, confidence);
+  if (resamples < 1) return undefined(confidence, v.size());
   Rng rng(seed);
   std::vector<double> draws, sample;
   draws.reserve(static_cast<std::size_t>(resamples));
@@ -114,7 +107,8 @@ Interval bootstrap_ratio_of_medians(const std::vector<double>& numerator,
                                     const std::vector<double>& denominator, std::uint64_t seed,
                                     double confidence, int resamples) {
   const std::vector<double> a = finite_values(numerator), b = finite_values(denominator);
-  if (a.empty() || b.empty() || resamples < 1) return undefined(confidence, std::min(a.size(), b.size()));
+  if (std::min(a.size(), b.size()) < kSmallSample) return ratio_of_medians_interval(a, b, confidence);
+  if (resamples < 1) return undefined(confidence, std::min(a.size(), b.size()));
   Rng rng(seed);
   std::vector<double> draws, sa, sb;
   draws.reserve(static_cast<std::size_t>(resamples));
@@ -132,7 +126,8 @@ Interval bootstrap_paired_mean_difference(const std::vector<double>& a, const st
   std::vector<double> d;
   for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
     if (std::isfinite(a[i]) && std::isfinite(b[i])) d.push_back(a[i] - b[i]);
-  if (d.empty() || resamples < 1) return undefined(confidence, d.size());
+  if (d.size() < kSmallSample) return t_mean_interval(d, confidence);
+  if (resamples < 1) return undefined(confidence, d.size());
   const auto mean = [](const std::vector<double>& v) {
     double s = 0.0;
     for (double x : v) s += x;

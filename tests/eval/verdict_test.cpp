@@ -22,11 +22,11 @@ TEST(Verdict, WilsonIntervalMatchesTheTextbookValue) {
   EXPECT_LT(all.lo, 1.0);
 }
 
-TEST(Verdict, MeanIntervalIsMeanPlusMinusZTimesStandardError) {
+TEST(Verdict, MeanIntervalIsMeanPlusMinusStudentTTimesStandardError) {
   const Interval m = mean_interval({1, 2, 3, 4, 5, kNaN});
   EXPECT_DOUBLE_EQ(m.estimate, 3.0);
   EXPECT_EQ(m.n, 5u);
-  EXPECT_NEAR(m.hi - m.estimate, 1.959964 * std::sqrt(2.5 / 5.0), 1e-5);
+  EXPECT_NEAR(m.hi - m.estimate, 2.776445 * std::sqrt(2.5 / 5.0), 1e-5);  // t₄, not z = 1.96
   EXPECT_FALSE(mean_interval({1.0}).defined());
 }
 

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "sextant/eval/small_sample_intervals.hpp"
+
 namespace sextant {
 namespace {
 
@@ -87,15 +89,19 @@ Claim claim_similar_successes(const std::string& statement, const MethodRuns* a,
 
 Claim claim_speedup(const std::string& statement, const MethodRuns* slow, const MethodRuns* fast, double lo,
                     double hi, std::uint64_t seed) {
+  (void)seed;  // the interval is exact: no resampling
   if (!slow || !fast) return not_comparable(statement, "a method has no runs");
-  const Interval ratio = bootstrap_ratio_of_medians(row_values(slow->rows, "seconds_registration"),
-                                                    row_values(fast->rows, "seconds_registration"), seed);
+  // Paired: each pair registered by both methods is one observation (its time ratio).
+  const PairedRows p = pair_up(*slow, *fast);
+  const Interval ratio =
+      paired_ratio_interval(row_values(p.a, "seconds_registration"), row_values(p.b, "seconds_registration"));
   const Verdict v = std::isfinite(hi) ? verdict_in_band(ratio, lo, hi) : verdict_greater(ratio, lo);
   const std::string band = std::isfinite(hi)
                                ? "band [" + format_number(lo, 1) + ", " + format_number(hi, 1) + "]"
                                : "needs > " + format_number(lo, 1);
   return Claim{statement, v,
-               "median time " + slow->name + " / " + fast->name + " = " + describe(ratio, "×") + "; " + band};
+               "median per-pair time ratio " + slow->name + " / " + fast->name + " = " +
+                   describe(ratio, "×") + "; " + band};
 }
 
 Claim claim_smaller_on_solved(const std::string& statement, const MethodRuns* a, const MethodRuns* b,

@@ -46,8 +46,9 @@ Claim claim_more_successes(const std::string& statement, const MethodRuns* a, co
 /// "a's success rate is about b's": the difference within ±margin.
 Claim claim_similar_successes(const std::string& statement, const MethodRuns* a, const MethodRuns* b,
                               double margin);
-/// "fast is `band` times faster than slow": median(slow time) / median(fast time) ∈ [lo, hi]
-/// (lo only, hi = ∞, for "faster" without a magnitude).
+/// "fast is `band` times faster than slow": the median over the pairs both registered of
+/// slow time / fast time ∈ [lo, hi] (lo only, hi = ∞, for "faster" without a magnitude), with the
+/// exact order-statistic interval (paired_ratio_interval).
 Claim claim_speedup(const std::string& statement, const MethodRuns* slow, const MethodRuns* fast, double lo,
                     double hi, std::uint64_t seed);
 /// "a needs fewer / a is more accurate": paired mean of a − b of `key` < 0 on the pairs both solved.

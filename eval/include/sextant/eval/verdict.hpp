@@ -39,8 +39,12 @@ struct Interval {
 Interval percentile_interval(double estimate, std::vector<double>& draws, double confidence, std::size_t n);
 /// Wilson score interval of a proportion k / n (estimate k / n; NaN for n = 0).
 Interval wilson_interval(std::size_t successes, std::size_t n, double confidence = 0.95);
-/// Mean with a normal-approximation interval (mean ± z·s/√n); NaN for fewer than 2 finite values.
+/// Mean with the Student-t interval (mean ± t_{n−1}·s/√n, t_mean_interval); NaN for fewer than 2
+/// finite values.
 Interval mean_interval(const std::vector<double>& values, double confidence = 0.95);
+// Below kSmallSample (20) observations the three bootstraps below use the intervals of
+// small_sample_intervals.hpp instead, whose stated confidence they have (the order-statistic median
+// interval, the Student-t mean): a percentile bootstrap of 3–19 values covers less than it says.
 /// Percentile bootstrap of the median of the finite values.
 Interval bootstrap_median(const std::vector<double>& values, std::uint64_t seed, double confidence = 0.95,
                           int resamples = 2000);
