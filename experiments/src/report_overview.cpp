@@ -10,8 +10,10 @@ namespace {
 
 constexpr int kThesisExperiments = 19;
 
+using VerdictCounts = std::array<std::size_t, 4>;  // indexed by Verdict
+
 struct Counts {
-  std::array<std::size_t, 4> thesis{};  // indexed by Verdict
+  VerdictCounts thesis{}, sanity_by_verdict{};
   std::size_t sanity = 0, sanity_held = 0;
   std::size_t thesis_total() const { return thesis[0] + thesis[1] + thesis[2] + thesis[3]; }
 };
@@ -19,11 +21,13 @@ struct Counts {
 Counts count(const std::vector<Claim>& claims) {
   Counts c;
   for (const Claim& claim : claims) {
+    const auto v = static_cast<std::size_t>(claim.verdict);
     if (claim.kind == ClaimKind::sanity) {
       ++c.sanity;
       c.sanity_held += claim.verdict == Verdict::holds;
+      ++c.sanity_by_verdict[v];
     } else {
-      ++c.thesis[static_cast<std::size_t>(claim.verdict)];
+      ++c.thesis[v];
     }
   }
   return c;
@@ -77,14 +81,14 @@ std::string html_table(const std::string& caption, const std::string& rows) {
          rows + "</tbody></table>\n";
 }
 
-std::string verdict_counts_text(const Counts& c) {
+/// "3 claims: 1 hold, 1 do not hold, 1 inconclusive" (`noun` "claim" or "check").
+std::string verdict_counts_text(const VerdictCounts& counts, const std::string& noun) {
   const char* names[] = {"hold", "do not hold", "inconclusive", "not comparable"};
-  std::string text = std::to_string(c.thesis_total()) + (c.thesis_total() == 1 ? " claim: " : " claims: ");
-  bool first = true;
+  const std::size_t total = counts[0] + counts[1] + counts[2] + counts[3];
+  std::string text = std::to_string(total) + " " + noun + (total == 1 ? ": " : "s: ");
   for (std::size_t v = 0; v < 4; ++v) {
-    if (c.thesis[v] == 0 && v > 0) continue;
-    text += (first ? "" : ", ") + std::to_string(c.thesis[v]) + " " + names[v];
-    first = false;
+    if (counts[v] == 0 && v > 0) continue;
+    text += (v == 0 ? "" : ", ") + std::to_string(counts[v]) + " " + names[v];
   }
   return text;
 }
@@ -98,12 +102,13 @@ std::string headline_text(const std::vector<OverviewEntry>& entries) {
     group.insert(group.end(), e.claims.begin(), e.claims.end());
   }
   const Counts t = count(thesis), x = count(extensions);
-  std::string text = "The thesis (E1–E19): " + verdict_counts_text(t) + ".";
-  if (x.thesis_total() > 0) text += " Extensions beyond the thesis: " + verdict_counts_text(x) + ".";
-  const std::size_t sanity = t.sanity + x.sanity, held = t.sanity_held + x.sanity_held;
-  if (sanity > 0)
-    text += " Sanity checks of the experiments themselves: " + std::to_string(held) + " of " +
-            std::to_string(sanity) + " hold.";
+  std::string text = "The thesis (E1–E19): " + verdict_counts_text(t.thesis, "claim") + ".";
+  if (x.thesis_total() > 0)
+    text += " Extensions beyond the thesis: " + verdict_counts_text(x.thesis, "claim") + ".";
+  VerdictCounts sanity{};
+  for (std::size_t v = 0; v < 4; ++v) sanity[v] = t.sanity_by_verdict[v] + x.sanity_by_verdict[v];
+  if (t.sanity + x.sanity > 0)
+    text += " Sanity checks of the experiments themselves: " + verdict_counts_text(sanity, "check") + ".";
   return text;
 }
 

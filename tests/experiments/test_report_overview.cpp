@@ -27,7 +27,7 @@ TEST(ReportOverview, TheHeadlineCountsThesisClaimsApartFromExtensionsAndSanityCh
   EXPECT_EQ(
       headline_text(entries),
       "The thesis (E1–E19): 3 claims: 1 hold, 1 do not hold, 1 inconclusive. Extensions beyond the thesis: "
-      "1 claim: 1 hold. Sanity checks of the experiments themselves: 2 of 3 hold.");
+      "1 claim: 1 hold. Sanity checks of the experiments themselves: 3 checks: 2 hold, 1 do not hold.");
   const std::string html = overview_html(entries);
   EXPECT_NE(html.find("<p class=\"headline\">The thesis (E1–E19): 3 claims"), std::string::npos);
   EXPECT_LT(html.find("headline"), html.find("The thesis' experiments"));
