@@ -3,6 +3,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/synth/campus.hpp"
 #include "sextant/synth/settings.hpp"
+#include "simulated_odometry_dataset.hpp"
 
 namespace sextant {
 namespace {
@@ -11,10 +12,22 @@ namespace {
   throw InputError(config.file, "", "key 'dataset': the " + kind + " kind needs source: synthetic or folder");
 }
 
+/// The simulated odometry's settings (the campus reader checks keys, types and bounds).
+synth::OdometrySettings simulated_odometry_settings(const ExperimentConfig& config) {
+  YAML::Node campus(YAML::NodeType::Map);
+  campus["odometry"] = config.dataset.simulated_odometry;
+  return synth::read_campus_settings(campus, config.file).odometry;
+}
+
+bool has_simulated_odometry(const ExperimentConfig& config) {
+  return config.dataset.simulated_odometry.IsDefined() && !config.dataset.simulated_odometry.IsNull();
+}
+
 }  // namespace
 
 void check_experiment_dataset(const ExperimentConfig& config, const std::string& kind) {
   if (config.dataset.source == DatasetSource::kNone) no_source(config, kind);
+  if (has_simulated_odometry(config)) (void)simulated_odometry_settings(config);
   if (config.dataset.source == DatasetSource::kSynthetic) {
     std::uint64_t seed = config.dataset.seed;
     (void)synth::read_campus_settings(config.dataset.campus, config.file, &seed);
@@ -29,7 +42,12 @@ std::unique_ptr<Dataset> open_experiment_dataset(const ExperimentConfig& config,
           synth::read_campus_settings(config.dataset.campus, config.file, &seed);
       return std::make_unique<synth::CampusDataset>(synth::generate_campus(settings, seed));
     }
-    case DatasetSource::kFolder: return open_dataset(config.dataset.path);
+    case DatasetSource::kFolder: {
+      std::unique_ptr<Dataset> folder = open_dataset(config.dataset.path);
+      if (!has_simulated_odometry(config)) return folder;
+      return std::make_unique<SimulatedOdometryDataset>(
+          std::move(folder), simulated_odometry_settings(config), config.dataset.seed);
+    }
     case DatasetSource::kNone: break;
   }
   no_source(config, kind);

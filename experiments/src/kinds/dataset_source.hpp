@@ -1,7 +1,8 @@
 #pragma once
 // The dataset of an experiment config, for the kinds that read scans (registration, sequence):
 // `source: synthetic` builds the built-in campus in memory from `campus:` settings and `seed`;
-// `source: folder` opens a uos or KITTI folder (`path:`, relative to the config file).
+// `source: folder` opens a uos, KITTI or scan folder (`path:`, relative to the config file), with
+// `simulated_odometry:` an odometry simulated from its reference (simulated_odometry_dataset.hpp).
 #include <memory>
 #include <string>
 

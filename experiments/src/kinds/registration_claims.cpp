@@ -143,7 +143,17 @@ std::string profile_note(const ExperimentConfig& config, const std::vector<Metho
   }
   if (methods.empty()) lo = 0;
   const std::string n = lo == hi ? std::to_string(hi) : std::to_string(lo) + "–" + std::to_string(hi);
-  return "Profile: " + std::string(config.quick ? "quick" : "full") + " (n = " + n + " runs per method).";
+  std::string note =
+      "Profile: " + std::string(config.quick ? "quick" : "full") + " (n = " + n + " runs per method).";
+  if (config.dataset.source != DatasetSource::kFolder) return note;
+  note += " Dataset: the scans of " + config.dataset.path.filename().string() + " (a folder, not the campus)";
+  const YAML::Node simulated = config.dataset.simulated_odometry;
+  if (simulated.IsMap()) {
+    const std::string model = simulated["model"] ? simulated["model"].as<std::string>() : "thesis";
+    note += "; its odometry guess is simulated from the folder's reference with the campus' '" + model +
+            "' error model (seed " + std::to_string(config.dataset.seed) + "), not measured";
+  }
+  return note + ".";
 }
 
 }  // namespace sextant

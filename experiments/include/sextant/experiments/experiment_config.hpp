@@ -37,7 +37,10 @@ struct DatasetConfig {
   DatasetSource source = DatasetSource::kNone;
   std::filesystem::path path;  ///< folder (uos or KITTI) when source = folder; relative to the config file
   YAML::Node campus;           ///< synthetic campus settings (synth::CampusSettings), may be null
-  std::uint64_t seed = 1;      ///< generator seed of the synthetic campus
+  /// source folder: an odometry simulated from the folder's reference with these settings (the
+  /// campus' `odometry:` block, synth::OdometrySettings) and `seed`; null: the folder's own odometry
+  YAML::Node simulated_odometry;
+  std::uint64_t seed = 1;      ///< generator seed of the synthetic campus or of the simulated odometry
   YAML::Node node;             ///< the whole block, for the resolved run config
 };
 
