@@ -214,6 +214,30 @@ TEST(Cli, ReproduceRunsEveryConfigOfAFolderAndWritesTheReport) {
   EXPECT_NE(html.find("e18_metric_examples"), std::string::npos);
 }
 
+// An experiment that cannot start (its dataset folder is missing) is named and counted, the others
+// still run and are reported, and the exit status is 1.
+TEST(Cli, ReproduceRunsTheOtherExperimentsWhenOneCannotStart) {
+  TempDir tmp;
+  test::write_text(tmp / "configs" / "e99_selftest.yaml", test::selftest_yaml("e99_selftest", 2, 1, 0));
+  test::write_text(
+      tmp / "configs" / "e98_missing.yaml",
+      "name: e98_missing\nkind: registration\ndataset: {source: folder, path: no_such_folder}\n"
+      "methods: [{name: m, matcher: mlndt}]\nsweep: {pair: [0]}\nparams: {pairs: consecutive}\n");
+  const std::string command =
+      std::string("'") + SEXTANT_BINARY + "' reproduce --quick --no-progress --experiments '" +
+      (tmp / "configs").string() + "' --results '" + (tmp / "results").string() + "' --report '" +
+      (tmp / "report").string() + "' 2> '" + (tmp / "err.txt").string() + "' > /dev/null";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  const std::string err = test::read_text(tmp / "err.txt");
+  EXPECT_NE(err.find("e98_missing.yaml not run"), std::string::npos) << err;
+  EXPECT_NE(err.find("no_such_folder"), std::string::npos) << err;
+  EXPECT_NE(err.find("1 of 2 experiments not run"), std::string::npos) << err;
+  EXPECT_EQ(read_rows(tmp / "results" / "e99_selftest" / kRunsJsonl).rows.size(), 4u);
+  EXPECT_NE(test::read_text(tmp / "report" / "index.html").find("e99_selftest"), std::string::npos);
+}
+
 TEST(Cli, ABadConfigStopsWithFileLineAndKey) {
   TempDir tmp;
   test::write_text(tmp / "bad.yaml", test::selftest_yaml("bad", 2, 1, 0) + "colour: blue\n");

@@ -47,12 +47,24 @@ void add_reproduce_command(CLI::App& app, int& exit_code) {
       options.quick = args->quick;
       options.progress = !args->no_progress && verbosity() != Verbosity::kQuiet;
       int status = 0;
+      std::size_t not_run = 0;
       for (const auto& config : configs) {
-        const RunnerSummary s = run_experiment(config, options);
-        std::cout << s.experiment << ": " << s.executed << " runs executed, " << s.skipped
-                  << " already done, " << s.failed << " failed, " << s.seconds << " s\n";
-        if (s.failed > 0) status = 1;
+        // One experiment that cannot start (e.g. its dataset folder is missing) does not stop the
+        // others: it is named here, counted below, and the exit status says so.
+        try {
+          const RunnerSummary s = run_experiment(config, options);
+          std::cout << s.experiment << ": " << s.executed << " runs executed, " << s.skipped
+                    << " already done, " << s.failed << " failed, " << s.seconds << " s\n";
+          if (s.failed > 0) status = 1;
+        } catch (const InputError& e) {
+          std::cerr << "sextant: error: " << config.filename().string() << " not run: " << e.what() << "\n";
+          ++not_run;
+          status = 1;
+        }
       }
+      if (not_run > 0)
+        std::cerr << "sextant: " << not_run << " of " << configs.size()
+                  << " experiments not run (see above)\n";
       const ReportSummary r = write_report({args->results}, args->report);
       std::cout << "report: " << r.experiments << " experiments, " << r.tables << " tables, " << r.figures
                 << " figures, " << r.claims << " claims → " << r.index_html.string() << "\n";
