@@ -103,6 +103,18 @@ TEST(RegistrationExperiments, E2OnMulranQuickProfile) {
   EXPECT_NE(r.markdown.find("mulran_riverside02_excerpt"), std::string::npos);
 }
 
+// E3, E4 and E6 on the same real keyframes: every run ends with a row, the report states the dataset.
+TEST(RegistrationExperiments, E3E4E6OnMulranQuickProfiles) {
+  for (const std::string name :
+       {"e03_random_sampling_mulran", "e04_init_vs_layer_mulran", "e06_sampling_strategies_mulran"}) {
+    const QuickRun r(name);
+    EXPECT_EQ(r.summary.failed, 0u) << name;
+    EXPECT_EQ(r.rows.size(), r.summary.executed) << name;
+    EXPECT_GE(r.rows.size(), 16u) << name;  // ≥ 4 methods × the excerpt's 4 pairs
+    EXPECT_NE(r.markdown.find("Dataset: the scans of mulran_riverside02_excerpt"), std::string::npos) << name;
+  }
+}
+
 TEST(RegistrationExperiments, E4QuickProfile) {
   const QuickRun r("e04_init_vs_layer");
   ASSERT_EQ(r.summary.failed, 0u);

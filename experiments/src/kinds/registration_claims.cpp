@@ -143,10 +143,14 @@ std::string profile_note(const ExperimentConfig& config, const std::vector<Metho
   }
   if (methods.empty()) lo = 0;
   const std::string n = lo == hi ? std::to_string(hi) : std::to_string(lo) + "–" + std::to_string(hi);
+  return "Profile: " + std::string(config.quick ? "quick" : "full") + " (n = " + n + " runs per method)." +
+         dataset_note(config);
+}
+
+std::string dataset_note(const ExperimentConfig& config) {
+  if (config.dataset.source != DatasetSource::kFolder) return "";
   std::string note =
-      "Profile: " + std::string(config.quick ? "quick" : "full") + " (n = " + n + " runs per method).";
-  if (config.dataset.source != DatasetSource::kFolder) return note;
-  note += " Dataset: the scans of " + config.dataset.path.filename().string() + " (a folder, not the campus)";
+      " Dataset: the scans of " + config.dataset.path.filename().string() + " (a folder, not the campus)";
   const YAML::Node simulated = config.dataset.simulated_odometry;
   if (simulated.IsMap()) {
     const std::string model = simulated["model"] ? simulated["model"].as<std::string>() : "thesis";

@@ -60,5 +60,8 @@ Claim claim_beats_guess(const MethodRuns* m, const std::string& guess_name, std:
 
 /// "Profile: quick|full (n = …)" for section notes.
 std::string profile_note(const ExperimentConfig& config, const std::vector<MethodRuns>& methods);
+/// " Dataset: the scans of <folder> (…); its odometry guess is simulated …" for a folder dataset
+/// (empty for the campus); profile_note ends with it.
+std::string dataset_note(const ExperimentConfig& config);
 
 }  // namespace sextant

@@ -169,7 +169,8 @@ ReportSection init_layer_report(const ExperimentConfig& config, const Registrati
   ReportSection section;
   section.notes =
       "Profile: " + std::string(config.quick ? "quick" : "full") + " (n = " + std::to_string(pairs) +
-      " pairs per cell). Initial guess Z_init = f · Z_gt in parameter space; ML-NDT from start layer s "
+      " pairs per cell)." + dataset_note(config) +
+      " Initial guess Z_init = f · Z_gt in parameter space; ML-NDT from start layer s "
       "to the last layer, 3 iterations per layer, the last until convergence. Fail = not (" +
       params.success +
       "); error = mean translation error of the successes [cm]. The adaptive rows follow the thesis' "

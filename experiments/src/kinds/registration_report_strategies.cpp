@@ -244,7 +244,7 @@ ReportSection strategies_report(const ExperimentConfig& config, const Registrati
     // A sanity check of the dataset, not a test of the thesis: the campus' odometry is generated with
     // table 5.1's 77 cm mean error, so its errors cannot look zero-mean.
     section.claims.push_back(Claim{
-        "The campus odometry's errors are not zero-mean Gaussian (some parameter rejects), as its "
+        "The odometry guess's errors are not zero-mean Gaussian (some parameter rejects), as its "
         "error model (table 5.1's biased odometry) makes them",
         o_rejected ? Verdict::holds : Verdict::does_not_hold, normality_evidence(on), ClaimKind::sanity});
   }
