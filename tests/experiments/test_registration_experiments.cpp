@@ -115,6 +115,18 @@ TEST(RegistrationExperiments, E3E4E6OnMulranQuickProfiles) {
   }
 }
 
+// E7 on the same real keyframes: each repetition draws its odometry from the reference.
+TEST(RegistrationExperiments, E7OnMulranDrawsTheOdometryPerRepetition) {
+  const QuickRun r("e07_dead_reckoning_mulran");
+  ASSERT_EQ(r.summary.failed, 0u);
+  ASSERT_EQ(r.rows.size(), 2u);  // quick: 2 repetitions of the excerpt's 5 keyframes
+  EXPECT_NE(r.rows[0].value("end_xy_odometry"), r.rows[1].value("end_xy_odometry")) << "one draw per run";
+  EXPECT_NE(r.markdown.find("draws an odometry from the folder's reference"), std::string::npos)
+      << r.markdown;
+  EXPECT_NE(r.markdown.find("the scans of mulran_riverside02_excerpt instead of hannover1"),
+            std::string::npos);
+}
+
 TEST(RegistrationExperiments, E4QuickProfile) {
   const QuickRun r("e04_init_vs_layer");
   ASSERT_EQ(r.summary.failed, 0u);

@@ -12,6 +12,10 @@ namespace {
   throw InputError(config.file, "", "key 'dataset': the " + kind + " kind needs source: synthetic or folder");
 }
 
+bool has_simulated_odometry(const ExperimentConfig& config) {
+  return config.dataset.simulated_odometry.IsDefined() && !config.dataset.simulated_odometry.IsNull();
+}
+
 /// The simulated odometry's settings (the campus reader checks keys, types and bounds).
 synth::OdometrySettings simulated_odometry_settings(const ExperimentConfig& config) {
   YAML::Node campus(YAML::NodeType::Map);
@@ -19,11 +23,16 @@ synth::OdometrySettings simulated_odometry_settings(const ExperimentConfig& conf
   return synth::read_campus_settings(campus, config.file).odometry;
 }
 
-bool has_simulated_odometry(const ExperimentConfig& config) {
-  return config.dataset.simulated_odometry.IsDefined() && !config.dataset.simulated_odometry.IsNull();
-}
-
 }  // namespace
+
+std::optional<synth::OdometrySettings> simulated_odometry_model(const ExperimentConfig& config) {
+  if (config.dataset.source == DatasetSource::kSynthetic) {
+    std::uint64_t seed = config.dataset.seed;
+    return synth::read_campus_settings(config.dataset.campus, config.file, &seed).odometry;
+  }
+  if (has_simulated_odometry(config)) return simulated_odometry_settings(config);
+  return std::nullopt;
+}
 
 void check_experiment_dataset(const ExperimentConfig& config, const std::string& kind) {
   if (config.dataset.source == DatasetSource::kNone) no_source(config, kind);

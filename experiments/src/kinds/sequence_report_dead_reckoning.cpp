@@ -30,12 +30,17 @@ ReportSection dead_reckoning_report(const ExperimentConfig& config, const Sequen
       "the "
       "true first pose, without a filter. " +
       (params.odometry == SequenceOdometry::kSimulated
-           ? std::string("Each repetition draws new odometry noise from the campus' odometry model (seeded).")
+           ? std::string(
+                 config.dataset.source == DatasetSource::kSynthetic
+                     ? "Each repetition draws new odometry noise from the campus' odometry model (seeded)."
+                     : "Each repetition draws an odometry from the folder's reference with the campus' "
+                       "odometry error model (seeded): simulated, not measured.")
            : std::string("Odometry: the dataset's own.")) +
       " Deviations from the thesis: errors are horizontal (xy) because the odometry is 2D with z = 0 (the "
-      "thesis plots the (x, y, z) norm; our 3D error of the matcher is in the table); synthetic campus "
-      "instead "
-      "of hannover1.";
+      "thesis plots the (x, y, z) norm; our 3D error of the matcher is in the table); " +
+      (config.dataset.source == DatasetSource::kSynthetic
+           ? std::string("synthetic campus instead of hannover1.")
+           : "the scans of " + config.dataset.path.filename().string() + " instead of hannover1.");
 
   for (std::size_t m = 0; m < config.methods.size(); ++m) {
     std::vector<SequenceRun> mine;

@@ -45,8 +45,11 @@ SequenceParams read_sequence_params(const ExperimentConfig& config) {
   in.read("odometry", odometry);
   if (odometry == "simulated") {
     p.odometry = SequenceOdometry::kSimulated;
-    if (config.dataset.source != DatasetSource::kSynthetic)
-      in.fail("odometry", "key 'odometry': simulated odometry needs dataset source: synthetic (use dataset)");
+    const YAML::Node& model = config.dataset.simulated_odometry;
+    if (config.dataset.source != DatasetSource::kSynthetic && !(model.IsDefined() && !model.IsNull()))
+      in.fail("odometry",
+              "key 'odometry': simulated odometry needs dataset source: synthetic, or a folder with "
+              "simulated_odometry: (use dataset)");
   } else if (odometry == "dataset") {
     p.odometry = SequenceOdometry::kDataset;
   } else {

@@ -8,8 +8,9 @@
 //   params:
 //     first_scan: 0               # index of the sequence's first scan
 //     scans: 100                  # scans in the sequence (scans − 1 registrations)
-//     odometry: simulated         # simulated: redrawn per run from the campus' odometry model
-//                                 #   (synthetic only); dataset: the dataset's own odometry
+//     odometry: simulated         # simulated: redrawn per run from the campus' odometry model, or
+//                                 #   a folder's `simulated_odometry:` model applied to its
+//                                 #   reference; dataset: the dataset's own odometry
 //     filter: none                # none: chain the matcher (dead reckoning, E7);
 //                                 # kf: Table 3.3's linear KF, control = odometry increment (E9)
 //     kf: {sigma_translation: 0.8, sigma_rotation_deg: 1, alarm_translation: 2,
