@@ -158,6 +158,7 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
     entry.title = title;
     entry.thesis = config.thesis;
     entry.profile = profile_of(folders);
+    entry.real_data = config.dataset.source == DatasetSource::kFolder;
     entry.runs_expected = runs.size();
     std::vector<std::string> warnings;
     const std::vector<RunRow> rows = union_rows(folders, &warnings);

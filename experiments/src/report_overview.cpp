@@ -96,18 +96,22 @@ std::string verdict_counts_text(const VerdictCounts& counts, const std::string& 
 }  // namespace
 
 std::string headline_text(const std::vector<OverviewEntry>& entries) {
-  std::vector<Claim> thesis, extensions;
+  std::vector<Claim> campus, real, extensions;
   for (const OverviewEntry& e : entries) {
-    std::vector<Claim>& group = is_thesis_experiment(e) ? thesis : extensions;
+    std::vector<Claim>& group = !is_thesis_experiment(e) ? extensions : e.real_data ? real : campus;
     group.insert(group.end(), e.claims.begin(), e.claims.end());
   }
-  const Counts t = count(thesis), x = count(extensions);
+  const Counts t = count(campus), r = count(real), x = count(extensions);
   std::string text = "The thesis (E1–E19): " + verdict_counts_text(t.thesis, "claim") + ".";
+  if (r.thesis_total() > 0)
+    text = "The thesis (E1–E19) on the campus: " + verdict_counts_text(t.thesis, "claim") +
+           "; on real data: " + verdict_counts_text(r.thesis, "claim") + ".";
   if (x.thesis_total() > 0)
     text += " Extensions beyond the thesis: " + verdict_counts_text(x.thesis, "claim") + ".";
   VerdictCounts sanity{};
-  for (std::size_t v = 0; v < 4; ++v) sanity[v] = t.sanity_by_verdict[v] + x.sanity_by_verdict[v];
-  if (t.sanity + x.sanity > 0)
+  for (std::size_t v = 0; v < 4; ++v)
+    sanity[v] = t.sanity_by_verdict[v] + r.sanity_by_verdict[v] + x.sanity_by_verdict[v];
+  if (t.sanity + r.sanity + x.sanity > 0)
     text += " Sanity checks of the experiments themselves: " + verdict_counts_text(sanity, "check") + ".";
   return text;
 }

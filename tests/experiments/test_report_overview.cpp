@@ -33,6 +33,17 @@ TEST(ReportOverview, TheHeadlineCountsThesisClaimsApartFromExtensionsAndSanityCh
   EXPECT_LT(html.find("headline"), html.find("The thesis' experiments"));
 }
 
+TEST(ReportOverview, RealDataClaimsAreCountedApartFromTheCampus) {
+  std::vector<OverviewEntry> entries = {
+      entry("e02_accuracy", {{"a", Verdict::holds, "", ClaimKind::thesis}}),
+      entry("e02_accuracy_mulran", {{"a", Verdict::does_not_hold, "", ClaimKind::thesis},
+                                    {"b", Verdict::holds, "", ClaimKind::thesis}})};
+  entries[1].real_data = true;
+  EXPECT_EQ(
+      headline_text(entries),
+      "The thesis (E1–E19) on the campus: 1 claim: 1 hold; on real data: 2 claims: 1 hold, 1 do not hold.");
+}
+
 TEST(ReportOverview, WithoutExtensionsOrSanityChecksTheHeadlineSaysOnlyTheThesis) {
   const std::vector<OverviewEntry> entries = {
       entry("e05_x", {{"a", Verdict::not_comparable, "", ClaimKind::thesis}})};
