@@ -1,6 +1,7 @@
 #include "sextant/filters/sigma_points.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include <Eigen/QR>
 
@@ -34,6 +35,7 @@ class UnscentedRule final : public SigmaPointRule {
     sp.wc[0] += 1.0 - s_.alpha * s_.alpha + s_.beta;
     return sp;
   }
+  std::string parameters() const override { return "unscented (Table 4.2): 2n+1 points, " + s_.describe(); }
 
  private:
   UnscentedSettings s_;
@@ -49,6 +51,9 @@ class CubatureRule final : public SigmaPointRule {
     sp.wm = Eigen::VectorXd::Constant(2 * n, 0.5 / n);
     sp.wc = sp.wm;
     return sp;
+  }
+  std::string parameters() const override {
+    return "cubature (eqs. 4.69-4.70): 2n points ±√n·eᵢ, weights 1/(2n); no free parameter";
   }
 };
 
@@ -76,6 +81,10 @@ class StochasticIntegrationRule final : public SigmaPointRule {
     sp.wc = sp.wm;
     return sp;
   }
+  std::string parameters() const override {
+    return "stochastic integration (Table 4.4): N_max = " + std::to_string(s_.iterations) +
+           " draws of 2n points ±ρ·Q·eᵢ (random Q, ρ ~ χ(n+2)) and the centre";
+  }
 
  private:
   StochasticIntegrationSettings s_;
@@ -89,6 +98,16 @@ bool UnscentedSettings::valid(std::string* why) const {
   if (!kappa_three_minus_n && !(kappa > -1.0))
     return *why = "kappa must be > -1 (n + kappa > 0 for n >= 1)", false;
   return true;
+}
+
+std::string UnscentedSettings::describe() const {
+  const auto number = [](double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", v);
+    return std::string(buffer);
+  };
+  return "α = " + number(alpha) + ", β = " + number(beta) +
+         ", κ = " + (kappa_three_minus_n ? std::string("3 − n") : number(kappa));
 }
 
 bool StochasticIntegrationSettings::valid(std::string* why) const {

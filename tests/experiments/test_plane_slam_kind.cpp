@@ -247,6 +247,8 @@ TEST(PlaneSlamKind, ConfigErrorsNameTheKey) {
   expect_rejected("type: less", "type: smaller", "'type'");
   expect_rejected("report: accuracy", "report: accuracy\n  slam: {sigma_xy: -1}", "sigma");
   expect_rejected("params:", "sweep:\n  sigma: [1, 2]\nparams:", "'sigma'");
+  // Issue 25: under a p0_scale sweep the thesis' numbers must say at which scale they hold.
+  expect_rejected("params:", "sweep:\n  p0_scale: [1, 1000]\nparams:", "reference.p0_scale");
 }
 
 }  // namespace
@@ -260,6 +262,8 @@ struct QuickCase {
   std::size_t runs;
   const char* table;  ///< report table file stem
   std::size_t table_rows;
+  std::size_t methods;  ///< rows of the sigma-point table (0: no sigma-point filter, no table)
+  bool thesis_ukf;      ///< the `ukf` method is the thesis-era UKF, κ = 3 − n (issue 25)
 };
 
 class PlaneSlamQuick : public ::testing::TestWithParam<QuickCase> {};
@@ -284,17 +288,47 @@ TEST_P(PlaneSlamQuick, QuickProfileRunsAndReports) {
   EXPECT_GE(r.claims, 1u);
   const std::string table = test::read_text(tmp / "report" / c.config / (std::string(c.table) + ".md"));
   EXPECT_EQ(count_rows(table), c.table_rows) << table;
+  // Issue 25: each filter's sigma-point rule and parameters, one row per method.
+  const auto sigma_file = tmp / "report" / c.config / "sigma_points.md";
+  ASSERT_EQ(std::filesystem::exists(sigma_file), c.methods > 0);
+  if (c.methods == 0) return;
+  const std::string sigma = test::read_text(sigma_file);
+  EXPECT_EQ(count_rows(sigma), c.methods) << sigma;
+  EXPECT_EQ(sigma.find("| ukf | ukf | unscented (Table 4.2): 2n+1 points, α = 1, β = 0, κ = 3 − n |") !=
+                std::string::npos,
+            c.thesis_ukf)
+      << sigma;
+  if (std::string(c.config) == "e13_ekf_ukf_ckf_slam") {
+    // Issue 25: the thesis gives its maxima for P0 = 1e-6·I only; none at × 1e3 or × 1e6.
+    const auto thesis_max = [&](const char* p) {  // the ckf row's "max error m (thesis)" cell
+      const std::string t =
+          test::read_text(tmp / "report" / c.config / (std::string("errors_p0_") + p + ".md"));
+      const std::size_t row = t.find("| ckf | ");
+      if (row == std::string::npos) return std::string("no ckf row");
+      const std::size_t from = t.find(" | ", row + 8) + 3;
+      return t.substr(from, t.find(" |", from) - from);
+    };
+    EXPECT_EQ(thesis_max("1"), "3.00");
+    EXPECT_EQ(thesis_max("1000"), "n/a");
+    EXPECT_EQ(thesis_max("1000000"), "n/a");
+  }
+  if (c.thesis_ukf) {
+    EXPECT_NE(sigma.find("| ukf_alpha1 | ukf | unscented (Table 4.2): 2n+1 points, α = 1, β = 2, κ = 0 |"),
+              std::string::npos)
+        << sigma;
+  }
 }
 
-INSTANTIATE_TEST_SUITE_P(Experiments, PlaneSlamQuick,
-                         ::testing::Values(QuickCase{"e12_ekf_vs_ukf_slam", 6, "errors", 3},
-                                           QuickCase{"e13_ekf_ukf_ckf_slam", 18, "failures", 9},
-                                           QuickCase{"e14_larger_map_simulated_odometry", 4, "errors", 3},
-                                           QuickCase{"e16_rspkf_ukf_ckf_3d", 6, "errors", 4},
-                                           QuickCase{"e19_benchmark_filters", 4, "benchmark_metrics", 5}),
-                         [](const ::testing::TestParamInfo<QuickCase>& info) {
-                           return std::string(info.param.config).substr(0, 3);
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Experiments, PlaneSlamQuick,
+    ::testing::Values(QuickCase{"e12_ekf_vs_ukf_slam", 9, "errors", 4, 3, true},
+                      QuickCase{"e13_ekf_ukf_ckf_slam", 24, "failures", 12, 4, true},
+                      QuickCase{"e14_larger_map_simulated_odometry", 4, "errors", 3, 2, false},
+                      QuickCase{"e16_rspkf_ukf_ckf_3d", 8, "errors", 5, 4, true},
+                      QuickCase{"e19_benchmark_filters", 5, "benchmark_metrics", 6, 5, true}),
+    [](const ::testing::TestParamInfo<QuickCase>& info) {
+      return std::string(info.param.config).substr(0, 3);
+    });
 
 }  // namespace
 }  // namespace sextant

@@ -70,13 +70,16 @@ TEST(E15, QuickProfileRunsPairedFiltersAndComparesThem) {
   TempDir tmp;
   const RunnerSummary s = run_quick("e15_rspkf_vs_ukf_2d.yaml", tmp / "results");
   ASSERT_EQ(s.failed, 0u);
-  ASSERT_EQ(s.executed, 8u);  // 2 filters × 4 repetitions
+  ASSERT_EQ(s.executed, 12u);  // 3 filters (ukf κ = 3 − n, ukf_alpha1, rspkf) × 4 repetitions
   std::map<int, std::map<std::string, RunRow>> by_rep;
   for (const auto& r : read_rows(s.folder / kRunsJsonl).rows) by_rep[r.repetition][r.method] = r;
   ASSERT_EQ(by_rep.size(), 4u);
   for (const auto& [rep, methods] : by_rep) {
-    ASSERT_EQ(methods.size(), 2u);
-    const RunRow &ukf = methods.at("ukf"), &rspkf = methods.at("rspkf");
+    ASSERT_EQ(methods.size(), 3u);
+    const RunRow &ukf = methods.at("ukf"), &rspkf = methods.at("rspkf"), &alpha1 = methods.at("ukf_alpha1");
+    EXPECT_EQ(alpha1.seed, ukf.seed);
+    // Issue 25: the thesis-era UKF (κ = 3 − n) is another filter than α = 1, κ = 0, not a relabel.
+    EXPECT_NE(alpha1.value("mean_position_error_m"), ukf.value("mean_position_error_m"));
     EXPECT_EQ(ukf.seed, rspkf.seed);  // paired: the same noise
     // The same simulated run: same steps and the same dead reckoning.
     EXPECT_EQ(ukf.value("steps"), 600.0);
@@ -94,8 +97,17 @@ TEST(E15, QuickProfileRunsPairedFiltersAndComparesThem) {
   ASSERT_TRUE(rep.failed.empty()) << rep.failed.front();
   const auto folder = tmp / "report" / "e15_rspkf_vs_ukf_2d";
   for (const char* f : {"average_position_error.svg", "average_heading_error.svg", "map_and_paths.svg",
-                        "monte_carlo_errors.md", "monte_carlo_paired_difference.md"})
+                        "monte_carlo_errors.md", "monte_carlo_paired_difference.md", "sigma_points.md"})
     EXPECT_TRUE(std::filesystem::exists(folder / f)) << f;
+  // Issue 25: every filter's sigma-point parameters are printed.
+  const std::string sigma = test::read_text(folder / "sigma_points.md");
+  EXPECT_NE(sigma.find("| ukf | ukf | unscented (Table 4.2): 2n+1 points, α = 1, β = 0, κ = 3 − n |"),
+            std::string::npos)
+      << sigma;
+  EXPECT_NE(sigma.find("| ukf_alpha1 | ukf | unscented (Table 4.2): 2n+1 points, α = 1, β = 2, κ = 0 |"),
+            std::string::npos)
+      << sigma;
+  EXPECT_NE(sigma.find("N_max = 3"), std::string::npos) << sigma;
   const std::string summary = test::read_text(folder / "e15_rspkf_vs_ukf_2d.md");
   EXPECT_NE(summary.find("The RSPKF's average position error norm is below the UKF's"), std::string::npos);
   EXPECT_NE(summary.find("(95 %, n = 4)"), std::string::npos) << summary;

@@ -80,7 +80,7 @@ Scenario make_scenario() {
 
 // Runs the same random sequence through the filter and the exact KF; returns the worst
 // relative difference of mean and covariance over the run.
-double worst_difference(Filter& filter, const Scenario& s) {
+double worst_difference(Filter& filter, const Scenario& s, int landmarks = 3) {
   ExactKalman kf{s.A, s.B, s.C, s.x0, s.P0};
   EXPECT_TRUE(filter.initialize(s.x0, s.P0).ok());
   Rng rng(11);
@@ -91,7 +91,7 @@ double worst_difference(Filter& filter, const Scenario& s) {
     const double dP = (filter.covariance() - kf.P).norm() / kf.P.norm();
     worst = std::max({worst, dx, dP});
   };
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < landmarks; ++k) {
     const Eigen::VectorXd z = vec() * 5.0;
     EXPECT_TRUE(filter.augment(z, s.R).ok());
     kf.augment(z, s.R);
@@ -102,7 +102,7 @@ double worst_difference(Filter& filter, const Scenario& s) {
     EXPECT_TRUE(filter.predict(u, s.Q).ok());
     kf.predict(u, s.Q);
     compare();
-    const std::vector<int> ids{step % 3, (step + 1) % 3};
+    const std::vector<int> ids{step % landmarks, (step + 1) % landmarks};
     const std::vector<Eigen::VectorXd> zs{vec(), vec()};
     EXPECT_TRUE(filter.update(zs, s.R, ids).ok());
     kf.update(zs, s.R, ids);
@@ -139,6 +139,27 @@ TEST(LinearGaussian, EveryFilterMatchesTheExactKalmanFilter) {
     std::printf("[linear-gaussian] %-6s worst relative difference to the exact KF: %.2e\n", name.c_str(),
                 worst);
   }
+}
+
+// Issue 25: the thesis-era UKF (Julier and Uhlmann's κ = 3 − n, α = 1, β = 0; eq. 4.84) has the
+// centre weight W₀ = (3 − n)/3, −3 at n = 12 and −26 at n = 82 (40 landmarks). A negative weight
+// must not cost exactness on a linear-Gaussian problem, at any state size; nor the scaled
+// transform with α = 1e-3 (W₀ ≈ −10⁶).
+TEST(LinearGaussian, UnscentedVariantsWithNegativeCentreWeightsMatchTheExactKalmanFilter) {
+  const Scenario s = make_scenario();
+  const YAML::Node julier = YAML::Load("{alpha: 1.0, beta: 0.0, kappa_three_minus_n: true}");
+  const YAML::Node julier_beta = YAML::Load("{alpha: 1.0, beta: 2.0, kappa_three_minus_n: true}");
+  const YAML::Node scaled = YAML::Load("{alpha: 1.0e-3, beta: 2.0, kappa: 0.0}");
+  for (const int landmarks : {3, 40})
+    for (const YAML::Node& node : {julier, julier_beta, scaled}) {
+      auto filter = make_filter("ukf", s.model, node);
+      const double worst = worst_difference(*filter, s, landmarks);
+      // α = 1e-3 divides by n + λ = 1e-6·n: rounding of the residuals grows by 1e6.
+      const double tolerance = node["kappa"] ? 1e-6 : 1e-9;
+      EXPECT_LT(worst, tolerance) << landmarks << " landmarks, " << YAML::Dump(node);
+      std::printf("[linear-gaussian] ukf %s, %d landmarks: worst relative difference %.2e\n",
+                  filter->approximation().c_str(), landmarks, worst);
+    }
 }
 
 }  // namespace

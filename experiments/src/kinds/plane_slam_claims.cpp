@@ -17,6 +17,7 @@
 //   fails_more        share of repetitions with a failed filter step, a − b (Newcombe, paired) > 0
 // `point` picks the sweep point (p0_scale label); default: the first.
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "plane_slam_report.hpp"
@@ -99,17 +100,35 @@ std::vector<std::string> sweep_points(const ExperimentConfig& config) {
   return points;
 }
 
-std::vector<bool> failed(const PlaneSlamGroup& g) {
-  std::vector<bool> out;
-  for (double f : g.values("failed_steps")) out.push_back(std::isfinite(f) && f > 0.0);
+/// Per repetition: did the filter fail a step? Runs the failures ended count as failed.
+std::map<int, bool> failed(const PlaneSlamGroup& g) {
+  std::map<int, bool> out;
+  for (const RunRow* r : g.rows) {
+    const double f = r->value("failed_steps");
+    out[r->repetition] = std::isfinite(f) && f > 0.0;
+  }
+  for (const RunRow* r : g.ended) out[r->repetition] = true;
   return out;
+}
+
+/// The repetitions both groups have, paired (compare_paired_successes pairs by index).
+PairedRates paired_failures(const PlaneSlamGroup& a, const PlaneSlamGroup& b) {
+  const std::map<int, bool> fa = failed(a), fb = failed(b);
+  std::vector<bool> va, vb;
+  for (const auto& [rep, f] : fa) {
+    const auto it = fb.find(rep);
+    if (it == fb.end()) continue;
+    va.push_back(f);
+    vb.push_back(it->second);
+  }
+  return compare_paired_successes(va, vb);
 }
 
 Claim decide(const DeclaredClaim& c, const PlaneSlamRows& data, std::uint64_t seed) {
   Claim out{c.statement, Verdict::not_comparable, "", ClaimKind::thesis};
   const std::string point = c.point.empty() ? data.points.front() : c.point;
   const PlaneSlamGroup* a = data.find(c.a, point);
-  if (!a || a->rows.empty()) {
+  if (!a || (a->rows.empty() && (c.type != "fails_more" || a->ended.empty()))) {
     out.evidence = "no finished runs of " + c.a;
     return out;
   }
@@ -128,7 +147,7 @@ Claim decide(const DeclaredClaim& c, const PlaneSlamRows& data, std::uint64_t se
   std::vector<Verdict> verdicts;
   for (const std::string& name : c.b) {
     const PlaneSlamGroup* b = data.find(name, point);
-    if (!b || b->rows.empty()) {
+    if (!b || (b->rows.empty() && (c.type != "fails_more" || b->ended.empty()))) {
       verdicts.push_back(Verdict::not_comparable);
       out.evidence += (out.evidence.empty() ? "" : "; ") + ("no finished runs of " + name);
       continue;
@@ -140,7 +159,7 @@ Claim decide(const DeclaredClaim& c, const PlaneSlamRows& data, std::uint64_t se
       text = c.a + "/" + name + " " + c.measure + " = " + describe(r, "×") + ", band [" +
              number_text(c.band[0]) + ", " + number_text(c.band[1]) + "]";
     } else if (c.type == "fails_more") {
-      const PairedRates r = compare_paired_successes(failed(*a), failed(*b));
+      const PairedRates r = paired_failures(*a, *b);
       verdicts.push_back(verdict_greater(r.difference, 0.0));
       text = "runs with a failed step: " + describe(r);
     } else {
@@ -179,6 +198,26 @@ void check_plane_slam_reference(const ExperimentConfig& config, const PlaneSlamP
   const YAML::Node& ref = config.reference;
   if (!ref.IsDefined() || ref.IsNull()) return;
   if (!ref.IsMap()) throw InputError(config.file, at_line(yaml_line(ref)), "key 'reference' must be a map");
+  // With a p0_scale sweep the thesis' numbers belong to one of its points (E13: P0 = 1e-6·I).
+  const std::vector<std::string> points = sweep_points(config);
+  if (!points.empty() && ref.size() > 0) {
+    const YAML::Node at = ref["p0_scale"];
+    if (!at.IsDefined())
+      throw InputError(config.file, at_line(yaml_line(ref)),
+                       "key 'reference': with a p0_scale sweep, say at which p0_scale the thesis' numbers "
+                       "hold (reference.p0_scale)");
+    bool found = false;
+    for (const std::string& p : points) {
+      try {
+        found = found || (at.IsScalar() && std::stod(p) == at.as<double>());
+      } catch (const std::exception&) {
+      }
+    }
+    if (!found)
+      throw InputError(config.file, at_line(yaml_line(at)),
+                       "key 'p0_scale': '" + (at.IsScalar() ? at.Scalar() : std::string("?")) +
+                           "' is not a p0_scale value of the sweep");
+  }
   // Every leaf under reference is a number, null or text (table / figure ids); nested maps by name.
   for (const auto& entry : ref) {
     const YAML::Node v = entry.second;

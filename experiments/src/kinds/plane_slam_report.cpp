@@ -4,9 +4,11 @@
 #include <cstdio>
 #include <limits>
 
+#include "filter_parameters.hpp"
 #include "plane_slam_report.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/eval/verdict.hpp"
+#include "sextant/filters/plane_slam_model.hpp"
 
 namespace sextant {
 std::vector<double> PlaneSlamGroup::values(const std::string& name) const {
@@ -36,13 +38,16 @@ PlaneSlamRows collect_plane_slam_rows(const ExperimentConfig& config, const std:
     for (const YAML::Node& v : axis.values) data.points.push_back(v.IsScalar() ? v.Scalar() : YAML::Dump(v));
   if (data.points.empty()) data.points.push_back("");
   for (const std::string& point : data.points)
-    for (const MethodConfig& m : config.methods) data.groups.push_back({m.name, point, {}});
+    for (const MethodConfig& m : config.methods) data.groups.push_back({m.name, point, {}, {}});
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    if (!rows[i] || !rows[i]->ok) continue;
+    if (!rows[i]) continue;
+    // slam_run_failure's words for a filter that failed on more than half of its steps.
+    const bool ended = !rows[i]->ok && rows[i]->error.rfind("the filter failed ", 0) == 0;
+    if (!rows[i]->ok && !ended) continue;
     const auto it = runs[i].point.find(kP0ScaleAxis);
     const std::string point = it == runs[i].point.end() ? "" : it->second;
     for (PlaneSlamGroup& g : data.groups)
-      if (g.method == runs[i].method && g.point == point) g.rows.push_back(rows[i]);
+      if (g.method == runs[i].method && g.point == point) (ended ? g.ended : g.rows).push_back(rows[i]);
   }
   return data;
 }
@@ -116,6 +121,23 @@ std::optional<double> reference_value(const ExperimentConfig& config, const std:
   const YAML::Node v = ref[key][name];
   if (!v.IsDefined() || v.IsNull()) return std::nullopt;
   return v.as<double>();
+}
+
+bool reference_at_point(const ExperimentConfig& config, const std::string& point) {
+  if (point.empty()) return true;
+  const YAML::Node& ref = config.reference;
+  if (!ref.IsMap() || !ref["p0_scale"].IsDefined()) return false;
+  return std::stod(point) == ref["p0_scale"].as<double>();
+}
+
+std::optional<Table> plane_slam_sigma_point_table(const ExperimentConfig& config) {
+  std::vector<FilterMethodSettings> methods;
+  for (const MethodConfig& m : config.methods) {
+    const PlaneSlamMethod pm = read_plane_slam_method(m.node, config.file);
+    methods.push_back({m.name, pm.filter, pm.filter_settings});
+  }
+  if (!has_sigma_point_filter(methods)) return std::nullopt;
+  return sigma_point_table(methods, std::make_shared<PlaneSlamModel>(), config.file);
 }
 
 Cell cell_or_missing(double value, int precision) {

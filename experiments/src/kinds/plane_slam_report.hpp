@@ -30,6 +30,9 @@ struct PlaneSlamGroup {
   std::string method;
   std::string point;  ///< p0_scale label ("" without a sweep)
   std::vector<const RunRow*> rows;
+  /// Runs that ended as failed runs because the filter failed on most of its steps
+  /// (slam_run_failure): no trajectory to score, but a filter failure to count (E13's P0 study).
+  std::vector<const RunRow*> ended;
   const RunRow* first() const { return rows.empty() ? nullptr : rows.front(); }
   /// One value per repetition (NaN where missing).
   std::vector<double> values(const std::string& name) const;
@@ -96,6 +99,13 @@ ReportFigure time_figure(const PlaneSlamRows& data, const std::string& time, con
 
 /// Ω's block pattern of every information filter's first repetition, one image per map size asked for.
 std::vector<ReportFigure> information_figures(const PlaneSlamRows& data);
+
+/// Each method's sigma-point rule and parameters (filter_parameters.hpp), when some method is a
+/// sigma-point filter; nullopt otherwise.
+std::optional<Table> plane_slam_sigma_point_table(const ExperimentConfig& config);
+/// True when the thesis' numbers (config.reference) are for this sweep point: always without a
+/// sweep; with one, only at reference.p0_scale (E13: the thesis gives maxima for P0 = 1e-6·I only).
+bool reference_at_point(const ExperimentConfig& config, const std::string& point);
 
 /// Sanity checks: every filter's maximum and final error below the odometry's (paired over repetitions).
 std::vector<Claim> beats_odometry_claims(const PlaneSlamRows& data, std::uint64_t seed);

@@ -29,22 +29,27 @@ Table error_table(const ExperimentConfig& config, const PlaneSlamRows& data, con
       .add_number_column("inconsistent %", 1)
       .add_number_column("failed scans", 0)
       .add_number_column("map size", 0);
+  // The thesis' numbers only where it gives them (E13: P0 = 1e-6·I, not × 1e3 or × 1e6).
+  const bool thesis_here = reference_at_point(config, point);
+  if (!thesis_here && config.reference.IsMap() && config.reference["p0_scale"].IsScalar())
+    t.note += " The thesis gives its numbers for " + point_text(config.reference["p0_scale"].Scalar()) +
+              " only: n/a here.";
+  const auto thesis = [&](const char* key, const std::string& name) {
+    return thesis_here ? cell_or_missing(reference_value(config, key, name)) : Cell::text("n/a");
+  };
   const auto groups = data.at(point);
   if (!groups.empty()) {
     const PlaneSlamGroup& g = *groups.front();
-    t.add_row({Cell::text("odometry"), cell_or_missing(median_of(g.values("odometry_max_error_m"))),
-               cell_or_missing(reference_value(config, "max_error_m", "odometry")),
-               cell_or_missing(median_of(g.values("odometry_max_error_scan"))),
-               cell_or_missing(reference_value(config, "max_error_scan", "odometry")),
-               cell_or_missing(median_of(g.values("odometry_final_error_m"))),
-               cell_or_missing(median_of(g.values("odometry_mean_error_m")))});
+    t.add_row(
+        {Cell::text("odometry"), cell_or_missing(median_of(g.values("odometry_max_error_m"))),
+         thesis("max_error_m", "odometry"), cell_or_missing(median_of(g.values("odometry_max_error_scan"))),
+         thesis("max_error_scan", "odometry"), cell_or_missing(median_of(g.values("odometry_final_error_m"))),
+         cell_or_missing(median_of(g.values("odometry_mean_error_m")))});
   }
   for (const PlaneSlamGroup* g : groups) {
     t.add_row({Cell::text(g->method), cell_or_missing(median_of(g->values("max_error_m"))),
-               cell_or_missing(reference_value(config, "max_error_m", g->method)),
-               cell_or_missing(median_of(g->values("max_error_scan"))),
-               cell_or_missing(reference_value(config, "max_error_scan", g->method)),
-               cell_or_missing(median_of(g->values("final_error_m"))),
+               thesis("max_error_m", g->method), cell_or_missing(median_of(g->values("max_error_scan"))),
+               thesis("max_error_scan", g->method), cell_or_missing(median_of(g->values("final_error_m"))),
                cell_or_missing(median_of(g->values("mean_error_m"))),
                cell_or_missing(median_of(g->values("mean_nees"))),
                cell_or_missing(100.0 * median_of(g->values("inconsistent_fraction"))),
@@ -62,10 +67,13 @@ Table failure_table(const PlaneSlamRows& data) {
       "loses positive definiteness beyond)";
   t.label = "failures";
   t.note =
-      "runs failed = repetitions with at least one non-ok filter step; counts are summed over repetitions.";
+      "runs failed = repetitions with at least one non-ok filter step; of them, ended = runs in which the "
+      "filter failed on more than half of its steps (with failures_are_results, E13, kept as rows; otherwise "
+      "failed runs whose steps are not in the other columns); counts are summed over repetitions.";
   t.add_column("p0_scale")
       .add_column("method")
       .add_number_column("runs failed", 0)
+      .add_number_column("of them ended", 0)
       .add_number_column("runs", 0)
       .add_number_column("not pos. def. steps", 0)
       .add_number_column("Cholesky failures", 0)
@@ -73,18 +81,23 @@ Table failure_table(const PlaneSlamRows& data) {
       .add_number_column("max error m (median)", 2)
       .add_number_column("final error m (median)", 2);
   for (const std::string& point : data.points) {
-    for (const PlaneSlamGroup* g : data.at(point)) {
-      double failed_runs = 0, npd = 0, chol = 0, first = NAN;
+    for (const PlaneSlamGroup& group : data.groups) {
+      if (group.point != point || (group.rows.empty() && group.ended.empty())) continue;
+      const PlaneSlamGroup* g = &group;
+      double ended = static_cast<double>(g->ended.size());
+      double failed_runs = ended, npd = 0, chol = 0, first = NAN;
       for (const RunRow* r : g->rows) {
+        if (r->value("ended_by_failures") > 0) ++ended;  // failures_are_results: kept as a row
         if (r->value("failed_steps") > 0) ++failed_runs;
         npd += r->value("not_positive_definite");
         chol += r->value("cholesky_failures");
         const double f = r->value("first_failure_scan");
         if (std::isfinite(f) && !(f >= first)) first = f;
       }
-      t.add_row({Cell::text(point), Cell::text(g->method), Cell::number(failed_runs),
-                 Cell::number(static_cast<double>(g->rows.size())), Cell::number(npd), Cell::number(chol),
-                 cell_or_missing(first), cell_or_missing(median_of(g->values("max_error_m"))),
+      t.add_row({Cell::text(point), Cell::text(g->method), Cell::number(failed_runs), Cell::number(ended),
+                 Cell::number(static_cast<double>(g->rows.size() + g->ended.size())), Cell::number(npd),
+                 Cell::number(chol), cell_or_missing(first),
+                 cell_or_missing(median_of(g->values("max_error_m"))),
                  cell_or_missing(median_of(g->values("final_error_m")))});
     }
   }
@@ -124,6 +137,7 @@ ReportSection accuracy_report(const ExperimentConfig& config, const PlaneSlamPar
                               const PlaneSlamRows& data) {
   ReportSection section;
   section.notes = common_notes(config, params, data);
+  if (auto sigma = plane_slam_sigma_point_table(config)) section.tables.push_back(*sigma);
   for (const std::string& point : data.points) {
     section.tables.push_back(error_table(config, data, point));
     if (data.at(point).empty()) continue;

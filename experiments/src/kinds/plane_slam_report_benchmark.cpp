@@ -60,19 +60,33 @@ ReportFigure metric_figure(const PlaneSlamRows& data, const std::string& name, c
   double top = 0.0;
   for (const PlaneSlamGroup* g : data.at(data.points.front())) {
     const auto& y = series_or_empty(*g->first(), name);
-    for (double v : y)
-      if (std::isfinite(v)) top = std::max(top, v);
-    plot.add_line(g->method + " (σ = " + number_text(g->first()->value(value), 3) + ")", scan_axis(y.size()),
-                  y);
+    double peak = 0.0;
+    std::size_t at = 0;
+    for (std::size_t k = 0; k < y.size(); ++k)
+      if (std::isfinite(y[k]) && y[k] > peak) peak = y[k], at = k;
+    top = std::max(top, peak);
+    // The peak in the legend: a one-relation spike (SEIF's at a loop closure) is a hairline.
+    plot.add_line(g->method + " (σ = " + number_text(g->first()->value(value), 3) + ", peak " +
+                      number_text(peak, 2) + " at " + std::to_string(at) + ")",
+                  scan_axis(y.size()), y);
   }
   distinguish_series(plot);  // UKF and CKF coincide almost everywhere; the revisit lines stay plain
+  // Headroom above the highest peak, up to a round number, and the revisit lines over the whole
+  // height: a spike whose top met the end of the grey lines read as clipped (issue 25).
+  if (top > 0.0) {
+    const double step = 0.5 * std::pow(10.0, std::floor(std::log10(top)));
+    plot.y_max = std::ceil(1.08 * top / step) * step;
+  }
   for (std::size_t k = 0; k < revisits.size(); ++k)
     plot.series.push_back({k == 0 ? "loop closure (revisit start)" : "",
                            {double(revisits[k]), double(revisits[k])},
-                           {0.0, top},
+                           {0.0, std::isfinite(plot.y_max) ? plot.y_max : top},
                            PlotSeries::Style::line,
                            "#999999"});
-  return {id, caption + " (repetition 1; σ in the legend is the metric over the whole run)",
+  return {id,
+          caption +
+              " (repetition 1; σ in the legend is the metric over the whole run, the peak its largest "
+              "value and where)",
           render_svg(plot)};
 }
 
@@ -135,6 +149,7 @@ ReportSection benchmark_report(const ExperimentConfig& config, const PlaneSlamPa
   section.notes += " Loop closures on this route (revisit radius " + number_text(params.revisit_radius, 0) +
                    " m, gap " + std::to_string(params.revisit_gap) + " scans): scans " + join(revisits) + ".";
 
+  if (auto sigma = plane_slam_sigma_point_table(config)) section.tables.push_back(*sigma);
   section.tables.push_back(metrics_table(config, data, "", "Wulf and Kümmerle metrics over each filter's run",
                                          "benchmark_metrics"));
   if (params.compare_scans > 0)

@@ -90,6 +90,7 @@ PlaneSlamParams read_plane_slam_params(const ExperimentConfig& config) {
   p.revisit_gap = read_count(in, "revisit_gap", p.revisit_gap);
   p.spike_window = read_count(in, "spike_window", p.spike_window);
   p.compare_scans = read_count(in, "compare_scans", 0);
+  in.read("failures_are_results", p.failures_are_results);
   if (in.has("slam")) {
     const YAML::Node slam = in.child("slam");
     (void)read_plane_slam_settings(slam, config.file);  // errors name the line of the key

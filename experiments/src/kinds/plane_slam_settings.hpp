@@ -25,6 +25,9 @@
 //     information_at: [118, 0] # information filters: block pattern of Ω when the map first
 //                              # reaches these sizes (0: after the last scan)
 //     nees_probability: 0.99   # a step is inconsistent when NEES > χ²₆ quantile of this
+//     failures_are_results: false  # true (E13's P0 study): a filter that fails on most of its steps
+//                              # is the measured outcome, an ok row with its failure counts
+//                              # (ended_by_failures = 1), not a failed run (slam_run_failure)
 //     compare_scans: 120      # also compute the metrics over the first N scans (prefix_… values), so
 //                              # filters run over different lengths compare on a common prefix
 //     claims: [...]            # the thesis' comparative claims, decided on our rows (claims.hpp)
@@ -71,12 +74,13 @@ struct PlaneSlamParams {
   bool marginal_nees = false;      ///< also record the NEES from the exact marginal (SEIF: of Ω)
   std::size_t ellipse_every = 10;  ///< report: one pose ellipse every N scans
   // E19: loop closures on the route and spikes of the relative errors (sequence_analysis.hpp).
-  double revisit_radius = 12.0;   ///< [m]
-  std::size_t revisit_gap = 40;   ///< scans
-  double spike_threshold = 5.0;   ///< robust z-score
-  std::size_t spike_window = 10;  ///< a spike within ±N scans of a revisit start is "at a loop closure"
-  std::size_t compare_scans = 0;  ///< > 0: the metrics also over the first N scans ("prefix_…" values)
-  YAML::Node claims;              ///< sequence or null
+  double revisit_radius = 12.0;       ///< [m]
+  std::size_t revisit_gap = 40;       ///< scans
+  double spike_threshold = 5.0;       ///< robust z-score
+  std::size_t spike_window = 10;      ///< a spike within ±N scans of a revisit start is "at a loop closure"
+  bool failures_are_results = false;  ///< a filter failing on most steps is an ok row (E13), not a failed run
+  std::size_t compare_scans = 0;      ///< > 0: the metrics also over the first N scans ("prefix_…" values)
+  YAML::Node claims;                  ///< sequence or null
   HybridParams hybrid;
 
   bool valid(std::string* why) const;

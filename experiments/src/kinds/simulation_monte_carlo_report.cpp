@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 
+#include "filter_parameters.hpp"
 #include "registration_report.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/verdict.hpp"
@@ -71,6 +72,13 @@ ReportSection monte_carlo_report(const ExperimentConfig& config, const MonteCarl
       "does not give them); we read Q = R = diag(1, π/180) as the σ's of the stated noise, so the filters "
       "use "
       "Q = diag(σ_V², σ_γ²), R = diag(σ_r², σ_b²); errors are averaged over every control step of a run.";
+
+  std::vector<FilterMethodSettings> filters;
+  for (const auto& m : config.methods)
+    filters.push_back(
+        {m.name, m.node["filter"].as<std::string>(), m.node["settings"] ? m.node["settings"] : YAML::Node()});
+  section.tables.push_back(
+      sigma_point_table(filters, std::make_shared<RangeBearingModel>(p.sim.model()), config.file));
 
   // Fig. 5.35: average position / orientation error norms against time.
   XYPlot position{

@@ -77,6 +77,10 @@ class Filter {
   /// approximation (seif.hpp). Unknown indices throw std::out_of_range.
   virtual Eigen::MatrixXd joint_covariance(const std::vector<int>& landmarks) const;
   virtual int num_landmarks() const = 0;
+  /// How the filter carries the Gaussian through the nonlinear models, with its free parameters
+  /// (the reports print it per method). Default: linearised by Jacobians, no sigma points (EKF,
+  /// SEIF, EIF, ESEIF); the sigma-point filters name their rule (sigma_points.hpp).
+  virtual std::string approximation() const;
 
   Eigen::VectorXd pose() const { return mean().head(model().pose_dim()); }
   const FilterSummary& summary() const { return summary_; }

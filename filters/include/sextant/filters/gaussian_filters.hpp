@@ -63,6 +63,7 @@ class SigmaPointFilter final : public MomentFilter {
                    std::unique_ptr<SigmaPointRule> rule, GaussianFilterSettings settings = {},
                    std::uint64_t seed = 1);
   std::string name() const override { return name_; }
+  std::string approximation() const override { return rule_->parameters(); }
   StepResult predict(const Eigen::VectorXd& u, const Eigen::MatrixXd& Q) override;
   StepResult update(const std::vector<Eigen::VectorXd>& zs, const Eigen::MatrixXd& R,
                     const std::vector<int>& associations) override;
