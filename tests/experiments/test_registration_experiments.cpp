@@ -200,6 +200,19 @@ TEST(RegistrationFigures, MeanErrorFigureIsAGroupedBarChart) {
   EXPECT_EQ(f.svg.find(">α</text>"), std::string::npos);
 }
 
+// Fig. 5.10 averages each method over the pairs it solved: the legend says how many (issue 25).
+TEST(RegistrationFigures, Fig510LegendCarriesTheSuccessRate) {
+  RegistrationStats stats;
+  stats.count = 20, stats.successes = 17, stats.success_rate = 0.85;
+  EXPECT_EQ(fig_5_10_legend("ndt", stats, true), "ndt (success 85 %, 17/20 pairs)");
+  EXPECT_EQ(fig_5_10_legend("odometry", stats, false), "odometry (all 20 pairs; 85 % within the criterion)");
+  EXPECT_EQ(fig_5_10_legend("x", RegistrationStats{}, true), "x (success – %, 0/0 pairs)");
+  const ReportFigure f =
+      mean_error_figure("fig_5_10_translation", "caption", "Fig. 5.10 (a)",
+                        {fig_5_10_legend("ndt", stats, true)}, {{1, 2, 3, 0.1, 0.1, 0.1}}, true);
+  EXPECT_NE(f.svg.find("ndt (success 85 %, 17/20 pairs)"), std::string::npos) << f.svg;
+}
+
 TEST(RegistrationExperiments, E6QuickProfile) {
   const QuickRun r("e06_sampling_strategies");
   ASSERT_EQ(r.summary.failed, 0u);
