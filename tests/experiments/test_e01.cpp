@@ -177,16 +177,17 @@ TEST(BasinAnalysis, SettleIterationAndJitter) {
 
 // Fig. 5.5's "few iterations" is counted in ML-NDT's finest layer: the thesis' three iterations in
 // each coarser layer (§3.2) come first whatever the solver does.
-TEST(BasinAnalysis, SettleInLastLayerSkipsTheFixedCoarseIterations) {
+TEST(BasinAnalysis, IterationsInLastLayerSkipTheFixedCoarseIterations) {
   RunRow row;
   row.series["layer"] = {1, 1, 1, 2, 2, 2, 3, 3, 3, 4, 4, 4, 4};  // iterates 1–9 coarse, 10–13 finest
-  EXPECT_EQ(settle_in_last_layer(row, 10.0), 1.0);  // settled at the finest layer's first iterate
-  EXPECT_EQ(settle_in_last_layer(row, 13.0), 4.0);
-  EXPECT_EQ(settle_in_last_layer(row, 5.0), 0.0);  // settled already in layer 2
-  EXPECT_TRUE(std::isnan(settle_in_last_layer(row, NAN)));
-  row.series["layer"] = {0, 0, 0, 0, 0};  // single-grid NDT: every iterate counts
-  EXPECT_EQ(settle_in_last_layer(row, 3.0), 3.0);
-  EXPECT_EQ(settle_in_last_layer(RunRow{}, 3.0), 3.0);  // no layer series
+  EXPECT_EQ(iterations_in_last_layer(row), 4.0);
+  row.series["layer"] = {2, 2, 2, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4, 4};
+  EXPECT_EQ(iterations_in_last_layer(row), 9.0);  // a slow finest layer: the claim can fail
+  row.series["layer"] = {0, 0, 0, 0, 0};          // single-grid NDT: every iteration counts
+  EXPECT_EQ(iterations_in_last_layer(row), 5.0);
+  RunRow plain;
+  plain.values["iterations"] = 7;
+  EXPECT_EQ(iterations_in_last_layer(plain), 7.0);  // no layer series
 }
 
 TEST(BasinAnalysis, BasinRadiusStopsAtFirstFailingValue) {

@@ -50,13 +50,12 @@ double settle_iteration(const std::vector<std::pair<double, double>>& errors, co
   return static_cast<double>(k);
 }
 
-double settle_in_last_layer(const RunRow& row, double settle) {
-  if (!std::isfinite(settle)) return kNaN;
+double iterations_in_last_layer(const RunRow& row) {
   const std::vector<double>& layer = series_or_empty(row, "layer");
-  if (layer.empty()) return settle;
-  std::size_t first = layer.size() - 1;  // trace entry k is iterate k + 1
-  while (first > 0 && layer[first - 1] == layer.back()) --first;
-  return std::max(0.0, settle - static_cast<double>(first));
+  if (layer.empty()) return row.value("iterations");
+  std::size_t k = 0;
+  while (k < layer.size() && layer[layer.size() - 1 - k] == layer.back()) ++k;
+  return static_cast<double>(k);
 }
 
 double post_settle_jitter_cm(const RunRow& row, double settle) {
@@ -92,7 +91,7 @@ std::vector<BasinRun> basin_runs(const std::vector<RunSpec>& runs, const std::ve
     r.seconds = row.value("seconds_registration");
     r.settle = r.success ? settle_iteration(iterate_errors(row), criterion) : kNaN;
     r.jitter_cm = post_settle_jitter_cm(row, r.settle);
-    r.settle_last_layer = settle_in_last_layer(row, r.settle);
+    r.last_layer_iterations = iterations_in_last_layer(row);
     r.row = &row;
     out.push_back(r);
   }
