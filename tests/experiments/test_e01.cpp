@@ -175,6 +175,21 @@ TEST(BasinAnalysis, SettleIterationAndJitter) {
   EXPECT_TRUE(std::isnan(settle_iteration(iterate_errors(row_with_trace({0.2, 0.3})), c)));
 }
 
+// Fig. 5.5's "few iterations" is counted in ML-NDT's finest layer: the thesis' three iterations in
+// each coarser layer (§3.2) come first whatever the solver does.
+TEST(BasinAnalysis, IterationsInLastLayerSkipTheFixedCoarseIterations) {
+  RunRow row;
+  row.series["layer"] = {1, 1, 1, 2, 2, 2, 3, 3, 3, 4, 4, 4, 4};  // iterates 1–9 coarse, 10–13 finest
+  EXPECT_EQ(iterations_in_last_layer(row), 4.0);
+  row.series["layer"] = {2, 2, 2, 3, 3, 3, 4, 4, 4, 4, 4, 4, 4, 4, 4};
+  EXPECT_EQ(iterations_in_last_layer(row), 9.0);  // a slow finest layer: the claim can fail
+  row.series["layer"] = {0, 0, 0, 0, 0};          // single-grid NDT: every iteration counts
+  EXPECT_EQ(iterations_in_last_layer(row), 5.0);
+  RunRow plain;
+  plain.values["iterations"] = 7;
+  EXPECT_EQ(iterations_in_last_layer(plain), 7.0);  // no layer series
+}
+
 TEST(BasinAnalysis, BasinRadiusStopsAtFirstFailingValue) {
   // Offsets 0, 1, 2, 3 with 2 runs each: 2/2, 1/2, 0/2, 2/2 → at rate 0.5 the radius is 1.
   const std::vector<double> v{0, 0, 1, 1, 2, 2, 3, 3};

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "../../experiments/src/kinds/registration_adaptive.hpp"
+#include "../../experiments/src/kinds/registration_claims.hpp"
 #include "../../experiments/src/kinds/registration_figures.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/experiments/report.hpp"
@@ -240,6 +241,56 @@ TEST(RegistrationFigures, MeanErrorFigureIsAGroupedBarChart) {
                             ">mean error [cm]</text>", ">Fig. 5.10 (a)</text>"})
     EXPECT_NE(f.svg.find(label), std::string::npos) << label;
   EXPECT_EQ(f.svg.find(">α</text>"), std::string::npos);
+}
+
+// Fig. 5.10 averages each method over the pairs it solved: the legend says how many (issue 25).
+TEST(RegistrationFigures, Fig510LegendCarriesTheSuccessRate) {
+  RegistrationStats stats;
+  stats.count = 20, stats.successes = 17, stats.success_rate = 0.85;
+  EXPECT_EQ(fig_5_10_legend("ndt", stats, true), "ndt (success 85 %, 17/20 pairs)");
+  EXPECT_EQ(fig_5_10_legend("odometry", stats, false), "odometry (all 20 pairs; 85 % within the criterion)");
+  EXPECT_EQ(fig_5_10_legend("x", RegistrationStats{}, true), "x (success – %, 0/0 pairs)");
+  const ReportFigure f =
+      mean_error_figure("fig_5_10_translation", "caption", "Fig. 5.10 (a)",
+                        {fig_5_10_legend("ndt", stats, true)}, {{1, 2, 3, 0.1, 0.1, 0.1}}, true);
+  EXPECT_NE(f.svg.find("ndt (success 85 %, 17/20 pairs)"), std::string::npos) << f.svg;
+}
+
+// Table 5.9: FBS 100 % against 97 / 99 % on 100 pairs. "More often" cannot hold even on the
+// thesis' own counts; "no more than 5 points fewer" holds on them and fails on a clearly worse FBS.
+TEST(RegistrationClaims, NonInferiorSuccessCanGoEitherWay) {
+  std::vector<RunRow> storage(300);
+  const auto method = [&](const std::string& name, std::size_t offset, std::size_t successes) {
+    MethodRuns m;
+    m.name = name;
+    for (std::size_t i = 0; i < 100; ++i) {
+      RunRow& r = storage[offset + i];
+      r.values["success"] = i < successes ? 1.0 : 0.0;
+      m.rows.push_back(&r);
+      m.by_point["pair=" + std::to_string(i)] = &r;
+    }
+    return m;
+  };
+  const MethodRuns fbs = method("fbs", 0, 100), regular = method("regular", 100, 97),
+                   worse = method("worse", 200, 80);
+  EXPECT_EQ(claim_more_successes("", &fbs, &regular).verdict, Verdict::inconclusive);
+  EXPECT_EQ(claim_not_fewer_successes("", &fbs, &regular, 0.05).verdict, Verdict::holds);
+  EXPECT_EQ(claim_not_fewer_successes("", &worse, &fbs, 0.05).verdict, Verdict::does_not_hold);
+}
+
+// Fig. 5.14's "mean error below 2 cm": with a heavy tail the plain mean's interval cannot fit
+// inside ±2 cm; the trimmed mean's can, and it still fails when the bulk is off.
+TEST(RegistrationClaims, TrimmedMeanBandCanGoEitherWay) {
+  std::vector<double> v;
+  for (int k = 0; k < 90; ++k) v.push_back(static_cast<double>(k % 5 - 2));
+  for (int k = 0; k < 10; ++k) v.push_back(k % 2 ? 150.0 : -150.0);
+  EXPECT_NEAR(trimmed_mean(v, 0.1), 0.0, 1e-12);
+  EXPECT_EQ(verdict_in_band(mean_interval(v), -2.0, 2.0), Verdict::inconclusive);
+  EXPECT_EQ(verdict_in_band(bootstrap_trimmed_mean(v, 0.1, 7), -2.0, 2.0), Verdict::holds);
+  for (int k = 0; k < 90; ++k) v[static_cast<std::size_t>(k)] += 5.0;
+  EXPECT_EQ(verdict_in_band(bootstrap_trimmed_mean(v, 0.1, 7), -2.0, 2.0), Verdict::does_not_hold);
+  EXPECT_TRUE(std::isnan(trimmed_mean({}, 0.1)));
+  EXPECT_EQ(trimmed_mean({1, 2, 3, 4, 100}, 0.2), 3.0);
 }
 
 TEST(RegistrationExperiments, E6QuickProfile) {

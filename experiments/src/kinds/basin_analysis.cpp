@@ -50,6 +50,14 @@ double settle_iteration(const std::vector<std::pair<double, double>>& errors, co
   return static_cast<double>(k);
 }
 
+double iterations_in_last_layer(const RunRow& row) {
+  const std::vector<double>& layer = series_or_empty(row, "layer");
+  if (layer.empty()) return row.value("iterations");
+  std::size_t k = 0;
+  while (k < layer.size() && layer[layer.size() - 1 - k] == layer.back()) ++k;
+  return static_cast<double>(k);
+}
+
 double post_settle_jitter_cm(const RunRow& row, double settle) {
   if (!std::isfinite(settle)) return kNaN;
   const std::vector<double>& xi = series_or_empty(row, "trace_xi");
@@ -83,6 +91,7 @@ std::vector<BasinRun> basin_runs(const std::vector<RunSpec>& runs, const std::ve
     r.seconds = row.value("seconds_registration");
     r.settle = r.success ? settle_iteration(iterate_errors(row), criterion) : kNaN;
     r.jitter_cm = post_settle_jitter_cm(row, r.settle);
+    r.last_layer_iterations = iterations_in_last_layer(row);
     r.row = &row;
     out.push_back(r);
   }

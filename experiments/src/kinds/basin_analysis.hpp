@@ -35,6 +35,9 @@ struct BasinRun {
   double iterations = 0, seconds = 0;
   double settle = 0;     ///< iterations until the pose stays within the criterion (NaN if it never does)
   double jitter_cm = 0;  ///< mean translation change per iteration after settling [cm] (NaN: none)
+  /// Iterations the run spent in its finest (last) layer until the solver stopped; for a
+  /// single-grid NDT every iteration.
+  double last_layer_iterations = 0;
   const RunRow* row = nullptr;
 };
 
@@ -43,6 +46,11 @@ struct BasinRun {
 std::vector<std::pair<double, double>> iterate_errors(const RunRow& row);
 /// First iterate index from which every later iterate meets the criterion; NaN when the last fails.
 double settle_iteration(const std::vector<std::pair<double, double>>& errors, const BasinCriterion& c);
+/// Iterations in the last layer the run iterated in (the trailing entries of the "layer" series
+/// that equal its last; all of them for a single grid; the "iterations" value without the series).
+/// ML-NDT's thesis preset runs a fixed three iterations in every coarser layer, so its total cannot
+/// fall below the schedule whatever the solver does; this is the part the solver's stop decides.
+double iterations_in_last_layer(const RunRow& row);
 /// Mean ‖t_{k+1} − t_k‖ [cm] over the iterations after `settle` (0 when none follow; NaN if settle is).
 double post_settle_jitter_cm(const RunRow& row, double settle);
 

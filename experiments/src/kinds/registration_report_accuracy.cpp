@@ -212,7 +212,7 @@ ReportSection accuracy_report(const ExperimentConfig& config, const Registration
   };
   if (!odometry.empty()) {
     per_parameter("5_7", "odometry", odometry_scan, odometry_stats.errors);
-    names.push_back("odometry");
+    names.push_back(fig_5_10_legend("odometry", odometry_stats, false));
     means.push_back(mean_parameters(odometry_stats.errors));
   }
   for (const auto& [fig, name] :
@@ -232,7 +232,7 @@ ReportSection accuracy_report(const ExperimentConfig& config, const Registration
       for (std::size_t i = 0; i < m.stats.errors.size(); ++i) {
         if (m.stats.success[i]) solved.push_back(m.stats.errors[i]);
       }
-      names.push_back(m.runs->name);
+      names.push_back(fig_5_10_legend(m.runs->name, m.stats, true));
       means.push_back(mean_parameters(solved));
     }
   }
@@ -241,7 +241,8 @@ ReportSection accuracy_report(const ExperimentConfig& config, const Registration
         std::string("fig_5_10_") + (translation ? "translation" : "rotation"),
         std::string("Fig. 5.10") + (translation ? " (a)" : " (b)") + ": mean " +
             (translation ? "translation" : "rotation") +
-            " error per parameter: the odometry over all pairs, each method over its successful pairs",
+            " error per parameter: the odometry over all pairs, each method over its successful pairs "
+            "(each legend entry gives the success rate, k/n pairs)",
         std::string("Fig. 5.10 (") + (translation ? "a): mean translation error" : "b): mean rotation error"),
         names, means, translation));
 
