@@ -83,7 +83,8 @@ DatasetConfig read_dataset(const YAML::Node& node, const std::string& file) {
     in.fail("campus", "key 'campus' is only used with source: synthetic");
   d.simulated_odometry = in.child("simulated_odometry");
   if (d.simulated_odometry.IsDefined() && !d.simulated_odometry.IsNull()) {
-    if (!d.simulated_odometry.IsMap()) in.fail("simulated_odometry", "key 'simulated_odometry' must be a map");
+    if (!d.simulated_odometry.IsMap())
+      in.fail("simulated_odometry", "key 'simulated_odometry' must be a map");
     if (d.source != DatasetSource::kFolder)
       in.fail("simulated_odometry", "key 'simulated_odometry' is only used with source: folder");
   }

@@ -19,7 +19,7 @@ TEST(SmallSampleIntervals, OrderStatisticCoverageIsTheBinomialSum) {
   // n = 20, [x(5), x(16)]: 1 − 2·P(X ≤ 4), X ~ B(20, ½) = 1 − 2·6196/1048576 = 0.98818.
   EXPECT_NEAR(order_statistic_coverage(20, 4), 1.0 - 2.0 * 6196.0 / 1048576.0, 1e-12);
   EXPECT_NEAR(order_statistic_coverage(5, 2), 0.0, 1e-12);  // [x(3), x(3)]: a point covers nothing
-  EXPECT_EQ(order_statistic_coverage(4, 2), 0.0);  // no interval left
+  EXPECT_EQ(order_statistic_coverage(4, 2), 0.0);           // no interval left
 }
 
 TEST(SmallSampleIntervals, TheMedianIntervalStatesTheCoverageItHas) {

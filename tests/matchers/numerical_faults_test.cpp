@@ -23,7 +23,8 @@ TEST(MatcherNumericalFaults, NaNPointsInTheCloudsNeverGiveANaNResult) {
   PointCloud reference = test::yard(rng);
   PointCloud input = reference;
   const float nan = std::nanf("");
-  for (std::size_t i = 0; i < input.size(); i += 7) input.mutable_points()[i] = Eigen::Vector3f(nan, 0.0f, nan);
+  for (std::size_t i = 0; i < input.size(); i += 7)
+    input.mutable_points()[i] = Eigen::Vector3f(nan, 0.0f, nan);
   for (std::size_t i = 0; i < reference.size(); i += 11) reference.mutable_points()[i].y() = nan;
   for (const char* method : {"ndt", "mlndt", "icp_p2p", "icp_p2l"}) {
     auto m = make_matcher(method, YAML::Node());
