@@ -316,7 +316,11 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
     }
     trust.record(steps.back().quality);
     if (steps.back().trusted()) last_trusted = steps.back().relative;
-    const std::size_t keep = s.map == OdometryMap::local_map ? s.local_map_scans : 1;
+    // An untrusted step places its scan by a registration we do not believe: the older scans of the
+    // window are then placed against it by that same doubtful motion, so the map starts again from
+    // this scan alone (a wrong step would otherwise fit the map it made and pass the trust checks).
+    const std::size_t keep =
+        s.map == OdometryMap::local_map && steps.back().trusted() ? s.local_map_scans : 1;
     window_poses.push_back(previous_pose * steps.back().relative);
     window.push_back(std::move(input));
     while (window.size() > keep) {
