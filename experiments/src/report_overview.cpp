@@ -11,25 +11,22 @@ namespace {
 constexpr int kThesisExperiments = 19;
 
 using VerdictCounts = std::array<std::size_t, 4>;  // indexed by Verdict
+/// The verdicts as counts read ("3 hold"), in Verdict's order.
+constexpr const char* kVerdictCountNames[] = {"hold", "do not hold", "inconclusive", "not comparable"};
+
+std::size_t total(const VerdictCounts& c) {
+  return c[0] + c[1] + c[2] + c[3];
+}
 
 struct Counts {
-  VerdictCounts thesis{}, sanity_by_verdict{};
-  std::size_t sanity = 0, sanity_held = 0;
-  std::size_t thesis_total() const { return thesis[0] + thesis[1] + thesis[2] + thesis[3]; }
+  VerdictCounts thesis{}, sanity{};
+  std::size_t thesis_total() const { return total(thesis); }
 };
 
 Counts count(const std::vector<Claim>& claims) {
   Counts c;
-  for (const Claim& claim : claims) {
-    const auto v = static_cast<std::size_t>(claim.verdict);
-    if (claim.kind == ClaimKind::sanity) {
-      ++c.sanity;
-      c.sanity_held += claim.verdict == Verdict::holds;
-      ++c.sanity_by_verdict[v];
-    } else {
-      ++c.thesis[v];
-    }
-  }
+  for (const Claim& claim : claims)
+    ++(claim.kind == ClaimKind::sanity ? c.sanity : c.thesis)[static_cast<std::size_t>(claim.verdict)];
   return c;
 }
 
@@ -51,7 +48,8 @@ std::string runs_text(const OverviewEntry& e) {
 
 std::string held_text(const Counts& c) {
   std::string text = std::to_string(c.thesis[0]) + " / " + std::to_string(c.thesis_total());
-  if (c.sanity > 0) text += " · sanity " + std::to_string(c.sanity_held) + " / " + std::to_string(c.sanity);
+  if (total(c.sanity) > 0)
+    text += " · sanity " + std::to_string(c.sanity[0]) + " / " + std::to_string(total(c.sanity));
   return text;
 }
 
@@ -83,12 +81,11 @@ std::string html_table(const std::string& caption, const std::string& rows) {
 
 /// "3 claims: 1 hold, 1 do not hold, 1 inconclusive" (`noun` "claim" or "check").
 std::string verdict_counts_text(const VerdictCounts& counts, const std::string& noun) {
-  const char* names[] = {"hold", "do not hold", "inconclusive", "not comparable"};
-  const std::size_t total = counts[0] + counts[1] + counts[2] + counts[3];
-  std::string text = std::to_string(total) + " " + noun + (total == 1 ? ": " : "s: ");
+  const std::size_t n = total(counts);
+  std::string text = std::to_string(n) + " " + noun + (n == 1 ? ": " : "s: ");
   for (std::size_t v = 0; v < 4; ++v) {
     if (counts[v] == 0 && v > 0) continue;
-    text += (v == 0 ? "" : ", ") + std::to_string(counts[v]) + " " + names[v];
+    text += (v == 0 ? "" : ", ") + std::to_string(counts[v]) + " " + kVerdictCountNames[v];
   }
   return text;
 }
@@ -108,10 +105,10 @@ std::string headline_text(const std::vector<OverviewEntry>& entries) {
            "; on real data: " + verdict_counts_text(r.thesis, "claim") + ".";
   if (x.thesis_total() > 0)
     text += " Extensions beyond the thesis: " + verdict_counts_text(x.thesis, "claim") + ".";
-  VerdictCounts sanity{};
-  for (std::size_t v = 0; v < 4; ++v)
-    sanity[v] = t.sanity_by_verdict[v] + r.sanity_by_verdict[v] + x.sanity_by_verdict[v];
-  if (t.sanity + r.sanity + x.sanity > 0)
+  std::vector<Claim> all;
+  for (const OverviewEntry& e : entries) all.insert(all.end(), e.claims.begin(), e.claims.end());
+  const VerdictCounts sanity = count(all).sanity;
+  if (total(sanity) > 0)
     text += " Sanity checks of the experiments themselves: " + verdict_counts_text(sanity, "check") + ".";
   return text;
 }
@@ -131,9 +128,8 @@ std::string one_line_outcome(const OverviewEntry& entry) {
   const Counts c = count(entry.claims);
   if (c.thesis_total() == 0) return "no thesis claims to check";
   std::string text = std::to_string(c.thesis[0]) + " of " + std::to_string(c.thesis_total()) + " claims hold";
-  const char* names[] = {"hold", "do not hold", "inconclusive", "not comparable"};
   for (std::size_t v = 1; v < 4; ++v)
-    if (c.thesis[v] > 0) text += "; " + std::to_string(c.thesis[v]) + " " + names[v];
+    if (c.thesis[v] > 0) text += "; " + std::to_string(c.thesis[v]) + " " + kVerdictCountNames[v];
   // Name the first claim that does not hold (or, failing that, the first inconclusive one).
   for (Verdict wanted : {Verdict::does_not_hold, Verdict::inconclusive}) {
     for (const Claim& claim : entry.claims) {

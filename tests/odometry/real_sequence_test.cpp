@@ -20,6 +20,24 @@ namespace {
 
 const std::filesystem::path kMulran = std::filesystem::path(SEXTANT_SHARED_DATA_DIR) / "mulran_riverside02";
 
+/// The trusted steps of `r` (scans first, first + 1, …), each expected within 1 m and 5° of the
+/// reference's relative motion.
+std::size_t trusted_steps_expecting_them_right(const Dataset& dataset, const OdometryResult& r,
+                                               std::size_t first) {
+  std::size_t trusted = 0;
+  for (std::size_t i = 0; i < r.steps.size(); ++i) {
+    if (!r.steps[i].trusted()) continue;
+    ++trusted;
+    const Eigen::Isometry3d truth =
+        relative(*dataset.ground_truth(first + i), *dataset.ground_truth(first + i + 1));
+    const Eigen::Isometry3d error = relative(truth, r.steps[i].relative);
+    const bool wrong = translation_norm(error) > 1.0 || rotation_angle(error) * kDegPerRad > 5.0;
+    EXPECT_FALSE(wrong) << "step " << first + i << " is " << translation_norm(error)
+                        << " m off and says trusted";
+  }
+  return trusted;
+}
+
 TEST(RealSequence, MulranStretchIsRightOrSaysSo) {
   if (!std::filesystem::is_directory(kMulran)) GTEST_SKIP() << "no " << kMulran;
   const auto dataset = open_dataset(kMulran);
@@ -33,18 +51,10 @@ TEST(RealSequence, MulranStretchIsRightOrSaysSo) {
   const std::size_t first = 26, count = 15;
   const OdometryResult r = run_odometry(*dataset, s, first, count);
   ASSERT_EQ(r.steps.size(), count - 1);
-  std::size_t trusted = 0;
-  for (std::size_t i = 0; i < r.steps.size(); ++i) {
-    const Eigen::Isometry3d truth =
-        relative(*dataset->ground_truth(first + i), *dataset->ground_truth(first + i + 1));
-    const Eigen::Isometry3d error = relative(truth, r.steps[i].relative);
-    const bool wrong = translation_norm(error) > 1.0 || rotation_angle(error) * kDegPerRad > 5.0;
-    if (r.steps[i].trusted()) {
-      ++trusted;
-      EXPECT_FALSE(wrong) << "step " << first + i << " is " << translation_norm(error)
-                          << " m off and says trusted";
-    } else {
-      EXPECT_FALSE(r.steps[i].recovery.empty()) << "an untrusted step records how it was chained";
+  const std::size_t trusted = trusted_steps_expecting_them_right(*dataset, r, first);
+  for (const OdometryStep& step : r.steps) {
+    if (!step.trusted()) {
+      EXPECT_FALSE(step.recovery.empty()) << "an untrusted step records how it was chained";
     }
   }
   EXPECT_GE(trusted, count / 2) << "most steps of a drive are registered and believed";
@@ -71,17 +81,7 @@ TEST(RealSequence, MulranLocalMapIsRightOrSaysSo) {
   const std::size_t first = 26, count = 15;
   const OdometryResult r = run_odometry(*dataset, s, first, count);
   ASSERT_EQ(r.steps.size(), count - 1);
-  std::size_t trusted = 0;
-  for (std::size_t i = 0; i < r.steps.size(); ++i) {
-    const Eigen::Isometry3d truth =
-        relative(*dataset->ground_truth(first + i), *dataset->ground_truth(first + i + 1));
-    const Eigen::Isometry3d error = relative(truth, r.steps[i].relative);
-    const bool wrong = translation_norm(error) > 1.0 || rotation_angle(error) * kDegPerRad > 5.0;
-    if (!r.steps[i].trusted()) continue;
-    ++trusted;
-    EXPECT_FALSE(wrong) << "step " << first + i << " is " << translation_norm(error)
-                        << " m off and says trusted";
-  }
+  const std::size_t trusted = trusted_steps_expecting_them_right(*dataset, r, first);
   EXPECT_GE(trusted, count / 2) << "most steps of a drive are registered and believed";
 }
 

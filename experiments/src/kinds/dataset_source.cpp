@@ -12,31 +12,17 @@ namespace {
   throw InputError(config.file, "", "key 'dataset': the " + kind + " kind needs source: synthetic or folder");
 }
 
-bool has_simulated_odometry(const ExperimentConfig& config) {
-  return config.dataset.simulated_odometry.IsDefined() && !config.dataset.simulated_odometry.IsNull();
-}
+}  // namespace
 
-/// The simulated odometry's settings (the campus reader checks keys, types and bounds).
 synth::OdometrySettings simulated_odometry_settings(const ExperimentConfig& config) {
   YAML::Node campus(YAML::NodeType::Map);
   campus["odometry"] = config.dataset.simulated_odometry;
-  return synth::read_campus_settings(campus, config.file).odometry;
-}
-
-}  // namespace
-
-std::optional<synth::OdometrySettings> simulated_odometry_model(const ExperimentConfig& config) {
-  if (config.dataset.source == DatasetSource::kSynthetic) {
-    std::uint64_t seed = config.dataset.seed;
-    return synth::read_campus_settings(config.dataset.campus, config.file, &seed).odometry;
-  }
-  if (has_simulated_odometry(config)) return simulated_odometry_settings(config);
-  return std::nullopt;
+  return synth::read_campus_settings(campus, config.file).odometry;  // checks keys, types and bounds
 }
 
 void check_experiment_dataset(const ExperimentConfig& config, const std::string& kind) {
   if (config.dataset.source == DatasetSource::kNone) no_source(config, kind);
-  if (has_simulated_odometry(config)) (void)simulated_odometry_settings(config);
+  if (config.dataset.simulates_odometry()) (void)simulated_odometry_settings(config);
   if (config.dataset.source == DatasetSource::kSynthetic) {
     std::uint64_t seed = config.dataset.seed;
     (void)synth::read_campus_settings(config.dataset.campus, config.file, &seed);
@@ -53,7 +39,7 @@ std::unique_ptr<Dataset> open_experiment_dataset(const ExperimentConfig& config,
     }
     case DatasetSource::kFolder: {
       std::unique_ptr<Dataset> folder = open_dataset(config.dataset.path);
-      if (!has_simulated_odometry(config)) return folder;
+      if (!config.dataset.simulates_odometry()) return folder;
       return std::make_unique<SimulatedOdometryDataset>(
           std::move(folder), simulated_odometry_settings(config), config.dataset.seed);
     }

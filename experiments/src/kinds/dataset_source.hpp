@@ -4,7 +4,6 @@
 // `source: folder` opens a uos, KITTI or scan folder (`path:`, relative to the config file), with
 // `simulated_odometry:` an odometry simulated from its reference (simulated_odometry_dataset.hpp).
 #include <memory>
-#include <optional>
 #include <string>
 
 #include "sextant/core/dataset.hpp"
@@ -15,9 +14,9 @@ namespace sextant {
 
 /// Checks the dataset block without generating anything (InputError naming `kind`).
 void check_experiment_dataset(const ExperimentConfig& config, const std::string& kind);
-/// The odometry error model of the dataset: the campus' `odometry:` settings, or a folder's
-/// `simulated_odometry:`; none for a folder without one (it has only its own odometry, if any).
-std::optional<synth::OdometrySettings> simulated_odometry_model(const ExperimentConfig& config);
+/// The error model of a folder's simulated odometry (config.dataset.simulates_odometry()): its
+/// `simulated_odometry:` map read as the campus' `odometry:` block (InputError for a bad key or value).
+synth::OdometrySettings simulated_odometry_settings(const ExperimentConfig& config);
 /// Opens the dataset (InputError when the source is none).
 std::unique_ptr<Dataset> open_experiment_dataset(const ExperimentConfig& config, const std::string& kind);
 

@@ -5,6 +5,7 @@
 #include <limits>
 #include <random>
 
+#include "dataset_source.hpp"
 #include "sextant/eval/small_sample_intervals.hpp"
 
 namespace sextant {
@@ -190,9 +191,8 @@ std::string dataset_note(const ExperimentConfig& config) {
   if (config.dataset.source != DatasetSource::kFolder) return "";
   std::string note =
       " Dataset: the scans of " + config.dataset.path.filename().string() + " (a folder, not the campus)";
-  const YAML::Node simulated = config.dataset.simulated_odometry;
-  if (simulated.IsMap()) {
-    const std::string model = simulated["model"] ? simulated["model"].as<std::string>() : "thesis";
+  if (config.dataset.simulates_odometry()) {
+    const std::string model = simulated_odometry_settings(config).model;
     note += "; its odometry guess is simulated from the folder's reference with the campus' '" + model +
             "' error model (seed " + std::to_string(config.dataset.seed) + "), not measured";
   }

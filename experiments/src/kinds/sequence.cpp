@@ -87,8 +87,8 @@ class SequenceSession : public KindSession {
     }
     if (const auto* campus = dynamic_cast<const synth::CampusDataset*>(dataset_.get()))
       odometry_model_ = campus->campus().settings.odometry;
-    else if (const auto model = simulated_odometry_model(config))
-      odometry_model_ = *model;  // a real sequence: its reference corrupted by the stated model
+    else if (config.dataset.simulates_odometry())
+      odometry_model_ = simulated_odometry_settings(config);  // a real sequence's reference, corrupted
     scans_.resize(params_.scans);
     tbb::parallel_for(std::size_t{0}, params_.scans,
                       [&](std::size_t k) { scans_[k] = dataset_->scan(params_.first_scan + k); });

@@ -45,8 +45,7 @@ SequenceParams read_sequence_params(const ExperimentConfig& config) {
   in.read("odometry", odometry);
   if (odometry == "simulated") {
     p.odometry = SequenceOdometry::kSimulated;
-    const YAML::Node& model = config.dataset.simulated_odometry;
-    if (config.dataset.source != DatasetSource::kSynthetic && !(model.IsDefined() && !model.IsNull()))
+    if (config.dataset.source != DatasetSource::kSynthetic && !config.dataset.simulates_odometry())
       in.fail("odometry",
               "key 'odometry': simulated odometry needs dataset source: synthetic, or a folder with "
               "simulated_odometry: (use dataset)");

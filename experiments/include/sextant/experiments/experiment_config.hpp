@@ -40,6 +40,8 @@ struct DatasetConfig {
   /// source folder: an odometry simulated from the folder's reference with these settings (the
   /// campus' `odometry:` block, synth::OdometrySettings) and `seed`; null: the folder's own odometry
   YAML::Node simulated_odometry;
+  /// A folder whose odometry is simulated (a `simulated_odometry:` map, checked by the reader).
+  bool simulates_odometry() const { return simulated_odometry.IsMap(); }
   std::uint64_t seed = 1;  ///< generator seed of the synthetic campus or of the simulated odometry
   YAML::Node node;         ///< the whole block, for the resolved run config
 };
