@@ -90,6 +90,9 @@ LoopClosureDecision judge_loop_closure(const RegistrationResult& r, const LoopCl
   } else if (d.correction_m > settings.max_correction_m || d.correction_deg > settings.max_correction_deg) {
     d.rejection = ClosureRejection::correction;
     d.reason = "correction of the guess too large";
+  } else if (settings.require_trust && !r.quality.trusted()) {
+    d.rejection = ClosureRejection::untrusted;
+    d.reason = "not trusted (" + (r.quality.assessed ? r.quality.reason : std::string("not assessed")) + ")";
   }
   if (!d.reason.empty()) return d;
   d.information = settings.information_scale * information_from_pose6_hessian(r.H, r.T);

@@ -10,7 +10,8 @@
 //     relative guess T_i⁻¹·T_j; accepted when it converged, its mean score per matched point and
 //     its matched fraction pass their thresholds, its correction of the guess stays within
 //     max_correction (the guess comes from drifting odometry, a jump further than the drift can
-//     explain is a wrong basin) and its Hessian is positive definite; then the edge's information
+//     explain is a wrong basin), its Hessian is positive definite and (with require_trust) the
+//     registration is trusted (registration_quality.hpp); then the edge's information
 //     is Ω from H (R = H⁻¹, eq. 3.50, relative_pose_factor.hpp), times information_scale.
 #include <cstddef>
 #include <string>
@@ -34,6 +35,9 @@ struct LoopClosureSettings {
   double max_correction_m = 8.0;      ///< … and the correction of the guess ≤ this [m]
   double max_correction_deg = 20.0;   ///< … and ≤ this [deg]
   double information_scale = 1.0;     ///< Ω of an accepted closure = scale · J⁻ᵀ·H·J⁻¹
+  /// … and the registration must be trusted (registration_quality.hpp; false for E20, whose
+  /// acceptance tests predate the trust checks).
+  bool require_trust = false;
 
   bool valid(std::string* why) const;
 };
@@ -52,7 +56,7 @@ std::vector<LoopClosureCandidate> find_loop_closure_candidates(const std::vector
                                                                const LoopClosureSettings& settings);
 
 /// Which test rejected a closure (none: accepted), in the order they are applied.
-enum class ClosureRejection { none, not_converged, score, matched_fraction, correction, hessian };
+enum class ClosureRejection { none, not_converged, score, matched_fraction, correction, hessian, untrusted };
 
 struct LoopClosureDecision {
   bool accepted = false;

@@ -1,0 +1,152 @@
+// Loop closing over a drifted chain: the odometry graph, and closures from the proximity search and
+// from place recognition, against a known trajectory.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "sextant/posegraph/loop_closing.hpp"
+
+namespace sextant {
+namespace {
+
+using PoseList = std::vector<Eigen::Isometry3d>;
+
+Eigen::Isometry3d pose(double x, double y, double yaw) {
+  return Eigen::Translation3d(x, y, 0) * Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ());
+}
+
+/// A 40 × 40 m square driven twice (2 m steps, 160 poses): pose 80 + k is pose k again.
+PoseList square_twice() {
+  PoseList truth;
+  for (int lap = 0; lap < 2; ++lap)
+    for (int side = 0; side < 4; ++side)
+      for (int step = 0; step < 20; ++step) {
+        const double yaw = side * M_PI / 2.0, along = 2.0 * step;
+        const Eigen::Vector2d corner[4] = {{0, 0}, {40, 0}, {40, 40}, {0, 40}};
+        truth.push_back(
+            pose(corner[side].x() + along * std::cos(yaw), corner[side].y() + along * std::sin(yaw), yaw));
+      }
+  return truth;
+}
+
+/// The chain of the truth's steps, each turned by `yaw_drift` [rad] more than it was.
+PoseList drifted_chain(const PoseList& truth, double yaw_drift, std::vector<ChainStep>* steps) {
+  PoseList chain{truth.front()};
+  for (std::size_t k = 1; k < truth.size(); ++k) {
+    ChainStep s;
+    s.relative = relative(truth[k - 1], truth[k]) * pose(0, 0, yaw_drift);
+    s.hessian = Matrix6d::Identity() * 1e4;
+    s.converged = true;
+    steps->push_back(s);
+    chain.push_back(chain.back() * s.relative);
+  }
+  return chain;
+}
+
+/// A registration that finds the true relative pose, trusted, with a confident Hessian.
+ClosureRegistration exact_registration(const PoseList& truth, bool trusted = true) {
+  return [truth, trusted](std::size_t i, std::size_t j, const Eigen::Isometry3d&, std::uint64_t) {
+    RegistrationResult r;
+    r.T = relative(truth[i], truth[j]);
+    r.converged = true;
+    r.why = Termination::kConverged;
+    r.H = Matrix6d::Identity() * 1e4;
+    r.score = 1000.0;
+    r.matched_points = r.input_points = 1000;
+    r.quality.assessed = true;
+    r.quality.trust = trusted ? Trust::kOk : Trust::kSuspect;
+    r.quality.reason = trusted ? "" : "made up";
+    return r;
+  };
+}
+
+double worst_error(const PoseList& estimate, const PoseList& truth) {
+  double worst = 0.0;
+  for (std::size_t k = 0; k < truth.size(); ++k)
+    worst = std::max(worst, (estimate[k].translation() - truth[k].translation()).norm());
+  return worst;
+}
+
+/// The revisits Scan Context would propose: j = 80 + k onto k, every fourth k.
+std::vector<PlaceMatch> true_places() {
+  std::vector<PlaceMatch> places;
+  for (std::size_t k = 2; k < 78; k += 4) places.push_back({k, k + 80, {0.05, 0, 0.0}});
+  return places;
+}
+
+TEST(OdometryGraph, StepsWithoutAUsableHessianGetTheMedianInformation) {
+  const PoseList truth = square_twice();
+  std::vector<ChainStep> steps;
+  const PoseList chain = drifted_chain(truth, 0.0, &steps);
+  steps[3].converged = false;
+  steps[7].hessian.setZero();
+  steps[9].hessian *= 3.0;
+  const OdometryGraph g = odometry_graph(chain, steps);
+  EXPECT_EQ(g.graph.size(), chain.size());
+  EXPECT_EQ(g.graph.edges().size(), steps.size());
+  EXPECT_EQ(g.fallback_information, 2u);
+  EXPECT_TRUE(g.graph.edges()[3].information.isApprox(g.typical_information));
+  EXPECT_TRUE(g.graph.edges()[7].information.isApprox(g.typical_information));
+  EXPECT_FALSE(g.graph.edges()[9].information.isApprox(g.typical_information));
+}
+
+TEST(LoopClosing, ProximityClosesASmallDriftAndPlacesCloseALargeOne) {
+  const PoseList truth = square_twice();
+  LoopClosingSettings s;
+  s.closure.radius = 6.0;
+  s.closure.min_index_gap = 40;
+  s.closure.min_path_gap = 60.0;
+  for (const double drift_deg : {0.02, 0.5}) {
+    std::vector<ChainStep> steps;
+    const PoseList chain = drifted_chain(truth, drift_deg * M_PI / 180.0, &steps);
+    const PoseGraph graph = odometry_graph(chain, steps).graph;
+    const bool small = drift_deg < 0.1;
+    ASSERT_EQ(worst_error(chain, truth) < s.closure.radius, small) << drift_deg;  // the premise
+    for (const LoopCandidateSource source : {LoopCandidateSource::proximity, LoopCandidateSource::both}) {
+      s.source = source;
+      Rng rng(3);
+      const LoopClosingResult r = close_loops(graph, true_places(), exact_registration(truth), s, rng);
+      const bool should_close = small || source == LoopCandidateSource::both;
+      EXPECT_EQ(r.accepted() > 0, should_close) << drift_deg << "° " << to_string(source);
+      if (should_close)
+        EXPECT_LT(worst_error(r.poses, truth), 0.25 * worst_error(chain, truth))
+            << drift_deg << "° " << to_string(source);
+      else
+        EXPECT_NEAR(worst_error(r.poses, truth), worst_error(chain, truth), 1e-6);  // nothing to close
+    }
+  }
+}
+
+TEST(LoopClosing, DescriptorCandidatesMustBeTrusted) {
+  const PoseList truth = square_twice();
+  std::vector<ChainStep> steps;
+  const PoseList chain = drifted_chain(truth, 0.5 * M_PI / 180.0, &steps);
+  LoopClosingSettings s;
+  s.source = LoopCandidateSource::descriptor;
+  Rng rng(3);
+  const LoopClosingResult r = close_loops(odometry_graph(chain, steps).graph, true_places(),
+                                          exact_registration(truth, false), s, rng);
+  ASSERT_EQ(r.attempts.size(), true_places().size());
+  EXPECT_EQ(r.accepted(), 0u);
+  for (const ClosureAttempt& a : r.attempts) {
+    EXPECT_EQ(a.source, LoopCandidateSource::descriptor);
+    EXPECT_EQ(a.decision.rejection, ClosureRejection::untrusted);
+    EXPECT_NE(a.decision.reason.find("made up"), std::string::npos);
+  }
+}
+
+TEST(LoopClosing, SourceNamesRoundTrip) {
+  for (const auto source :
+       {LoopCandidateSource::proximity, LoopCandidateSource::descriptor, LoopCandidateSource::both}) {
+    bool ok = false;
+    EXPECT_EQ(loop_candidate_source_from_string(to_string(source), &ok), source);
+    EXPECT_TRUE(ok);
+  }
+  bool ok = true;
+  loop_candidate_source_from_string("nearby", &ok);
+  EXPECT_FALSE(ok);
+}
+
+}  // namespace
+}  // namespace sextant
