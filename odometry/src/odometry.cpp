@@ -31,18 +31,6 @@ std::string dataset_label(const Dataset& dataset) {
   return m.name.empty() ? std::string("<dataset>") : m.name;
 }
 
-/// Scan i without the points closer than `min_range` to the sensor.
-PointCloud load_scan(const Dataset& dataset, std::size_t i, double min_range) {
-  PointCloud scan = dataset.scan(i);
-  if (!(min_range > 0.0)) return scan;
-  const float squared = static_cast<float>(min_range * min_range);
-  std::vector<std::size_t> keep;
-  keep.reserve(scan.size());
-  for (std::size_t j = 0; j < scan.size(); ++j)
-    if (scan[j].squaredNorm() >= squared) keep.push_back(j);
-  return scan.subset(keep);
-}
-
 /// Δt_i / Δt_{i−1} around scan i (the constant-velocity guess's scale), 1 without usable times.
 double time_ratio(const Dataset& dataset, std::size_t i) {
   if (i < 2) return 1.0;
@@ -229,12 +217,13 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
                                          const std::vector<std::uint64_t>& seeds, StepCounter& counter) {
   std::vector<OdometryStep> steps(count - 1);
   SequenceTrust trust;
-  PointCloud previous = load_scan(dataset, first, s.min_range);
+  PointCloud previous = load_sequence_scan(dataset, first, s.min_range);
   for (std::size_t begin = 1; begin < count; begin += kChunk) {
     const std::size_t end = std::min(count, begin + kChunk);
     std::vector<PointCloud> chunk(end - begin);
-    tbb::parallel_for(begin, end,
-                      [&](std::size_t k) { chunk[k - begin] = load_scan(dataset, first + k, s.min_range); });
+    tbb::parallel_for(begin, end, [&](std::size_t k) {
+      chunk[k - begin] = load_sequence_scan(dataset, first + k, s.min_range);
+    });
     tbb::parallel_for(begin, end, [&](std::size_t k) {
       const PointCloud& reference = k == begin ? previous : chunk[k - 1 - begin];
       const Worker worker(s);
@@ -284,15 +273,15 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
   std::vector<OdometryStep> steps;
   std::deque<PointCloud> window;               // the last scans, oldest first
   std::deque<Eigen::Isometry3d> window_poses;  // their chained poses (frame of the sequence's first scan)
-  window.push_back(load_scan(dataset, first, s.min_range));
+  window.push_back(load_sequence_scan(dataset, first, s.min_range));
   window_poses.push_back(Eigen::Isometry3d::Identity());
   PointCloud next;
-  if (count > 1) next = load_scan(dataset, first + 1, s.min_range);
+  if (count > 1) next = load_sequence_scan(dataset, first + 1, s.min_range);
   for (std::size_t k = 1; k < count; ++k) {
     PointCloud input = std::move(next);
     tbb::task_group prefetch;
     const WaitOnExit wait_on_exit{prefetch};
-    if (k + 1 < count) prefetch.run([&] { next = load_scan(dataset, first + k + 1, s.min_range); });
+    if (k + 1 < count) prefetch.run([&] { next = load_sequence_scan(dataset, first + k + 1, s.min_range); });
     Eigen::Isometry3d guess = Eigen::Isometry3d::Identity();
     if (s.guess == OdometryGuess::odometry) guess = relative(odometry[k - 1], odometry[k]);
     if (s.guess == OdometryGuess::constant_velocity)
@@ -334,6 +323,17 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
 }
 
 }  // namespace
+
+PointCloud load_sequence_scan(const Dataset& dataset, std::size_t i, double min_range) {
+  PointCloud scan = dataset.scan(i);
+  if (!(min_range > 0.0)) return scan;
+  const float squared = static_cast<float>(min_range * min_range);
+  std::vector<std::size_t> keep;
+  keep.reserve(scan.size());
+  for (std::size_t j = 0; j < scan.size(); ++j)
+    if (scan[j].squaredNorm() >= squared) keep.push_back(j);
+  return scan.subset(keep);
+}
 
 std::size_t OdometryResult::untrusted() const {
   return static_cast<std::size_t>(

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "sextant/core/io/kitti.hpp"
 #include "sextant/core/io/trajectory_io.hpp"
@@ -172,6 +173,8 @@ TEST(OdometryCli, BadArgumentsAreClearErrors) {
   expect_error(run_cli("odometry " + (tmp / "missing").string() + out), "no such dataset folder");
   expect_error(run_cli("odometry " + uos + " --guess gps" + out), "unknown guess mode 'gps'");
   expect_error(run_cli("odometry " + uos + " --map global" + out), "unknown map mode 'global'");
+  expect_error(run_cli("odometry " + uos + " --loop-closure gps" + out),
+               "expected proximity, descriptor or both");
   expect_error(run_cli("odometry " + uos + " --scans 5" + out), "go past the dataset's 3 scans");
   expect_error(run_cli("odometry " + uos + " --first 3" + out), "past the dataset's 3 scans");
   expect_error(run_cli("odometry " + uos + " --method icp_p2l --preset thesis" + out),
@@ -180,6 +183,38 @@ TEST(OdometryCli, BadArgumentsAreClearErrors) {
   const CliRun no_out = run_cli("odometry " + uos);
   EXPECT_NE(no_out.exit_code, 0);
   EXPECT_NE(no_out.output.find("--out"), std::string::npos) << no_out.output;
+}
+
+// Issue 27 (E24): the campus' first loop comes back to its start near scan 80. Closing it with
+// place recognition alone must accept only right closures and leave the trajectory better.
+TEST(OdometryCli, LoopClosureByPlaceRecognitionOnTheCampus) {
+  TempDir tmp;
+  const CliRun r = run_cli("odometry campus --scans 110 --no-progress --loop-closure descriptor --out " +
+                           (tmp / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("candidates closed (descriptor;"), std::string::npos) << r.output;
+  expect_outputs(tmp / "out", 110);
+  EXPECT_EQ(read_tum_trajectory(tmp / "out" / "chained" / "trajectory.tum").size(), 110u);
+  std::ifstream csv(tmp / "out" / "loop_closures.csv");
+  std::string line;
+  std::getline(csv, line);
+  ASSERT_EQ(line.substr(0, 27), "from_scan,to_scan,source,de");
+  std::size_t accepted = 0;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> f;
+    std::stringstream fields(line);
+    for (std::string x; std::getline(fields, x, ',');) f.push_back(x);
+    ASSERT_GE(f.size(), 14u) << line;
+    EXPECT_EQ(f[2], "descriptor") << line;
+    EXPECT_GE(std::stoul(f[1]), std::stoul(f[0]) + 30) << line;
+    if (f[5] != "1") continue;
+    ++accepted;
+    EXPECT_LT(std::stod(f[12]), 0.5) << "an accepted closure is wrong: " << line;
+  }
+  EXPECT_GE(accepted, 3u);
+  const std::string metrics = read_text(tmp / "out" / "metrics.json");
+  EXPECT_EQ(json_number(metrics, "accepted", "loop_closure"), static_cast<double>(accepted)) << metrics;
+  EXPECT_LT(json_number(metrics, "ate_m", "estimate"), json_number(metrics, "ate_m", "chained")) << metrics;
 }
 
 // Issue 26: -q keeps the results (the trust counts and the accuracy) and drops the rest; -v adds a

@@ -16,6 +16,7 @@
 
 #include "commands.hpp"
 #include "matcher_options.hpp"
+#include "odometry_loop_closure.hpp"
 #include "odometry_output.hpp"
 #include "sextant/core/atomic_file.hpp"
 #include "sextant/core/error.hpp"
@@ -37,6 +38,7 @@ struct OdometryOptions : MatcherOptions {
   std::string poses;  ///< ground truth for a scan folder: TUM or KITTI file (default: poses.txt beside it)
   std::string guess;  ///< empty: odometry when the dataset has it, else constant_velocity
   std::string map = "scan";
+  std::string loop_closure;  ///< empty: none; proximity, descriptor or both
   std::size_t first = 0;
   std::size_t scans = 0;  ///< 0: to the end of the dataset
   std::size_t local_map_scans = 5;
@@ -93,6 +95,7 @@ std::string provenance_json(const OdometryOptions& o, const MatcherConfig& confi
       << ",\n  \"sampler_resolved\": " << to_json(resolved["sampler"])
       << ",\n  \"guess\": " << json_string(to_string(s.guess))
       << ",\n  \"map\": " << json_string(to_string(s.map))
+      << ",\n  \"loop_closure\": " << json_string(o.loop_closure)
       << ",\n  \"local_map_scans\": " << s.local_map_scans
       << ",\n  \"min_range\": " << json_number(s.min_range)
       << ",\n  \"recover\": " << (s.recover ? "true" : "false") << ",\n  \"seed\": " << s.seed
@@ -137,6 +140,14 @@ int run_odometry_command(const OdometryOptions& o) {
   s.seed = o.seed;
   s.recover = !o.no_recover;
   if (const std::string why = s.problem(); !why.empty()) throw InputError("arguments", "", why);
+  std::optional<LoopCandidateSource> loop_source;
+  if (!o.loop_closure.empty()) {
+    bool ok = false;
+    loop_source = loop_candidate_source_from_string(o.loop_closure, &ok);
+    if (!ok)
+      throw InputError("--loop-closure", "",
+                       "'" + o.loop_closure + "': expected proximity, descriptor or both");
+  }
   std::optional<tbb::global_control> threads;
   if (o.jobs > 0)
     threads.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(o.jobs));
@@ -186,6 +197,9 @@ int run_odometry_command(const OdometryOptions& o) {
       run_odometry(*dataset, s, o.first, scans, [&](std::size_t, std::size_t) { progress->tick(); });
   progress->finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::optional<OdometryLoopClosure> loops;
+  if (loop_source) loops = close_odometry_loops(*dataset, o.first, scans, result, s, *loop_source);
+  const std::vector<Eigen::Isometry3d>& poses = loops ? loops->closing.poses : result.poses;
 
   OdometryCounts counts;
   for (const auto& step : result.steps) counts.not_converged += step.converged ? 0 : 1;
@@ -195,15 +209,26 @@ int run_odometry_command(const OdometryOptions& o) {
   std::optional<TrajectoryAccuracy> estimate_accuracy, odometry_accuracy;
   std::string estimate_problem, odometry_problem;  // why an accuracy could not be computed
   if (truth && scans >= 2) {
-    estimate_accuracy = trajectory_accuracy(result.poses, *truth, &estimate_problem);
+    estimate_accuracy = trajectory_accuracy(poses, *truth, &estimate_problem);
     if (const auto odometry = odometry_of(*dataset, o.first, scans))
       odometry_accuracy = trajectory_accuracy(*odometry, *truth, &odometry_problem);
   }
 
   const fs::path out(o.out);
-  write_trajectories(out, *dataset, o.first, result.poses, truth);
+  write_trajectories(out, *dataset, o.first, poses, truth);
   write_steps_csv(out / "steps.csv", o.first, result, truth);
-  write_metrics_json(out / "metrics.json", estimate_accuracy, odometry_accuracy, scans, counts, seconds);
+  std::optional<LoopClosureSummary> loop_summary;
+  if (loops) {
+    write_trajectories(out / "chained", *dataset, o.first, result.poses, std::nullopt);
+    write_loop_closures_csv(out / "loop_closures.csv", o.first, *loops, truth);
+    loop_summary =
+        LoopClosureSummary{o.loop_closure, loops->closing.attempts.size(), loops->closing.accepted(),
+                           loops->seconds, loops->descriptor_seconds,      std::nullopt};
+    std::string problem;
+    if (truth && scans >= 2) loop_summary->chained = trajectory_accuracy(result.poses, *truth, &problem);
+  }
+  write_metrics_json(out / "metrics.json", estimate_accuracy, odometry_accuracy, scans, counts, seconds,
+                     loop_summary);
   write_file_atomically(out / "provenance.json",
                         provenance_json(o, config, resolved, meta, s, scans, start, seconds));
 
@@ -215,6 +240,12 @@ int run_odometry_command(const OdometryOptions& o) {
             << (s.recover ? " (the least suspect registration, the last trusted motion or the guess chained)"
                           : "")
             << ", " << counts.recovered << " recovered\n";
+  if (loops)
+    std::cout << "loops:    " << loops->closing.accepted() << " of " << loops->closing.attempts.size()
+              << " candidates closed (" << o.loop_closure << "; " << loops->place_matches
+              << " place matches), in " << std::setprecision(1) << loops->seconds << " s\n";
+  if (loop_summary && loop_summary->chained)
+    std::cout << "chained:  " << accuracy_line(*loop_summary->chained) << " (before closing the loops)\n";
   if (!truth) {
     std::cout << "no ground truth for these scans: no ATE, RPE or drift\n";
   } else if (scans >= 2) {
@@ -231,7 +262,9 @@ int run_odometry_command(const OdometryOptions& o) {
   if (!quiet)
     std::cout << "wrote:    " << (out / "trajectory.tum").string() << ", trajectory.kitti.txt"
               << (truth ? ", groundtruth.tum, groundtruth.kitti.txt" : "")
-              << ", steps.csv, metrics.json, provenance.json\n";
+              << ", steps.csv, metrics.json, provenance.json"
+              << (loops ? ", loop_closures.csv, chained/trajectory.tum, chained/trajectory.kitti.txt" : "")
+              << "\n";
   return 0;
 }
 
@@ -265,6 +298,12 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
                   "has it, else constant_velocity)");
   cmd->add_option("--map", o->map, "Register against the previous scan or a local map: scan, local_map")
       ->capture_default_str();
+  cmd->add_option("--loop-closure", o->loop_closure,
+                  "Close the trajectory's loops in a pose graph, with candidates from: proximity (the "
+                  "estimate comes back near an earlier pose), descriptor (Scan Context place recognition, "
+                  "whatever the drift), or both; every closure is verified by a trusted registration. "
+                  "trajectory.* is then the loop-closed one, chained/ the chain, loop_closures.csv the "
+                  "candidates");
   cmd->add_option("--local-map-scans", o->local_map_scans, "Scans in the local map")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);

@@ -67,16 +67,11 @@ void write_trajectories(const std::filesystem::path& out, const Dataset& dataset
   write_kitti_trajectory(out / "groundtruth.kitti.txt", kitti_frame(dataset, reference));
 }
 
-namespace {
-
-/// Free text in a CSV field: no commas or quotes inside.
 std::string csv_free_text(std::string text) {
   for (char& c : text)
     if (c == ',' || c == '"') c = ';';
   return text;
 }
-
-}  // namespace
 
 void write_steps_csv(const std::filesystem::path& file, std::size_t first, const OdometryResult& result,
                      const std::optional<std::vector<Eigen::Isometry3d>>& truth) {
@@ -109,13 +104,21 @@ void write_steps_csv(const std::filesystem::path& file, std::size_t first, const
 
 void write_metrics_json(const std::filesystem::path& file, const std::optional<TrajectoryAccuracy>& estimate,
                         const std::optional<TrajectoryAccuracy>& odometry, std::size_t scans,
-                        const OdometryCounts& counts, double seconds) {
+                        const OdometryCounts& counts, double seconds,
+                        const std::optional<LoopClosureSummary>& loops) {
   std::ostringstream out;
   out << "{\"scans\": " << scans << ", \"not_converged\": " << counts.not_converged
       << ", \"untrusted\": " << counts.untrusted << ", \"recovered\": " << counts.recovered
       << ", \"seconds\": " << json_number(seconds)
       << ", \"estimate\": " << (estimate ? accuracy_json(*estimate) : "null")
-      << ", \"odometry\": " << (odometry ? accuracy_json(*odometry) : "null") << "}\n";
+      << ", \"odometry\": " << (odometry ? accuracy_json(*odometry) : "null");
+  if (loops)
+    out << ", \"loop_closure\": {\"source\": " << json_string(loops->source)
+        << ", \"candidates\": " << loops->candidates << ", \"accepted\": " << loops->accepted
+        << ", \"seconds\": " << json_number(loops->seconds)
+        << ", \"descriptor_seconds\": " << json_number(loops->descriptor_seconds)
+        << ", \"chained\": " << (loops->chained ? accuracy_json(*loops->chained) : "null") << "}";
+  out << "}\n";
   write_file_atomically(file, out.str());
 }
 

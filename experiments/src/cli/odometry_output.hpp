@@ -42,10 +42,22 @@ struct OdometryCounts {
   std::size_t not_converged = 0, untrusted = 0, recovered = 0;
 };
 
+/// With --loop-closure: what closing the loops did, and the chained trajectory's accuracy before.
+struct LoopClosureSummary {
+  std::string source;
+  std::size_t candidates = 0, accepted = 0;
+  double seconds = 0.0, descriptor_seconds = 0.0;
+  std::optional<TrajectoryAccuracy> chained;
+};
+
 /// metrics.json: the step counts, the estimate's accuracy and, when the dataset has odometry, the
-/// odometry's.
+/// odometry's; with loop closure, a "loop_closure" map (the estimate is then the loop-closed one).
 void write_metrics_json(const std::filesystem::path& file, const std::optional<TrajectoryAccuracy>& estimate,
                         const std::optional<TrajectoryAccuracy>& odometry, std::size_t scans,
-                        const OdometryCounts& counts, double seconds);
+                        const OdometryCounts& counts, double seconds,
+                        const std::optional<LoopClosureSummary>& loops = std::nullopt);
+
+/// Free text in a CSV field: no commas or quotes inside.
+std::string csv_free_text(std::string text);
 
 }  // namespace sextant::cli

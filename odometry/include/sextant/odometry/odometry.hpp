@@ -123,6 +123,10 @@ struct OdometryResult {
 /// Called after each finished registration with (done, total); never concurrently.
 using OdometryProgress = std::function<void(std::size_t done, std::size_t total)>;
 
+/// Scan i of the dataset without the points closer than `min_range` to the sensor (as the chain
+/// registers it).
+PointCloud load_sequence_scan(const Dataset& dataset, std::size_t i, double min_range);
+
 /// Chains count − 1 registrations over scans first … first + count − 1. Throws InputError when the
 /// range leaves the dataset, count < 1, the settings are invalid or the guess mode needs odometry the
 /// dataset lacks (the message suggests constant_velocity). A registration that fails is kept as the
