@@ -1,10 +1,11 @@
-// `sextant info <path>`: what a point-cloud file or a dataset folder holds.
+// `sextant info <path>`: what a point-cloud file, a dataset folder or experiment configs hold.
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
 
 #include "commands.hpp"
+#include "experiment_listing.hpp"
 #include "sextant/core/dataset.hpp"
 #include "sextant/core/io/cloud_io.hpp"
 
@@ -63,15 +64,21 @@ void describe_dataset(const std::filesystem::path& folder) {
 void add_info_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("info",
                                  "Describe a point-cloud file (points, bounds, frame, dropped points) "
-                                 "or a dataset folder (format, scans, odometry, ground truth)");
+                                 "or a dataset folder (format, scans, odometry, ground truth), or experiment "
+                                 "configs (a YAML or the experiments/ folder: kind, layout, methods, runs)");
   auto path = std::make_shared<std::string>();
+  auto markdown = std::make_shared<bool>(false);
   cmd->add_option("path", *path,
-                  "A cloud file (.3d .bin .xyz32.bin .pcd .ply .csv .xyz .txt) or a dataset folder")
+                  "A cloud file (.3d .bin .xyz32.bin .pcd .ply .csv .xyz .txt), a dataset folder, an "
+                  "experiment YAML or a folder of them")
       ->required();
-  cmd->callback([&exit_code, path] {
-    exit_code = guarded([path] {
+  cmd->add_flag("--markdown", *markdown, "Experiments: print a Markdown table");
+  cmd->callback([&exit_code, path, markdown] {
+    exit_code = guarded([path, markdown] {
       std::error_code ec;  // a symlink loop: the reader names it
-      if (std::filesystem::is_directory(*path, ec)) {
+      if (holds_experiments(*path)) {
+        describe_experiments(*path, *markdown);
+      } else if (std::filesystem::is_directory(*path, ec)) {
         describe_dataset(*path);
       } else {
         describe_cloud(*path);
