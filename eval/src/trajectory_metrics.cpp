@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "sextant/core/pose.hpp"
+#include "sextant/eval/alignment_roll.hpp"
 
 namespace sextant {
 
@@ -153,6 +154,7 @@ AteResult absolute_trajectory_error(const PoseList& estimate, const PoseList& re
       r.status = failure("alignment failed (coincident positions)");
       return r;
     }
+    r.alignment = resolve_roll_about_trajectory(r.alignment, estimate, reference, &r.roll_from_orientations);
   }
   std::vector<double> rotation_errors;
   for (std::size_t i = 0; i < estimate.size(); ++i) {

@@ -162,6 +162,8 @@ int run_eval(const EvalOptions& o) {
     std::cout << " (translation " << fixed(e.ate.alignment.translation.norm(), 3) << " m";
     if (settings.alignment == Alignment::sim3) std::cout << ", scale " << fixed(e.ate.alignment.scale, 4);
     std::cout << ")";
+    if (e.ate.roll_from_orientations)
+      std::cout << "; the positions lie near one line, so the rotation about it comes from the orientations";
   }
   std::cout << "\n" << accuracy_line(a, per) << "\n\n";
   std::cout << "| metric | RMS | mean | median | max | N |\n|---|---|---|---|---|---|\n"

@@ -86,6 +86,9 @@ struct AteResult {
   SampleStats translation;                 ///< ‖p_ref − align(p_est)‖ [m]; translation.rms is the ATE
   SampleStats rotation;                    ///< angle(R_ref⁻¹ · R_align · R_est) [rad]
   std::vector<double> translation_errors;  ///< per pose [m]
+  /// se3/sim3: the positions were too close to a line to fix the rotation about it, which the
+  /// orientations fixed instead (alignment_roll.hpp).
+  bool roll_from_orientations = false;
 };
 
 AteResult absolute_trajectory_error(const PoseList& estimate, const PoseList& reference,
