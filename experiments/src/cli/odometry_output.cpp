@@ -110,13 +110,14 @@ void write_steps_csv(const std::filesystem::path& file, std::size_t first, const
 void write_metrics_json(const std::filesystem::path& file, const std::optional<TrajectoryAccuracy>& estimate,
                         const std::optional<TrajectoryAccuracy>& odometry, std::size_t scans,
                         const OdometryCounts& counts, double seconds) {
-  std::ostringstream out;
-  out << "{\"scans\": " << scans << ", \"not_converged\": " << counts.not_converged
-      << ", \"untrusted\": " << counts.untrusted << ", \"recovered\": " << counts.recovered
-      << ", \"seconds\": " << json_number(seconds)
-      << ", \"estimate\": " << (estimate ? accuracy_json(*estimate) : "null")
-      << ", \"odometry\": " << (odometry ? accuracy_json(*odometry) : "null") << "}\n";
-  write_file_atomically(file, out.str());
+  const Json metrics = {{"scans", scans},
+                        {"not_converged", counts.not_converged},
+                        {"untrusted", counts.untrusted},
+                        {"recovered", counts.recovered},
+                        {"seconds", json_value(seconds)},
+                        {"estimate", estimate ? accuracy_json(*estimate) : Json()},
+                        {"odometry", odometry ? accuracy_json(*odometry) : Json()}};
+  write_file_atomically(file, json_line(metrics) + "\n");
 }
 
 }  // namespace sextant::cli
