@@ -28,4 +28,6 @@ if(SEXTANT_BUILD_TESTS)
 endif()
 if(SEXTANT_BUILD_BENCHMARKS)
   find_package(benchmark REQUIRED)
+  # Only bench/bench_kd_tree.cpp, which measures ICP's k-d tree against it.
+  find_package(nanoflann REQUIRED)
 endif()
