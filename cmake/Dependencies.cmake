@@ -5,6 +5,8 @@ find_package(yaml-cpp REQUIRED)
 find_package(fmt REQUIRED)
 find_package(TBB REQUIRED)
 find_package(CLI11 REQUIRED)
+# JSON of the result rows, provenance and metrics (experiments/json.hpp).
+find_package(nlohmann_json 3.2 REQUIRED)
 find_package(Ceres REQUIRED)
 
 # GeographicLib ships its Find module outside CMake's default search path on Debian.
@@ -26,4 +28,6 @@ if(SEXTANT_BUILD_TESTS)
 endif()
 if(SEXTANT_BUILD_BENCHMARKS)
   find_package(benchmark REQUIRED)
+  # Only bench/bench_kd_tree.cpp, which measures ICP's k-d tree against it.
+  find_package(nanoflann REQUIRED)
 endif()

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <boost/math/distributions/binomial.hpp>
 #include <boost/math/distributions/students_t.hpp>
 
 #include "sextant/core/units.hpp"
@@ -28,12 +29,9 @@ double sorted_median(const std::vector<double>& v) {
 double order_statistic_coverage(std::size_t n, std::size_t j) {
   if (n == 0 || 2 * j + 1 > n) return 0.0;
   // The median is missed when at most j values fall below it, or at most j above: 1 − 2·P(X ≤ j),
-  // X ~ Binomial(n, ½), the terms in log space.
-  double tail = 0.0;
-  for (std::size_t i = 0; i <= j; ++i)
-    tail += std::exp(std::lgamma(static_cast<double>(n) + 1.0) - std::lgamma(static_cast<double>(i) + 1.0) -
-                     std::lgamma(static_cast<double>(n - i) + 1.0) - static_cast<double>(n) * std::log(2.0));
-  return std::max(0.0, 1.0 - 2.0 * tail);
+  // X ~ Binomial(n, ½) (Boost.Math).
+  const boost::math::binomial_distribution<double> x(static_cast<double>(n), 0.5);
+  return std::max(0.0, 1.0 - 2.0 * boost::math::cdf(x, static_cast<double>(j)));
 }
 
 Interval median_interval(const std::vector<double>& values, double confidence) {

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <limits>
 
+#include <boost/math/distributions/binomial.hpp>
+
 #include "sextant/core/chi_square.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/core/units.hpp"
@@ -17,9 +19,9 @@ Interval undefined(double confidence, std::size_t n = 0) {
   return {kNaN, kNaN, kNaN, confidence, n};
 }
 
-/// Two-sided standard-normal quantile z with P(|Z| ≤ z) = confidence (z² ~ χ²(1)).
+/// Two-sided standard-normal quantile z with P(|Z| ≤ z) = confidence.
 double two_sided_z(double confidence) {
-  return std::sqrt(chi_square_quantile(confidence, 1.0));
+  return normal_quantile(0.5 + 0.5 * confidence);
 }
 
 std::vector<double> finite_values(const std::vector<double>& values) {
@@ -147,15 +149,9 @@ double mcnemar_p_value(std::size_t only_a, std::size_t only_b) {
   const std::size_t n = only_a + only_b;
   if (n == 0) return 1.0;
   const std::size_t k = std::min(only_a, only_b);
-  // 2 · P(X ≤ k) for X ~ Binomial(n, 1/2), summed in log space.
-  double tail = 0.0;
-  for (std::size_t i = 0; i <= k; ++i) {
-    const double log_term =
-        std::lgamma(static_cast<double>(n) + 1.0) - std::lgamma(static_cast<double>(i) + 1.0) -
-        std::lgamma(static_cast<double>(n - i) + 1.0) - static_cast<double>(n) * std::log(2.0);
-    tail += std::exp(log_term);
-  }
-  return std::min(1.0, 2.0 * tail);
+  // 2 · P(X ≤ k) for X ~ Binomial(n, 1/2) (Boost.Math).
+  const boost::math::binomial_distribution<double> x(static_cast<double>(n), 0.5);
+  return std::min(1.0, 2.0 * boost::math::cdf(x, static_cast<double>(k)));
 }
 
 PairedRates compare_paired_successes(const std::vector<bool>& a, const std::vector<bool>& b,

@@ -2,111 +2,116 @@
 
 #include <cmath>
 #include <cstdio>
-#include <map>
 
 namespace sextant {
 namespace {
 
-bool looks_like_json_number(const std::string& s) {
-  if (s.empty()) return false;
-  char* end = nullptr;
-  const double v = std::strtod(s.c_str(), &end);
-  if (end != s.c_str() + s.size() || !std::isfinite(v)) return false;
-  // JSON forbids leading '+', leading zeros and a bare '.', which strtod accepts.
-  const std::size_t digits = s[0] == '-' ? 1 : 0;
-  if (s[0] == '+' || s.size() <= digits) return false;
-  if (s[digits] == '.' ||
-      (s[digits] == '0' && s.size() > digits + 1 && std::isdigit(static_cast<unsigned char>(s[digits + 1]))))
-    return false;
-  return s.find_first_of("xXnN") == std::string::npos;
+/// A plain YAML scalar that is a JSON number or boolean, as that value; null otherwise. A quoted
+/// scalar (tag "!") stays a string, and so does a number JSON cannot hold (1e999, .inf, 0x1F).
+Json typed_scalar(const YAML::Node& node) {
+  if (node.Tag() == "!") return nullptr;
+  const Json v = Json::parse(node.Scalar(), nullptr, false);
+  if (v.is_boolean() || v.is_number_integer()) return v;
+  if (v.is_number_float() && std::isfinite(v.get<double>())) return v;
+  return nullptr;
 }
 
-std::string scalar_json(const YAML::Node& node, bool typed) {
-  const std::string& s = node.Scalar();
-  if (typed && node.Tag() != "!") {  // a quoted scalar has tag "!" and stays a string
-    if (looks_like_json_number(s) || s == "true" || s == "false") return s;
-  }
-  return json_string(s);
-}
-
-std::string node_json(const YAML::Node& node, bool canonical) {
+/// The YAML node as JSON: `canonical` keeps every scalar a string and sorts the maps by key.
+template <class J>
+J node_json(const YAML::Node& node, bool canonical) {
   switch (node.Type()) {
-    case YAML::NodeType::Scalar: return scalar_json(node, !canonical);
-    case YAML::NodeType::Sequence: {
-      std::string out = "[";
-      for (std::size_t i = 0; i < node.size(); ++i) {
-        if (i) out += ",";
-        out += node_json(node[i], canonical);
+    case YAML::NodeType::Scalar: {
+      if (!canonical) {
+        Json typed = typed_scalar(node);
+        if (!typed.is_null()) return J(typed);
       }
-      return out + "]";
+      return J(node.Scalar());
+    }
+    case YAML::NodeType::Sequence: {
+      J out = J::array();
+      for (const auto& item : node) out.push_back(node_json<J>(item, canonical));
+      return out;
     }
     case YAML::NodeType::Map: {
-      std::map<std::string, std::string> sorted;
-      std::string out = "{";
-      bool first = true;
-      for (const auto& entry : node) {
-        const std::string key = entry.first.as<std::string>();
-        const std::string value = node_json(entry.second, canonical);
-        if (canonical) {
-          sorted[key] = value;
-        } else {
-          out += (first ? "" : ",") + json_string(key) + ":" + value;
-          first = false;
-        }
-      }
-      if (!canonical) return out + "}";
-      for (const auto& [key, value] : sorted) {
-        out += (first ? "" : ",") + json_string(key) + ":" + value;
-        first = false;
-      }
-      return out + "}";
+      J out = J::object();  // nlohmann::json sorts its keys, ordered_json keeps the file's order
+      for (const auto& entry : node)
+        out[entry.first.as<std::string>()] = node_json<J>(entry.second, canonical);
+      return out;
     }
-    default: return "null";
+    default: return nullptr;
+  }
+}
+
+/// Compact text; bytes that are not UTF-8 become U+FFFD instead of throwing.
+template <class J>
+std::string dump(const J& value) {
+  return value.dump(-1, ' ', false, J::error_handler_t::replace);
+}
+
+void append_line(const Json& value, std::string& out) {
+  if (value.is_object()) {
+    out += '{';
+    bool first = true;
+    for (const auto& [key, item] : value.items()) {
+      out += first ? "" : ", ";
+      out += dump(Json(key)) + ": ";
+      append_line(item, out);
+      first = false;
+    }
+    out += '}';
+  } else if (value.is_array()) {
+    out += '[';
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      if (i) out += ", ";
+      append_line(value[i], out);
+    }
+    out += ']';
+  } else {
+    out += dump(value);
   }
 }
 
 }  // namespace
 
 std::string json_string(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\r': out += "\\r"; break;
-      case '\t': out += "\\t"; break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char buf[8];
-          std::snprintf(buf, sizeof buf, "\\u%04x", static_cast<unsigned>(static_cast<unsigned char>(c)));
-          out += buf;
-        } else {
-          out += c;
-        }
-    }
-  }
-  return out + "\"";
+  return dump(Json(text));
 }
 
 std::string json_number(double value) {
-  if (!std::isfinite(value)) return "null";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", value);
-  // Prefer the shortest representation that reads back exactly.
-  for (int precision = 6; precision < 17; ++precision) {
-    char shorter[32];
-    std::snprintf(shorter, sizeof shorter, "%.*g", precision, value);
-    if (std::strtod(shorter, nullptr) == value) return shorter;
+  return dump(json_value(value));
+}
+
+Json json_value(double value) {
+  return std::isfinite(value) ? Json(value) : Json(nullptr);
+}
+
+std::string json_line(const Json& value) {
+  std::string out;
+  append_line(value, out);
+  return out;
+}
+
+std::string json_lines(const Json& object, const std::set<std::string>& compact) {
+  std::string out = "{\n";
+  bool first = true;
+  for (const auto& [key, item] : object.items()) {
+    out += first ? "  " : ",\n  ";
+    out += dump(Json(key)) + ": " + (compact.count(key) ? dump(item) : json_line(item));
+    first = false;
   }
-  return buf;
+  return out + "\n}\n";
 }
 
 std::string canonical_json(const YAML::Node& node) {
-  return node_json(node, true);
+  return dump(node_json<nlohmann::json>(node, true));
 }
+
+Json yaml_to_json(const YAML::Node& node) {
+  return node_json<Json>(node, false);
+}
+
 std::string to_json(const YAML::Node& node) {
-  return node_json(node, false);
+  return dump(yaml_to_json(node));
 }
 
 std::uint64_t stable_hash(const std::string& text) {

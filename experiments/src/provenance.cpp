@@ -9,6 +9,7 @@
 #include <ceres/version.h>
 #include <oneapi/tbb/version.h>
 #include <Eigen/Core>
+#include <boost/version.hpp>
 
 #include "sextant/experiments/json.hpp"
 
@@ -55,11 +56,20 @@ GitState current_git_state() {
 std::string library_versions_json() {
   const std::string eigen = std::to_string(EIGEN_WORLD_VERSION) + "." + std::to_string(EIGEN_MAJOR_VERSION) +
                             "." + std::to_string(EIGEN_MINOR_VERSION);
-  return "{\"eigen\": " + json_string(eigen) + ", \"yaml-cpp\": " + json_string(SEXTANT_YAMLCPP_VERSION) +
-         ", \"tbb\": " + json_string(TBB_VERSION_STRING) +
-         ", \"ceres\": " + json_string(CERES_VERSION_STRING) +
-         ", \"pcl\": " + json_string(SEXTANT_PCL_VERSION) + ", \"fmt\": " + json_string(SEXTANT_FMT_VERSION) +
-         "}";
+  const std::string nlohmann = std::to_string(NLOHMANN_JSON_VERSION_MAJOR) + "." +
+                               std::to_string(NLOHMANN_JSON_VERSION_MINOR) + "." +
+                               std::to_string(NLOHMANN_JSON_VERSION_PATCH);
+  const std::string boost = std::to_string(BOOST_VERSION / 100000) + "." +
+                            std::to_string(BOOST_VERSION / 100 % 1000) + "." +
+                            std::to_string(BOOST_VERSION % 100);
+  return json_line(Json{{"eigen", eigen},
+                        {"yaml-cpp", SEXTANT_YAMLCPP_VERSION},
+                        {"tbb", TBB_VERSION_STRING},
+                        {"ceres", CERES_VERSION_STRING},
+                        {"pcl", SEXTANT_PCL_VERSION},
+                        {"fmt", SEXTANT_FMT_VERSION},
+                        {"nlohmann-json", nlohmann},
+                        {"boost", boost}});
 }
 
 std::string host_name() {

@@ -35,19 +35,22 @@ std::string escape(const std::string& s) {
   return escape_html(s);
 }
 
+/// The "profile" a provenance file records; "" when it has none or cannot be read.
+std::string recorded_profile(const fs::path& file) {
+  const Json provenance = Json::parse(read_text(file), nullptr, false);
+  if (!provenance.is_object() || !provenance.contains("profile") || !provenance["profile"].is_string())
+    return "";
+  return provenance["profile"].get<std::string>();
+}
+
 /// "quick" or "full" as the runner recorded it in the folders' provenance ("" when unknown, "mixed" when
 /// the folders disagree).
 std::string profile_of(const std::vector<fs::path>& folders) {
   std::string profile;
   for (const auto& folder : folders) {
     for (const auto& file : provenance_files(folder)) {
-      std::string found;
-      try {
-        const YAML::Node node = YAML::LoadFile(file.string());
-        if (node.IsMap() && node["profile"].IsScalar()) found = node["profile"].Scalar();
-      } catch (const YAML::Exception&) {
-        continue;  // a provenance file being written or damaged does not decide the profile
-      }
+      // A provenance file being written or damaged does not decide the profile.
+      const std::string found = recorded_profile(file);
       if (found.empty()) continue;
       if (!profile.empty() && profile != found) return "mixed";
       profile = found;
@@ -150,7 +153,7 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
         parse_experiment_config(load_yaml_file(config_path.string()), config_path.string(), false);
     // The profile the runs were made with (experiment.yaml already holds the quick overrides).
     for (const auto& file : provenance_files(folders.front()))
-      config.quick = config.quick || read_text(file).find("\"profile\": \"quick\"") != std::string::npos;
+      config.quick = config.quick || recorded_profile(file) == "quick";
     const std::string title = config.title.empty() ? name : config.title;
     const std::vector<RunSpec> runs = expand_runs(config);
     OverviewEntry& entry = overview.emplace_back();

@@ -14,20 +14,9 @@
 namespace sextant {
 namespace {
 
-double number_of(const YAML::Node& node) {
-  if (!node.IsDefined() || node.IsNull()) return kNaN;
-  return node.as<double>();
-}
-
-template <class Map, class Writer>
-std::string json_object(const Map& map, Writer write_value) {
-  std::string out = "{";
-  bool first = true;
-  for (const auto& [key, value] : map) {
-    out += (first ? "" : ", ") + json_string(key) + ": " + write_value(value);
-    first = false;
-  }
-  return out + "}";
+/// A number of a row: null (NaN or ±Inf when written) reads back as NaN.
+double number_of(const Json& value) {
+  return value.is_number() ? value.get<double>() : kNaN;
 }
 
 std::string csv_field(const std::string& text) {
@@ -62,41 +51,48 @@ RunRow row_for(const RunSpec& run, const std::string& experiment) {
 }
 
 std::string to_json_line(const RunRow& row) {
-  std::string out =
-      "{\"key\": " + json_string(row.key) + ", \"experiment\": " + json_string(row.experiment) +
-      ", \"method\": " + json_string(row.method) +
-      ", \"point\": " + json_object(row.point, [](const std::string& v) { return json_string(v); }) +
-      ", \"repetition\": " + std::to_string(row.repetition) +
-      ", \"seed\": " + json_string(std::to_string(row.seed)) + ", \"ok\": " + (row.ok ? "true" : "false") +
-      ", \"error\": " + json_string(row.error) + ", \"seconds\": " + json_number(row.seconds) +
-      ", \"values\": " + json_object(row.values, [](double v) { return json_number(v); }) +
-      ", \"series\": " + json_object(row.series, [](const std::vector<double>& v) {
-        std::string s = "[";
-        for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + json_number(v[i]);
-        return s + "]";
-      });
-  return out + "}";
+  Json values = Json::object(), series = Json::object();
+  for (const auto& [name, v] : row.values) values[name] = json_value(v);
+  for (const auto& [name, v] : row.series) {
+    Json& s = series[name] = Json::array();
+    for (double x : v) s.push_back(json_value(x));
+  }
+  return json_line(Json{{"key", row.key},
+                        {"experiment", row.experiment},
+                        {"method", row.method},
+                        {"point", row.point},
+                        {"repetition", row.repetition},
+                        {"seed", std::to_string(row.seed)},
+                        {"ok", row.ok},
+                        {"error", row.error},
+                        {"seconds", json_value(row.seconds)},
+                        {"values", values},
+                        {"series", series}});
 }
 
 bool parse_json_line(const std::string& line, RunRow& row) {
   if (line.empty() || line.front() != '{' || line.back() != '}') return false;
   try {
-    const YAML::Node n = YAML::Load(line);
-    if (!n.IsMap() || !n["key"].IsScalar()) return false;
+    const Json n = Json::parse(line);
+    if (!n.is_object() || !n.contains("key") || !n["key"].is_string()) return false;
     row = RunRow{};
-    row.key = n["key"].as<std::string>();
-    row.experiment = n["experiment"].as<std::string>("");
-    row.method = n["method"].as<std::string>("");
-    for (const auto& e : n["point"]) row.point[e.first.as<std::string>()] = e.second.as<std::string>();
-    row.repetition = n["repetition"].as<int>(0);
-    row.seed = std::stoull(n["seed"].as<std::string>("0"));
-    row.ok = n["ok"].as<bool>(false);
-    row.error = n["error"].as<std::string>("");
-    row.seconds = number_of(n["seconds"]);
-    for (const auto& e : n["values"]) row.values[e.first.as<std::string>()] = number_of(e.second);
-    for (const auto& e : n["series"]) {
-      auto& s = row.series[e.first.as<std::string>()];
-      for (const auto& v : e.second) s.push_back(number_of(v));
+    row.key = n["key"].get<std::string>();
+    row.experiment = n.value("experiment", "");
+    row.method = n.value("method", "");
+    if (n.contains("point"))
+      for (const auto& [name, v] : n["point"].items()) row.point[name] = v.get<std::string>();
+    row.repetition = n.value("repetition", 0);
+    row.seed = std::stoull(n.value("seed", "0"));
+    row.ok = n.value("ok", false);
+    row.error = n.value("error", "");
+    row.seconds = number_of(n.value("seconds", Json()));
+    if (n.contains("values"))
+      for (const auto& [name, v] : n["values"].items()) row.values[name] = number_of(v);
+    if (n.contains("series")) {
+      for (const auto& [name, list] : n["series"].items()) {
+        auto& s = row.series[name];
+        for (const auto& v : list) s.push_back(number_of(v));
+      }
     }
     return true;
   } catch (const std::exception&) {

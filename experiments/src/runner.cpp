@@ -53,30 +53,28 @@ struct ProvenanceInput {
 std::string provenance_json(const ProvenanceInput& p) {
   const GitState git = current_git_state();
   const auto& s = *p.summary;
-  std::string out = "{\n";
-  out += "  \"experiment\": " + json_string(p.config->name) + ",\n";
-  out += "  \"kind\": " + json_string(p.config->kind) + ",\n";
-  out += "  \"config_file\": " + json_string(p.config->file) + ",\n";
-  out += "  \"profile\": " + json_string(p.options->quick ? "quick" : "full") + ",\n";
-  out += "  \"seed\": " + json_string(std::to_string(p.config->seed)) + ",\n";
-  out += "  \"git\": {\"sha\": " + json_string(git.sha) + ", \"dirty\": " + (git.dirty ? "true" : "false") +
-         ", \"source\": " + json_string(git.source) + "},\n";
-  out += "  \"libraries\": " + library_versions_json() + ",\n";
-  out += "  \"host\": " + json_string(host_name()) + ",\n";
-  out += "  \"threads\": " + std::to_string(p.threads) + ",\n";
-  out += "  \"hardware_threads\": " + std::to_string(std::thread::hardware_concurrency()) + ",\n";
-  out +=
-      "  \"shard\": " +
-      json_string(std::to_string(p.options->shard.index + 1) + "/" + std::to_string(p.options->shard.count)) +
-      ",\n";
-  out += "  \"start\": " + json_string(p.start) + ",\n";
-  out += "  \"end\": " + (p.end.empty() ? std::string("null") : json_string(p.end)) + ",\n";
-  out += "  \"runs\": {\"total\": " + std::to_string(s.total) +
-         ", \"in_shard\": " + std::to_string(s.in_shard) + ", \"skipped\": " + std::to_string(s.skipped) +
-         ", \"executed\": " + std::to_string(s.executed) + ", \"failed\": " + std::to_string(s.failed) +
-         "},\n";
-  out += "  \"resolved_config\": " + to_json(p.config->effective) + "\n}\n";
-  return out;
+  const Json provenance = {
+      {"experiment", p.config->name},
+      {"kind", p.config->kind},
+      {"config_file", p.config->file},
+      {"profile", p.options->quick ? "quick" : "full"},
+      {"seed", std::to_string(p.config->seed)},
+      {"git", {{"sha", git.sha}, {"dirty", git.dirty}, {"source", git.source}}},
+      {"libraries", Json::parse(library_versions_json())},
+      {"host", host_name()},
+      {"threads", p.threads},
+      {"hardware_threads", std::thread::hardware_concurrency()},
+      {"shard", std::to_string(p.options->shard.index + 1) + "/" + std::to_string(p.options->shard.count)},
+      {"start", p.start},
+      {"end", p.end.empty() ? Json() : Json(p.end)},
+      {"runs",
+       {{"total", s.total},
+        {"in_shard", s.in_shard},
+        {"skipped", s.skipped},
+        {"executed", s.executed},
+        {"failed", s.failed}}},
+      {"resolved_config", yaml_to_json(p.config->effective)}};
+  return json_lines(provenance, {"resolved_config"});
 }
 
 struct Loaded {

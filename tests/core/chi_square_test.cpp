@@ -1,4 +1,5 @@
-// χ² CDF and quantiles against printed table values (Abramowitz & Stegun, table 26.8).
+// χ² CDF and quantiles, and the normal quantile, against printed table values (Abramowitz & Stegun,
+// tables 26.1 and 26.8).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,6 +20,21 @@ TEST(ChiSquare, QuantilesMatchTables) {
     EXPECT_NEAR(chi_square_quantile(r.p, r.dof), r.x, 1e-5 * r.x) << r.p << " " << r.dof;
     EXPECT_NEAR(chi_square_cdf(r.x, r.dof), r.p, 1e-6) << r.p << " " << r.dof;
   }
+}
+
+TEST(ChiSquare, QuantilesToNineDigits) {
+  EXPECT_NEAR(chi_square_quantile(0.95, 3), 7.814727903, 1e-9);
+  EXPECT_NEAR(chi_square_quantile(0.99, 4), 13.27670414, 1e-8);
+  EXPECT_NEAR(chi_square_cdf(7.814727903, 3), 0.95, 1e-10);
+}
+
+TEST(NormalQuantile, MatchesTables) {
+  EXPECT_NEAR(normal_quantile(0.975), 1.959963985, 1e-9);
+  EXPECT_NEAR(normal_quantile(0.995), 2.575829304, 1e-9);
+  EXPECT_NEAR(normal_quantile(0.5), 0.0, 1e-15);
+  EXPECT_NEAR(normal_quantile(0.025), -1.959963985, 1e-9);
+  EXPECT_THROW(normal_quantile(0.0), std::invalid_argument);
+  EXPECT_THROW(normal_quantile(1.0), std::invalid_argument);
 }
 
 TEST(ChiSquare, ClosedFormsForTwoDegreesOfFreedom) {

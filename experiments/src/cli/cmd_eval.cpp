@@ -65,10 +65,12 @@ std::string stats_row(const std::string& name, const SampleStats& s, double scal
          std::to_string(s.count) + " |\n";
 }
 
-std::string stats_json(const SampleStats& s, double scale) {
-  return "{\"rms\": " + json_number(s.rms * scale) + ", \"mean\": " + json_number(s.mean * scale) +
-         ", \"median\": " + json_number(s.median * scale) + ", \"max\": " + json_number(s.max * scale) +
-         ", \"count\": " + std::to_string(s.count) + "}";
+Json stats_json(const SampleStats& s, double scale) {
+  return {{"rms", json_value(s.rms * scale)},
+          {"mean", json_value(s.mean * scale)},
+          {"median", json_value(s.median * scale)},
+          {"max", json_value(s.max * scale)},
+          {"count", s.count}};
 }
 
 /// Top view of both trajectories, and the ATE's translation error along the reference's path.
@@ -120,25 +122,29 @@ int run_eval(const EvalOptions& o) {
 
   const double deg = kDegPerRad;
   if (o.json) {
-    std::ostringstream j;
-    j << "{\"reference\": " << json_string(o.reference) << ", \"estimate\": " << json_string(o.estimate)
-      << ", \"pairs\": " << pairs.estimate.size() << ", \"associated_by\": \""
-      << (by_stamp ? "stamp" : "index") << "\", \"unmatched_estimate\": " << pairs.unmatched_estimate
-      << ", \"unmatched_reference\": " << pairs.unmatched_reference
-      << ", \"largest_stamp_difference_s\": " << json_number(pairs.largest_difference)
-      << ", \"alignment\": {\"kind\": \"" << o.align
-      << "\", \"scale\": " << json_number(e.ate.alignment.scale)
-      << ", \"translation_m\": " << json_number(e.ate.alignment.translation.norm()) << "}"
-      << ", \"summary\": " << accuracy_json(a) << ", \"ate_m\": " << stats_json(e.ate.translation, 1.0)
-      << ", \"ate_deg\": " << stats_json(e.ate.rotation, deg)
-      << ", \"rpe_m\": " << stats_json(e.rpe.translation, 1.0)
-      << ", \"rpe_deg\": " << stats_json(e.rpe.rotation, deg) << ", \"rpe_delta\": " << json_number(o.delta)
-      << ", \"rpe_delta_unit\": \"" << o.delta_unit
-      << "\", \"wulf_position_m\": " << json_number(e.wulf.position_rms)
-      << ", \"wulf_orientation_deg\": " << json_number(e.wulf.orientation_rms * deg)
-      << ", \"kummerle_translation_m\": " << json_number(e.kummerle.translation_rms)
-      << ", \"kummerle_rotation_deg\": " << json_number(e.kummerle.rotation_rms * deg) << "}\n";
-    std::cout << j.str();
+    const Json j = {{"reference", o.reference},
+                    {"estimate", o.estimate},
+                    {"pairs", pairs.estimate.size()},
+                    {"associated_by", by_stamp ? "stamp" : "index"},
+                    {"unmatched_estimate", pairs.unmatched_estimate},
+                    {"unmatched_reference", pairs.unmatched_reference},
+                    {"largest_stamp_difference_s", json_value(pairs.largest_difference)},
+                    {"alignment",
+                     {{"kind", o.align},
+                      {"scale", json_value(e.ate.alignment.scale)},
+                      {"translation_m", json_value(e.ate.alignment.translation.norm())}}},
+                    {"summary", accuracy_json(a)},
+                    {"ate_m", stats_json(e.ate.translation, 1.0)},
+                    {"ate_deg", stats_json(e.ate.rotation, deg)},
+                    {"rpe_m", stats_json(e.rpe.translation, 1.0)},
+                    {"rpe_deg", stats_json(e.rpe.rotation, deg)},
+                    {"rpe_delta", json_value(o.delta)},
+                    {"rpe_delta_unit", o.delta_unit},
+                    {"wulf_position_m", json_value(e.wulf.position_rms)},
+                    {"wulf_orientation_deg", json_value(e.wulf.orientation_rms * deg)},
+                    {"kummerle_translation_m", json_value(e.kummerle.translation_rms)},
+                    {"kummerle_rotation_deg", json_value(e.kummerle.rotation_rms * deg)}};
+    std::cout << json_line(j) << "\n";
     return 0;
   }
   if (verbosity() == Verbosity::kQuiet) {

@@ -25,6 +25,7 @@
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/eval/cloud_view.hpp"
+#include "sextant/experiments/json.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/mlndt_presets.hpp"
@@ -145,61 +146,50 @@ PoseError pose_error(const Eigen::Isometry3d& truth, const Eigen::Isometry3d& es
   return {100.0 * translation_norm(E), kDegPerRad * rotation_angle(E)};
 }
 
-std::string json_number(double v) {
-  if (!std::isfinite(v)) return "null";
-  std::ostringstream out;
-  out << std::setprecision(12) << v;
-  return out.str();
-}
-
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (const char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
-
 template <class Matrix>
-std::string json_matrix(const Matrix& M) {
-  std::string out = "[";
+Json json_matrix(const Matrix& M) {
+  Json rows = Json::array();
   for (int i = 0; i < M.rows(); ++i) {
-    out += i ? ", [" : "[";
-    for (int j = 0; j < M.cols(); ++j) out += (j ? ", " : "") + json_number(M(i, j));
-    out += "]";
+    Json row = Json::array();
+    for (int j = 0; j < M.cols(); ++j) row.push_back(json_value(M(i, j)));
+    rows.push_back(row);
   }
-  return out + "]";
+  return rows;
 }
 
 void print_json(const MatchOptions& o, const PairMatch& m, const std::string& search,
                 const std::optional<PoseError>& error) {
   const RegistrationResult& r = m.result;
-  std::ostringstream out;
-  out << "{\"method\": " << json_string(o.method) << ", \"sampling\": " << json_string(o.sampling)
-      << ", \"transform\": " << json_matrix(r.T.matrix())
-      << ", \"parameters\": [\"x_m\", \"y_m\", \"z_m\", \"alpha_rad\", \"beta_rad\", \"gamma_rad\"]"
-      << ", \"hessian\": " << json_matrix(r.H)
-      << ", \"covariance\": " << json_matrix(registration_covariance(r.H)) << ", \"matched_fraction\": "
-      << json_number(r.input_points
-                         ? static_cast<double>(r.matched_points) / static_cast<double>(r.input_points)
-                         : kNaN)
-      << ", \"out\": " << (o.out.empty() ? "null" : json_string(o.out))
-      << ", \"view\": " << (o.view.empty() ? "null" : json_string(o.view))
-      << ", \"converged\": " << (r.converged ? "true" : "false")
-      << ", \"termination\": " << json_string(to_string(r.why)) << ", \"iterations\": " << r.iterations
-      << ", \"seconds\": " << json_number(r.seconds)
-      << ", \"reference_seconds\": " << json_number(m.reference_seconds)
-      << ", \"score\": " << json_number(r.score) << ", \"matched_points\": " << r.matched_points
-      << ", \"input_points\": " << r.input_points << ", \"kept_fraction\": " << json_number(m.kept_fraction)
-      << ", \"trust\": " << json_string(to_string(r.quality.trust))
-      << ", \"trust_reason\": " << json_string(r.quality.reason)
-      << ", \"overlap\": " << json_number(r.quality.overlap)
-      << ", \"constraint_ratio\": " << json_number(r.quality.constraint_ratio)
-      << ", \"fit_ratio\": " << json_number(r.quality.fit_ratio) << ", \"search\": " << json_string(search)
-      << ", \"error_cm\": " << (error ? json_number(error->cm) : "null")
-      << ", \"error_deg\": " << (error ? json_number(error->deg) : "null") << "}\n";
-  std::cout << out.str();
+  const auto text_or_null = [](const std::string& text) { return text.empty() ? Json() : Json(text); };
+  const Json j = {{"method", o.method},
+                  {"sampling", o.sampling},
+                  {"transform", json_matrix(r.T.matrix())},
+                  {"parameters", {"x_m", "y_m", "z_m", "alpha_rad", "beta_rad", "gamma_rad"}},
+                  {"hessian", json_matrix(r.H)},
+                  {"covariance", json_matrix(registration_covariance(r.H))},
+                  {"matched_fraction", json_value(r.input_points ? static_cast<double>(r.matched_points) /
+                                                                       static_cast<double>(r.input_points)
+                                                                 : kNaN)},
+                  {"out", text_or_null(o.out)},
+                  {"view", text_or_null(o.view)},
+                  {"converged", r.converged},
+                  {"termination", to_string(r.why)},
+                  {"iterations", r.iterations},
+                  {"seconds", json_value(r.seconds)},
+                  {"reference_seconds", json_value(m.reference_seconds)},
+                  {"score", json_value(r.score)},
+                  {"matched_points", r.matched_points},
+                  {"input_points", r.input_points},
+                  {"kept_fraction", json_value(m.kept_fraction)},
+                  {"trust", to_string(r.quality.trust)},
+                  {"trust_reason", r.quality.reason},
+                  {"overlap", json_value(r.quality.overlap)},
+                  {"constraint_ratio", json_value(r.quality.constraint_ratio)},
+                  {"fit_ratio", json_value(r.quality.fit_ratio)},
+                  {"search", search},
+                  {"error_cm", error ? json_value(error->cm) : Json()},
+                  {"error_deg", error ? json_value(error->deg) : Json()}};
+  std::cout << json_line(j) << "\n";
 }
 
 /// -v: the optimiser's iterations (layer, score, step, matched points).

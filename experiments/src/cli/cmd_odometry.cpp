@@ -80,31 +80,43 @@ std::string provenance_json(const OdometryOptions& o, const MatcherConfig& confi
                             const DatasetMetadata& meta, const OdometrySettings& s, std::size_t scans,
                             const std::string& start, double seconds) {
   const GitState git = current_git_state();
-  std::ostringstream out;
-  out << "{\n  \"command\": \"odometry\",\n  \"dataset\": {\"argument\": " << json_string(o.dataset)
-      << ", \"name\": " << json_string(meta.name) << ", \"format\": " << json_string(meta.format)
-      << ", \"path\": " << json_string(meta.path.string()) << ", \"scans\": " << meta.scan_count
-      << ", \"campus_seed\": " << o.campus_seed << ", \"poses\": " << json_string(o.poses)
-      << "},\n  \"first\": " << o.first << ",\n  \"scans\": " << scans
-      << ",\n  \"method\": " << json_string(o.method) << ",\n  \"preset\": " << json_string(o.preset)
-      << ",\n  \"solver\": " << json_string(o.solver) << ",\n  \"sampling\": " << json_string(o.sampling)
-      << ",\n  \"config_file\": " << json_string(o.config)
-      << ",\n  \"matcher_settings\": " << to_json(config.matcher) << ",\n  \"sampler_settings\": "
-      << (config.sampler.IsDefined() && !config.sampler.IsNull() ? to_json(config.sampler) : "null")
-      << ",\n  \"matcher_resolved\": " << to_json(resolved["matcher"])
-      << ",\n  \"sampler_resolved\": " << to_json(resolved["sampler"])
-      << ",\n  \"guess\": " << json_string(to_string(s.guess))
-      << ",\n  \"map\": " << json_string(to_string(s.map))
-      << ",\n  \"loop_closure\": " << json_string(o.loop_closure)
-      << ",\n  \"local_map_scans\": " << s.local_map_scans
-      << ",\n  \"min_range\": " << json_number(s.min_range)
-      << ",\n  \"recover\": " << (s.recover ? "true" : "false") << ",\n  \"seed\": " << s.seed
-      << ",\n  \"jobs\": " << o.jobs << ",\n  \"git\": {\"sha\": " << json_string(git.sha)
-      << ", \"dirty\": " << (git.dirty ? "true" : "false") << ", \"source\": " << json_string(git.source)
-      << "},\n  \"libraries\": " << library_versions_json() << ",\n  \"host\": " << json_string(host_name())
-      << ",\n  \"start\": " << json_string(start) << ",\n  \"end\": " << json_string(iso_time_now())
-      << ",\n  \"seconds\": " << json_number(seconds) << "\n}\n";
-  return out.str();
+  const bool sampler = config.sampler.IsDefined() && !config.sampler.IsNull();
+  const Json provenance = {{"command", "odometry"},
+                           {"dataset",
+                            {{"argument", o.dataset},
+                             {"name", meta.name},
+                             {"format", meta.format},
+                             {"path", meta.path.string()},
+                             {"scans", meta.scan_count},
+                             {"campus_seed", o.campus_seed},
+                             {"poses", o.poses}}},
+                           {"first", o.first},
+                           {"scans", scans},
+                           {"method", o.method},
+                           {"preset", o.preset},
+                           {"solver", o.solver},
+                           {"sampling", o.sampling},
+                           {"config_file", o.config},
+                           {"matcher_settings", yaml_to_json(config.matcher)},
+                           {"sampler_settings", sampler ? yaml_to_json(config.sampler) : Json()},
+                           {"matcher_resolved", yaml_to_json(resolved["matcher"])},
+                           {"sampler_resolved", yaml_to_json(resolved["sampler"])},
+                           {"guess", to_string(s.guess)},
+                           {"map", to_string(s.map)},
+                           {"loop_closure", o.loop_closure},
+                           {"local_map_scans", s.local_map_scans},
+                           {"min_range", json_value(s.min_range)},
+                           {"recover", s.recover},
+                           {"seed", s.seed},
+                           {"jobs", o.jobs},
+                           {"git", {{"sha", git.sha}, {"dirty", git.dirty}, {"source", git.source}}},
+                           {"libraries", Json::parse(library_versions_json())},
+                           {"host", host_name()},
+                           {"start", start},
+                           {"end", iso_time_now()},
+                           {"seconds", json_value(seconds)}};
+  return json_lines(provenance,
+                    {"matcher_settings", "sampler_settings", "matcher_resolved", "sampler_resolved"});
 }
 
 /// -v: one line per registration (steps.csv has every column).

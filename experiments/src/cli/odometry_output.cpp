@@ -106,20 +106,21 @@ void write_metrics_json(const std::filesystem::path& file, const std::optional<T
                         const std::optional<TrajectoryAccuracy>& odometry, std::size_t scans,
                         const OdometryCounts& counts, double seconds,
                         const std::optional<LoopClosureSummary>& loops) {
-  std::ostringstream out;
-  out << "{\"scans\": " << scans << ", \"not_converged\": " << counts.not_converged
-      << ", \"untrusted\": " << counts.untrusted << ", \"recovered\": " << counts.recovered
-      << ", \"seconds\": " << json_number(seconds)
-      << ", \"estimate\": " << (estimate ? accuracy_json(*estimate) : "null")
-      << ", \"odometry\": " << (odometry ? accuracy_json(*odometry) : "null");
+  Json metrics = {{"scans", scans},
+                  {"not_converged", counts.not_converged},
+                  {"untrusted", counts.untrusted},
+                  {"recovered", counts.recovered},
+                  {"seconds", json_value(seconds)},
+                  {"estimate", estimate ? accuracy_json(*estimate) : Json()},
+                  {"odometry", odometry ? accuracy_json(*odometry) : Json()}};
   if (loops)
-    out << ", \"loop_closure\": {\"source\": " << json_string(loops->source)
-        << ", \"candidates\": " << loops->candidates << ", \"accepted\": " << loops->accepted
-        << ", \"seconds\": " << json_number(loops->seconds)
-        << ", \"descriptor_seconds\": " << json_number(loops->descriptor_seconds)
-        << ", \"chained\": " << (loops->chained ? accuracy_json(*loops->chained) : "null") << "}";
-  out << "}\n";
-  write_file_atomically(file, out.str());
+    metrics["loop_closure"] = {{"source", loops->source},
+                               {"candidates", loops->candidates},
+                               {"accepted", loops->accepted},
+                               {"seconds", json_value(loops->seconds)},
+                               {"descriptor_seconds", json_value(loops->descriptor_seconds)},
+                               {"chained", loops->chained ? accuracy_json(*loops->chained) : Json()}};
+  write_file_atomically(file, json_line(metrics) + "\n");
 }
 
 }  // namespace sextant::cli

@@ -47,17 +47,15 @@ std::string accuracy_line(const TrajectoryAccuracy& a, const std::string& rpe_pe
   return out.str();
 }
 
-std::string accuracy_json(const TrajectoryAccuracy& a) {
-  std::ostringstream out;
-  out << "{\"ate_m\": " << json_number(a.ate_translation)
-      << ", \"ate_deg\": " << json_number(a.ate_rotation * kDegPerRad)
-      << ", \"rpe_m\": " << json_number(a.rpe_translation)
-      << ", \"rpe_deg\": " << json_number(a.rpe_rotation * kDegPerRad)
-      << ", \"drift_segments\": " << a.drift_segments
-      << ", \"drift_percent\": " << (a.drift_segments ? json_number(a.drift_percent) : "null")
-      << ", \"drift_deg_per_100m\": " << (a.drift_segments ? json_number(a.drift_deg_per_100m) : "null")
-      << "}";
-  return out.str();
+Json accuracy_json(const TrajectoryAccuracy& a) {
+  const bool drift = a.drift_segments > 0;
+  return {{"ate_m", json_value(a.ate_translation)},
+          {"ate_deg", json_value(a.ate_rotation * kDegPerRad)},
+          {"rpe_m", json_value(a.rpe_translation)},
+          {"rpe_deg", json_value(a.rpe_rotation * kDegPerRad)},
+          {"drift_segments", a.drift_segments},
+          {"drift_percent", drift ? json_value(a.drift_percent) : Json()},
+          {"drift_deg_per_100m", drift ? json_value(a.drift_deg_per_100m) : Json()}};
 }
 
 }  // namespace sextant::cli

@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include "sextant/eval/trajectory_evaluation.hpp"
+#include "sextant/experiments/json.hpp"
 
 namespace sextant::cli {
 
@@ -33,6 +34,6 @@ std::string accuracy_line(const TrajectoryAccuracy& a, const std::string& rpe_pe
 
 /// {"ate_m": …, "ate_deg": …, "rpe_m": …, "rpe_deg": …, "drift_segments": …, "drift_percent": …,
 /// "drift_deg_per_100m": …} (drift null without segments).
-std::string accuracy_json(const TrajectoryAccuracy& a);
+Json accuracy_json(const TrajectoryAccuracy& a);
 
 }  // namespace sextant::cli

@@ -15,7 +15,8 @@ struct GitState {
 std::string sextant_version();
 /// Asks `git` in the source tree at run time; falls back to the SHA baked in at configure time.
 GitState current_git_state();
-/// {"eigen": "3.4.0", "yaml-cpp": ..., "tbb": ..., "ceres": ..., "pcl": ..., "fmt": ...} as JSON.
+/// {"eigen": "3.4.0", "yaml-cpp": ..., "tbb": ..., "ceres": ..., "pcl": ..., "fmt": ..., "nlohmann-json":
+/// ..., "boost": ...} as one line of JSON.
 std::string library_versions_json();
 std::string host_name();
 /// Local time as ISO 8601 ("2024-05-01T12:34:56+0200").
