@@ -7,6 +7,7 @@
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/features/merging.hpp"
+#include "sextant/features/yaml.hpp"
 #include "sextant/filters/innovation_gate.hpp"
 #include "sextant/filters/plane_slam_model.hpp"
 

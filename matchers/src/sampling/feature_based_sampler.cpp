@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/features/yaml.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 
 namespace sextant {
