@@ -9,7 +9,7 @@ namespace sextant {
 
 using mlndt_detail::LayerObjective;
 
-// The library's defaults are the `default` preset (mlndt_presets.hpp), measured best on the shared
+// The library's defaults are the `default` preset (matchers/yaml.hpp), measured best on the shared
 // real pairs and the campus (docs/matcher_defaults.md): LM, n = 4, s = 2, the finest layer's terms
 // truncated at 16 and unmatched points charged 16. The thesis' settings are the `thesis` preset.
 MlndtSettings::MlndtSettings() {
