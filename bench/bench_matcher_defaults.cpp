@@ -1,10 +1,10 @@
 // The measured table behind the defaults of `mlndt` and `sextant match` (issue 14,
-// docs/matcher_defaults.md): every combination of solver × layers × start layer × truncation (τ and how many of
-// the finest layers it applies to) × sampling on every
-// shared real pair and on campus pairs, from the guess a user has (identity; the tutorial guess for
-// PCL's room scans). Errors against each pair's reference pose: ground truth (Velodyne, campus, uos
-// .frames); cross-method consensus for the KITTI pair (its derived ground truth is withdrawn) and the
-// room scans (no ground truth): point-to-plane ICP, which the real-pair tests show agrees with ML-NDT.
+// docs/matcher_defaults.md): every combination of solver × layers × start layer × truncation (τ and how many
+// of the finest layers it applies to) × sampling on every shared real pair and on campus pairs, from the
+// guess a user has (identity; the tutorial guess for PCL's room scans). Errors against each pair's reference
+// pose: ground truth (Velodyne, campus, uos .frames); cross-method consensus for the KITTI pair (its derived
+// ground truth is withdrawn) and the room scans (no ground truth): point-to-plane ICP, which the real-pair
+// tests show agrees with ML-NDT.
 //
 //   build/bench/bench_matcher_defaults [solvers=newton,lm] > table.md
 #include <chrono>
@@ -16,6 +16,7 @@
 
 #include "bench_pairs.hpp"
 #include "sextant/matchers/samplers.hpp"
+#include "sextant/matchers/yaml.hpp"
 
 namespace {
 
@@ -53,14 +54,14 @@ int main(int argc, char** argv) {
             std::string settings = "{solver: " + solver + ", layers: " + std::to_string(layers) +
                                    ", start_layer: " + std::to_string(start_layer);
             if (truncated > 0)
-              settings += ", max_distance: 16, unmatched_penalty: 16, truncated_layers: " + std::to_string(truncated);
+              settings +=
+                  ", max_distance: 16, unmatched_penalty: 16, truncated_layers: " + std::to_string(truncated);
             settings += "}";
             const auto matcher = make_matcher("mlndt", YAML::Load(settings), "bench");
             const auto sampler = make_sampler(sampling, label == "gbs 0.5 m × 10"
                                                             ? YAML::Load("{cell_size: 0.5, max_per_cell: 10}")
                                                             : YAML::Node());
-            const std::string truncation =
-                truncated == 0 ? "off" : "16 in last " + std::to_string(truncated);
+            const std::string truncation = truncated == 0 ? "off" : "16 in last " + std::to_string(truncated);
             std::printf("| %s | %d | %d | %s | %s |", solver.c_str(), layers, start_layer, truncation.c_str(),
                         label.c_str());
             double worst = 0.0, seconds = 0.0;

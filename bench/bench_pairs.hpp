@@ -15,6 +15,7 @@
 #include "sextant/core/rng.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/sampler.hpp"
+#include "sextant/matchers/yaml.hpp"
 #include "sextant/synth/campus.hpp"
 
 namespace sextant::bench {

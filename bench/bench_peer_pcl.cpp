@@ -28,7 +28,7 @@
 #include <vector>
 
 #include "bench_pairs.hpp"
-#include "sextant/matchers/mlndt_presets.hpp"
+#include "sextant/matchers/yaml.hpp"
 
 namespace {
 

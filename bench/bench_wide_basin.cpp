@@ -18,6 +18,7 @@
 #include "sextant/core/units.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/samplers.hpp"
+#include "sextant/matchers/yaml.hpp"
 #include "sextant/synth/campus.hpp"
 
 namespace {

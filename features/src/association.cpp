@@ -4,8 +4,6 @@
 #include <cmath>
 #include <limits>
 
-#include "sextant/core/settings_reader.hpp"
-
 namespace sextant {
 
 namespace {
@@ -33,21 +31,6 @@ bool AssociationSettings::valid(std::string* why) const {
     return false;
   }
   return true;
-}
-
-AssociationSettings read_association_settings(const YAML::Node& node, const std::string& file) {
-  AssociationSettings s;
-  YAML::Node thresholds;
-  if (node && node.IsMap()) {
-    thresholds = YAML::Clone(node);
-    thresholds.remove("search_radius");
-  }
-  SettingsReader in(node, file);
-  in.read("search_radius", s.search_radius);
-  s.thresholds = read_merge_thresholds(thresholds, file, s.thresholds);  // the other keys
-  std::string why;
-  if (!s.valid(&why)) in.fail("", why);
-  return s;
 }
 
 LandmarkIndex::LandmarkIndex(const std::vector<PlaneLandmark>& map, double cell_size)

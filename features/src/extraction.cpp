@@ -10,7 +10,6 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "sextant/core/settings_reader.hpp"
 #include "sextant/core/units.hpp"
 
 namespace sextant {
@@ -171,30 +170,6 @@ bool PlaneExtractionSettings::valid(std::string* why) const {
   if (!(min_landmark_area >= 0.0 && std::isfinite(min_landmark_area)))
     return fail("min_landmark_area must be ≥ 0");
   return true;
-}
-
-PlaneExtractionSettings read_plane_extraction_settings(const YAML::Node& node, const std::string& file) {
-  SettingsReader in(node, file);
-  PlaneExtractionSettings s;
-  in.read("cell_size", s.cell_size);
-  in.read("distance_threshold", s.distance_threshold);
-  in.read("ransac_iterations", s.ransac_iterations);
-  in.read("ransac_confidence", s.ransac_confidence);
-  in.read("min_inliers", s.min_inliers);
-  in.read("min_inlier_ratio", s.min_inlier_ratio);
-  in.read("max_planes_per_cell", s.max_planes_per_cell);
-  in.read("refit", s.refit);
-  in.read("merge", s.merge);
-  if (in.has("merge_thresholds"))
-    s.merge_thresholds = read_merge_thresholds(in.child("merge_thresholds"), file);
-  in.read("remove_horizontal", s.remove_horizontal);
-  in.read("horizontal_max_tilt_deg", s.horizontal_max_tilt_deg);
-  in.read("min_landmark_area", s.min_landmark_area);
-  in.read("min_landmark_inliers", s.min_landmark_inliers);
-  in.finish();
-  std::string why;
-  if (!s.valid(&why)) in.fail("", why);
-  return s;
 }
 
 std::vector<std::size_t> PlaneExtraction::cell_inlier_indices() const {

@@ -8,7 +8,6 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
-#include "sextant/core/settings_reader.hpp"
 #include "sextant/core/units.hpp"
 
 namespace sextant {
@@ -86,20 +85,6 @@ bool MergeThresholds::valid(std::string* why) const {
   if (!(closeness > 0.0 && std::isfinite(closeness))) return fail("closeness must be positive");
   if (!(min_variance >= 0.0 && std::isfinite(min_variance))) return fail("min_variance must be ≥ 0");
   return true;
-}
-
-MergeThresholds read_merge_thresholds(const YAML::Node& node, const std::string& file,
-                                      MergeThresholds defaults) {
-  SettingsReader in(node, file);
-  MergeThresholds t = defaults;
-  in.read("orientation_deg", t.orientation_deg);
-  in.read("translation", t.translation);
-  in.read("closeness", t.closeness);
-  in.read("min_variance", t.min_variance);
-  in.finish();
-  std::string why;
-  if (!t.valid(&why)) in.fail("", why);
-  return t;
 }
 
 MergeCriteria merge_criteria(const PlaneLandmark& a, const PlaneLandmark& b, double min_variance) {

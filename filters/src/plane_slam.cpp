@@ -4,7 +4,6 @@
 #include <stdexcept>
 
 #include "sextant/core/chi_square.hpp"
-#include "sextant/core/settings_reader.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/features/merging.hpp"
 #include "sextant/filters/innovation_gate.hpp"
@@ -35,10 +34,8 @@ bool angle_sigma(double sigma) {
 
 bool PlaneSlamSettings::valid(std::string* why) const {
   const char* problem = nullptr;
-  if (!filter_registry().contains(filter))
+  if (!default_filter(filter))
     problem = "unknown filter (see the filter registry: ekf, ukf, ckf, rspkf, seif, eif)";
-  else if (filter_settings && !filter_settings.IsNull() && !filter_settings.IsMap())
-    problem = "filter_settings must be a map";
   else if (!(length_sigma(sigma_xy) && length_sigma(sigma_z) && angle_sigma(sigma_roll_pitch) &&
              angle_sigma(sigma_yaw)))
     problem =
@@ -60,6 +57,13 @@ bool PlaneSlamSettings::valid(std::string* why) const {
     return false;
   }
   return extraction.valid(why) && association.valid(why);
+}
+
+std::unique_ptr<Filter> PlaneSlamSettings::build_filter(std::shared_ptr<const SlamModel> model) const {
+  if (filter_factory) return filter_factory(std::move(model));
+  const FilterFactory make = default_filter(filter);
+  if (!make) throw std::invalid_argument("plane SLAM settings: unknown filter '" + filter + "'");
+  return make(std::move(model));
 }
 
 // Q of the odometry increment u of eq. (4.72).
@@ -84,33 +88,6 @@ Matrix6d PlaneSlamSettings::initial_covariance() const {
   return p0_scale * Matrix6d(d.asDiagonal());
 }
 
-PlaneSlamSettings read_plane_slam_settings(const YAML::Node& node, const std::string& file) {
-  SettingsReader in(node, file);
-  PlaneSlamSettings s;
-  in.read("filter", s.filter);
-  if (in.has("filter_settings")) s.filter_settings = YAML::Clone(in.child("filter_settings"));
-  if (in.has("extraction")) s.extraction = read_plane_extraction_settings(in.child("extraction"), file);
-  if (in.has("association")) s.association = read_association_settings(in.child("association"), file);
-  in.read("sigma_xy", s.sigma_xy);
-  in.read("sigma_z", s.sigma_z);
-  in.read("sigma_roll_pitch", s.sigma_roll_pitch);
-  in.read("sigma_yaw", s.sigma_yaw);
-  in.read("sigma_normal", s.sigma_normal);
-  in.read("sigma_distance", s.sigma_distance);
-  in.read("initial_sigma_translation", s.initial_sigma_translation);
-  in.read("initial_sigma_rotation", s.initial_sigma_rotation);
-  in.read("p0_scale", s.p0_scale);
-  in.read("gate_probability", s.gate_probability);
-  in.read("merge_semantics", s.merge_semantics);
-  in.read("record_pose_covariance", s.record_pose_covariance);
-  in.finish();
-  std::string why;
-  if (!s.valid(&why)) in.fail("", why);
-  // The filter's own keys are checked now, so a typo fails before a long run starts.
-  make_filter(s.filter, std::make_shared<PlaneSlamModel>(), s.filter_settings, file);
-  return s;
-}
-
 PlaneSlam::PlaneSlam(PlaneSlamSettings settings, const Pose6& initial_pose, std::uint64_t seed)
     : s_(std::move(settings)), rng_(seed) {
   std::string why;
@@ -118,7 +95,7 @@ PlaneSlam::PlaneSlam(PlaneSlamSettings settings, const Pose6& initial_pose, std:
   gate_ = s_.gate_probability > 0.0
               ? chi_square_quantile(s_.gate_probability, PlaneSlamModel().observation_dim())
               : 0.0;
-  filter_ = make_filter(s_.filter, std::make_shared<PlaneSlamModel>(), s_.filter_settings);
+  filter_ = s_.build_filter(std::make_shared<PlaneSlamModel>());
   filter_->initialize(initial_pose.vector(), s_.initial_covariance());
 }
 

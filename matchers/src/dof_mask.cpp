@@ -1,7 +1,5 @@
 #include "sextant/matchers/dof_mask.hpp"
 
-#include "sextant/core/settings_reader.hpp"
-
 namespace sextant {
 
 namespace {
@@ -55,13 +53,6 @@ bool DofMask::valid(std::string* why) const {
   if (count() > 0) return true;
   if (why) *why = "at least one degree of freedom must be free";
   return false;
-}
-
-void read_dof_mask(SettingsReader& in, const std::string& key, DofMask& mask) {
-  std::vector<std::string> names = mask.names();  // the default, recorded when the key is absent
-  if (!in.read(key, names)) return;
-  std::string why;
-  if (!DofMask::from_names(names, mask, &why)) in.fail(key, why);
 }
 
 }  // namespace sextant

@@ -7,7 +7,6 @@
 #include <tuple>
 
 #include "sextant/core/pose.hpp"
-#include "sextant/core/settings_reader.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/matchers/ndt_score.hpp"
 
@@ -82,25 +81,6 @@ long WideBasinSettings::hypotheses() const {
   const long yaws = 2 * static_cast<long>(std::floor(yaw_range_deg / yaw_step_deg + 1e-9)) + 1;
   const long side = 2 * static_cast<long>(std::floor(translation_range / translation_step + 1e-9)) + 1;
   return yaws * side * side;
-}
-
-WideBasinSettings read_wide_basin_settings(const YAML::Node& node, const std::string& file) {
-  SettingsReader in(node, file);
-  WideBasinSettings s;
-  s.enabled = true;
-  in.read("yaw_step_deg", s.yaw_step_deg);
-  in.read("yaw_range_deg", s.yaw_range_deg);
-  in.read("translation_step", s.translation_step);
-  in.read("translation_range", s.translation_range);
-  in.read("sample_points", s.sample_points);
-  in.read("candidates", s.candidates);
-  in.read("prescreen_points", s.prescreen_points);
-  in.read("prescreen_keep", s.prescreen_keep);
-  in.read("max_distance", s.max_distance);
-  in.finish();
-  std::string why;
-  if (!s.valid(&why)) in.fail("", why);
-  return s;
 }
 
 std::size_t wide_basin_layer(const std::vector<NdtGrid>& layers, double min_edge) {

@@ -5,14 +5,11 @@
 
 #include "layer_objective.hpp"
 
-#include "sextant/core/settings_reader.hpp"
-#include "sextant/matchers/mlndt_presets.hpp"
-
 namespace sextant {
 
 using mlndt_detail::LayerObjective;
 
-// The library's defaults are the `default` preset (mlndt_presets.hpp), measured best on the shared
+// The library's defaults are the `default` preset (matchers/yaml.hpp), measured best on the shared
 // real pairs and the campus (docs/matcher_defaults.md): LM, n = 4, s = 2, the finest layer's terms
 // truncated at 16 and unmatched points charged 16. The thesis' settings are the `thesis` preset.
 MlndtSettings::MlndtSettings() {
@@ -45,31 +42,6 @@ bool MlndtSettings::valid(std::string* why) const {
     problem = "threads must be ≥ 0 (0: all hardware threads)";
   if (problem && why) *why = problem;
   return problem == nullptr;
-}
-
-MlndtSettings read_mlndt_settings(const YAML::Node& node, const std::string& file) {
-  const YAML::Node settings = expand_mlndt_preset(node, file);  // `preset:` first, other keys override
-  SettingsReader in(settings, file);
-  MlndtSettings s;
-  in.read("division", s.pyramid.division);
-  in.read("layers", s.pyramid.layers);
-  in.read("bounds_quantile", s.pyramid.bounds_quantile);
-  in.read("start_layer", s.start_layer);
-  in.read("refine_first", s.refine_first);
-  read_precision_settings(in, s.precision);
-  in.read("unmatched_penalty", s.unmatched_penalty);
-  in.read("max_distance", s.max_distance);
-  in.read("truncated_layers", s.truncated_layers);
-  if (in.read("threads", s.threads) && s.threads < 0)
-    in.fail("threads", "threads must be ≥ 0 (0: all hardware threads)");
-  read_cell_stats_settings(in, s.pyramid.cells);
-  read_optimizer_settings(in, "newton lm ceres", s.optimizer);
-  in.read("iterations_per_layer", s.optimizer.iterations_per_stage);
-  if (in.has("wide_basin")) s.wide_basin = read_wide_basin_settings(in.child("wide_basin"), file);
-  in.finish();
-  std::string why;
-  if (!s.valid(&why)) in.fail("", why);
-  return s;
 }
 
 MlndtMatcher::MlndtMatcher(MlndtSettings settings) : settings_(std::move(settings)) {}
@@ -121,10 +93,6 @@ RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Iso
   }
   best.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return refine(input, std::move(best));
-}
-
-std::unique_ptr<Matcher> create_mlndt_matcher(const YAML::Node& settings, const std::string& file) {
-  return std::make_unique<MlndtMatcher>(read_mlndt_settings(settings, file));
 }
 
 }  // namespace sextant

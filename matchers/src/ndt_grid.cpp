@@ -8,8 +8,6 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "sextant/core/settings_reader.hpp"
-
 namespace sextant {
 
 namespace ndt_detail {
@@ -352,13 +350,6 @@ std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const Laye
   for (std::size_t i = 0; i < n; ++i)
     layers[i] = NdtGrid::build(reference, origin, g[i].cell_edge, g[i].dims, settings.cells);
   return layers;
-}
-
-void read_cell_stats_settings(SettingsReader& in, CellStatsSettings& s) {
-  in.read("min_points", s.min_points);
-  in.read("max_eigen_ratio", s.max_eigen_ratio);
-  in.read("min_spread", s.min_spread);
-  in.read("min_relative_spread", s.min_relative_spread);
 }
 
 }  // namespace sextant

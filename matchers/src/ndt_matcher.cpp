@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include "sextant/core/settings_reader.hpp"
-
 namespace sextant {
 
 namespace {
@@ -56,23 +54,6 @@ bool NdtSettings::valid(std::string* why) const {
   return cells.valid(why) && optimizer.valid(why);
 }
 
-NdtSettings read_ndt_settings(const YAML::Node& node, const std::string& file) {
-  SettingsReader in(node, file);
-  NdtSettings s;
-  in.read("cell_size", s.cell_size);
-  in.read("volume_divisions", s.volume_divisions);
-  in.read("outlier_ratio", s.outlier_ratio);
-  in.read("trilinear", s.trilinear);
-  if (in.read("threads", s.threads) && s.threads < 0)
-    in.fail("threads", "threads must be ≥ 0 (0: all hardware threads)");
-  read_cell_stats_settings(in, s.cells);
-  read_optimizer_settings(in, "newton lm", s.optimizer);
-  in.finish();
-  std::string why;
-  if (!s.valid(&why)) in.fail("", why);
-  return s;
-}
-
 NdtMatcher::NdtMatcher(NdtSettings settings) : settings_(std::move(settings)) {}
 
 void NdtMatcher::set_reference(const PointCloud& reference) {
@@ -87,10 +68,6 @@ RegistrationResult NdtMatcher::align(const PointCloud& input, const Eigen::Isome
   if (grid_.empty()) return not_started(empty_model_reason(reference_points_, grid_), input.size(), initial);
   const GaussianObjective objective(grid_, params_, settings_.trilinear, settings_.threads, input);
   return optimize(objective, initial, settings_.optimizer);
-}
-
-std::unique_ptr<Matcher> create_ndt_matcher(const YAML::Node& settings, const std::string& file) {
-  return std::make_unique<NdtMatcher>(read_ndt_settings(settings, file));
 }
 
 }  // namespace sextant

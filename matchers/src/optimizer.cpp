@@ -9,7 +9,6 @@
 #include <Eigen/Eigenvalues>
 
 #include "ceres_stage.hpp"
-#include "sextant/core/settings_reader.hpp"
 
 namespace sextant {
 
@@ -327,29 +326,6 @@ std::string to_string(StepControl control) {
     case StepControl::kTrustRegionLast: return "trust_region_last";
   }
   return "unknown";
-}
-
-void read_optimizer_settings(SettingsReader& in, const std::string& known_solvers, OptimizerSettings& s) {
-  std::string solver = to_string(s.solver), control = to_string(s.step_control);  // the defaults
-  if (in.read("solver", solver) && !solver_from_name(solver, s.solver))
-    in.fail("solver", "unknown solver '" + solver + "' (known: " + known_solvers + ")");
-  in.read("max_iterations", s.max_iterations);
-  in.read("epsilon", s.epsilon);
-  bool line_search = false;
-  const bool legacy = in.read_alias("line_search", line_search);
-  if (legacy) s.step_control = line_search ? StepControl::kLineSearch : StepControl::kNone;
-  if (in.read("step_control", control)) {
-    if (legacy) in.fail("step_control", "give step_control or line_search, not both");
-    if (!step_control_from_name(control, s.step_control))
-      in.fail("step_control",
-              "key 'step_control': '" + control +
-                  "' is not none, line_search, more_thuente, trust_region or trust_region_last");
-  }
-  in.read("line_search_mu", s.line_search.mu);
-  in.read("line_search_eta", s.line_search.eta);
-  in.read("line_search_max_step", s.line_search.max_step);
-  in.read("line_search_iterations", s.line_search.iterations);
-  read_dof_mask(in, "dof", s.dof);
 }
 
 std::string to_string(SolverKind kind) {

@@ -7,7 +7,6 @@
 
 #include "layer_objective.hpp"
 #include "sextant/core/pose.hpp"
-#include "sextant/core/settings_reader.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 
 namespace sextant {
@@ -20,11 +19,6 @@ bool PrecisionSettings::valid(std::string* why) const {
     problem = "precision_min_coverage must lie in (0, 1]";
   if (problem && why) *why = problem;
   return problem == nullptr;
-}
-
-void read_precision_settings(SettingsReader& in, PrecisionSettings& s) {
-  in.read("precision_min_cell", s.min_cell);
-  in.read("precision_min_coverage", s.min_coverage);
 }
 
 namespace {

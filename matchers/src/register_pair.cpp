@@ -6,28 +6,24 @@
 #include <Eigen/Cholesky>
 
 #include "sextant/core/rng.hpp"
-#include "sextant/matchers/matcher.hpp"
-#include "sextant/matchers/mlndt_presets.hpp"
-#include "sextant/matchers/sampler.hpp"
 
 namespace sextant {
 
 PairRegistration register_pair(const PointCloud& reference, const PointCloud& input,
                                const PairRegistrationRequest& request) {
   PairRegistration out;
-  const auto sampler = make_sampler(request.sampling, request.sampler_settings, request.sampler_where);
+  const auto sampler = request.sampler();
   const Eigen::Isometry3d initial = request.init.value_or(Eigen::Isometry3d::Identity());
-  const std::optional<YAML::Node> wide = with_wide_basin(request.method, request.settings);
-  const bool own_wide_basin = request.settings.IsMap() && request.settings["wide_basin"].IsDefined();
-  out.searched_without_guess = !request.init && request.wide_basin && wide.has_value();
-  auto matcher =
-      make_matcher(request.method, out.searched_without_guess ? *wide : request.settings, request.where);
+  const MatcherFactory& wide = request.matcher.make_wide;
+  const bool own_wide_basin = request.matcher.own_wide_basin;
+  out.searched_without_guess = !request.init && request.wide_basin && wide;
+  auto matcher = out.searched_without_guess ? wide() : request.matcher.make();
   Rng rng(request.seed);
   out.match = match_pair(*matcher, *sampler, reference, input, initial, rng);
   out.searched = own_wide_basin || out.searched_without_guess;
   out.search = out.searched ? "wide basin" : "from the guess";
   if (out.match.result.quality.trusted() || out.searched || !request.wide_basin || !wide) return out;
-  const auto wide_matcher = make_matcher(request.method, *wide, request.where);
+  const auto wide_matcher = wide();
   Rng again(request.seed);  // the same sample
   PairMatch retry = match_pair(*wide_matcher, *sampler, reference, input, initial, again);
   const std::string first = to_string(out.match.result.quality.trust);

@@ -14,7 +14,6 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/matchers/match_pair.hpp"
-#include "sextant/matchers/mlndt_presets.hpp"
 #include "sextant/odometry/local_map.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/odometry/sequence_trust.hpp"
@@ -84,14 +83,11 @@ struct Worker {
   const OdometrySettings& settings;
 
   explicit Worker(const OdometrySettings& s)
-      : matcher(make_matcher(s.method.matcher, s.method.settings, "<odometry matcher>")),
-        sampler(make_sampler(s.method.sampler, s.method.sampler_settings, "<odometry sampler>")),
-        settings(s) {
+      : matcher(s.registration.matcher.make()), sampler(s.registration.sampler()), settings(s) {
     if (!s.recover) return;
-    const std::optional<YAML::Node> wide = with_wide_basin(s.method.matcher, s.method.settings);
-    wide_basin = wide.has_value();
-    recovery =
-        make_matcher(s.method.matcher, wide ? *wide : s.method.settings, "<odometry matcher, recovery>");
+    const MatcherFactory& wide = s.registration.matcher.make_wide;
+    wide_basin = static_cast<bool>(wide);
+    recovery = wide ? wide() : s.registration.matcher.make();
   }
 
   /// The first registration from `guess`, assessed on its own (absolute checks).

@@ -7,8 +7,8 @@
 namespace sextant {
 
 std::string OdometrySettings::problem() const {
-  if (method.matcher.empty()) return "no matcher named";
-  if (method.sampler.empty()) return "no sampler named";
+  if (!registration.matcher.make) return "no matcher named";
+  if (!registration.sampler) return "no sampler named";
   if (map == OdometryMap::local_map && local_map_scans < 1) return "local_map_scans must be ≥ 1";
   if (map == OdometryMap::local_map && !(local_map_voxel > 0.0 && std::isfinite(local_map_voxel)))
     return "local_map_voxel must be a positive number of metres";

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <limits>
 
-#include "sextant/core/settings_reader.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/posegraph/relative_pose_factor.hpp"
 
@@ -25,24 +24,6 @@ bool LoopClosureSettings::valid(std::string* why) const {
   if (!(information_scale > 0.0) || !std::isfinite(information_scale))
     return fail("information_scale must be a positive number");
   return true;
-}
-
-LoopClosureSettings read_loop_closure_settings(const YAML::Node& node, const std::string& file) {
-  LoopClosureSettings s;
-  SettingsReader in(node, file);
-  in.read("radius", s.radius);
-  in.read("min_index_gap", s.min_index_gap);
-  in.read("min_path_gap", s.min_path_gap);
-  in.read("stride", s.stride);
-  in.read("max_mean_score", s.max_mean_score);
-  in.read("min_matched_fraction", s.min_matched_fraction);
-  in.read("max_correction_m", s.max_correction_m);
-  in.read("max_correction_deg", s.max_correction_deg);
-  in.read("information_scale", s.information_scale);
-  in.finish();
-  std::string why;
-  if (!s.valid(&why)) in.fail("", why);
-  return s;
 }
 
 std::vector<LoopClosureCandidate> find_loop_closure_candidates(const std::vector<Eigen::Isometry3d>& poses,

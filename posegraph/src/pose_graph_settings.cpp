@@ -1,5 +1,4 @@
-// YAML → PoseGraphSettings (pose_graph.hpp).
-#include "sextant/core/settings_reader.hpp"
+// The robust losses by name (pose_graph.hpp).
 #include "sextant/posegraph/pose_graph.hpp"
 
 namespace sextant {
@@ -20,26 +19,6 @@ std::string to_string(RobustLoss loss) {
     case RobustLoss::none: break;
   }
   return "none";
-}
-
-PoseGraphSettings read_pose_graph_settings(const YAML::Node& node, const std::string& file) {
-  PoseGraphSettings s;
-  SettingsReader in(node, file);
-  std::string loss = to_string(s.loss);
-  if (in.read("loss", loss)) {
-    bool ok = false;
-    s.loss = robust_loss_from_string(loss, &ok);
-    if (!ok) in.fail("loss", "key 'loss': unknown robust loss '" + loss + "' (known: none, huber, cauchy)");
-  }
-  in.read("loss_scale", s.loss_scale);
-  in.read("robust_odometry", s.robust_odometry);
-  in.read("max_iterations", s.max_iterations);
-  in.read("function_tolerance", s.function_tolerance);
-  in.read("threads", s.threads);
-  in.finish();
-  std::string why;
-  if (!s.valid(&why)) in.fail("", why);
-  return s;
 }
 
 }  // namespace sextant

@@ -6,6 +6,7 @@
 
 #include "sextant/core/error.hpp"
 #include "sextant/matchers/register_pair.hpp"
+#include "sextant/matchers/yaml.hpp"
 
 namespace sextant::python {
 namespace {
@@ -33,15 +34,13 @@ MatchOutcome run_match_request(const PointCloud& reference, const PointCloud& in
                                const MatchRequest& request) {
   MatchOutcome out;
   PairRegistrationRequest pair;
-  pair.method = request.method;
-  pair.settings = matcher_settings(request.method, request.preset, request.settings, &out.preset);
-  pair.sampling = request.sampling;
-  pair.sampler_settings = request.sampler_settings;
+  pair.matcher =
+      matcher_choice(request.method,
+                     matcher_settings(request.method, request.preset, request.settings, &out.preset), kWhere);
+  pair.sampler = sampler_factory(request.sampling, request.sampler_settings, "match() sampler settings");
   pair.init = request.init;
   pair.wide_basin = request.wide_basin_retry;
   pair.seed = request.seed;
-  pair.where = kWhere;
-  pair.sampler_where = "match() sampler settings";
   PairRegistration registered = register_pair(reference, input, pair);
   out.match = std::move(registered.match);
   out.searched = registered.searched;

@@ -17,7 +17,9 @@
 #include "sextant/core/error.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/sampler.hpp"
+#include "sextant/matchers/yaml.hpp"
 #include "sextant/odometry/odometry.hpp"
+#include "sextant/odometry/yaml.hpp"
 #include "steps_table.hpp"
 
 namespace sextant::python {
@@ -71,7 +73,7 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
       sampler_settings.is_none() ? YAML::Node() : yaml_from_python(sampler_settings, "sampler_settings");
   (void)make_matcher(method, matcher, "odometry() settings");  // unknown names and bad settings stop here
   (void)make_sampler(sampling, sampler, "odometry() sampler settings");
-  s.method = {method, matcher, sampling, sampler};
+  s.registration = odometry_registration({method, matcher, sampling, sampler});
   s.local_map_scans = local_map_scans;
   s.min_range = min_range;
   s.seed = seed;

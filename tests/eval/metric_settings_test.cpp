@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "sextant/core/error.hpp"
-#include "sextant/eval/metric_settings.hpp"
+#include "sextant/eval/yaml.hpp"
 
 namespace sextant {
 namespace {

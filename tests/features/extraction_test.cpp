@@ -8,6 +8,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/features/association.hpp"
 #include "sextant/features/extraction.hpp"
+#include "sextant/features/yaml.hpp"
 #include "synthetic_scene.hpp"
 
 namespace sextant {

@@ -10,6 +10,7 @@
 #include "sextant/core/pose.hpp"
 #include "sextant/matchers/feature_based_sampler.hpp"
 #include "sextant/matchers/matcher.hpp"
+#include "sextant/matchers/yaml.hpp"
 #include "synthetic_scene.hpp"
 
 namespace sextant {

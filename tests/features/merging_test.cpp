@@ -7,6 +7,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/features/merging.hpp"
+#include "sextant/features/yaml.hpp"
 
 namespace sextant {
 namespace {

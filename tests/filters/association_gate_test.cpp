@@ -10,6 +10,7 @@
 #include "sextant/core/chi_square.hpp"
 #include "sextant/filters/innovation_gate.hpp"
 #include "sextant/filters/seif.hpp"
+#include "sextant/filters/yaml.hpp"
 
 namespace sextant {
 namespace {

@@ -9,6 +9,7 @@
 #include "sextant/core/rng.hpp"
 #include "sextant/filters/eseif.hpp"
 #include "sextant/filters/range_bearing_model.hpp"
+#include "sextant/filters/yaml.hpp"
 
 namespace sextant {
 namespace {

@@ -8,6 +8,7 @@
 #include "sextant/core/rng.hpp"
 #include "sextant/filters/filter.hpp"
 #include "sextant/filters/range_bearing_model.hpp"
+#include "sextant/filters/yaml.hpp"
 
 namespace sextant {
 namespace {

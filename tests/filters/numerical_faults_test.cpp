@@ -9,6 +9,7 @@
 
 #include "sextant/filters/filter.hpp"
 #include "sextant/filters/range_bearing_model.hpp"
+#include "sextant/filters/yaml.hpp"
 
 namespace sextant {
 namespace {

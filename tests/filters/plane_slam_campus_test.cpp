@@ -9,6 +9,7 @@
 
 #include "sextant/core/error.hpp"
 #include "sextant/filters/plane_slam.hpp"
+#include "sextant/filters/yaml.hpp"
 #include "sextant/synth/campus.hpp"
 
 namespace sextant {

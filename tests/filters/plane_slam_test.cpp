@@ -4,6 +4,7 @@
 
 #include "plane_world.hpp"
 #include "sextant/filters/filter.hpp"
+#include "sextant/filters/yaml.hpp"
 
 namespace sextant {
 namespace {

@@ -12,6 +12,7 @@
 #include "plane_world.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/filters/filter.hpp"
+#include "sextant/filters/yaml.hpp"
 #include "sextant/synth/campus.hpp"
 
 namespace sextant {

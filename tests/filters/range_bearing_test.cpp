@@ -10,6 +10,7 @@
 #include "sextant/filters/covariance.hpp"
 #include "sextant/filters/filter.hpp"
 #include "sextant/filters/range_bearing_sim.hpp"
+#include "sextant/filters/yaml.hpp"
 
 namespace sextant {
 namespace {

@@ -3,6 +3,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/filters/filter.hpp"
 #include "sextant/filters/range_bearing_model.hpp"
+#include "sextant/filters/yaml.hpp"
 
 namespace sextant {
 namespace {

@@ -3,6 +3,7 @@
 
 #include "plane_world.hpp"
 #include "sextant/filters/seif.hpp"
+#include "sextant/filters/yaml.hpp"
 
 namespace sextant {
 namespace {

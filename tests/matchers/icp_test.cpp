@@ -10,6 +10,7 @@
 #include "sextant/matchers/icp.hpp"
 #include "sextant/matchers/icp_steps.hpp"
 #include "sextant/matchers/kd_tree.hpp"
+#include "sextant/matchers/yaml.hpp"
 
 namespace sextant {
 namespace {

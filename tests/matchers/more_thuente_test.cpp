@@ -12,6 +12,7 @@
 #include "sextant/matchers/more_thuente.hpp"
 #include "sextant/matchers/ndt_matcher.hpp"
 #include "sextant/matchers/samplers.hpp"
+#include "sextant/matchers/yaml.hpp"
 #include "test_clouds.hpp"
 
 namespace sextant {

@@ -9,6 +9,7 @@
 #include <Eigen/SVD>
 
 #include "sextant/matchers/matcher.hpp"
+#include "sextant/matchers/yaml.hpp"
 #include "test_clouds.hpp"
 
 namespace sextant {

@@ -16,6 +16,7 @@
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/ndt_matcher.hpp"
 #include "sextant/matchers/ndt_score.hpp"
+#include "sextant/matchers/yaml.hpp"
 #include "test_clouds.hpp"
 
 namespace sextant {

@@ -15,6 +15,7 @@
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/pcl_peers.hpp"
 #include "sextant/matchers/registration_quality.hpp"
+#include "sextant/matchers/yaml.hpp"
 #include "test_clouds.hpp"
 
 namespace sextant {

@@ -10,6 +10,7 @@
 #include "sextant/core/units.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/samplers.hpp"
+#include "sextant/matchers/yaml.hpp"
 #include "test_clouds.hpp"
 
 namespace sextant {

@@ -17,9 +17,9 @@
 #include "sextant/matchers/kd_tree.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
-#include "sextant/matchers/mlndt_presets.hpp"
 #include "sextant/matchers/ndt_matcher.hpp"
 #include "sextant/matchers/samplers.hpp"
+#include "sextant/matchers/yaml.hpp"
 
 namespace sextant {
 namespace {

@@ -18,6 +18,7 @@
 #include "sextant/matchers/register_pair.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 #include "sextant/matchers/sampler.hpp"
+#include "sextant/matchers/yaml.hpp"
 
 namespace sextant {
 namespace {

@@ -10,6 +10,7 @@
 #include "sextant/matchers/ndt_matcher.hpp"
 #include "sextant/matchers/ndt_score.hpp"
 #include "sextant/matchers/samplers.hpp"
+#include "sextant/matchers/yaml.hpp"
 #include "test_clouds.hpp"
 
 namespace sextant {

@@ -8,6 +8,7 @@
 
 #include "sextant/core/error.hpp"
 #include "sextant/matchers/samplers.hpp"
+#include "sextant/matchers/yaml.hpp"
 
 namespace sextant {
 namespace {

@@ -6,6 +6,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
+#include "sextant/matchers/yaml.hpp"
 #include "sextant/synth/campus.hpp"
 #include "test_clouds.hpp"
 

@@ -11,6 +11,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/odometry/local_map.hpp"
 #include "sextant/odometry/odometry.hpp"
+#include "sextant/odometry/yaml.hpp"
 #include "sextant/synth/campus.hpp"
 
 namespace sextant {
@@ -48,9 +49,7 @@ class NoOdometry : public Dataset {
 
 OdometrySettings mlndt_settings() {
   OdometrySettings s;
-  s.method.matcher = "mlndt";
-  s.method.settings = YAML::Load("{preset: default}");
-  s.method.sampler = "gbs";
+  s.registration = odometry_registration({"mlndt", YAML::Load("{preset: default}"), "gbs", {}});
   return s;
 }
 
@@ -116,7 +115,8 @@ TEST(Odometry, ConstantVelocityAndIdentityGuessesNeedNoOdometry) {
   }
   // Identity with ML-NDT's wide basin (docs/wide_basin.md): every step from no motion.
   s.guess = OdometryGuess::identity;
-  s.method.settings = YAML::Load("{preset: default, wide_basin: {}}");
+  s.registration =
+      odometry_registration({"mlndt", YAML::Load("{preset: default, wide_basin: {}}"), "gbs", {}});
   expect_close_to_truth(d, run_odometry(d, s, 4, 4), 4, 0.5, 0.15, "identity, wide basin");
 }
 
@@ -147,7 +147,7 @@ TEST(Odometry, BadRangesAndSettingsAreErrors) {
   EXPECT_THROW(run_odometry(campus(), mlndt_settings(), 12, 1), InputError);
   EXPECT_THROW(run_odometry(campus(), mlndt_settings(), 0, 0), InputError);
   OdometrySettings s = mlndt_settings();
-  s.method.matcher = "no_such_matcher";
+  s.registration = odometry_registration({"no_such_matcher", {}, "gbs", {}});
   EXPECT_ANY_THROW(run_odometry(campus(), s, 0, 2));
   s = mlndt_settings();
   s.odometry = {Eigen::Isometry3d::Identity()};  // fewer poses than scans

@@ -13,6 +13,7 @@
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/sampler.hpp"
+#include "sextant/matchers/yaml.hpp"
 #include "sextant/odometry/odometry.hpp"
 
 namespace sextant {

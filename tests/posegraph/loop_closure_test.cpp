@@ -5,6 +5,7 @@
 
 #include "sextant/core/error.hpp"
 #include "sextant/posegraph/loop_closure.hpp"
+#include "sextant/posegraph/yaml.hpp"
 
 namespace sextant {
 namespace {

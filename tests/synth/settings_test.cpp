@@ -3,6 +3,7 @@
 
 #include "sextant/core/error.hpp"
 #include "sextant/synth/settings.hpp"
+#include "sextant/synth/yaml.hpp"
 
 namespace sextant::synth {
 namespace {

@@ -28,9 +28,9 @@
 #include "sextant/experiments/json.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/matcher.hpp"
-#include "sextant/matchers/mlndt_presets.hpp"
 #include "sextant/matchers/register_pair.hpp"
 #include "sextant/matchers/sampler.hpp"
+#include "sextant/matchers/yaml.hpp"
 
 namespace sextant::cli {
 namespace {
@@ -252,15 +252,13 @@ int run_match(MatchOptions o) {
   if (!o.gt.empty()) truth = read_ground_truth(o.gt);
   const PointCloud input = read_cloud(o.input);
   PairRegistrationRequest request;
-  request.method = o.method;
-  request.settings = config.matcher;
-  request.sampling = o.sampling;
-  request.sampler_settings = config.sampler;
+  request.matcher =
+      matcher_choice(o.method, config.matcher, o.config.empty() ? "matcher settings (--solver)" : o.config);
+  request.sampler =
+      sampler_factory(o.sampling, config.sampler, o.config.empty() ? "sampler settings" : o.config);
   if (!o.init.empty()) request.init = initial;
   request.wide_basin = !o.no_wide_basin;
   request.seed = o.seed;
-  request.where = o.config.empty() ? "matcher settings (--solver)" : o.config;
-  request.sampler_where = o.config.empty() ? "sampler settings" : o.config;
   const PairRegistration registered = register_pair(reference, input, request);
   const PairMatch& m = registered.match;
   std::string search = registered.search;

@@ -26,6 +26,7 @@
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/sampler.hpp"
 #include "sextant/odometry/odometry.hpp"
+#include "sextant/odometry/yaml.hpp"
 #include "sextant/synth/campus.hpp"
 
 namespace sextant::cli {
@@ -146,7 +147,7 @@ int run_odometry_command(const OdometryOptions& o) {
     std::cout << YAML::Dump(resolved) << "\n";
     return 0;
   }
-  s.method = {o.method, config.matcher, o.sampling, config.sampler};
+  s.registration = odometry_registration({o.method, config.matcher, o.sampling, config.sampler});
   s.local_map_scans = o.local_map_scans;
   s.min_range = o.min_range;
   s.seed = o.seed;

@@ -11,6 +11,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/synth/campus_io.hpp"
+#include "sextant/synth/yaml.hpp"
 
 namespace sextant::cli {
 namespace {

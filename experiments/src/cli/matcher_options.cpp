@@ -6,9 +6,9 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/matchers/matcher.hpp"
-#include "sextant/matchers/mlndt_presets.hpp"
 #include "sextant/matchers/optimizer.hpp"
 #include "sextant/matchers/sampler.hpp"
+#include "sextant/matchers/yaml.hpp"
 
 namespace sextant::cli {
 namespace {

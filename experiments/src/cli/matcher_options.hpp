@@ -9,7 +9,7 @@ namespace sextant::cli {
 
 struct MatcherOptions {
   std::string method = "mlndt";
-  std::string preset;  ///< mlndt / fbmlndt settings preset; empty: "default" (mlndt_presets.hpp)
+  std::string preset;  ///< mlndt / fbmlndt settings preset; empty: "default" (matchers/yaml.hpp)
   std::string solver;  ///< empty: the preset's
   std::string sampling = "gbs";
   std::string config;  ///< YAML file with optional `matcher:` and `sampler:` maps

@@ -50,13 +50,10 @@ OdometryLoopClosure close_odometry_loops(const Dataset& dataset, std::size_t fir
   const ClosureRegistration register_closure = [&](std::size_t i, std::size_t j,
                                                    const Eigen::Isometry3d& guess, std::uint64_t seed) {
     PairRegistrationRequest request;
-    request.method = settings.method.matcher;
-    request.settings = settings.method.settings;
-    request.sampling = settings.method.sampler;
-    request.sampler_settings = settings.method.sampler_settings;
+    request.matcher = settings.registration.matcher;
+    request.sampler = settings.registration.sampler;
     request.init = guess;
     request.seed = seed;
-    request.where = request.sampler_where = "--loop-closure";
     const PairRegistration r = register_pair(scans[i], scans[j], request);
     RegistrationResult result = r.match.result;
     result.seconds += r.match.reference_seconds + r.match.sampling_seconds;

@@ -3,6 +3,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/synth/campus.hpp"
 #include "sextant/synth/settings.hpp"
+#include "sextant/synth/yaml.hpp"
 #include "simulated_odometry_dataset.hpp"
 
 namespace sextant {

@@ -1,6 +1,7 @@
 #include "filter_parameters.hpp"
 
 #include "sextant/filters/filter.hpp"
+#include "sextant/filters/yaml.hpp"
 
 namespace sextant {
 

@@ -29,6 +29,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/core/units.hpp"
+#include "sextant/features/yaml.hpp"
 #include "sextant/synth/campus.hpp"
 
 namespace sextant {

@@ -23,6 +23,7 @@
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/verdict.hpp"
 #include "sextant/features/merging.hpp"
+#include "sextant/features/yaml.hpp"
 
 namespace sextant {
 namespace {

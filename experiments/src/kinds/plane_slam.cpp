@@ -23,6 +23,7 @@
 #include "sextant/eval/trajectory_metrics.hpp"
 #include "sextant/filters/slam_run_failure.hpp"
 #include "sextant/synth/settings.hpp"
+#include "sextant/synth/yaml.hpp"
 
 namespace sextant {
 namespace {

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <Eigen/Cholesky>
+#include "sextant/matchers/yaml.hpp"
 
 namespace sextant {
 namespace {

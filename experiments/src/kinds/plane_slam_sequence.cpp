@@ -97,7 +97,7 @@ void run_true(const SequenceData& data, const PlaneSlamParams& params, const Pla
               const std::vector<Vector6d>& u, std::size_t scans, Rng& noise, FilterSequenceRun& run) {
   const synth::Campus& c = *data.campus;
   const auto model = std::make_shared<PlaneSlamModel>();
-  auto filter = make_filter(s.filter, model, s.filter_settings);
+  auto filter = s.build_filter(model);
   filter->initialize(to_pose6(c.ground_truth[0]).vector(), s.initial_covariance());
   const Matrix6d Q = s.process_noise();
   const Eigen::Matrix4d R = s.observation_noise();

@@ -6,7 +6,9 @@
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/filters/plane_slam_model.hpp"
+#include "sextant/filters/yaml.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
+#include "sextant/matchers/yaml.hpp"
 
 namespace sextant {
 namespace {

@@ -11,6 +11,7 @@
 #include "pose_graph_report.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/synth/settings.hpp"
+#include "sextant/synth/yaml.hpp"
 
 namespace sextant {
 namespace {

@@ -6,6 +6,8 @@
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/sampler.hpp"
+#include "sextant/matchers/yaml.hpp"
+#include "sextant/posegraph/yaml.hpp"
 
 namespace sextant {
 namespace {

@@ -34,6 +34,7 @@
 #include "plane_slam_settings.hpp"
 #include "sextant/experiments/experiment_config.hpp"
 #include "sextant/odometry/odometry.hpp"
+#include "sextant/odometry/yaml.hpp"
 #include "sextant/posegraph/loop_closure.hpp"
 #include "sextant/posegraph/pose_graph.hpp"
 

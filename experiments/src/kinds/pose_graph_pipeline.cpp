@@ -14,6 +14,8 @@
 #include "sextant/eval/trajectory_metrics.hpp"
 #include "sextant/filters/slam_run_failure.hpp"
 #include "sextant/matchers/match_pair.hpp"
+#include "sextant/matchers/yaml.hpp"
+#include "sextant/odometry/yaml.hpp"
 #include "sextant/posegraph/relative_pose_factor.hpp"
 #include "sextant/synth/odometry.hpp"
 
@@ -194,7 +196,7 @@ void run_pose_graph_method(const PreloadedCampus& data, const PoseGraphParams& p
   const PoseList truth(data.campus().ground_truth.begin(),
                        data.campus().ground_truth.begin() + static_cast<std::ptrdiff_t>(n));
   OdometrySettings s;
-  s.method = private_copy(method);
+  s.registration = odometry_registration(private_copy(method));
   s.guess = params.guess;
   s.seed = seed;
   s.odometry = guess_odometry(data.campus(), params, n, seed);

@@ -15,6 +15,7 @@
 #include "pose_graph_params.hpp"
 #include "sextant/core/dataset.hpp"
 #include "sextant/experiments/run_row.hpp"
+#include "sextant/odometry/yaml.hpp"
 
 namespace sextant {
 

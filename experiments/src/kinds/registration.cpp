@@ -24,6 +24,7 @@
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/experiments/run_plan.hpp"
 #include "sextant/matchers/match_pair.hpp"
+#include "sextant/matchers/yaml.hpp"
 
 namespace sextant {
 namespace {

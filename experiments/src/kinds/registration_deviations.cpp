@@ -6,6 +6,7 @@
 #include "sextant/matchers/feature_based_sampler.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/ndt_matcher.hpp"
+#include "sextant/matchers/yaml.hpp"
 
 namespace sextant {
 namespace {

@@ -15,6 +15,7 @@
 #include "sextant/core/units.hpp"
 #include "sextant/matchers/ndt_grid.hpp"
 #include "sextant/matchers/ndt_matcher.hpp"
+#include "sextant/matchers/yaml.hpp"
 
 namespace sextant {
 namespace {

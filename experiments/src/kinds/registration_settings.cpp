@@ -10,6 +10,7 @@
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/sampler.hpp"
+#include "sextant/matchers/yaml.hpp"
 
 namespace sextant {
 namespace {

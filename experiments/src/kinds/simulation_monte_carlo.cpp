@@ -29,6 +29,7 @@
 #include "sextant/filters/filter.hpp"
 #include "sextant/filters/range_bearing_sim.hpp"
 #include "sextant/filters/slam_run_failure.hpp"
+#include "sextant/filters/yaml.hpp"
 #include "simulation.hpp"
 #include "simulation_monte_carlo_report.hpp"
 

@@ -21,6 +21,8 @@
 #include "sextant/eval/time_lag.hpp"
 #include "sextant/eval/verdict.hpp"
 #include "sextant/filters/room_sim_2d.hpp"
+#include "sextant/filters/yaml.hpp"
+#include "sextant/matchers/yaml.hpp"
 #include "simulation.hpp"
 #include "simulation_room.hpp"
 

@@ -7,7 +7,6 @@
 
 #include <fmt/format.h>
 
-#include "sextant/core/settings_reader.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 
 namespace sextant {
@@ -22,65 +21,8 @@ std::vector<std::size_t> FeatureBasedSampler::select(const PointCloud& input, Rn
   return extract_cell_planes(input, settings_, rng).cell_inlier_indices();
 }
 
-std::unique_ptr<Sampler> create_feature_based_sampler(const YAML::Node& settings, const std::string& file) {
-  return std::make_unique<FeatureBasedSampler>(read_plane_extraction_settings(settings, file));
-}
-
 bool FbmlndtSettings::valid(std::string* why) const {
   return mlndt.valid(why) && features.valid(why) && constraints.valid(why) && fallback_gbs.valid(why);
-}
-
-namespace {
-
-ConstraintThresholds read_constraint_thresholds(const YAML::Node& node, const std::string& file) {
-  ConstraintThresholds t;
-  SettingsReader in(node, file);
-  in.read("min_planes", t.min_planes);
-  in.read("min_inliers", t.min_inliers);
-  in.read("min_normal_spread", t.min_normal_spread);
-  in.read("min_information_ratio", t.min_information_ratio);
-  in.finish();
-  std::string why;
-  if (!t.valid(&why)) in.fail("", why);
-  return t;
-}
-
-FbsFallback read_fallback(SettingsReader& in) {
-  std::string name = "gbs";
-  in.read("fallback", name);
-  if (name == "add_gbs") return FbsFallback::kAddGbs;
-  if (name == "gbs") return FbsFallback::kGbs;
-  if (name == "none") return FbsFallback::kNone;
-  in.fail("fallback", "key 'fallback': '" + name + "' is not gbs, add_gbs or none");
-  return FbsFallback::kNone;
-}
-
-}  // namespace
-
-FbmlndtSettings read_fbmlndt_settings(const YAML::Node& node, const std::string& file) {
-  FbmlndtSettings s;
-  YAML::Node rest;
-  bool verify_given = false;
-  {
-    // The nested settings are read even when absent (their defaults), so that a SettingsRecording
-    // holds them all.
-    SettingsReader in(node && node.IsMap() ? node : YAML::Node(), file);
-    in.read("seed", s.seed);
-    s.features = read_plane_extraction_settings(in.child("features"), file);
-    s.fallback = read_fallback(in);
-    s.constraints = read_constraint_thresholds(in.child("constraints"), file);
-    s.fallback_gbs = read_grid_sampler_settings(in.child("fallback_gbs"), file);
-    verify_given = in.has("verify");
-    if (node && node.IsMap()) {
-      rest = YAML::Clone(node);  // the remaining keys belong to mlndt (which rejects unknown ones)
-      for (const char* own : {"seed", "features", "fallback", "constraints", "fallback_gbs", "verify"})
-        rest.remove(own);
-    }
-    s.mlndt = read_mlndt_settings(rest, file);
-    if (!verify_given) s.verify = s.mlndt.refine_first;
-    in.read("verify", s.verify);  // after mlndt: its default follows refine_first
-  }
-  return s;
 }
 
 FbmlndtMatcher::FbmlndtMatcher(FbmlndtSettings settings)
@@ -156,10 +98,6 @@ void FbmlndtMatcher::verify_on_gbs(const PointCloud& input, const Eigen::Isometr
                "): ML-NDT on " + std::to_string(gbs.size()) + " GBS points";
     result = plain;
   }
-}
-
-std::unique_ptr<Matcher> create_fbmlndt_matcher(const YAML::Node& settings, const std::string& file) {
-  return std::make_unique<FbmlndtMatcher>(read_fbmlndt_settings(settings, file));
 }
 
 }  // namespace sextant

@@ -6,7 +6,6 @@
 #include <numeric>
 #include <utility>
 
-#include "sextant/core/settings_reader.hpp"
 #include "sextant/matchers/samplers.hpp"
 
 namespace sextant {
@@ -92,22 +91,6 @@ std::vector<std::size_t> GridSampler::select(const PointCloud& input, Rng& rng) 
   }
   std::sort(selected.begin(), selected.end());
   return selected;
-}
-
-GridSamplerSettings read_grid_sampler_settings(const YAML::Node& settings, const std::string& file) {
-  SettingsReader in(settings, file);
-  GridSamplerSettings s;
-  in.read("cell_size", s.cell_size);
-  in.read("max_per_cell", s.max_per_cell);
-  in.read("min_per_cell", s.min_per_cell);
-  in.finish();
-  std::string why;
-  if (!s.valid(&why)) in.fail("", why);
-  return s;
-}
-
-std::unique_ptr<Sampler> create_grid_sampler(const YAML::Node& settings, const std::string& file) {
-  return std::make_unique<GridSampler>(read_grid_sampler_settings(settings, file));
 }
 
 }  // namespace sextant

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <numeric>
 
-#include "sextant/core/settings_reader.hpp"
 #include "sextant/matchers/samplers.hpp"
 
 namespace sextant {
@@ -56,38 +55,6 @@ std::vector<std::size_t> RandomSampler::select(const PointCloud& input, Rng& rng
   pool.resize(keep);
   std::sort(pool.begin(), pool.end());
   return pool;
-}
-
-namespace {
-
-template <class Settings>
-Settings checked(SettingsReader& in, const Settings& s) {
-  in.finish();
-  std::string why;
-  if (!s.valid(&why)) in.fail("", why);
-  return s;
-}
-
-}  // namespace
-
-std::unique_ptr<Sampler> create_all_sampler(const YAML::Node& settings, const std::string& file) {
-  SettingsReader in(settings, file);
-  in.finish();
-  return std::make_unique<AllSampler>();
-}
-
-std::unique_ptr<Sampler> create_regular_sampler(const YAML::Node& settings, const std::string& file) {
-  SettingsReader in(settings, file);
-  RegularSamplerSettings s;
-  in.read("step", s.step);
-  return std::make_unique<RegularSampler>(checked(in, s));
-}
-
-std::unique_ptr<Sampler> create_random_sampler(const YAML::Node& settings, const std::string& file) {
-  SettingsReader in(settings, file);
-  RandomSamplerSettings s;
-  in.read("fraction", s.fraction);
-  return std::make_unique<RandomSampler>(checked(in, s));
 }
 
 }  // namespace sextant

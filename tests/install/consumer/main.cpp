@@ -6,14 +6,22 @@
 #include <string>
 
 #include "sextant/core/pose.hpp"
+#include "sextant/core/yaml.hpp"
 #include "sextant/eval/statistics.hpp"
+#include "sextant/eval/yaml.hpp"
 #include "sextant/experiments/provenance.hpp"
 #include "sextant/features/extraction.hpp"
+#include "sextant/features/yaml.hpp"
 #include "sextant/filters/plane_slam.hpp"
+#include "sextant/filters/yaml.hpp"
 #include "sextant/matchers/icp.hpp"
+#include "sextant/matchers/yaml.hpp"
 #include "sextant/odometry/odometry.hpp"
+#include "sextant/odometry/yaml.hpp"
 #include "sextant/posegraph/pose_graph.hpp"
+#include "sextant/posegraph/yaml.hpp"
 #include "sextant/synth/settings.hpp"
+#include "sextant/synth/yaml.hpp"
 
 int main() {
   int failures = 0;
@@ -38,5 +46,17 @@ int main() {
   check(known, "posegraph: robust loss name");
   check(sextant::synth::WorldSettings{}.valid(&why), "synth: default world");
   check(!sextant::sextant_version().empty(), "experiments: version " + sextant::sextant_version());
+  // The YAML targets: one reader of each.
+  const YAML::Node node = YAML::Load("{layers: 3}");
+  check(sextant::read_mlndt_settings(node, "consumer").pyramid.layers == 3, "matchers_yaml: layers");
+  check(sextant::read_plane_extraction_settings(YAML::Load("{cell_size: 3}"), "c").cell_size == 3.0,
+        "features_yaml: cell size");
+  check(sextant::read_pose_graph_settings(YAML::Node(), "c").max_iterations > 0, "posegraph_yaml: defaults");
+  check(sextant::read_plane_slam_settings(YAML::Load("{filter: ukf}"), "c").filter == "ukf",
+        "filters_yaml: filter");
+  check(sextant::read_rpe_settings(YAML::Node(), "c").delta > 0, "eval_yaml: defaults");
+  check(sextant::synth::read_campus_settings(YAML::Node(), "c").world.valid(&why), "synth_yaml: defaults");
+  check(sextant::odometry_registration({}).matcher.name == "mlndt", "odometry_yaml: matcher");
+  check(sextant::yaml_line(YAML::Node()) == 0, "core_yaml: line of a null node");
   return failures == 0 ? 0 : 1;
 }

@@ -9,8 +9,6 @@
 #include <unordered_map>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
-
 #include "sextant/features/landmark.hpp"
 #include "sextant/features/merging.hpp"
 
@@ -21,9 +19,6 @@ struct AssociationSettings {
   double search_radius = 30.0;  ///< map landmarks with centroids farther than this are not candidates [m]
   bool valid(std::string* why) const;
 };
-
-/// Keys: `search_radius` and the threshold keys of read_merge_thresholds at the same level.
-AssociationSettings read_association_settings(const YAML::Node& node, const std::string& file);
 
 struct LandmarkMatch {
   std::size_t observed = 0;  ///< index into the observed landmarks

@@ -2,15 +2,13 @@
 // Plane-feature extraction (§3.3.1, §4.1): fixed cells → RANSAC per cell → refit (PCA or SVD)
 // → hull → merging → ground removal → landmark acceptance.
 //
-//   PlaneExtractionSettings s = read_plane_extraction_settings(node, "exp.yaml");
+//   PlaneExtractionSettings s;                // or read_plane_extraction_settings (features/yaml.hpp)
 //   Rng rng(seed);
 //   PlaneExtraction out = extract_planes(cloud, s, rng);
 //   for (const PlaneLandmark& l : out.landmarks) ...
 #include <cstddef>
 #include <string>
 #include <vector>
-
-#include <yaml-cpp/yaml.h>
 
 #include "sextant/core/point_cloud.hpp"
 #include "sextant/core/rng.hpp"
@@ -36,9 +34,6 @@ struct PlaneExtractionSettings {
   std::size_t min_landmark_inliers = 30;  ///< … and this many inliers [count]
   bool valid(std::string* why) const;
 };
-
-/// Keys: the field names above; `merge_thresholds` is a map read by read_merge_thresholds.
-PlaneExtractionSettings read_plane_extraction_settings(const YAML::Node& node, const std::string& file);
 
 struct ExtractionStatistics {
   std::size_t points = 0;                   ///< finite input points

@@ -5,8 +5,6 @@
 #include <string>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
-
 #include "sextant/features/landmark.hpp"
 
 namespace sextant {
@@ -18,10 +16,6 @@ struct MergeThresholds {
   double min_variance = 1e-4;     ///< added to the diagonal of Σ_p so thin planes stay invertible [m²]
   bool valid(std::string* why) const;
 };
-
-/// Reads orientation_deg, translation, closeness, min_variance; unknown keys are errors.
-MergeThresholds read_merge_thresholds(const YAML::Node& node, const std::string& file,
-                                      MergeThresholds defaults = {});
 
 /// The three test values plus the Euclidean centre distance (Table 4.1's columns).
 struct MergeCriteria {

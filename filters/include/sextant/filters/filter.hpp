@@ -1,7 +1,8 @@
 #pragma once
 // One interface for every SLAM filter (EKF, UKF, CKF, RSPKF, SEIF/EIF), generic over a SlamModel:
 //
-//   auto filter = make_filter("ukf", model, settings_node, "exp.yaml");
+//   auto filter = std::make_unique<Ekf>(model, settings);   // or default_filter("ukf")(model); by name
+//                                                           // with YAML settings: filters/yaml.hpp
 //   filter->initialize(x0, P0);                     // x0 = [pose; landmarks…]
 //   filter->predict(u, Q);                          // Q: covariance of the control u
 //   filter->update(zs, R, associations);            // zs[i] observes landmark associations[i]
@@ -10,14 +11,13 @@
 // A numerical failure (not positive definite, failed Cholesky, singular innovation) is the
 // step's status and is counted in summary(); it never throws and never crashes.
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
 #include <Eigen/Core>
 
-#include "sextant/core/registry.hpp"
 #include "sextant/filters/slam_model.hpp"
 
 namespace sextant {
@@ -96,15 +96,12 @@ class Filter {
 Eigen::MatrixXd joint_block(const SlamModel& model, const Eigen::MatrixXd& P,
                             const std::vector<int>& landmarks);
 
-/// Factory signature: (model, settings node — may be null for defaults, file name for messages).
-using FilterRegistry =
-    Registry<Filter, std::shared_ptr<const SlamModel>, const YAML::Node&, const std::string&>;
+/// Builds a filter on a model.
+using FilterFactory = std::function<std::unique_ptr<Filter>(std::shared_ptr<const SlamModel>)>;
 
-/// All filters (ekf, ukf, ckf, rspkf, seif, eif), filled with the built-ins on first use.
-FilterRegistry& filter_registry();
-
-std::unique_ptr<Filter> make_filter(const std::string& name, std::shared_ptr<const SlamModel> model,
-                                    const YAML::Node& settings = YAML::Node(),
-                                    const std::string& file = "<settings>");
+/// The built-in filter `name` (ekf, ukf, ckf, rspkf, seif, eif, eseif) with its default settings;
+/// an empty factory for an unknown name. The filters with their own settings: construct them
+/// (gaussian_filters.hpp, seif.hpp, eseif.hpp), or read them from YAML (filters/yaml.hpp).
+FilterFactory default_filter(const std::string& name);
 
 }  // namespace sextant

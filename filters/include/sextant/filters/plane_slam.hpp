@@ -12,7 +12,7 @@
 //      semantic data (centroid, covariance, hull, area) into them (merge_landmark_semantics).
 // The map's semantic landmarks are parallel to the filter's landmarks (same index).
 //
-//   PlaneSlamSettings s = read_plane_slam_settings(node, "e12.yaml");
+//   PlaneSlamSettings s;                    // or read_plane_slam_settings (filters/yaml.hpp)
 //   PlaneSlam slam(s, to_pose6(first_ground_truth), seed);
 //   for (i …) PlaneSlamStep step = slam.step(scan(i), odometry_pose(i));   // first call: no predict
 //
@@ -28,7 +28,6 @@
 #include <string>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
 #include <Eigen/Geometry>
 
 #include "sextant/core/point_cloud.hpp"
@@ -47,8 +46,10 @@ namespace sextant {
 inline constexpr double kMaxP0Scale = 1e12;
 
 struct PlaneSlamSettings {
-  std::string filter = "ekf";          ///< filter registry name: ekf, ukf, ckf, rspkf, seif, eif
-  YAML::Node filter_settings;          ///< passed to make_filter (null: the filter's defaults)
+  std::string filter = "ekf";  ///< the filter: ekf, ukf, ckf, rspkf, seif, eif, eseif (filter.hpp)
+  /// Builds `filter` with settings of its own (read_plane_slam_settings: from the YAML map
+  /// `filter_settings`); empty: `filter` with its defaults (default_filter)
+  FilterFactory filter_factory;
   PlaneExtractionSettings extraction;  ///< §4.1
   AssociationSettings association;     ///< §4.2.5
   // Q: noise of one odometry increment (eq. 4.72). 2D odometry says nothing about z, roll and
@@ -69,14 +70,12 @@ struct PlaneSlamSettings {
   bool record_pose_covariance = true;  ///< pose covariance per step (O(n³) for information filters)
 
   bool valid(std::string* why) const;
+  /// The filter on `model`: filter_factory's, else default_filter(filter)'s.
+  std::unique_ptr<Filter> build_filter(std::shared_ptr<const SlamModel> model) const;
   Matrix6d process_noise() const;             ///< Q
   Eigen::Matrix4d observation_noise() const;  ///< R
   Matrix6d initial_covariance() const;        ///< P0
 };
-
-/// Keys: filter, filter_settings (map), extraction (map, read_plane_extraction_settings),
-/// association (map, read_association_settings) and the scalar field names above.
-PlaneSlamSettings read_plane_slam_settings(const YAML::Node& node, const std::string& file);
 
 /// One scan of plane SLAM.
 struct PlaneSlamStep {

@@ -9,20 +9,20 @@
 // with R = inverse of the matcher's Hessian restricted to x, y, yaw (eq. 3.50), fed to
 // AckermannScanMatchingEkf (eqs. 3.48–3.52).
 //
-//   RoomSim2dSettings s = read_room_sim_2d_settings(node, "e08.yaml");
-//   auto matcher = make_matcher("mlndt", room_sim_matcher_defaults());
+//   RoomSim2dSettings s;                      // or read_room_sim_2d_settings (filters/yaml.hpp)
+//   MlndtMatcher matcher(room_sim_matcher_settings());
 //   Rng rng(seed);
 //   RoomSim2dRun run = run_room_sim_2d(s, *matcher, rng);
 #include <string>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
 #include <Eigen/Core>
 
 #include "sextant/core/point_cloud.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/filters/range_bearing_model.hpp"
 #include "sextant/matchers/matcher.hpp"
+#include "sextant/matchers/mlndt_matcher.hpp"
 
 namespace sextant {
 
@@ -63,12 +63,10 @@ struct RoomSim2dSettings {
   Eigen::Matrix2d control_noise() const;  ///< Q = diag(σ_V², σ_γ²) (biases are unknown to it)
 };
 
-/// Keys: the field names above; unknown keys, wrong types and invalid values are InputErrors.
-RoomSim2dSettings read_room_sim_2d_settings(const YAML::Node& node, const std::string& file);
-
-/// The ML-NDT settings the simulation needs by default: `dof: [x, y, yaw]` and three layers
-/// (the fourth layer's cells hold too few points of a few hundred beams).
-YAML::Node room_sim_matcher_defaults();
+/// The ML-NDT settings the simulation needs by default: the library's defaults with x, y, yaw free
+/// and three layers (the fourth layer's cells hold too few points of a few hundred beams); as YAML:
+/// room_sim_matcher_defaults() of filters/yaml.hpp.
+MlndtSettings room_sim_matcher_settings();
 
 /// One range scan at `pose` (x, y, heading) in the sensor frame, points with z = 0. Beams with
 /// no return within max_range are dropped.

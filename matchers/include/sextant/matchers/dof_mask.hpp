@@ -7,8 +7,6 @@
 
 namespace sextant {
 
-class SettingsReader;
-
 struct DofMask {
   std::array<bool, 6> active{{true, true, true, true, true, true}};
 
@@ -22,8 +20,5 @@ struct DofMask {
   std::vector<std::string> names() const;
   bool valid(std::string* why) const;
 };
-
-/// Reads the optional key `key` (a list of names) into `mask`; InputError on bad names.
-void read_dof_mask(SettingsReader& in, const std::string& key, DofMask& mask);
 
 }  // namespace sextant

@@ -34,8 +34,6 @@ class FeatureBasedSampler final : public Sampler {
   PlaneExtractionSettings settings_;
 };
 
-std::unique_ptr<Sampler> create_feature_based_sampler(const YAML::Node& settings, const std::string& file);
-
 /// What FbML-NDT does when the feature sample is degenerate (sample_constraints.hpp).
 enum class FbsFallback {
   kGbs,     ///< match a GBS sample of the whole scan instead (default: what mlndt itself matches)
@@ -59,8 +57,6 @@ struct FbmlndtSettings {
   bool valid(std::string* why) const;
 };
 
-FbmlndtSettings read_fbmlndt_settings(const YAML::Node& node, const std::string& file);
-
 /// ML-NDT whose input points are the fbs sample of the input scan.
 class FbmlndtMatcher final : public Matcher {
  public:
@@ -83,7 +79,5 @@ class FbmlndtMatcher final : public Matcher {
   std::size_t last_sample_size_ = 0;
   ConstraintCheck last_check_;
 };
-
-std::unique_ptr<Matcher> create_fbmlndt_matcher(const YAML::Node& settings, const std::string& file);
 
 }  // namespace sextant

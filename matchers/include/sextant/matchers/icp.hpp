@@ -14,8 +14,6 @@
 #include <memory>
 #include <string>
 
-#include <yaml-cpp/yaml.h>
-
 #include "sextant/matchers/dof_mask.hpp"
 #include "sextant/matchers/matcher.hpp"
 
@@ -38,15 +36,7 @@ struct IcpSettings {
   bool valid(std::string* why) const;
 };
 
-/// Reads the settings of `objective` (p2p rejects `normal_neighbours`); InputError naming file,
-/// line and key for an unknown key, a wrong type or an invalid value.
-IcpSettings read_icp_settings(IcpObjective objective, const YAML::Node& node, const std::string& file);
-
 /// Throws std::invalid_argument when `settings` are not valid.
 std::unique_ptr<Matcher> make_icp(IcpObjective objective, const IcpSettings& settings);
-
-/// Registry factories (`icp_p2p`, `icp_p2l`).
-std::unique_ptr<Matcher> make_icp_p2p_matcher(const YAML::Node& settings, const std::string& file);
-std::unique_ptr<Matcher> make_icp_p2l_matcher(const YAML::Node& settings, const std::string& file);
 
 }  // namespace sextant

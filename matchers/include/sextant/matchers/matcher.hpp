@@ -1,7 +1,8 @@
 #pragma once
-// The one interface every scan matcher implements (ours and PCL's peers), selectable by name:
+// The one interface every scan matcher implements (ours and PCL's peers):
 //
-//   auto matcher = make_matcher("mlndt", settings_node, "exp.yaml");   // YAML → settings
+//   auto matcher = std::make_unique<MlndtMatcher>(settings);           // or matcher_choice.hpp;
+//                                                                       // by name from YAML: yaml.hpp
 //   matcher->set_reference(reference);                                  // grids, trees
 //   RegistrationResult r = matcher->align(sampled_input, initial_guess);
 //
@@ -11,11 +12,9 @@
 #include <string>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
 #include <Eigen/Geometry>
 
 #include "sextant/core/point_cloud.hpp"
-#include "sextant/core/registry.hpp"
 #include "sextant/matchers/registration_result.hpp"
 
 namespace sextant {
@@ -29,14 +28,5 @@ class Matcher {
   /// Aligns `input` to the reference from `initial`; never throws for bad data (status in result).
   virtual RegistrationResult align(const PointCloud& input, const Eigen::Isometry3d& initial) = 0;
 };
-
-/// Factory signature: (settings node — may be null for defaults, file name for error messages).
-using MatcherRegistry = Registry<Matcher, const YAML::Node&, const std::string&>;
-
-/// All matchers, filled with the built-ins on first use.
-MatcherRegistry& matcher_registry();
-
-std::unique_ptr<Matcher> make_matcher(const std::string& name, const YAML::Node& settings = YAML::Node(),
-                                      const std::string& file = "<settings>");
 
 }  // namespace sextant

@@ -18,7 +18,6 @@
 #include <string>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
 #include <Eigen/Geometry>
 
 #include "sextant/core/point_cloud.hpp"
@@ -43,9 +42,6 @@ struct WideBasinSettings {
   /// Hypotheses scored per registration.
   long hypotheses() const;
 };
-
-/// Reads the `wide_basin` map (enabled = true); unknown keys are InputErrors.
-WideBasinSettings read_wide_basin_settings(const YAML::Node& node, const std::string& file);
 
 /// The scoring layer: index of the finest of `layers` whose cell edge is ≥ `min_edge` (0, layer
 /// 1, when none is); wide_basin_starts() asks for 2 × translation_step.

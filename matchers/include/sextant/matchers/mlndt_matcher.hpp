@@ -57,8 +57,6 @@ struct MlndtSettings {
   bool valid(std::string* why) const;
 };
 
-MlndtSettings read_mlndt_settings(const YAML::Node& node, const std::string& file);
-
 class MlndtMatcher final : public Matcher {
  public:
   explicit MlndtMatcher(MlndtSettings settings = {});
@@ -81,7 +79,5 @@ class MlndtMatcher final : public Matcher {
   std::vector<NdtGrid> precision_;
   std::size_t reference_points_ = 0;
 };
-
-std::unique_ptr<Matcher> create_mlndt_matcher(const YAML::Node& settings, const std::string& file);
 
 }  // namespace sextant

@@ -29,10 +29,6 @@ struct CellStatsSettings {
   bool valid(std::string* why) const;
 };
 
-class SettingsReader;
-/// Reads min_points, max_eigen_ratio, min_spread and min_relative_spread at the reader's level.
-void read_cell_stats_settings(SettingsReader& in, CellStatsSettings& s);
-
 namespace ndt_detail {
 struct CellSums;  ///< running sums of one occupied cell (ndt_grid.cpp)
 }

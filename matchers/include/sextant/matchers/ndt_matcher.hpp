@@ -32,8 +32,6 @@ struct NdtSettings {
   bool valid(std::string* why) const;
 };
 
-NdtSettings read_ndt_settings(const YAML::Node& node, const std::string& file);
-
 class NdtMatcher final : public Matcher {
  public:
   explicit NdtMatcher(NdtSettings settings = {});
@@ -49,7 +47,5 @@ class NdtMatcher final : public Matcher {
   std::size_t reference_points_ = 0;
   GaussianScoreParams params_;
 };
-
-std::unique_ptr<Matcher> create_ndt_matcher(const YAML::Node& settings, const std::string& file);
 
 }  // namespace sextant

@@ -55,13 +55,6 @@ struct OptimizerSettings {
   bool valid(std::string* why) const;
 };
 
-/// Reads the optimiser keys the NDT matchers share: solver (message lists `known_solvers`),
-/// max_iterations, epsilon, step_control (none | line_search | more_thuente | trust_region |
-/// trust_region_last; the boolean `line_search: true/false` means line_search / none), the
-/// Moré–Thuente keys line_search_mu, line_search_eta, line_search_max_step, line_search_iterations
-/// (MoreThuenteSettings) and dof.
-void read_optimizer_settings(SettingsReader& in, const std::string& known_solvers, OptimizerSettings& s);
-
 /// What the loop optimises. Scores are minimised.
 class StagedObjective {
  public:

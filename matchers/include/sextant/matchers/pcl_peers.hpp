@@ -11,8 +11,6 @@
 #include <memory>
 #include <string>
 
-#include <yaml-cpp/yaml.h>
-
 #include "sextant/matchers/matcher.hpp"
 
 namespace sextant {
@@ -49,20 +47,9 @@ struct PclGicpSettings {
   bool valid(std::string* why) const;
 };
 
-/// YAML readers: InputError naming file, line and key for an unknown key, a wrong type or an
-/// invalid value.
-PclNdtSettings read_pcl_ndt_settings(const YAML::Node& node, const std::string& file);
-PclIcpSettings read_pcl_icp_settings(const YAML::Node& node, const std::string& file);
-PclGicpSettings read_pcl_gicp_settings(const YAML::Node& node, const std::string& file);
-
 /// Throw std::invalid_argument when the settings are not valid.
 std::unique_ptr<Matcher> make_pcl_ndt(const PclNdtSettings& settings);
 std::unique_ptr<Matcher> make_pcl_icp(const PclIcpSettings& settings);
 std::unique_ptr<Matcher> make_pcl_gicp(const PclGicpSettings& settings);
-
-/// Registry factories (`pcl_ndt`, `pcl_icp`, `pcl_gicp`).
-std::unique_ptr<Matcher> make_pcl_ndt_matcher(const YAML::Node& settings, const std::string& file);
-std::unique_ptr<Matcher> make_pcl_icp_matcher(const YAML::Node& settings, const std::string& file);
-std::unique_ptr<Matcher> make_pcl_gicp_matcher(const YAML::Node& settings, const std::string& file);
 
 }  // namespace sextant

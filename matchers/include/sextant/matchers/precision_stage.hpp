@@ -32,8 +32,6 @@
 
 namespace sextant {
 
-class SettingsReader;
-
 struct PrecisionSettings {
   /// The smallest cell edge of the precision grids (their edge is max(this, half the last layer's),
   /// at most the last layer's). 1 m: a lidar surface patch of 1 m holds enough returns at the ranges
@@ -47,9 +45,6 @@ struct PrecisionSettings {
   bool enabled() const { return min_cell > 0.0; }
   bool valid(std::string* why) const;
 };
-
-/// Reads precision_min_cell and precision_min_coverage at the reader's level.
-void read_precision_settings(SettingsReader& in, PrecisionSettings& s);
 
 /// The precision stage's two grids for `reference`: aligned with `last_layer`'s origin, then shifted
 /// by half a cell along every axis, both over the last layer's box (plus one cell). Empty when the

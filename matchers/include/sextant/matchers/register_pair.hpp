@@ -12,24 +12,21 @@
 #include <optional>
 #include <string>
 
-#include <yaml-cpp/yaml.h>
 #include <Eigen/Geometry>
 
 #include "sextant/core/point_cloud.hpp"
 #include "sextant/matchers/match_pair.hpp"
+#include "sextant/matchers/matcher_choice.hpp"
 
 namespace sextant {
 
 struct PairRegistrationRequest {
-  std::string method = "mlndt";
-  YAML::Node settings;  ///< the matcher's settings (mlndt/fbmlndt: may name a `preset:`)
-  std::string sampling = "gbs";
-  YAML::Node sampler_settings;            ///< null: the sampler's defaults
+  /// The matcher (matcher_choice.hpp; by name from YAML: matchers/yaml.hpp); default ML-NDT
+  MatcherChoice matcher = matcher_choice(MlndtSettings{});
+  SamplerFactory sampler = sampler_factory(GridSamplerSettings{});  ///< default GBS
   std::optional<Eigen::Isometry3d> init;  ///< p_reference ≈ init · p_input; none: the identity, searched
   bool wide_basin = true;                 ///< false: no search without a guess, no retry with one
   std::uint64_t seed = 1;                 ///< the sampler's random choices
-  std::string where = "<settings>";       ///< named in the errors of bad matcher settings
-  std::string sampler_where = "<sampler settings>";  ///< … and of bad sampler settings
 };
 
 struct PairRegistration {
@@ -41,8 +38,8 @@ struct PairRegistration {
   bool searched_without_guess = false;  ///< no guess: the wide basin searched (callers name their switch)
 };
 
-/// Registers `input` against `reference` (see above). Never throws for bad data; bad settings are
-/// InputErrors naming request.where.
+/// Registers `input` against `reference` (see above). Never throws for bad data; whatever the
+/// request's factories throw for bad settings (the YAML ones: InputErrors naming their file) passes.
 PairRegistration register_pair(const PointCloud& reference, const PointCloud& input,
                                const PairRegistrationRequest& request);
 

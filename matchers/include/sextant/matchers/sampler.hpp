@@ -5,10 +5,7 @@
 #include <string>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
-
 #include "sextant/core/point_cloud.hpp"
-#include "sextant/core/registry.hpp"
 #include "sextant/core/rng.hpp"
 
 namespace sextant {
@@ -29,13 +26,5 @@ struct SampleResult {
 
 /// Runs `sampler` and reports the kept fraction.
 SampleResult sample_points(const Sampler& sampler, const PointCloud& input, Rng& rng);
-
-using SamplerRegistry = Registry<Sampler, const YAML::Node&, const std::string&>;
-
-/// All samplers, filled with the built-ins on first use.
-SamplerRegistry& sampler_registry();
-
-std::unique_ptr<Sampler> make_sampler(const std::string& name, const YAML::Node& settings = YAML::Node(),
-                                      const std::string& file = "<settings>");
 
 }  // namespace sextant

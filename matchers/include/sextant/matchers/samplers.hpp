@@ -1,6 +1,6 @@
 #pragma once
-// The built-in samplers (§2.2.3, §5.1.2.2) with their settings. Construct them by name through
-// make_sampler(); the types are public so code and tests can build them directly.
+// The built-in samplers (§2.2.3, §5.1.2.2) with their settings. Build them directly (or by name from
+// YAML: make_sampler() of matchers/yaml.hpp).
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -67,14 +67,5 @@ class GridSampler final : public Sampler {
  private:
   GridSamplerSettings settings_;
 };
-
-/// Keys cell_size, max_per_cell, min_per_cell (null node → defaults); InputError on bad keys or values.
-GridSamplerSettings read_grid_sampler_settings(const YAML::Node& settings, const std::string& file);
-
-/// Registry factories: settings from YAML (null node → defaults); InputError on bad keys.
-std::unique_ptr<Sampler> create_all_sampler(const YAML::Node& settings, const std::string& file);
-std::unique_ptr<Sampler> create_regular_sampler(const YAML::Node& settings, const std::string& file);
-std::unique_ptr<Sampler> create_random_sampler(const YAML::Node& settings, const std::string& file);
-std::unique_ptr<Sampler> create_grid_sampler(const YAML::Node& settings, const std::string& file);
 
 }  // namespace sextant

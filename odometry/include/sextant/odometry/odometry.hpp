@@ -2,7 +2,7 @@
 // Scan-matching odometry: registrations chained over consecutive scans of a dataset (§5.1.3's
 // dead reckoning by a matcher, and the relative poses a pose graph is built from, §7.2):
 //
-//   OdometrySettings s;                       // ML-NDT on a GBS sample (s.method)
+//   OdometrySettings s;                       // ML-NDT on a GBS sample (s.registration)
 //   s.guess = OdometryGuess::constant_velocity;
 //   const OdometryResult r = run_odometry(dataset, s, /*first=*/0, /*count=*/100);
 //   r.poses[i];                                // world ← scan first + i
@@ -19,11 +19,11 @@
 #include <string>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
 #include <Eigen/Geometry>
 
 #include "sextant/core/dataset.hpp"
 #include "sextant/core/pose.hpp"
+#include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 
 namespace sextant {
@@ -43,16 +43,15 @@ enum class OdometryMap {
   local_map,  ///< the last `local_map_scans` scans, in the frame of scan i − 1 (voxel-filtered when large)
 };
 
-/// The matcher and sampler of a registration, by registry name (matcher.hpp, sampler.hpp).
-struct OdometryMethod {
-  std::string matcher = "mlndt";
-  YAML::Node settings;  ///< matcher settings (may say `preset:`, mlndt_presets.hpp); null = defaults
-  std::string sampler = "gbs";
-  YAML::Node sampler_settings;  ///< null = defaults
+/// The matcher and sampler of the registrations (matcher_choice.hpp; by registry name with YAML
+/// settings: odometry_registration() of odometry/yaml.hpp). Each worker builds its own.
+struct OdometryRegistration {
+  MatcherChoice matcher = matcher_choice(MlndtSettings{});          ///< default ML-NDT
+  SamplerFactory sampler = sampler_factory(GridSamplerSettings{});  ///< default GBS
 };
 
 struct OdometrySettings {
-  OdometryMethod method;
+  OdometryRegistration registration;
   OdometryGuess guess = OdometryGuess::odometry;
   OdometryMap map = OdometryMap::scan;
   std::size_t local_map_scans = 5;            ///< local_map: scans in the map (k ≥ 1)

@@ -17,7 +17,6 @@
 #include <string>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
 #include <Eigen/Geometry>
 
 #include "sextant/core/pose.hpp"
@@ -41,9 +40,6 @@ struct LoopClosureSettings {
 
   bool valid(std::string* why) const;
 };
-
-/// Reads LoopClosureSettings keys from a YAML map (may be null); InputError naming file, line, key.
-LoopClosureSettings read_loop_closure_settings(const YAML::Node& node, const std::string& file);
 
 struct LoopClosureCandidate {
   std::size_t i = 0, j = 0;                                 ///< i < j

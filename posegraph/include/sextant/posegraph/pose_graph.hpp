@@ -20,7 +20,6 @@
 #include <string>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
 #include <Eigen/Geometry>
 
 #include "sextant/core/pose.hpp"
@@ -50,9 +49,6 @@ struct PoseGraphSettings {
   bool valid(std::string* why) const;
 };
 
-/// Reads PoseGraphSettings keys (loss: none|huber|cauchy, loss_scale, robust_odometry, max_iterations,
-/// function_tolerance, threads) from a YAML map (may be null); InputError naming file, line, key.
-PoseGraphSettings read_pose_graph_settings(const YAML::Node& node, const std::string& file);
 RobustLoss robust_loss_from_string(const std::string& name, bool* ok);
 std::string to_string(RobustLoss loss);
 

@@ -5,8 +5,6 @@
 #include <cstdint>
 #include <string>
 
-#include <yaml-cpp/yaml.h>
-
 namespace sextant::synth {
 
 struct WorldSettings {
@@ -103,13 +101,7 @@ struct CampusSettings {
   bool valid(std::string* why) const;
 };
 
-/// Maps YAML (sections world, trajectory, sensor, odometry, gnss) onto the defaults. Unknown
-/// keys, wrong types and invalid values throw InputError naming file, line and key. When
-/// `seed` is given, an optional top-level `seed` key is read into it (campus.yaml has one).
-CampusSettings read_campus_settings(const YAML::Node& node, const std::string& file,
-                                    std::uint64_t* seed = nullptr);
-
-/// The resolved settings (and seed) as YAML text, readable by read_campus_settings.
+/// The resolved settings (and seed) as YAML text, readable by read_campus_settings (synth/yaml.hpp).
 std::string campus_settings_yaml(const CampusSettings& settings, std::uint64_t seed);
 
 /// A stable 64-bit hash of the settings and seed (names the cache folder).

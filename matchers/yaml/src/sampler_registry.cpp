@@ -1,6 +1,7 @@
 // The sampler registry: one line per built-in sampler (others insert their own lines).
-#include "sextant/matchers/feature_based_sampler.hpp"
-#include "sextant/matchers/samplers.hpp"
+#include "readers.hpp"
+
+#include "sextant/matchers/yaml.hpp"
 
 namespace sextant {
 
@@ -28,6 +29,10 @@ SamplerRegistry& sampler_registry() {
 std::unique_ptr<Sampler> make_sampler(const std::string& name, const YAML::Node& settings,
                                       const std::string& file) {
   return sampler_registry().create(name, settings, file);
+}
+
+SamplerFactory sampler_factory(const std::string& name, const YAML::Node& settings, const std::string& file) {
+  return [name, settings, file] { return make_sampler(name, settings, file); };
 }
 
 }  // namespace sextant

@@ -1,4 +1,4 @@
-#include "sextant/eval/metric_settings.hpp"
+#include "sextant/eval/yaml.hpp"
 
 #include <stdexcept>
 

@@ -1,4 +1,5 @@
-#include "sextant/matchers/mlndt_presets.hpp"
+// The ML-NDT presets (matchers/yaml.hpp).
+#include "sextant/matchers/yaml.hpp"
 
 #include <algorithm>
 

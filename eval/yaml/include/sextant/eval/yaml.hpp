@@ -1,5 +1,6 @@
 #pragma once
-// YAML mapping of the metric settings, for experiment configs. Every problem (unknown key, wrong
+// The metric settings from YAML, for experiment configs (target Sextant::eval_yaml; the library
+// takes the plain structs). Every problem (unknown key, wrong
 // type, bad value) is an InputError naming the file, line and key.
 //
 //   success: translation_50cm                 # a preset name, or a map:

@@ -4,6 +4,7 @@
 #include "sextant/filters/eseif.hpp"
 #include "sextant/filters/gaussian_filters.hpp"
 #include "sextant/filters/seif.hpp"
+#include "sextant/filters/yaml.hpp"
 
 namespace sextant {
 namespace {

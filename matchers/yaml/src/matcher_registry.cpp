@@ -1,10 +1,7 @@
 // The matcher registry: one line per built-in matcher (others insert their own lines).
-#include "sextant/matchers/feature_based_sampler.hpp"
-#include "sextant/matchers/icp.hpp"
-#include "sextant/matchers/matcher.hpp"
-#include "sextant/matchers/mlndt_matcher.hpp"
-#include "sextant/matchers/ndt_matcher.hpp"
-#include "sextant/matchers/pcl_peers.hpp"
+#include "readers.hpp"
+
+#include "sextant/matchers/yaml.hpp"
 
 namespace sextant {
 
@@ -34,6 +31,20 @@ MatcherRegistry& matcher_registry() {
 std::unique_ptr<Matcher> make_matcher(const std::string& name, const YAML::Node& settings,
                                       const std::string& file) {
   return matcher_registry().create(name, settings, file);
+}
+
+MatcherChoice matcher_choice(const std::string& name, const YAML::Node& settings, const std::string& file,
+                             const std::string& wide_file) {
+  MatcherChoice c;
+  c.name = name;
+  c.make = [name, settings, file] { return make_matcher(name, settings, file); };
+  if (const std::optional<YAML::Node> wide = with_wide_basin(name, settings)) {
+    const std::string where = wide_file.empty() ? file : wide_file;
+    c.make_wide = [name, node = *wide, where] { return make_matcher(name, node, where); };
+  }
+  const YAML::Node& given = settings;
+  c.own_wide_basin = given.IsMap() && given["wide_basin"].IsDefined();
+  return c;
 }
 
 }  // namespace sextant

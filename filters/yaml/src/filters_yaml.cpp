@@ -1,0 +1,84 @@
+// The plane-SLAM and 2D room-simulation settings from YAML (Sextant::filters_yaml).
+#include <memory>
+
+#include "sextant/core/settings_reader.hpp"
+#include "sextant/features/yaml.hpp"
+#include "sextant/filters/plane_slam_model.hpp"
+#include "sextant/filters/yaml.hpp"
+
+namespace sextant {
+
+PlaneSlamSettings read_plane_slam_settings(const YAML::Node& node, const std::string& file) {
+  SettingsReader in(node, file);
+  PlaneSlamSettings s;
+  YAML::Node filter_settings;
+  in.read("filter", s.filter);
+  if (in.has("filter_settings")) filter_settings = YAML::Clone(in.child("filter_settings"));
+  if (in.has("extraction")) s.extraction = read_plane_extraction_settings(in.child("extraction"), file);
+  if (in.has("association")) s.association = read_association_settings(in.child("association"), file);
+  in.read("sigma_xy", s.sigma_xy);
+  in.read("sigma_z", s.sigma_z);
+  in.read("sigma_roll_pitch", s.sigma_roll_pitch);
+  in.read("sigma_yaw", s.sigma_yaw);
+  in.read("sigma_normal", s.sigma_normal);
+  in.read("sigma_distance", s.sigma_distance);
+  in.read("initial_sigma_translation", s.initial_sigma_translation);
+  in.read("initial_sigma_rotation", s.initial_sigma_rotation);
+  in.read("p0_scale", s.p0_scale);
+  in.read("gate_probability", s.gate_probability);
+  in.read("merge_semantics", s.merge_semantics);
+  in.read("record_pose_covariance", s.record_pose_covariance);
+  in.finish();
+  std::string why;
+  const bool valid = s.valid(&why);
+  if (!valid && !default_filter(s.filter)) in.fail("", why);  // an unknown filter first
+  if (filter_settings && !filter_settings.IsNull() && !filter_settings.IsMap())
+    in.fail("", "filter_settings must be a map");
+  if (!valid) in.fail("", why);
+  // The filter's own keys are checked now, so a typo fails before a long run starts.
+  make_filter(s.filter, std::make_shared<PlaneSlamModel>(), filter_settings, file);
+  s.filter_factory = [name = s.filter, filter_settings](std::shared_ptr<const SlamModel> model) {
+    return make_filter(name, std::move(model), filter_settings);
+  };
+  return s;
+}
+
+RoomSim2dSettings read_room_sim_2d_settings(const YAML::Node& node, const std::string& file) {
+  SettingsReader in(node, file);
+  RoomSim2dSettings s;
+  in.read("room_length", s.room_length);
+  in.read("room_width", s.room_width);
+  in.read("circle_x", s.circle_x);
+  in.read("circle_y", s.circle_y);
+  in.read("circle_radius", s.circle_radius);
+  in.read("beams", s.beams);
+  in.read("max_range", s.max_range);
+  in.read("range_noise", s.range_noise);
+  in.read("scan_every", s.scan_every);
+  in.read("speed", s.speed);
+  in.read("dt", s.dt);
+  in.read("wheelbase", s.wheelbase);
+  in.read("max_steer", s.max_steer);
+  in.read("max_steer_rate", s.max_steer_rate);
+  in.read("loop_length", s.loop_length);
+  in.read("loop_width", s.loop_width);
+  in.read("waypoint_radius", s.waypoint_radius);
+  in.read("loops", s.loops);
+  in.read("max_steps", s.max_steps);
+  in.read("sigma_speed", s.sigma_speed);
+  in.read("sigma_steer", s.sigma_steer);
+  in.read("bias_speed", s.bias_speed);
+  in.read("bias_steer", s.bias_steer);
+  in.read("initial_sigma", s.initial_sigma);
+  in.read("measurement_noise_scale", s.measurement_noise_scale);
+  in.finish();
+  std::string why;
+  if (!s.valid(&why)) in.fail("", why);
+  return s;
+}
+
+YAML::Node room_sim_matcher_defaults() {
+  return YAML::Load("{dof: [x, y, yaw], layers: 3}");
+}
+
+}  // namespace sextant

@@ -1,0 +1,105 @@
+#pragma once
+// The matchers and samplers from YAML (target Sextant::matchers_yaml; the library takes the plain
+// settings structs, matcher_choice.hpp). A YAML file chooses `method: mlndt` by registry name; each
+// reader maps a settings map onto the struct's defaults, and every problem (an unknown key, a wrong
+// type, an invalid value) is an InputError naming the file, the line and the key.
+//
+//   auto matcher = make_matcher("mlndt", settings_node, "exp.yaml");
+//   MatcherChoice choice = matcher_choice("mlndt", settings_node, "exp.yaml");  // for register_pair
+//
+// ML-NDT presets: a map of `mlndt` (and `fbmlndt`, which forwards the mlndt keys) may say
+// `preset: <name>`; its other keys override the preset's. One rule everywhere: `default` unless a
+// preset is named (`sextant match`, `sextant odometry`, the Python module, the library).
+//
+//   default — the measured best over every shared real pair and three campus pairs from the guess a
+//             user has (bench/bench_matcher_defaults, docs/matcher_defaults.md): LM, q = 8, n = 4,
+//             s = 2, last-layer terms truncated at 16 (unmatched points charged 16), with GBS input;
+//             also the library's defaults (MlndtSettings{}, a settings map without `preset:`)
+//   thesis  — the thesis' exact settings (Table 3.1, §5.1): Newton with the step as printed (eq. 3.16
+//             with H + γI, no step control), q = 8, n = 4, s = 2, three iterations per layer, the
+//             plain sum of eq. 3.11, unmatched points charged 50 (every experiment config of the
+//             thesis' nineteen says `preset: thesis` and overrides what it deliberately changes,
+//             which its report section names)
+//   outdoor — large outdoor scans: the default with n = 6 (finest cells ≈ 0.6–1 m on 100 m scenes)
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <yaml-cpp/yaml.h>
+
+#include "sextant/core/registry.hpp"
+#include "sextant/matchers/feature_based_sampler.hpp"
+#include "sextant/matchers/icp.hpp"
+#include "sextant/matchers/matcher.hpp"
+#include "sextant/matchers/matcher_choice.hpp"
+#include "sextant/matchers/mlndt_global_init.hpp"
+#include "sextant/matchers/mlndt_matcher.hpp"
+#include "sextant/matchers/ndt_matcher.hpp"
+#include "sextant/matchers/pcl_peers.hpp"
+#include "sextant/matchers/sampler.hpp"
+#include "sextant/matchers/samplers.hpp"
+
+namespace sextant {
+
+// --- Settings readers (null node: the defaults) ---
+
+/// Keys: division, layers, start_layer, solver (newton | lm | ceres), iterations_per_layer,
+/// max_iterations, unmatched_penalty, max_distance, truncated_layers, epsilon, step_control, the
+/// cell statistics (min_points, max_eigen_ratio, min_spread, min_relative_spread), bounds_quantile,
+/// refine_first, dof, threads, precision_min_cell, precision_min_coverage, wide_basin (a map) and
+/// `preset:` (expanded first, the other keys override it).
+MlndtSettings read_mlndt_settings(const YAML::Node& node, const std::string& file);
+/// The mlndt keys, plus seed, features (plane extraction), fallback (gbs | add_gbs | none),
+/// constraints, fallback_gbs (GBS keys) and verify.
+FbmlndtSettings read_fbmlndt_settings(const YAML::Node& node, const std::string& file);
+/// Keys: cell_size, volume_divisions, outlier_ratio, trilinear, threads, the cell statistics and
+/// the optimiser keys (solver newton | lm).
+NdtSettings read_ndt_settings(const YAML::Node& node, const std::string& file);
+/// Reads the `wide_basin` map (enabled = true); unknown keys are InputErrors.
+WideBasinSettings read_wide_basin_settings(const YAML::Node& node, const std::string& file);
+/// Reads the settings of `objective` (p2p rejects `normal_neighbours`).
+IcpSettings read_icp_settings(IcpObjective objective, const YAML::Node& node, const std::string& file);
+PclNdtSettings read_pcl_ndt_settings(const YAML::Node& node, const std::string& file);
+PclIcpSettings read_pcl_icp_settings(const YAML::Node& node, const std::string& file);
+PclGicpSettings read_pcl_gicp_settings(const YAML::Node& node, const std::string& file);
+/// Keys cell_size, max_per_cell, min_per_cell.
+GridSamplerSettings read_grid_sampler_settings(const YAML::Node& settings, const std::string& file);
+
+// --- The registries: by name, with YAML settings ---
+
+/// Factory signature: (settings node — may be null for defaults, file name for error messages).
+using MatcherRegistry = Registry<Matcher, const YAML::Node&, const std::string&>;
+using SamplerRegistry = Registry<Sampler, const YAML::Node&, const std::string&>;
+
+/// All matchers (samplers), filled with the built-ins on first use.
+MatcherRegistry& matcher_registry();
+SamplerRegistry& sampler_registry();
+
+std::unique_ptr<Matcher> make_matcher(const std::string& name, const YAML::Node& settings = YAML::Node(),
+                                      const std::string& file = "<settings>");
+std::unique_ptr<Sampler> make_sampler(const std::string& name, const YAML::Node& settings = YAML::Node(),
+                                      const std::string& file = "<settings>");
+
+/// The matcher `name` with `settings` for register_pair and odometry: make() and make_wide() read
+/// the settings at every call (so a SettingsRecording records them), their errors name `file` (the
+/// wide basin's: `wide_file`, empty = `file`); the wide basin as with_wide_basin() gives it.
+MatcherChoice matcher_choice(const std::string& name, const YAML::Node& settings, const std::string& file,
+                             const std::string& wide_file = "");
+/// The sampler `name` with `settings`, read at every call; errors name `file`.
+SamplerFactory sampler_factory(const std::string& name, const YAML::Node& settings, const std::string& file);
+
+// --- ML-NDT presets ---
+
+/// The preset's settings map; InputError (naming `file`) for an unknown name.
+YAML::Node mlndt_preset(const std::string& name, const std::string& file = "<settings>");
+std::vector<std::string> mlndt_preset_names();
+
+/// `settings` (mlndt or fbmlndt) with the wide basin switched on (`wide_basin: {}` unless it has its
+/// own); nothing for a matcher without a wide basin.
+std::optional<YAML::Node> with_wide_basin(const std::string& matcher, const YAML::Node& settings);
+
+/// `settings` with its `preset:` key (if any) expanded: the preset's keys, overridden by the others.
+YAML::Node expand_mlndt_preset(const YAML::Node& settings, const std::string& file);
+
+}  // namespace sextant

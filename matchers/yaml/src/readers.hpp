@@ -1,0 +1,50 @@
+#pragma once
+// The readers of the settings parts the matchers share, at the level of an open SettingsReader
+// (private to Sextant::matchers_yaml).
+#include <memory>
+#include <string>
+
+#include <yaml-cpp/yaml.h>
+
+#include "sextant/core/settings_reader.hpp"
+#include "sextant/matchers/dof_mask.hpp"
+#include "sextant/matchers/matcher.hpp"
+#include "sextant/matchers/ndt_grid.hpp"
+#include "sextant/matchers/optimizer.hpp"
+#include "sextant/matchers/precision_stage.hpp"
+#include "sextant/matchers/sampler.hpp"
+
+namespace sextant {
+
+/// Reads the optional key `key` (a list of names) into `mask`; InputError on bad names.
+void read_dof_mask(SettingsReader& in, const std::string& key, DofMask& mask);
+
+/// Reads min_points, max_eigen_ratio, min_spread and min_relative_spread at the reader's level.
+void read_cell_stats_settings(SettingsReader& in, CellStatsSettings& s);
+
+/// Reads the optimiser keys the NDT matchers share: solver (message lists `known_solvers`),
+/// max_iterations, epsilon, step_control (none | line_search | more_thuente | trust_region |
+/// trust_region_last; the boolean `line_search: true/false` means line_search / none), the
+/// Moré–Thuente keys line_search_mu, line_search_eta, line_search_max_step, line_search_iterations
+/// (MoreThuenteSettings) and dof.
+void read_optimizer_settings(SettingsReader& in, const std::string& known_solvers, OptimizerSettings& s);
+
+/// Reads precision_min_cell and precision_min_coverage at the reader's level.
+void read_precision_settings(SettingsReader& in, PrecisionSettings& s);
+
+/// The registries' factories (factories.cpp): settings from YAML (null node → defaults).
+std::unique_ptr<Matcher> create_mlndt_matcher(const YAML::Node& settings, const std::string& file);
+std::unique_ptr<Matcher> create_fbmlndt_matcher(const YAML::Node& settings, const std::string& file);
+std::unique_ptr<Matcher> create_ndt_matcher(const YAML::Node& settings, const std::string& file);
+std::unique_ptr<Matcher> make_icp_p2p_matcher(const YAML::Node& settings, const std::string& file);
+std::unique_ptr<Matcher> make_icp_p2l_matcher(const YAML::Node& settings, const std::string& file);
+std::unique_ptr<Matcher> make_pcl_ndt_matcher(const YAML::Node& settings, const std::string& file);
+std::unique_ptr<Matcher> make_pcl_icp_matcher(const YAML::Node& settings, const std::string& file);
+std::unique_ptr<Matcher> make_pcl_gicp_matcher(const YAML::Node& settings, const std::string& file);
+std::unique_ptr<Sampler> create_all_sampler(const YAML::Node& settings, const std::string& file);
+std::unique_ptr<Sampler> create_regular_sampler(const YAML::Node& settings, const std::string& file);
+std::unique_ptr<Sampler> create_random_sampler(const YAML::Node& settings, const std::string& file);
+std::unique_ptr<Sampler> create_grid_sampler(const YAML::Node& settings, const std::string& file);
+std::unique_ptr<Sampler> create_feature_based_sampler(const YAML::Node& settings, const std::string& file);
+
+}  // namespace sextant

@@ -1,0 +1,11 @@
+# cmake "-DFILES=a;b;…" -P check_not_loaded.cmake: fails when one of FILES loads libyaml-cpp (ldd).
+foreach(file ${FILES})
+  execute_process(COMMAND ldd ${file} RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT result EQUAL 0)
+    message(FATAL_ERROR "ldd ${file} failed (${result}): ${err}")
+  endif()
+  if(out MATCHES "libyaml-cpp")
+    message(FATAL_ERROR "${file} loads libyaml-cpp:\n${out}")
+  endif()
+  message(STATUS "${file}: no libyaml-cpp")
+endforeach()
