@@ -4,8 +4,8 @@
 // figures, claims).
 #include <gtest/gtest.h>
 
-#include "plane_slam_hybrid.hpp"
-#include "plane_slam_sequence.hpp"
+#include "kit/fbmlndt_motion.hpp"
+#include "kit/plane_slam_driver.hpp"
 #include "sextant/experiments/report.hpp"
 #include "sextant/experiments/run_row.hpp"
 #include "sextant/experiments/runner.hpp"

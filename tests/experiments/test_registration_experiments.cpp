@@ -6,9 +6,9 @@
 #include <cmath>
 #include <map>
 
-#include "../../experiments/src/kinds/registration_adaptive.hpp"
-#include "../../experiments/src/kinds/registration_claims.hpp"
-#include "../../experiments/src/kinds/registration_figures.hpp"
+#include "kit/adaptive_start.hpp"
+#include "registration/claims.hpp"
+#include "registration/figures.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/experiments/report.hpp"
 #include "sextant/experiments/run_row.hpp"
