@@ -1,5 +1,5 @@
 #pragma once
-// Hybrid SLAM's motion source (E21, the thesis' future work §7.2): FbML-NDT between consecutive
+// Hybrid SLAM's motion source (the thesis' future work §7.2): FbML-NDT between consecutive
 // scans, on the plane extraction the SLAM step already made. Its sample is the cell-plane inliers
 // of the current scan (Table 3.2: the feature extraction process of FbML-NDT is the first stage of
 // the plane extraction, §4.1), matched by ML-NDT against the previous scan from the odometry

@@ -1,6 +1,6 @@
 #pragma once
 // Every filter's sigma-point rule and parameters as a report table (issue 25). The thesis never
-// prints its UKF's α, β, κ; the sections that compare filters (E12, E13, E15, E16, E19) say which
+// prints its UKF's α, β, κ; the sections that compare filters say which
 // ones ran, from Filter::approximation() of the filter each method builds.
 #include <memory>
 #include <string>

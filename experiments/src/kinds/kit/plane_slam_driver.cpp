@@ -27,11 +27,11 @@ std::vector<Eigen::Isometry3d> odometry_poses(const synth::Campus& campus, const
 
 class Recorder {
  public:
-  Recorder(const PlaneSlamParams& params, FilterSequenceRun& run) : params_(params), run_(run) {
+  Recorder(const PlaneSlamParams& params, RecordedRun& run) : params_(params), run_(run) {
     pending_ = params.information_at;
   }
 
-  void record(const Filter& filter, SequenceStep step, std::size_t scan, bool last) {
+  void record(const Filter& filter, RecordedStep step, std::size_t scan, bool last) {
     step.pose = filter.pose();
     step.map_size = static_cast<std::size_t>(filter.num_landmarks());
     try {
@@ -81,11 +81,11 @@ class Recorder {
   }
 
   const PlaneSlamParams& params_;
-  FilterSequenceRun& run_;
+  RecordedRun& run_;
   std::vector<std::size_t> pending_;
 };
 
-void final_map(const Filter& filter, FilterSequenceRun& run) {
+void final_map(const Filter& filter, RecordedRun& run) {
   const Eigen::VectorXd x = filter.mean();
   const PlaneSlamModel model;
   for (int i = 0; i < filter.num_landmarks(); ++i)
@@ -93,8 +93,8 @@ void final_map(const Filter& filter, FilterSequenceRun& run) {
 }
 
 // True planes, true association: the observation model (4.64) from the true pose plus N(0, R).
-void run_true(const SequenceData& data, const PlaneSlamParams& params, const PlaneSlamSettings& s,
-              const std::vector<Vector6d>& u, std::size_t scans, Rng& noise, FilterSequenceRun& run) {
+void run_true(const CampusScans& data, const PlaneSlamParams& params, const PlaneSlamSettings& s,
+              const std::vector<Vector6d>& u, std::size_t scans, Rng& noise, RecordedRun& run) {
   const synth::Campus& c = *data.campus;
   const auto model = std::make_shared<PlaneSlamModel>();
   auto filter = make_filter(s.filter, model, s.filter_settings);
@@ -104,7 +104,7 @@ void run_true(const SequenceData& data, const PlaneSlamParams& params, const Pla
   std::map<int, int> index;  // true id → filter landmark
   Recorder recorder(params, run);
   for (std::size_t k = 0; k < scans; ++k) {
-    SequenceStep step;
+    RecordedStep step;
     if (k > 0) {
       const StepResult r = filter->predict(u[k], Q);
       step.motion_seconds = r.seconds;
@@ -159,9 +159,9 @@ void run_true(const SequenceData& data, const PlaneSlamParams& params, const Pla
 
 // Extraction, semantic association and the χ² gate (filters/plane_slam.hpp); the prediction from
 // the odometry or, motion: fbmlndt, from FbML-NDT on the same extraction (kit/fbmlndt_motion.hpp).
-void run_extracted(const SequenceData& data, const PlaneSlamParams& params, const PlaneSlamSettings& s,
+void run_extracted(const CampusScans& data, const PlaneSlamParams& params, const PlaneSlamSettings& s,
                    const std::vector<Vector6d>& u, std::size_t scans, std::uint64_t seed,
-                   const PlaneSlamMethod& method, FilterSequenceRun& run) {
+                   const PlaneSlamMethod& method, RecordedRun& run) {
   const synth::Campus& c = *data.campus;
   PlaneSlam slam(s, to_pose6(c.ground_truth[0]), seed);
   std::optional<FbmlndtMotion> hybrid;
@@ -176,7 +176,7 @@ void run_extracted(const SequenceData& data, const PlaneSlamParams& params, cons
       motion = hybrid->motion(data.clouds.at(k - 1), data.clouds.at(k), extraction, slam.filter().pose(),
                               motion.motion);
     const PlaneSlamStep r = slam.step(motion.motion.u, motion.motion.Q);
-    SequenceStep step;
+    RecordedStep step;
     step.motion_seconds = r.filter.predict_seconds;
     step.measurement_seconds = r.filter.update_seconds + r.filter.augment_seconds;
     step.extraction_seconds = r.extraction_seconds;
@@ -196,17 +196,17 @@ void run_extracted(const SequenceData& data, const PlaneSlamParams& params, cons
 
 }  // namespace
 
-FilterSequenceRun run_sequence(const SequenceData& data, const PlaneSlamParams& params,
-                               const PlaneSlamSettings& settings, std::size_t scans, std::uint64_t seed,
-                               const PlaneSlamMethod& method) {
+RecordedRun record_plane_slam(const CampusScans& data, const PlaneSlamParams& params,
+                              const PlaneSlamSettings& settings, std::size_t scans, std::uint64_t seed,
+                              const PlaneSlamMethod& method) {
   const synth::Campus& c = *data.campus;
-  if (scans < 2 || scans > c.size()) throw std::invalid_argument("run_sequence: bad scan count");
+  if (scans < 2 || scans > c.size()) throw std::invalid_argument("record_plane_slam: bad scan count");
   Rng rng(seed);
   Rng odometry_rng = rng.split(), noise = rng.split();
   const std::vector<Eigen::Isometry3d> odometry = odometry_poses(c, params, scans, odometry_rng);
   // Increments u_k = o(k−1) ⊖ o(k) (eq. 4.72) and the dead reckoning they give from the true start.
   const PlaneSlamModel model;
-  FilterSequenceRun run;
+  RecordedRun run;
   std::vector<Vector6d> u(scans, Vector6d::Zero());
   run.odometry.push_back(to_pose6(c.ground_truth[0]));
   for (std::size_t k = 1; k < scans; ++k) {

@@ -24,13 +24,13 @@
 namespace sextant {
 
 /// What every run of an experiment shares (read-only while runs execute).
-struct SequenceData {
+struct CampusScans {
   const synth::Campus* campus = nullptr;
   std::vector<std::vector<synth::LandmarkVisibility>> visible;  ///< true landmarks: per scan
   std::vector<PointCloud> clouds;                               ///< extracted landmarks: per scan
 };
 
-struct SequenceStep {
+struct RecordedStep {
   Vector6d pose = Vector6d::Zero();
   Matrix6d covariance = Matrix6d::Zero();  ///< pose block (NaN when it could not be read)
   double motion_seconds = 0.0;             ///< predict
@@ -56,8 +56,8 @@ struct InformationPattern {
   std::vector<double> links;  ///< flat (i, j) pairs, i < j, of linked variables
 };
 
-struct FilterSequenceRun {
-  std::vector<SequenceStep> steps;
+struct RecordedRun {
+  std::vector<RecordedStep> steps;
   std::vector<Pose6> odometry;  ///< dead reckoning from the true start with the filters' increments
   FilterSummary summary;
   std::vector<Eigen::Vector4d> map;  ///< final landmarks (n, d)
@@ -68,8 +68,8 @@ struct FilterSequenceRun {
 
 /// Runs `scans` scans. `seed` draws the resampled odometry and the observation noise; `method`
 /// chooses the motion source (default: the odometry).
-FilterSequenceRun run_sequence(const SequenceData& data, const PlaneSlamParams& params,
-                               const PlaneSlamSettings& settings, std::size_t scans, std::uint64_t seed,
-                               const PlaneSlamMethod& method = {});
+RecordedRun record_plane_slam(const CampusScans& data, const PlaneSlamParams& params,
+                              const PlaneSlamSettings& settings, std::size_t scans, std::uint64_t seed,
+                              const PlaneSlamMethod& method = {});
 
 }  // namespace sextant

@@ -1,5 +1,5 @@
 #pragma once
-// The `plane_slam` kind's view of an experiment config (E12–E14, E16, E17, E19): plane SLAM over
+// The `plane_slam` kind's view of an experiment config: plane SLAM over
 // the first `scans` scans of the campus with every filter of the filter registry.
 //
 //   methods:
@@ -20,7 +20,7 @@
 //     odometry: resample       # campus: the dataset's odometry; resample: drawn per run from the
 //                              # run seed with the campus' odometry model (Monte Carlo repetitions)
 //     slam: {sigma_xy: 0.5, …} # PlaneSlamSettings keys (filters/plane_slam.hpp) except filter
-//     report: accuracy         # accuracy (E12–E14, E16) | seif (E17) | benchmark (E19) | eseif (E22)
+//     report: accuracy         # accuracy | seif | benchmark | eseif
 //     marginal_nees: false     # also the NEES from the exact marginal of SEIF's Ω (nees_marginal)
 //     information_at: [118, 0] # information filters: block pattern of Ω when the map first
 //                              # reaches these sizes (0: after the last scan)
@@ -53,7 +53,7 @@ enum class OdometrySource { kCampus, kResample };
 enum class PlaneSlamLayout { kAccuracy, kSeif, kBenchmark, kEseif, kHybrid };
 enum class MotionSource { kOdometry, kFbmlndt };
 
-/// Hybrid SLAM (E21): how the FbML-NDT relative pose becomes the motion prediction.
+/// Hybrid SLAM: how the FbML-NDT relative pose becomes the motion prediction.
 struct HybridParams {
   double noise_scale = 1.0;           ///< Σ = noise_scale · H⁻¹ (eq. 3.50) [-]
   double alarm_translation = 0.6;     ///< ‖δt_matcher − δt_odometry‖ above this: odometry used [m]
@@ -78,7 +78,7 @@ struct PlaneSlamParams {
   std::size_t revisit_gap = 40;       ///< scans
   double spike_threshold = 5.0;       ///< robust z-score
   std::size_t spike_window = 10;      ///< a spike within ±N scans of a revisit start is "at a loop closure"
-  bool failures_are_results = false;  ///< a filter failing on most steps is an ok row (E13), not a failed run
+  bool failures_are_results = false;  ///< a filter failing on most steps is an ok row, not a failed run
   std::size_t compare_scans = 0;      ///< > 0: the metrics also over the first N scans ("prefix_…" values)
   YAML::Node claims;                  ///< sequence or null
   HybridParams hybrid;
@@ -95,7 +95,7 @@ struct PlaneSlamMethod {
   YAML::Node matcher;  ///< motion: fbmlndt: mlndt settings of the registration (may be null)
 };
 
-/// The one sweep axis the kind understands: the scale of the initial covariance P0 (E13).
+/// The one sweep axis the kind understands: the scale of the initial covariance P0.
 inline constexpr const char* kP0ScaleAxis = "p0_scale";
 
 PlaneSlamParams read_plane_slam_params(const ExperimentConfig& config);

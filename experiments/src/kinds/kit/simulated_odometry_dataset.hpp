@@ -2,7 +2,7 @@
 // A real sequence with a reference but no odometry (MulRan: a lidar-inertial reference, no wheel
 // odometry) given an odometry simulated from its reference with the campus' error model
 // (synth::simulate_odometry: table 5.1's biased, heavy-tailed 2D model, or the zero-mean Gaussian
-// one), so that the thesis' experiments that start from an odometry guess (E2–E4, E6) run on real
+// one), so that the thesis' experiments that start from an odometry guess run on real
 // scans. The odometry is a stated model, not a measurement; the metadata says so.
 //
 //   dataset: {source: folder, path: ../data/mulran_riverside02_excerpt, seed: 1,

@@ -10,6 +10,7 @@
 #include <map>
 
 #include "kinds.hpp"
+#include "kit/number_format.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/eval/plots.hpp"
@@ -225,8 +226,7 @@ class MetricExamplesKind : public RunKind {
         compared == 0 ? Verdict::not_comparable
                       : (agree == compared ? Verdict::holds : Verdict::does_not_hold),
         std::to_string(agree) + " of " + std::to_string(compared) + " values within ±" +
-            format_cell(Cell::number(tolerance, 3), TableColumn{}) +
-            (disagreements.empty() ? "" : "; differ:" + disagreements)};
+            format_number(tolerance, 3) + (disagreements.empty() ? "" : "; differ:" + disagreements)};
     section.claims.push_back(exact);
 
     const auto get = [&](const char* metric, const char* example) {
@@ -259,9 +259,6 @@ class MetricExamplesKind : public RunKind {
     section.claims.push_back(larger);
     return section;
   }
-
- private:
-  static std::string format_number(double v) { return format_cell(Cell::number(v, 2), TableColumn{}); }
 };
 
 }  // namespace

@@ -5,8 +5,8 @@
 // The run stores the outlines as NaN-separated x/y series; the report draws them.
 #include <cmath>
 
+#include "kit/number_format.hpp"
 #include "plane_features/extraction.hpp"
-#include "registration/report.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/experiments/run_row.hpp"
 

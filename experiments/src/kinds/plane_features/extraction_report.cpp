@@ -5,8 +5,9 @@
 #include <cmath>
 #include <map>
 
+#include "kit/number_format.hpp"
+#include "kit/reference_values.hpp"
 #include "plane_features/extraction.hpp"
-#include "registration/report.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/verdict.hpp"
 #include "sextant/experiments/run_row.hpp"

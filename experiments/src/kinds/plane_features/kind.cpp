@@ -1,4 +1,4 @@
-// `plane_features` (E10, E11): `params.study` picks the study (plane_features/study.hpp), which
+// `plane_features`: `params.study` picks the study (plane_features/study.hpp), which
 // validates, prepares the runs and lays out its report.
 #include "plane_features/study.hpp"
 

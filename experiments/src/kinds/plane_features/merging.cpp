@@ -14,9 +14,10 @@
 //   reference: {case1: {"1-2": [C_o, C_t, C_p, d_c], "1-3": [...]}, case2: {...}, jump_band_factor: 2}
 #include <cmath>
 
+#include "kit/number_format.hpp"
+#include "kit/reference_values.hpp"
 #include "plane_features/merging.hpp"
 #include "plane_features/study.hpp"
-#include "registration/report.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/core/settings_reader.hpp"

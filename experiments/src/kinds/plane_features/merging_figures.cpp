@@ -2,8 +2,8 @@
 // cases, drawn from the planes of repetition 0 (the fixed seed of table 4.1).
 #include <cmath>
 
+#include "kit/number_format.hpp"
 #include "plane_features/merging.hpp"
-#include "registration/report.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/features/plane_fit.hpp"

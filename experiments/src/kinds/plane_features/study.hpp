@@ -1,8 +1,8 @@
 #pragma once
-// The `plane_features` kind (E10, E11), one file per study:
-//   plane_features/merging.cpp     — E10: the three synthetic planes of §4.1, both cases; C_o, C_t,
+// The `plane_features` kind, one file per study:
+//   plane_features/merging.cpp     — the three synthetic planes of §4.1, both cases; C_o, C_t,
 //                                    C_p (pooled covariance, eq. 4.53) and d_c beside table 4.1
-//   plane_features/extraction.cpp  — E11: extraction (cells, RANSAC, merging, ground removal) and
+//   plane_features/extraction.cpp  — extraction (cells, RANSAC, merging, ground removal) and
 //                                    semantic association on the synthetic campus, precision and
 //                                    recall against its true planes (report: ..._extraction_report.cpp)
 //

@@ -138,10 +138,10 @@ Claim decide(const DeclaredClaim& c, const PlaneSlamRows& data, std::uint64_t se
     out.verdict = c.type == "below"   ? verdict_less(m, c.value)
                   : c.type == "above" ? verdict_greater(m, c.value)
                                       : verdict_in_band(m, c.band[0], c.band[1]);
-    out.evidence =
-        c.a + " median " + c.measure + where + " = " + describe(m) +
-        (c.type == "in_band" ? "; band [" + number_text(c.band[0]) + ", " + number_text(c.band[1]) + "]"
-                             : "; threshold " + number_text(c.value));
+    out.evidence = c.a + " median " + c.measure + where + " = " + describe(m) +
+                   (c.type == "in_band" ? "; band [" + format_number(c.band[0], 2, "n/a") + ", " +
+                                              format_number(c.band[1], 2, "n/a") + "]"
+                                        : "; threshold " + format_number(c.value, 2, "n/a"));
     return out;
   }
   std::vector<Verdict> verdicts;
@@ -157,7 +157,7 @@ Claim decide(const DeclaredClaim& c, const PlaneSlamRows& data, std::uint64_t se
       const Interval r = bootstrap_ratio_of_medians(a->values(c.measure), b->values(c.measure), seed);
       verdicts.push_back(verdict_in_band(r, c.band[0], c.band[1]));
       text = c.a + "/" + name + " " + c.measure + " = " + describe(r, "×") + ", band [" +
-             number_text(c.band[0]) + ", " + number_text(c.band[1]) + "]";
+             format_number(c.band[0], 2, "n/a") + ", " + format_number(c.band[1], 2, "n/a") + "]";
     } else if (c.type == "fails_more") {
       const PairedRates r = paired_failures(*a, *b);
       verdicts.push_back(verdict_greater(r.difference, 0.0));

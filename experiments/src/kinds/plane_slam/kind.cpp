@@ -1,4 +1,4 @@
-// `plane_slam` (E12–E14, E16, E17, E19, E22): one run = one filter over the first scans of the
+// `plane_slam`: one run = one filter over the first scans of the
 // synthetic campus at one sweep point (p0_scale) and repetition (kit/plane_slam_driver.hpp). Each
 // row holds per scan the position / rotation error against the ground truth, the NEES of the
 // pose, the motion- and measurement-update times and the map size; the estimated, true and
@@ -97,7 +97,7 @@ void put_step_costs(RunRow& row) {
 
 /// The estimated vertical planes as top-down segments over their true landmark's extent: each
 /// polygon vertex projected onto the estimated plane's trace (x, y, z̄) → 4 numbers per segment.
-std::vector<double> map_segments(const FilterSequenceRun& r, const synth::Campus& campus) {
+std::vector<double> map_segments(const RecordedRun& r, const synth::Campus& campus) {
   std::vector<double> out;
   for (std::size_t i = 0; i < r.map.size() && i < r.map_truth.size(); ++i) {
     if (r.map_truth[i] < 0) continue;
@@ -121,8 +121,7 @@ std::vector<double> map_segments(const FilterSequenceRun& r, const synth::Campus
   return out;
 }
 
-void fill_row(const FilterSequenceRun& r, const synth::Campus& campus, const PlaneSlamParams& params,
-              RunRow& row) {
+void fill_row(const RecordedRun& r, const synth::Campus& campus, const PlaneSlamParams& params, RunRow& row) {
   const std::size_t n = r.steps.size();
   const double bound = chi_square_quantile(params.nees_probability, 6.0);
   auto& s = row.series;
@@ -130,7 +129,7 @@ void fill_row(const FilterSequenceRun& r, const synth::Campus& campus, const Pla
   std::size_t inconsistent = 0, judged = 0, failed = 0, updates = 0, gated = 0;
   double first_failure = kNaN;
   for (std::size_t k = 0; k < n; ++k) {
-    const SequenceStep& st = r.steps[k];
+    const RecordedStep& st = r.steps[k];
     const Vector6d t = to_pose6(campus.ground_truth[k]).vector(), o = r.odometry[k].vector();
     const bool finite = st.pose.allFinite();
     s["error_m"].push_back(finite ? (st.pose.head<3>() - t.head<3>()).norm() : kNaN);
@@ -264,7 +263,7 @@ class PlaneSlamSession : public KindSession {
     const double p0 = it == run.point.end() ? kNaN : std::stod(it->second);
     const PlaneSlamSettings settings = plane_slam_settings(params_, method, p0, file_);
     const std::size_t scans = method.scans ? std::min(method.scans, sequence_scans()) : sequence_scans();
-    fill_row(run_sequence(data_, params_, settings, scans, run.seed, method), campus_, params_, row);
+    fill_row(record_plane_slam(data_, params_, settings, scans, run.seed, method), campus_, params_, row);
   }
 
  private:
@@ -281,7 +280,7 @@ class PlaneSlamSession : public KindSession {
   PlaneSlamParams params_;
   std::vector<PlaneSlamMethod> methods_;
   synth::Campus campus_;
-  SequenceData data_;
+  CampusScans data_;
 };
 
 class PlaneSlamKind : public RunKind {

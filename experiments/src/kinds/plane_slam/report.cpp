@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "kit/filter_parameters.hpp"
+#include "kit/reference_values.hpp"
 #include "plane_slam/report.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/eval/verdict.hpp"
@@ -65,13 +66,6 @@ std::vector<double> scan_axis(std::size_t n) {
   return x;
 }
 
-std::string number_text(double value, int precision) {
-  if (!std::isfinite(value)) return "n/a";
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", precision, value);
-  return buffer;
-}
-
 std::string point_text(const std::string& point) {
   return point.empty() ? "" : "p0_scale = " + point;
 }
@@ -108,7 +102,7 @@ std::string common_notes(const ExperimentConfig& config, const PlaneSlamParams& 
       " repetition(s) per filter; intervals are over the repetitions. Every filter starts at the true "
       "first pose and predicts with the odometry increments (eq. 4.72); the odometry curve is the dead "
       "reckoning of the same increments. NEES of the 6D pose against χ²₆(" +
-      number_text(params.nees_probability, 2) +
+      format_number(params.nees_probability, 2, "n/a") +
       "); SEIF's pose covariance is its Markov-blanket approximation (conditional, so its NEES is "
       "pessimistic).";
   return s;
@@ -116,11 +110,7 @@ std::string common_notes(const ExperimentConfig& config, const PlaneSlamParams& 
 
 std::optional<double> reference_value(const ExperimentConfig& config, const std::string& key,
                                       const std::string& name) {
-  const YAML::Node& ref = config.reference;
-  if (!ref.IsMap() || !ref[key].IsDefined() || !ref[key].IsMap()) return std::nullopt;
-  const YAML::Node v = ref[key][name];
-  if (!v.IsDefined() || v.IsNull()) return std::nullopt;
-  return v.as<double>();
+  return reference_number(child_or_null(config.reference, key), name);
 }
 
 bool reference_at_point(const ExperimentConfig& config, const std::string& point) {
@@ -138,14 +128,6 @@ std::optional<Table> plane_slam_sigma_point_table(const ExperimentConfig& config
   }
   if (!has_sigma_point_filter(methods)) return std::nullopt;
   return sigma_point_table(methods, std::make_shared<PlaneSlamModel>(), config.file);
-}
-
-Cell cell_or_missing(double value, int precision) {
-  return std::isfinite(value) ? Cell::number(value, precision) : Cell::missing();
-}
-
-Cell cell_or_missing(const std::optional<double>& value, int precision) {
-  return value ? cell_or_missing(*value, precision) : Cell::missing();
 }
 
 ReportFigure error_figure(const PlaneSlamRows& data, const std::string& point, const std::string& series_name,

@@ -1,11 +1,11 @@
 #pragma once
 // The `plane_slam` kind's report: helpers shared by its layouts, one file per layout:
-//   plane_slam/layouts/accuracy.cpp  — E12–E14, E16: error norm per scan, maximum errors, NEES,
+//   plane_slam/layouts/accuracy.cpp  — error norm per scan, maximum errors, NEES,
 //                                     failures per P0 scale, the map with pose ellipses
-//   plane_slam/layouts/seif.cpp      — E17: update times against the map size, information images
-//   plane_slam/layouts/benchmark.cpp — E19: Wulf and Kümmerle per filter, spikes at loop closures
-//   plane_slam/layouts/eseif.cpp     — E22: ESEIF vs SEIF: NEES, update cost against the map, error
-//   plane_slam/layouts/hybrid.cpp    — E21: odometry- vs FbML-NDT-driven filters, accuracy and cost
+//   plane_slam/layouts/seif.cpp      — update times against the map size, information images
+//   plane_slam/layouts/benchmark.cpp — Wulf and Kümmerle per filter, spikes at loop closures
+//   plane_slam/layouts/eseif.cpp     — ESEIF vs SEIF: NEES, update cost against the map, error
+//   plane_slam/layouts/hybrid.cpp    — odometry- vs FbML-NDT-driven filters, accuracy and cost
 // and the thesis' comparative claims declared in params.claims (plane_slam/claims.cpp).
 #include <cmath>
 #include <cstdint>
@@ -15,6 +15,7 @@
 
 #include <Eigen/Core>
 
+#include "kit/number_format.hpp"
 #include "kit/plane_slam_params.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/table.hpp"
@@ -55,7 +56,6 @@ std::vector<Eigen::Vector3d> positions(const std::vector<double>& poses);
 /// 0, 1, …, n−1.
 std::vector<double> scan_axis(std::size_t n);
 std::vector<std::size_t> scan_axis_indices(std::size_t n);
-std::string number_text(double value, int precision = 2);
 /// "p0_scale = 1000" or "" without a sweep.
 std::string point_text(const std::string& point);
 /// File-stem suffix for a sweep point ("" or "_p0_1000").
@@ -68,8 +68,6 @@ std::string common_notes(const ExperimentConfig& config, const PlaneSlamParams& 
 /// A reference number under reference[key][name], or nullopt.
 std::optional<double> reference_value(const ExperimentConfig& config, const std::string& key,
                                       const std::string& name);
-Cell cell_or_missing(double value, int precision = -1);
-Cell cell_or_missing(const std::optional<double>& value, int precision = -1);
 
 /// Error norm against the scan index for every method of a point and the odometry (figs 5.27–5.29).
 ReportFigure error_figure(const PlaneSlamRows& data, const std::string& point, const std::string& series_name,
@@ -80,7 +78,7 @@ ReportFigure error_figure(const PlaneSlamRows& data, const std::string& point, c
 ReportFigure map_figure(const ExperimentConfig& config, const PlaneSlamParams& params, const RunRow& row,
                         const std::string& method, const std::string& id);
 
-/// How a per-scan time grows with the map (E17, E22): least-squares slope of `time` against
+/// How a per-scan time grows with the map: least-squares slope of `time` against
 /// map_size over every repetition's scans (scan 0 left out: no motion update), with a bootstrap
 /// interval; growth = slope · (map range) / median time (plane_slam/layouts/seif.cpp).
 struct TimeGrowth {

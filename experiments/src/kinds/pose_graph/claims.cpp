@@ -9,8 +9,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kit/number_format.hpp"
+#include "kit/row_codec.hpp"
 #include "pose_graph/report.hpp"
-#include "sequence/report.hpp"
 #include "sextant/eval/verdict.hpp"
 
 namespace sextant {
@@ -33,8 +34,8 @@ std::vector<double> batch_means(const std::vector<double>& v, std::size_t size) 
 void paired_batches(const std::vector<const RunRow*>& rows, const std::string& a, const std::string& b,
                     std::size_t size, std::vector<double>& out_a, std::vector<double>& out_b) {
   for (const RunRow* r : rows) {
-    const std::vector<double> ma = batch_means(row_series(*r, a + "ate_errors"), size);
-    const std::vector<double> mb = batch_means(row_series(*r, b + "ate_errors"), size);
+    const std::vector<double> ma = batch_means(series_or_empty(*r, a + "ate_errors"), size);
+    const std::vector<double> mb = batch_means(series_or_empty(*r, b + "ate_errors"), size);
     const std::size_t n = std::min(ma.size(), mb.size());
     out_a.insert(out_a.end(), ma.begin(), ma.begin() + static_cast<std::ptrdiff_t>(n));
     out_b.insert(out_b.end(), mb.begin(), mb.begin() + static_cast<std::ptrdiff_t>(n));
@@ -48,13 +49,13 @@ double median_value(const std::vector<const RunRow*>& rows, const std::string& k
 }
 
 std::string ate_text(const std::vector<const RunRow*>& rows, const std::string& prefix) {
-  return fixed(median_value(rows, prefix + "ate_m"), 2) + " m";
+  return format_number(median_value(rows, prefix + "ate_m"), 2) + " m";
 }
 
 }  // namespace
 
 std::vector<Claim> pose_graph_claims(const ExperimentConfig& config, const PoseGraphParams& params,
-                                     const PoseGraphMethodRows& odometry) {
+                                     const MethodRows& odometry) {
   std::vector<Claim> claims;
   const auto& rows = odometry.rows;
   const std::size_t B = params.batch_scans;
@@ -69,8 +70,8 @@ std::vector<Claim> pose_graph_claims(const ExperimentConfig& config, const PoseG
        "ATE " + ate_text(rows, "graph_") + " (pose graph) vs " + ate_text(rows, "chained_") +
            " (chained), medians over " + reps + "; mean position error difference graph − chained " +
            describe(gain, " m") + ", bootstrap over " + std::to_string(graph.size()) + " paired means of " +
-           std::to_string(B) + "-scan batches; " + fixed(median_value(rows, "accepted"), 0) + " of " +
-           fixed(median_value(rows, "candidates"), 0) + " candidate closures accepted (median)",
+           std::to_string(B) + "-scan batches; " + format_number(median_value(rows, "accepted"), 0) + " of " +
+           format_number(median_value(rows, "candidates"), 0) + " candidate closures accepted (median)",
        ClaimKind::thesis});
 
   std::vector<double> robust, clean_r, plain, clean_p;
@@ -84,7 +85,7 @@ std::vector<Claim> pose_graph_claims(const ExperimentConfig& config, const PoseG
       {"The robust (" + to_string(params.graph.loss) +
            ") loss keeps a false loop closure from wrecking the map: the mean position error rises "
            "by less than " +
-           fixed(tol, 2) + " m",
+           format_number(tol, 2) + " m",
        injected ? verdict_less(robust_shift, tol) : Verdict::not_comparable,
        "ATE " + ate_text(rows, "false_robust_") + " with the false closure and the robust loss vs " +
            ate_text(rows, "graph_") + " without the false closure; paired difference of " +
@@ -93,7 +94,7 @@ std::vector<Claim> pose_graph_claims(const ExperimentConfig& config, const PoseG
   claims.push_back(
       {"Without the robust loss the same false closure does wreck the map (the error rises by more "
        "than " +
-           fixed(tol, 2) + " m), so the check above tests something",
+           format_number(tol, 2) + " m), so the check above tests something",
        injected ? verdict_greater(plain_shift, tol) : Verdict::not_comparable,
        "ATE " + ate_text(rows, "false_plain_") + " with the false closure and no robust loss vs " +
            ate_text(rows, "graph_") + "; paired difference of batch means " + describe(plain_shift, " m") +
@@ -111,12 +112,12 @@ std::vector<Claim> pose_graph_claims(const ExperimentConfig& config, const PoseG
     cost.hi = *std::max_element(share.begin(), share.end());
   }
   claims.push_back({"The graph solve is cheap beside the registrations: under " +
-                        fixed(100 * params.solve_budget, 0) + " % of their time",
+                        format_number(100 * params.solve_budget, 0) + " % of their time",
                     rows.empty() ? Verdict::not_comparable : verdict_less(cost, params.solve_budget),
-                    "measured: graph solve " + fixed(median_value(rows, "graph_solve_seconds"), 3) + " s (" +
-                        fixed(median_value(rows, "graph_solve_iterations"), 0) + " LM iterations) vs " +
-                        fixed(median_value(rows, "registration_seconds"), 1) + " s of odometry and " +
-                        fixed(median_value(rows, "closure_seconds"), 1) +
+                    "measured: graph solve " + format_number(median_value(rows, "graph_solve_seconds"), 3) +
+                        " s (" + format_number(median_value(rows, "graph_solve_iterations"), 0) +
+                        " LM iterations) vs " + format_number(median_value(rows, "registration_seconds"), 1) +
+                        " s of odometry and " + format_number(median_value(rows, "closure_seconds"), 1) +
                         " s of closure registrations (single-thread sums, medians); share " + describe(cost) +
                         " — the range over " + reps + ", not a confidence interval",
                     ClaimKind::sanity});

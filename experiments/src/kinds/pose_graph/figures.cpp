@@ -5,8 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kit/number_format.hpp"
+#include "kit/row_codec.hpp"
 #include "pose_graph/report.hpp"
-#include "sequence/report.hpp"
 #include "sextant/eval/plots.hpp"
 
 namespace sextant {
@@ -14,7 +15,8 @@ namespace {
 
 std::vector<Eigen::Vector3d> positions_of(const RunRow& row, const std::string& name) {
   std::vector<Eigen::Vector3d> out;
-  for (const Eigen::Isometry3d& T : series_to_poses(row_series(row, name))) out.push_back(T.translation());
+  for (const Eigen::Isometry3d& T : series_to_poses(series_or_empty(row, name)))
+    out.push_back(T.translation());
   return out;
 }
 
@@ -56,8 +58,8 @@ ReportFigure closures_figure(const RunRow& row, const std::vector<TrajectoryKind
   PlotSeries accepted{
       "accepted closure (at scan j of the graph)", {}, {}, PlotSeries::Style::markers, "#2a9d3a"};
   PlotSeries rejected{"rejected candidate", {}, {}, PlotSeries::Style::markers, "#c0392b"};
-  const std::vector<double>& j = row_series(row, "closure_j");
-  const std::vector<double>& why = row_series(row, "closure_rejection");
+  const std::vector<double>& j = series_or_empty(row, "closure_j");
+  const std::vector<double>& why = series_or_empty(row, "closure_rejection");
   for (std::size_t k = 0; k < j.size() && k < why.size(); ++k) {
     const auto at = static_cast<std::size_t>(j[k]);
     if (at >= graph.size()) continue;
@@ -93,7 +95,7 @@ ReportFigure false_closure_figure(const RunRow& row, const std::vector<Trajector
                   {},
                   PlotSeries::Style::line_and_markers,
                   "#8e44ad"};
-  const std::vector<double>&fi = row_series(row, "false_i"), &fj = row_series(row, "false_j");
+  const std::vector<double>&fi = series_or_empty(row, "false_i"), &fj = series_or_empty(row, "false_j");
   for (std::size_t k = 0; k < fi.size() && k < fj.size(); ++k) {
     const auto i = static_cast<std::size_t>(fi[k]), j = static_cast<std::size_t>(fj[k]);
     if (i >= truth.size() || j >= truth.size()) continue;
@@ -109,8 +111,7 @@ ReportFigure false_closure_figure(const RunRow& row, const std::vector<Trajector
       render_svg(plot)};
 }
 
-ReportFigure error_figure(const PoseGraphMethodRows& odometry,
-                          const std::vector<PoseGraphMethodRows>& filters,
+ReportFigure error_figure(const MethodRows& odometry, const std::vector<MethodRows>& filters,
                           const std::vector<TrajectoryKind>& kinds) {
   XYPlot plot;
   plot.title = "Position error after SE(3) alignment";
@@ -124,9 +125,10 @@ ReportFigure error_figure(const PoseGraphMethodRows& odometry,
     plot.series.push_back({name, x, e, PlotSeries::Style::line, color});
   };
   for (std::size_t k = 0; k < 2; ++k)
-    add(kinds[k].label, row_series(row, kinds[k].prefix + "ate_errors"), kinds[k].color);
-  for (const PoseGraphMethodRows& f : filters)
-    if (!f.rows.empty()) add(f.name + " (plane SLAM)", row_series(*f.rows.front(), "filter_ate_errors"), "");
+    add(kinds[k].label, series_or_empty(row, kinds[k].prefix + "ate_errors"), kinds[k].color);
+  for (const MethodRows& f : filters)
+    if (!f.rows.empty())
+      add(f.name + " (plane SLAM)", series_or_empty(*f.rows.front(), "filter_ate_errors"), "");
   return {"position_error",
           "Position error per scan after each trajectory's own SE(3) Umeyama alignment (the ATE's terms), "
           "repetition 1.",
@@ -135,8 +137,8 @@ ReportFigure error_figure(const PoseGraphMethodRows& odometry,
 
 }  // namespace
 
-std::vector<ReportFigure> pose_graph_figures(const PoseGraphMethodRows& odometry,
-                                             const std::vector<PoseGraphMethodRows>& filters) {
+std::vector<ReportFigure> pose_graph_figures(const MethodRows& odometry,
+                                             const std::vector<MethodRows>& filters) {
   const std::vector<TrajectoryKind> kinds = graph_trajectories(odometry.name);
   const RunRow& row = *odometry.rows.front();
   return {closures_figure(row, kinds), false_closure_figure(row, kinds),

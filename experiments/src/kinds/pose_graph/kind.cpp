@@ -1,4 +1,4 @@
-// `pose_graph` (E20, thesis §7.2 future work: globally consistent n-scan registration after Lu and
+// `pose_graph` (thesis §7.2 future work: globally consistent n-scan registration after Lu and
 // Milios): one run = one method over the first scans of the synthetic campus at one repetition —
 // the scan-matching odometry with its pose graph and loop closures, or a plane-SLAM filter for
 // comparison (pose_graph/pipeline.hpp). The report is pose_graph/report.cpp.

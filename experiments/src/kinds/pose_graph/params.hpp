@@ -1,12 +1,12 @@
 #pragma once
-// The `pose_graph` kind's view of an experiment config (E20, thesis §7.2 future work): chained
+// The `pose_graph` kind's view of an experiment config (thesis §7.2 future work): chained
 // scan-matching odometry over the campus, a pose graph over it with verified loop closures, and
 // the plane-SLAM filters over the same scans for comparison.
 //
 //   methods:
 //     - {name: mlndt, matcher: mlndt, settings: {...}, sampler: gbs,  # odometry + loop closures + graph
 //        closure_settings: {wide_basin: {}}}    # the closures' matcher settings (default: settings)
-//     - {name: ekf, filter: ekf}                                      # plane_slam methods (E19)
+//     - {name: ekf, filter: ekf}                                      # plane_slam methods
 //     - {name: ukf, filter: ukf, scans: 150}                          # … may stop early
 //   params:
 //     scans: 468                  # the first N scans of the campus (0: all)

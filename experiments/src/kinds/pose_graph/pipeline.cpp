@@ -9,7 +9,8 @@
 
 #include <tbb/parallel_for.h>
 
-#include "sequence/report.hpp"
+#include "kit/number_format.hpp"
+#include "kit/row_codec.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
 #include "sextant/filters/slam_run_failure.hpp"
@@ -326,7 +327,7 @@ void run_filter_method(const PreloadedCampus& data, const PoseGraphParams& param
                        RunRow& row) {
   const std::size_t n = method.scans ? std::min(method.scans, data.size()) : data.size();
   const PlaneSlamSettings settings = plane_slam_settings(params.filters, method, kNaN, file);
-  const FilterSequenceRun run = run_sequence(data.filter_data(), params.filters, settings, n, seed);
+  const RecordedRun run = record_plane_slam(data.filter_data(), params.filters, settings, n, seed);
   PoseList estimate, truth;
   double failed = 0.0;
   for (std::size_t k = 0; k < run.steps.size(); ++k) {
@@ -343,7 +344,7 @@ void run_filter_method(const PreloadedCampus& data, const PoseGraphParams& param
   row.values["scans"] = static_cast<double>(n);
   row.values["failed_steps"] = failed;
   double motion = 0.0, measurement = 0.0;
-  for (const SequenceStep& st : run.steps) motion += st.motion_seconds, measurement += st.measurement_seconds;
+  for (const RecordedStep& st : run.steps) motion += st.motion_seconds, measurement += st.measurement_seconds;
   row.values["filter_seconds"] = motion + measurement;
 }
 

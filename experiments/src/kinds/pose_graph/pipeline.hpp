@@ -1,12 +1,12 @@
 #pragma once
-// One run of the `pose_graph` kind (E20). The odometry method: run_odometry chains ML-NDT
+// One run of the `pose_graph` kind. The odometry method: run_odometry chains ML-NDT
 // registrations over the scans (odometry/odometry.hpp); loop-closure candidates along that chained
 // trajectory are verified by the same matcher from the chain's relative guess and accepted by
 // loop_closure.hpp; the pose graph (pose_graph.hpp) over the chain, with each edge's information
 // from its registration Hessian (R = H⁻¹, eq. 3.50), is solved with the accepted closures, and —
 // for the robustness check — again with `false_closures` injected "same place" closures between
 // poses that are truly far apart, once with the robust loss and once without. A filter method:
-// the plane_slam kind's run_sequence (kit/plane_slam_driver.hpp) over the same scans.
+// the plane_slam kind's record_plane_slam (kit/plane_slam_driver.hpp) over the same scans.
 // Every trajectory is scored by ATE (SE(3) Umeyama), Wulf (eqs. 6.1–6.3) and Kümmerle (eq. 6.6).
 #include <cstdint>
 #include <vector>
@@ -31,11 +31,11 @@ class PreloadedCampus : public Dataset {
 
   const synth::Campus& campus() const { return *data_.campus; }
   const std::vector<PointCloud>& clouds() const { return data_.clouds; }
-  const SequenceData& filter_data() const { return data_; }
+  const CampusScans& filter_data() const { return data_; }
 
  private:
   DatasetMetadata metadata_;
-  SequenceData data_;
+  CampusScans data_;
 };
 
 /// The odometry method: chain, loop closures, graph solves; fills row.values and row.series.

@@ -1,4 +1,4 @@
-// E20 layout (thesis §7.2 future work; docs/experiments.md, "Extensions beyond the thesis"):
+// Layout (thesis §7.2 future work; docs/experiments.md, "Extensions beyond the thesis"):
 // ATE, Wulf and Kümmerle of the chained scan-matching odometry, the pose graph with loop
 // closures, the graph with an injected false closure (with and without the robust loss) and the
 // plane-SLAM filters; the loop closures found, accepted and rejected; the cost of the graph solve;
@@ -8,26 +8,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sequence/report.hpp"
+#include "kit/number_format.hpp"
+#include "kit/row_codec.hpp"
 #include "sextant/core/units.hpp"
 
 namespace sextant {
 namespace {
-
-std::string text(double v, int precision = 2) {
-  if (!std::isfinite(v)) return "–";
-  return fixed(v, precision);
-}
-
-Cell number(double v, int precision = 3) {
-  return std::isfinite(v) ? Cell::number(v, precision) : Cell::missing();
-}
-
-std::vector<double> values(const std::vector<const RunRow*>& rows, const std::string& key) {
-  std::vector<double> out;
-  for (const RunRow* r : rows) out.push_back(r->value(key));
-  return out;
-}
 
 Table metrics_header(const std::string& caption, const std::string& label, const std::string& note) {
   Table t;
@@ -49,8 +35,9 @@ const char* const kMetricKeys[] = {"ate_m", "wulf_translation_m", "wulf_rotation
 
 void add_metric_row(Table& t, const std::string& label, const std::vector<const RunRow*>& rows,
                     const std::string& prefix) {
-  std::vector<Cell> cells{Cell::text(label), number(median_finite(values(rows, "scans")), 0)};
-  for (const char* key : kMetricKeys) cells.push_back(number(median_finite(values(rows, prefix + key))));
+  std::vector<Cell> cells{Cell::text(label), number_or_missing(median_finite(row_values(rows, "scans")), 0)};
+  for (const char* key : kMetricKeys)
+    cells.push_back(number_or_missing(median_finite(row_values(rows, prefix + key)), 3));
   t.add_row(cells);
 }
 
@@ -59,8 +46,8 @@ void add_prefix_row(Table& t, const std::string& label, const std::vector<const 
                     const std::string& prefix, std::size_t n) {
   std::vector<std::vector<double>> v(5);
   for (const RunRow* r : rows) {
-    const PoseList all = series_to_poses(row_series(*r, prefix + "trajectory"));
-    const PoseList truth_all = series_to_poses(row_series(*r, "truth"));
+    const PoseList all = series_to_poses(series_or_empty(*r, prefix + "trajectory"));
+    const PoseList truth_all = series_to_poses(series_or_empty(*r, "truth"));
     if (all.size() < n || truth_all.size() < n || n < 2) continue;
     const PoseList est(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(n));
     const PoseList truth(truth_all.begin(), truth_all.begin() + static_cast<std::ptrdiff_t>(n));
@@ -74,11 +61,11 @@ void add_prefix_row(Table& t, const std::string& label, const std::vector<const 
     v[4].push_back(k.status.ok ? k.rotation_rms * kDegPerRad : NAN);
   }
   std::vector<Cell> cells{Cell::text(label), Cell::number(static_cast<double>(n), 0)};
-  for (const auto& x : v) cells.push_back(number(median_finite(x)));
+  for (const auto& x : v) cells.push_back(number_or_missing(median_finite(x), 3));
   t.add_row(cells);
 }
 
-Table closure_table(const PoseGraphMethodRows& odometry) {
+Table closure_table(const MethodRows& odometry) {
   Table t;
   t.caption = "Loop closures and the cost of the graph, per repetition";
   t.label = "loop_closures";
@@ -105,33 +92,33 @@ Table closure_table(const PoseGraphMethodRows& odometry) {
       .add_number_column("inflation", 1);
   for (std::size_t k = 0; k < odometry.rows.size(); ++k) {
     const RunRow& r = *odometry.rows[k];
-    const std::vector<double>& why = row_series(r, "closure_rejection");
+    const std::vector<double>& why = series_or_empty(r, "closure_rejection");
     const auto count = [&](ClosureRejection c) {
       return static_cast<double>(std::count(why.begin(), why.end(), static_cast<double>(c)));
     };
     std::vector<double> w;
-    for (double x : row_series(r, "closure_weight"))
+    for (double x : series_or_empty(r, "closure_weight"))
       if (std::isfinite(x)) w.push_back(x);
     const double lowest = w.empty() ? NAN : *std::min_element(w.begin(), w.end());
-    const std::vector<double>& fw = row_series(r, "false_weight");
-    t.add_row({Cell::text(std::to_string(k + 1)), number(r.value("candidates"), 0),
-               number(r.value("accepted"), 0), number(count(ClosureRejection::not_converged), 0),
-               number(count(ClosureRejection::score), 0), number(count(ClosureRejection::correction), 0),
-               Cell::text(text(median_finite(w), 3) + " (" + text(lowest, 3) + ")"),
-               number(fw.empty() ? NAN : fw.front(), 4), number(r.value("registration_seconds"), 1),
-               number(r.value("closure_seconds"), 1), number(r.value("graph_solve_seconds"), 3),
-               number(r.value("graph_solve_iterations"), 0), number(r.value("information_inflation"), 1)});
+    const std::vector<double>& fw = series_or_empty(r, "false_weight");
+    t.add_row(
+        {Cell::text(std::to_string(k + 1)), number_or_missing(r.value("candidates"), 0),
+         number_or_missing(r.value("accepted"), 0),
+         number_or_missing(count(ClosureRejection::not_converged), 0),
+         number_or_missing(count(ClosureRejection::score), 0),
+         number_or_missing(count(ClosureRejection::correction), 0),
+         Cell::text(format_number(median_finite(w), 3, "–") + " (" + format_number(lowest, 3, "–") + ")"),
+         number_or_missing(fw.empty() ? NAN : fw.front(), 4),
+         number_or_missing(r.value("registration_seconds"), 1),
+         number_or_missing(r.value("closure_seconds"), 1),
+         number_or_missing(r.value("graph_solve_seconds"), 3),
+         number_or_missing(r.value("graph_solve_iterations"), 0),
+         number_or_missing(r.value("information_inflation"), 1)});
   }
   return t;
 }
 
 }  // namespace
-
-const std::vector<double>& row_series(const RunRow& row, const std::string& name) {
-  static const std::vector<double> empty;
-  const auto it = row.series.find(name);
-  return it == row.series.end() ? empty : it->second;
-}
 
 double median_finite(std::vector<double> v) {
   v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
@@ -151,16 +138,14 @@ std::vector<TrajectoryKind> graph_trajectories(const std::string& matcher_name) 
 ReportSection pose_graph_report(const ExperimentConfig& config, const PoseGraphParams& params,
                                 const std::vector<PoseGraphMethod>& methods, const std::vector<RunSpec>& runs,
                                 const std::vector<const RunRow*>& rows) {
-  PoseGraphMethodRows odometry;
-  std::vector<PoseGraphMethodRows> filters;
+  MethodRows odometry;
+  std::vector<MethodRows> filters;
+  std::vector<MethodRows> groups = group_by_method(config, runs, rows);
   for (std::size_t m = 0; m < methods.size(); ++m) {
-    PoseGraphMethodRows g{methods[m].name, methods[m].is_filter, {}};
-    for (std::size_t k = 0; k < runs.size() && k < rows.size(); ++k)
-      if (runs[k].method_index == m && rows[k] && rows[k]->ok) g.rows.push_back(rows[k]);
-    if (g.is_filter)
-      filters.push_back(std::move(g));
+    if (methods[m].is_filter)
+      filters.push_back(std::move(groups.at(m)));
     else
-      odometry = std::move(g);
+      odometry = std::move(groups.at(m));
   }
   const PoseGraphMethod* matcher = nullptr;
   for (const PoseGraphMethod& m : methods)
@@ -180,18 +165,19 @@ ReportSection pose_graph_report(const ExperimentConfig& config, const PoseGraphP
       "registration and one per accepted loop closure; each edge's information is the registration's Hessian "
       "(R = H⁻¹, eq. 3.50) carried from the Pose6 parameters to the factor's log-map error; loop closures go "
       "through a " +
-      loss + " loss (scale " + text(params.graph.loss_scale, 1) +
+      loss + " loss (scale " + format_number(params.graph.loss_scale, 1, "–") +
       " in Mahalanobis units); the first pose is held fixed; Ceres, Levenberg–Marquardt, sparse normal "
       "Cholesky. Loop-closure candidates: within " +
-      text(params.loop_closure.radius, 1) + " m of a pose ≥ " +
+      format_number(params.loop_closure.radius, 1, "–") + " m of a pose ≥ " +
       std::to_string(params.loop_closure.min_index_gap) + " scans and ≥ " +
-      text(params.loop_closure.min_path_gap, 0) + " m of path earlier, one every " +
+      format_number(params.loop_closure.min_path_gap, 0, "–") + " m of path earlier, one every " +
       std::to_string(params.loop_closure.stride) +
       " scans; accepted when converged, mean score per point ≤ " +
-      text(params.loop_closure.max_mean_score, 1) + ", matched fraction ≥ " +
-      text(params.loop_closure.min_matched_fraction, 2) + " and correction ≤ " +
-      text(params.loop_closure.max_correction_m, 1) + " m / " +
-      text(params.loop_closure.max_correction_deg, 0) + "°; " + std::to_string(params.closure_rounds) +
+      format_number(params.loop_closure.max_mean_score, 1, "–") + ", matched fraction ≥ " +
+      format_number(params.loop_closure.min_matched_fraction, 2, "–") + " and correction ≤ " +
+      format_number(params.loop_closure.max_correction_m, 1, "–") + " m / " +
+      format_number(params.loop_closure.max_correction_deg, 0, "–") + "°; " +
+      std::to_string(params.closure_rounds) +
       " round(s) of candidates, the first along the chain, the next along the graph solved with the closures "
       "accepted so far (better guesses), each pair tried once; the closure registrations may use their own "
       "matcher settings (closure_settings, e.g. ML-NDT's wide basin). R = H⁻¹ is far too confident for the "
@@ -207,7 +193,7 @@ ReportSection pose_graph_report(const ExperimentConfig& config, const PoseGraphP
       std::to_string(params.false_closures) +
       " false closure(s) (\"same place\", identity, with the median accepted closure's information) between "
       "poses truly ≥ " +
-      text(params.false_closure_min_distance, 0) +
+      format_number(params.false_closure_min_distance, 0, "–") +
       " m apart are added to the solved map and the graph solved again with and without the robust loss. The "
       "plane-SLAM "
       "filters "
@@ -220,7 +206,8 @@ ReportSection pose_graph_report(const ExperimentConfig& config, const PoseGraphP
       "filters that stop early (UKF, CKF: O(n³) per step) are compared on their prefix in a second table; "
       "registrations whose Hessian gives no positive-definite information get the median step information "
       "(counted: " +
-      text(odometry.rows.empty() ? NAN : odometry.rows.front()->value("fallback_information"), 0) +
+      format_number(odometry.rows.empty() ? NAN : odometry.rows.front()->value("fallback_information"), 0,
+                    "–") +
       " in repetition 1).";
 
   Table whole = metrics_header("ATE, Wulf and Kümmerle over the route, per trajectory", "metrics",
@@ -228,14 +215,13 @@ ReportSection pose_graph_report(const ExperimentConfig& config, const PoseGraphP
                                "scans (see the next table).");
   for (const TrajectoryKind& k : graph_trajectories(odometry.name))
     add_metric_row(whole, k.label, odometry.rows, k.prefix);
-  for (const PoseGraphMethodRows& f : filters)
-    add_metric_row(whole, f.name + " (plane SLAM)", f.rows, "filter_");
+  for (const MethodRows& f : filters) add_metric_row(whole, f.name + " (plane SLAM)", f.rows, "filter_");
   section.tables.push_back(whole);
 
   std::vector<std::size_t> shorter;
-  const double full = median_finite(values(odometry.rows, "scans"));
-  for (const PoseGraphMethodRows& f : filters) {
-    const double n = median_finite(values(f.rows, "scans"));
+  const double full = median_finite(row_values(odometry.rows, "scans"));
+  for (const MethodRows& f : filters) {
+    const double n = median_finite(row_values(f.rows, "scans"));
     if (std::isfinite(n) && n < full &&
         std::find(shorter.begin(), shorter.end(), std::size_t(n)) == shorter.end())
       shorter.push_back(static_cast<std::size_t>(n));
@@ -248,8 +234,8 @@ ReportSection pose_graph_report(const ExperimentConfig& config, const PoseGraphP
     for (const TrajectoryKind& k : graph_trajectories(odometry.name))
       if (k.prefix == "chained_" || k.prefix == "graph_")
         add_prefix_row(t, k.label, odometry.rows, k.prefix, n);
-    for (const PoseGraphMethodRows& f : filters)
-      if (std::size_t(median_finite(values(f.rows, "scans"))) == n)
+    for (const MethodRows& f : filters)
+      if (std::size_t(median_finite(row_values(f.rows, "scans"))) == n)
         add_prefix_row(t, f.name + " (plane SLAM)", f.rows, "filter_", n);
     section.tables.push_back(t);
   }
@@ -266,7 +252,7 @@ ReportSection pose_graph_report(const ExperimentConfig& config, const PoseGraphP
       file.id =
           "trajectory_" + (prefix == "truth" ? std::string("truth") : prefix.substr(0, prefix.find('_')));
       file.caption = name + " (repetition 1; stamp = scan index)";
-      const PoseList poses = series_to_poses(row_series(first, prefix));
+      const PoseList poses = series_to_poses(series_or_empty(first, prefix));
       for (std::size_t k = 0; k < poses.size(); ++k) file.poses.push_back({static_cast<double>(k), poses[k]});
       section.trajectories.push_back(std::move(file));
     }

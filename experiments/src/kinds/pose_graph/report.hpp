@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "kit/row_groups.hpp"
 #include "pose_graph/params.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
 #include "sextant/experiments/report_model.hpp"
@@ -14,13 +15,6 @@
 #include "sextant/experiments/run_row.hpp"
 
 namespace sextant {
-
-/// The finished rows of one method, in repetition order.
-struct PoseGraphMethodRows {
-  std::string name;
-  bool is_filter = false;
-  std::vector<const RunRow*> rows;
-};
 
 /// The trajectories of the odometry method the report draws: prefix "chained_", "graph_",
 /// "false_robust_", "false_plain_"; label as shown in tables and legends.
@@ -34,14 +28,12 @@ ReportSection pose_graph_report(const ExperimentConfig& config, const PoseGraphP
                                 const std::vector<const RunRow*>& rows);
 
 /// Figures of the first repetition.
-std::vector<ReportFigure> pose_graph_figures(const PoseGraphMethodRows& odometry,
-                                             const std::vector<PoseGraphMethodRows>& filters);
+std::vector<ReportFigure> pose_graph_figures(const MethodRows& odometry,
+                                             const std::vector<MethodRows>& filters);
 /// The claims (pose_graph/claims.cpp).
 std::vector<Claim> pose_graph_claims(const ExperimentConfig& config, const PoseGraphParams& params,
-                                     const PoseGraphMethodRows& odometry);
+                                     const MethodRows& odometry);
 
-/// A row's series (empty when absent).
-const std::vector<double>& row_series(const RunRow& row, const std::string& name);
 /// Median of the finite values (NaN when none).
 double median_finite(std::vector<double> values);
 

@@ -11,55 +11,11 @@
 namespace sextant {
 namespace {
 
-std::string point_key(const RunSpec& run) {
-  std::string key;
-  for (const auto& [axis, label] : run.point) key += axis + "=" + label + ";";
-  return key + "rep=" + std::to_string(run.repetition);
-}
-
 Claim not_comparable(const std::string& statement, const std::string& why) {
   return Claim{statement, Verdict::not_comparable, why};
 }
 
 }  // namespace
-
-std::vector<MethodRuns> group_by_method(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
-                                        const std::vector<const RunRow*>& rows) {
-  std::vector<MethodRuns> out(config.methods.size());
-  for (std::size_t m = 0; m < out.size(); ++m) out[m].name = config.methods[m].name;
-  for (std::size_t i = 0; i < runs.size() && i < rows.size(); ++i) {
-    if (!rows[i] || !rows[i]->ok) continue;
-    MethodRuns& m = out.at(runs[i].method_index);
-    m.rows.push_back(rows[i]);
-    m.by_point[point_key(runs[i])] = rows[i];
-  }
-  return out;
-}
-
-const MethodRuns* find_method(const std::vector<MethodRuns>& methods, const std::string& name) {
-  for (const auto& m : methods) {
-    if (m.name == name && !m.rows.empty()) return &m;
-  }
-  return nullptr;
-}
-
-PairedRows pair_up(const MethodRuns& a, const MethodRuns& b) {
-  PairedRows p;
-  for (const auto& [key, row] : a.by_point) {
-    const auto it = b.by_point.find(key);
-    if (it == b.by_point.end()) continue;
-    p.a.push_back(row);
-    p.b.push_back(it->second);
-  }
-  return p;
-}
-
-std::vector<double> row_values(const std::vector<const RunRow*>& rows, const std::string& key) {
-  std::vector<double> v;
-  v.reserve(rows.size());
-  for (const RunRow* r : rows) v.push_back(r->value(key));
-  return v;
-}
 
 std::vector<bool> row_successes(const std::vector<const RunRow*>& rows) {
   std::vector<bool> v;
@@ -72,7 +28,7 @@ std::uint64_t claim_seed(const ExperimentConfig& config, std::uint64_t k) {
   return config.seed * 1000003ULL + 7919ULL * (k + 1);
 }
 
-Claim claim_more_successes(const std::string& statement, const MethodRuns* a, const MethodRuns* b) {
+Claim claim_more_successes(const std::string& statement, const MethodRows* a, const MethodRows* b) {
   if (!a || !b) return not_comparable(statement, "a method has no runs");
   const PairedRows p = pair_up(*a, *b);
   const PairedRates r = compare_paired_successes(row_successes(p.a), row_successes(p.b));
@@ -81,7 +37,7 @@ Claim claim_more_successes(const std::string& statement, const MethodRuns* a, co
       a->name + " vs " + b->name + ": " + describe(r) + " (paired, n = " + std::to_string(r.n) + ")"};
 }
 
-Claim claim_not_fewer_successes(const std::string& statement, const MethodRuns* a, const MethodRuns* b,
+Claim claim_not_fewer_successes(const std::string& statement, const MethodRows* a, const MethodRows* b,
                                 double margin) {
   if (!a || !b) return not_comparable(statement, "a method has no runs");
   const PairedRows p = pair_up(*a, *b);
@@ -91,7 +47,7 @@ Claim claim_not_fewer_successes(const std::string& statement, const MethodRuns* 
                    "); needs > −" + format_number(margin, 2)};
 }
 
-Claim claim_similar_successes(const std::string& statement, const MethodRuns* a, const MethodRuns* b,
+Claim claim_similar_successes(const std::string& statement, const MethodRows* a, const MethodRows* b,
                               double margin) {
   if (!a || !b) return not_comparable(statement, "a method has no runs");
   const PairedRows p = pair_up(*a, *b);
@@ -100,7 +56,7 @@ Claim claim_similar_successes(const std::string& statement, const MethodRuns* a,
                a->name + " vs " + b->name + ": " + describe(r) + "; band ±" + format_number(margin, 2)};
 }
 
-Claim claim_speedup(const std::string& statement, const MethodRuns* slow, const MethodRuns* fast, double lo,
+Claim claim_speedup(const std::string& statement, const MethodRows* slow, const MethodRows* fast, double lo,
                     double hi, std::uint64_t seed) {
   (void)seed;  // the interval is exact: no resampling
   if (!slow || !fast) return not_comparable(statement, "a method has no runs");
@@ -117,7 +73,7 @@ Claim claim_speedup(const std::string& statement, const MethodRuns* slow, const 
                    describe(ratio, "×") + "; " + band};
 }
 
-Claim claim_smaller_on_solved(const std::string& statement, const MethodRuns* a, const MethodRuns* b,
+Claim claim_smaller_on_solved(const std::string& statement, const MethodRows* a, const MethodRows* b,
                               const std::string& key, const std::string& unit, std::uint64_t seed) {
   if (!a || !b) return not_comparable(statement, "a method has no runs");
   const PairedRows p = pair_up(*a, *b);
@@ -161,7 +117,7 @@ Interval bootstrap_trimmed_mean(const std::vector<double>& values, double trim, 
   return percentile_interval(trimmed_mean(v, trim), draws, 0.95, v.size());
 }
 
-Claim claim_beats_guess(const MethodRuns* m, const std::string& guess_name, std::uint64_t seed) {
+Claim claim_beats_guess(const MethodRows* m, const std::string& guess_name, std::uint64_t seed) {
   const std::string statement =
       (m ? m->name : std::string("method")) + " improves on the " + guess_name + " guess (translation error)";
   if (!m) return Claim{statement, Verdict::not_comparable, "no runs", ClaimKind::sanity};
@@ -175,7 +131,7 @@ Claim claim_beats_guess(const MethodRuns* m, const std::string& guess_name, std:
                "median of (error − guess error) per pair: " + describe(d, " cm"), ClaimKind::sanity};
 }
 
-std::string profile_note(const ExperimentConfig& config, const std::vector<MethodRuns>& methods) {
+std::string profile_note(const ExperimentConfig& config, const std::vector<MethodRows>& methods) {
   std::size_t lo = std::numeric_limits<std::size_t>::max(), hi = 0;
   for (const auto& m : methods) {
     lo = std::min(lo, m.rows.size());

@@ -1,4 +1,4 @@
-// `registration` (E1, E2, E4): one run = one (method, scan pair, sweep point, repetition). The
+// `registration`: one run = one (method, scan pair, sweep point, repetition). The
 // pair comes from the dataset (consecutive scans i → i + 1, or one pair displaced by a sweep
 // offset); the initial guess from odometry, the identity or f · Z_gt; any matcher × sampler.
 // Each run records its error per parameter [cm, deg], norms, success, convergence, iterations,
@@ -27,11 +27,6 @@
 
 namespace sextant {
 namespace {
-
-double point_value(const RunSpec& run, const std::string& axis, double fallback) {
-  const auto it = run.point.find(axis);
-  return it == run.point.end() ? fallback : std::stod(it->second);
-}
 
 /// The relative pose b ⊖ a from a pose source; throws when the dataset lacks it.
 Eigen::Isometry3d relative_pose(const std::optional<Eigen::Isometry3d>& a,

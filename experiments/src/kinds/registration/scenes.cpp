@@ -19,11 +19,6 @@
 namespace sextant {
 namespace {
 
-double point_value(const RunSpec& run, const std::string& axis, double fallback) {
-  const auto it = run.point.find(axis);
-  return it == run.point.end() ? fallback : std::stod(it->second);
-}
-
 SceneSpec read_scene(const YAML::Node& node, const std::string& file) {
   SettingsReader in(node, file);
   SceneSpec s;

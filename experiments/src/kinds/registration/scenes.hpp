@@ -1,5 +1,5 @@
 #pragma once
-// Displaced pairs of the `registration` kind (E1, §5.1.1.1): a scene is a scan pair with a known
+// Displaced pairs of the `registration` kind (§5.1.1.1): a scene is a scan pair with a known
 // relative pose; its input is moved so that the true transform becomes a chosen offset D and the
 // matcher starts from the identity ("without any initialisation").
 //

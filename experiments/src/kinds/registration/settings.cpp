@@ -126,46 +126,6 @@ RegistrationParams read_registration_params(const ExperimentConfig& config) {
   return p;
 }
 
-RegistrationMethod read_registration_method(const YAML::Node& node, const std::string& file) {
-  SettingsReader in(node, file);
-  RegistrationMethod m;
-  in.require("name", m.name);
-  in.require("matcher", m.matcher);
-  m.settings = in.child("settings");
-  in.read("sampler", m.sampler);
-  m.sampler_settings = in.child("sampler_settings");
-  if (in.has("adaptive_start")) {
-    m.adaptive = true;
-    m.adaptive_start = read_adaptive_start(in.child("adaptive_start"), file);
-  }
-  in.finish();
-  if (!matcher_registry().contains(m.matcher)) {
-    std::string names;
-    for (const auto& n : matcher_registry().names()) names += (names.empty() ? "" : ", ") + n;
-    in.fail("matcher", "key 'matcher': unknown matcher '" + m.matcher + "' (known: " + names + ")");
-  }
-  if (!sampler_registry().contains(m.sampler)) {
-    std::string names;
-    for (const auto& n : sampler_registry().names()) names += (names.empty() ? "" : ", ") + n;
-    in.fail("sampler", "key 'sampler': unknown sampler '" + m.sampler + "' (known: " + names + ")");
-  }
-  // Building them checks the settings (InputError with the settings' own lines).
-  (void)make_matcher(m.matcher, m.settings, file);
-  (void)make_sampler(m.sampler, m.sampler_settings, file);
-  if (m.adaptive) {
-    if (m.matcher == "mlndt")
-      m.last_layer = read_mlndt_settings(m.settings, file).pyramid.layers;
-    else if (m.matcher == "fbmlndt")
-      m.last_layer = read_fbmlndt_settings(m.settings, file).mlndt.pyramid.layers;
-    else
-      in.fail("adaptive_start", "key 'adaptive_start': needs matcher mlndt or fbmlndt (a layer pyramid)");
-    if (m.adaptive_start.middle_layer > m.last_layer)
-      in.fail("adaptive_start",
-              "key 'adaptive_start': middle_layer is past the last layer " + std::to_string(m.last_layer));
-  }
-  return m;
-}
-
 void check_registration_sweep(const ExperimentConfig& config, const RegistrationParams& params) {
   const auto& known = registration_axes();
   for (const auto& axis : config.sweep) {
@@ -220,6 +180,11 @@ void check_registration_sweep(const ExperimentConfig& config, const Registration
       }
     }
   }
+}
+
+double point_value(const RunSpec& run, const std::string& axis, double fallback) {
+  const auto it = run.point.find(axis);
+  return it == run.point.end() ? fallback : std::stod(it->second);
 }
 
 std::vector<std::size_t> needed_scans(const ExperimentConfig& config, const RegistrationParams& params) {

@@ -1,5 +1,5 @@
 #pragma once
-// The `registration` kind's view of an experiment config (E1, E2, E4):
+// The `registration` kind's view of an experiment config:
 //
 //   methods:
 //     - {name: mlndt, matcher: mlndt, settings: {solver: lm}, sampler: gbs, sampler_settings: {...}}
@@ -16,8 +16,8 @@
 //     second: 1                   # … and input scan index (default scan + 1)
 //     success: translation_50cm   # eval's thesis_success_criterion name
 //     axes: uos                   # uos (the thesis' tables) | internal
-//     report: accuracy            # accuracy (E2) | basin (E1) | init_layer (E4) | sampling (E3)
-//                                 # | strategies (E6) | zero_guess (E5)
+//     report: accuracy            # accuracy | basin | init_layer | sampling
+//                                 # | strategies | zero_guess
 //     baseline: ndt               # report: the method compared against ...
 //     proposed: mlndt             # ... this one in the claims
 //     displaced: {...}            # displaced: several scenes, offsets in NDT cells (registration/scenes.hpp)
@@ -32,9 +32,10 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "kit/adaptive_start.hpp"
+#include "kit/registration_method.hpp"
 #include "sextant/eval/registration_metrics.hpp"
 #include "sextant/experiments/experiment_config.hpp"
+#include "sextant/experiments/run_plan.hpp"
 
 namespace sextant {
 
@@ -59,17 +60,6 @@ struct RegistrationParams {
   bool valid(std::string* why) const;
 };
 
-struct RegistrationMethod {
-  std::string name;
-  std::string matcher;
-  YAML::Node settings;  ///< may be null (defaults)
-  std::string sampler = "all";
-  YAML::Node sampler_settings;
-  bool adaptive = false;  ///< `adaptive_start` given: the thesis' adaptive starting layer
-  AdaptiveStartSettings adaptive_start;
-  int last_layer = 0;  ///< adaptive: the pyramid's last layer (mlndt / fbmlndt `layers`)
-};
-
 /// The sweep axes the kind understands.
 inline const std::vector<std::string>& registration_axes() {
   static const std::vector<std::string> axes{"pair",        "tx",    "yaw",    "f",
@@ -79,10 +69,11 @@ inline const std::vector<std::string>& registration_axes() {
 
 /// Reads and checks `params` (InputError with file, line, key).
 RegistrationParams read_registration_params(const ExperimentConfig& config);
-/// Reads one method; checks the matcher and sampler names and their settings by building them.
-RegistrationMethod read_registration_method(const YAML::Node& node, const std::string& file);
 /// Checks the sweep axes against the pair source and guess (InputError).
 void check_registration_sweep(const ExperimentConfig& config, const RegistrationParams& params);
+
+/// The number of sweep axis `axis` at a run's point, or `fallback` when the point has no such axis.
+double point_value(const RunSpec& run, const std::string& axis, double fallback);
 
 /// The scan indices the runs read (reference and input of every pair).
 std::vector<std::size_t> needed_scans(const ExperimentConfig& config, const RegistrationParams& params);

@@ -1,4 +1,4 @@
-// `sequence` (E7, E9): one run = one method over consecutive scans first_scan … first_scan +
+// `sequence`: one run = one method over consecutive scans first_scan … first_scan +
 // scans − 1. Each registration i−1 ← i starts from the odometry increment (run_odometry of
 // odometry.hpp, the library behind `sextant odometry`); the relative poses are chained from the true first
 // pose (dead reckoning, §5.1.3, fig 5.15) or fused with the odometry by Table 3.3's linear KF (§3.4.2,
@@ -13,7 +13,7 @@
 
 #include "kinds.hpp"
 #include "kit/dataset_source.hpp"
-#include "registration/report.hpp"
+#include "kit/row_codec.hpp"
 #include "sequence/report.hpp"
 #include "sequence/settings.hpp"
 #include "sextant/core/error.hpp"

@@ -1,4 +1,4 @@
-// Helpers shared by the sequence report layouts, and the reference-block checks.
+// What the sequence report layouts share, and the reference-block checks.
 #include "sequence/report.hpp"
 
 #include <cctype>
@@ -7,7 +7,6 @@
 #include <functional>
 #include <limits>
 
-#include "registration/report.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/core/units.hpp"
@@ -23,7 +22,8 @@ std::vector<Eigen::Vector3d> positions(const PoseList& poses) {
   return p;
 }
 
-double mean_over(const std::vector<SequenceRun>& runs, const std::function<double(const SequenceRun&)>& f) {
+double mean_over(const std::vector<TrajectoryRun>& runs,
+                 const std::function<double(const TrajectoryRun&)>& f) {
   std::vector<double> v;
   for (const auto& r : runs) v.push_back(f(r));
   return mean_of(v);
@@ -42,22 +42,6 @@ void check_band(SettingsReader& in, const char* key) {
 
 }  // namespace
 
-std::vector<double> poses_to_series(const PoseList& poses) {
-  std::vector<double> s;
-  for (const auto& T : poses) {
-    const auto one = isometry_to_series(T);
-    s.insert(s.end(), one.begin(), one.end());
-  }
-  return s;
-}
-
-PoseList series_to_poses(const std::vector<double>& series) {
-  PoseList poses;
-  for (std::size_t i = 0; i + 12 <= series.size(); i += 12)
-    poses.push_back(series_to_isometry(std::vector<double>(series.begin() + i, series.begin() + i + 12)));
-  return poses;
-}
-
 std::vector<double> horizontal_errors(const PoseList& estimate, const PoseList& reference) {
   std::vector<double> e;
   for (std::size_t i = 0; i < std::min(estimate.size(), reference.size()); ++i)
@@ -72,12 +56,12 @@ std::vector<double> position_errors(const PoseList& estimate, const PoseList& re
   return e;
 }
 
-std::vector<SequenceRun> sequence_runs(const std::vector<RunSpec>& runs,
-                                       const std::vector<const RunRow*>& rows) {
-  std::vector<SequenceRun> out;
+std::vector<TrajectoryRun> trajectory_runs(const std::vector<RunSpec>& runs,
+                                           const std::vector<const RunRow*>& rows) {
+  std::vector<TrajectoryRun> out;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     if (!rows[i] || !rows[i]->ok) continue;
-    SequenceRun r;
+    TrajectoryRun r;
     r.method = runs[i].method_index;
     r.repetition = runs[i].repetition;
     r.row = rows[i];
@@ -95,14 +79,14 @@ std::vector<SequenceRun> sequence_runs(const std::vector<RunSpec>& runs,
   return out;
 }
 
-std::vector<double> run_values(const std::vector<SequenceRun>& runs, const std::string& key) {
+std::vector<double> run_values(const std::vector<TrajectoryRun>& runs, const std::string& key) {
   std::vector<double> v;
   for (const auto& r : runs) v.push_back(r.row->value(key));
   return v;
 }
 
 ReportFigure trajectory_figure(const std::string& id, const std::string& caption, const std::string& title,
-                               const SequenceRun& run, const std::vector<NamedPoses>& estimates) {
+                               const TrajectoryRun& run, const std::vector<NamedPoses>& estimates) {
   TrajectoryPlot plot;
   plot.title = title;
   plot.width = 760;
@@ -128,7 +112,7 @@ ReportFigure trajectory_figure(const std::string& id, const std::string& caption
 }
 
 ReportFigure error_figure(const std::string& id, const std::string& caption, const std::string& title,
-                          const SequenceRun& run, const std::vector<NamedPoses>& estimates) {
+                          const TrajectoryRun& run, const std::vector<NamedPoses>& estimates) {
   XYPlot plot;
   plot.title = title;
   plot.x_label = "scan";
@@ -144,7 +128,7 @@ ReportFigure error_figure(const std::string& id, const std::string& caption, con
   return {id, caption, render_svg(plot)};
 }
 
-void add_tum_files(ReportSection& section, const SequenceRun& run, std::size_t first_scan,
+void add_tum_files(ReportSection& section, const TrajectoryRun& run, std::size_t first_scan,
                    const std::vector<NamedPoses>& trajectories) {
   for (const auto& t : trajectories) {
     ReportTrajectory file;
@@ -177,27 +161,28 @@ Table metrics_table(const std::string& caption, const std::string& label, std::s
   return t;
 }
 
-void add_metric_rows(Table& table, const std::string& label, const std::vector<SequenceRun>& runs,
-                     PoseList SequenceRun::*member) {
-  const auto ok = [&](const SequenceRun& r) { return (r.*member).size() == r.truth.size(); };
-  const double end_xy = mean_over(runs, [&](const SequenceRun& r) {
+void add_metric_rows(Table& table, const std::string& label, const std::vector<TrajectoryRun>& runs,
+                     PoseList TrajectoryRun::*member) {
+  const auto ok = [&](const TrajectoryRun& r) { return (r.*member).size() == r.truth.size(); };
+  const double end_xy = mean_over(runs, [&](const TrajectoryRun& r) {
     return ok(r) ? horizontal_errors(r.*member, r.truth).back() : kNaN;
   });
-  const double end_3d = mean_over(
-      runs, [&](const SequenceRun& r) { return ok(r) ? position_errors(r.*member, r.truth).back() : kNaN; });
-  const double mean_xy = mean_over(runs, [&](const SequenceRun& r) {
+  const double end_3d = mean_over(runs, [&](const TrajectoryRun& r) {
+    return ok(r) ? position_errors(r.*member, r.truth).back() : kNaN;
+  });
+  const double mean_xy = mean_over(runs, [&](const TrajectoryRun& r) {
     return ok(r) ? mean_of(horizontal_errors(r.*member, r.truth)) : kNaN;
   });
-  const double rpe_t = mean_over(runs, [&](const SequenceRun& r) {
+  const double rpe_t = mean_over(runs, [&](const TrajectoryRun& r) {
     return ok(r) ? relative_pose_error(r.*member, r.truth).translation.mean * 100.0 : kNaN;
   });
-  const double rpe_t_max = mean_over(runs, [&](const SequenceRun& r) {
+  const double rpe_t_max = mean_over(runs, [&](const TrajectoryRun& r) {
     return ok(r) ? relative_pose_error(r.*member, r.truth).translation.max * 100.0 : kNaN;
   });
-  const double rpe_r = mean_over(runs, [&](const SequenceRun& r) {
+  const double rpe_r = mean_over(runs, [&](const TrajectoryRun& r) {
     return ok(r) ? relative_pose_error(r.*member, r.truth).rotation.mean * 180.0 / kPi : kNaN;
   });
-  const double drift = mean_over(runs, [&](const SequenceRun& r) {
+  const double drift = mean_over(runs, [&](const TrajectoryRun& r) {
     if (!ok(r)) return kNaN;
     const KittiDriftResult d = kitti_drift(r.*member, r.truth);
     return d.status.ok && d.segments > 0 ? d.translation * 100.0 : kNaN;
@@ -205,10 +190,6 @@ void add_metric_rows(Table& table, const std::string& label, const std::vector<S
   table.add_row({Cell::text(label), number_or_missing(end_xy), number_or_missing(end_3d),
                  number_or_missing(mean_xy), number_or_missing(rpe_t, 1), number_or_missing(rpe_t_max, 1),
                  number_or_missing(rpe_r, 3), number_or_missing(drift)});
-}
-
-std::string fixed(double value, int precision) {
-  return format_number(value, precision);
 }
 
 void check_sequence_reference(const ExperimentConfig& config, const SequenceParams& params) {

@@ -1,5 +1,5 @@
 #pragma once
-// The `sequence` kind's view of an experiment config (E7, E9): one run = one method over a
+// The `sequence` kind's view of an experiment config: one run = one method over a
 // sequence of consecutive scans (not independent pairs), repeated with fresh odometry noise.
 //
 //   methods:
@@ -12,10 +12,10 @@
 //                                 #   a folder's `simulated_odometry:` model applied to its
 //                                 #   reference; dataset: the dataset's own odometry
 //     filter: none                # none: chain the matcher (dead reckoning, E7);
-//                                 # kf: Table 3.3's linear KF, control = odometry increment (E9)
+//                                 # kf: Table 3.3's linear KF, control = odometry increment
 //     kf: {sigma_translation: 0.8, sigma_rotation_deg: 1, alarm_translation: 2,
 //          alarm_rotation_deg: 10, measurement_noise_scale: 1, initial_sigma: 0.01}
-//     report: dead_reckoning      # dead_reckoning (E7) | kalman (E9)
+//     report: dead_reckoning      # dead_reckoning | kalman
 //     ellipses_at: [15, 30, 45, 60]   # kalman: 1-based scan numbers with covariance ellipses
 //     ellipse_scale: 0            # kalman: ellipses drawn at this many σ (the thesis exaggerates);
 //                                 #   0 = automatic (the largest ≈ 3 % of the map), stated in the legend
@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "registration/settings.hpp"
+#include "kit/registration_method.hpp"
 #include "sextant/experiments/experiment_config.hpp"
 #include "sextant/filters/scan_matching_kf.hpp"
 

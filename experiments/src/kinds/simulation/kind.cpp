@@ -1,4 +1,4 @@
-// `simulation` (E8, E15): 2D simulations without a dataset; `params.model` picks the model
+// `simulation`: 2D simulations without a dataset; `params.model` picks the model
 // (simulation/model.hpp), which validates, runs and lays out its report.
 #include "simulation/model.hpp"
 

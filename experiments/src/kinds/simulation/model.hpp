@@ -1,8 +1,8 @@
 #pragma once
-// The `simulation` kind (E8, E15): 2D simulations that need no dataset, one file per model:
-//   simulation/room.cpp        — E8: the room with a circle, ML-NDT (x, y, yaw) into the Ackermann
+// The `simulation` kind: 2D simulations that need no dataset, one file per model:
+//   simulation/room.cpp        — the room with a circle, ML-NDT (x, y, yaw) into the Ackermann
 //                                EKF (eqs. 3.37–3.52); trajectory figure and the lag measured
-//   simulation/monte_carlo.cpp — E15: range–bearing point-landmark SLAM (eqs. 5.7–5.9), paired
+//   simulation/monte_carlo.cpp — range–bearing point-landmark SLAM (eqs. 5.7–5.9), paired
 //                                Monte Carlo of any filters (UKF vs RSPKF)
 //
 //   params:

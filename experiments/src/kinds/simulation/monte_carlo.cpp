@@ -21,7 +21,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "registration/report.hpp"
+#include "kit/number_format.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/settings_reader.hpp"

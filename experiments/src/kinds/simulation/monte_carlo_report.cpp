@@ -6,7 +6,8 @@
 #include <map>
 
 #include "kit/filter_parameters.hpp"
-#include "registration/report.hpp"
+#include "kit/number_format.hpp"
+#include "kit/row_groups.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/verdict.hpp"
 #include "sextant/experiments/run_row.hpp"
@@ -15,32 +16,19 @@
 namespace sextant {
 namespace {
 
-/// One method's rows by repetition.
-struct MethodRows {
-  std::map<int, const RunRow*> by_repetition;
-  std::vector<double> values(const std::string& name) const {
-    std::vector<double> v;
-    for (const auto& [rep, row] : by_repetition) v.push_back(row->value(name));
-    return v;
-  }
-};
-
 /// The paired values of two methods (repetitions both have), a[i] and b[i].
 void paired(const MethodRows& a, const MethodRows& b, const std::string& name, std::vector<double>* va,
             std::vector<double>* vb) {
-  for (const auto& [rep, row] : a.by_repetition) {
-    const auto it = b.by_repetition.find(rep);
-    if (it == b.by_repetition.end()) continue;
-    va->push_back(row->value(name));
-    vb->push_back(it->second->value(name));
-  }
+  const PairedRows p = pair_up_in_order(a, b);
+  *va = row_values(p.a, name);
+  *vb = row_values(p.b, name);
 }
 
 /// Mean over the repetitions of a per-time series (all runs share the time grid: the true path
 /// does not depend on the noise).
 std::pair<std::vector<double>, std::vector<double>> mean_curve(const MethodRows& m, const std::string& name) {
   std::vector<double> t, sum, count;
-  for (const auto& [rep, row] : m.by_repetition) {
+  for (const RunRow* row : m.rows) {
     const auto& rt = series_or_empty(*row, "t");
     const auto& v = series_or_empty(*row, name);
     if (rt.size() > t.size()) t = rt, sum.resize(t.size(), 0.0), count.resize(t.size(), 0.0);
@@ -56,8 +44,8 @@ ReportSection monte_carlo_report(const ExperimentConfig& config, const MonteCarl
                                  const RangeBearingWorld& world, const std::vector<RunSpec>& runs,
                                  const std::vector<const RunRow*>& rows) {
   std::map<std::string, MethodRows> methods;
-  for (std::size_t i = 0; i < runs.size(); ++i)
-    if (rows[i] && rows[i]->ok) methods[runs[i].method].by_repetition[runs[i].repetition] = rows[i];
+  for (MethodRows& m : group_by_method(config, runs, rows))
+    if (!m.rows.empty()) methods[m.name] = std::move(m);
 
   ReportSection section;
   section.notes =
@@ -108,8 +96,8 @@ ReportSection monte_carlo_report(const ExperimentConfig& config, const MonteCarl
   std::size_t drawn = 0;  // methods drawn so far: each its own dash pattern and landmark marker
   for (const auto& m : config.methods) {
     const auto found = methods.find(m.name);
-    if (found == methods.end() || !found->second.by_repetition.count(0)) continue;
-    const RunRow& r = *found->second.by_repetition.at(0);
+    if (found == methods.end() || found->second.rows.front()->repetition != 0) continue;
+    const RunRow& r = *found->second.rows.front();
     if (!truth_drawn) {
       map.series.push_back({"true path", series_or_empty(r, "truth_x"), series_or_empty(r, "truth_y"),
                             PlotSeries::Style::line, "#000000"});
@@ -145,7 +133,7 @@ ReportSection monte_carlo_report(const ExperimentConfig& config, const MonteCarl
         .add_number_column("95 % hi", 3, h);
   table.add_number_column("failed steps", 0);
   const auto add_row = [&](const std::string& name, const MethodRows& m, bool dead_reckoning) {
-    std::vector<Cell> cells{Cell::text(name), Cell::number(static_cast<double>(m.by_repetition.size()))};
+    std::vector<Cell> cells{Cell::text(name), Cell::number(static_cast<double>(m.rows.size()))};
     for (const char* v : {"mean_position_error_m", "mean_heading_error_deg", "mean_along_track_m",
                           "mean_cross_track_m", "mean_signed_heading_deg"}) {
       const bool shown = !dead_reckoning || std::string(v) == "mean_position_error_m";

@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "registration/report.hpp"
+#include "kit/number_format.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/settings_reader.hpp"
@@ -69,11 +69,8 @@ RoomMethod read_room_method(const YAML::Node& node, const std::string& file) {
 
 TimedPath path_of(const RunRow& row) {
   TimedPath p;
-  const auto get = [&](const char* name) {
-    const auto it = row.series.find(name);
-    return it == row.series.end() ? std::vector<double>{} : it->second;
-  };
-  p.t = get("path_t"), p.x = get("path_x"), p.y = get("path_y");
+  p.t = series_or_empty(row, "path_t"), p.x = series_or_empty(row, "path_x"),
+  p.y = series_or_empty(row, "path_y");
   return p;
 }
 

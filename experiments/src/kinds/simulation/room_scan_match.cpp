@@ -3,7 +3,7 @@
 // (x, y, yaw), all in the reference scan's frame (eq. 3.46: ξ maps the new scan into it).
 #include <cmath>
 
-#include "registration/report.hpp"
+#include "kit/number_format.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/eval/plots.hpp"

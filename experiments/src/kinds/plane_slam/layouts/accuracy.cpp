@@ -1,4 +1,4 @@
-// E12–E14, E16 layout (§5.2.1.1–5.2.1.3): per sweep point the maximum / final position errors
+// Layout (§5.2.1.1–5.2.1.3): per sweep point the maximum / final position errors
 // (ours | thesis), consistency (NEES) and failures per filter; error norm, rotation error and NEES
 // against the scan (figs 5.27–5.29, 5.31, 5.33–5.34, 5.37–5.38); the map with pose ellipses
 // (fig 5.30); the sanity checks and the declared claims.
@@ -35,26 +35,27 @@ Table error_table(const ExperimentConfig& config, const PlaneSlamRows& data, con
     t.note += " The thesis gives its numbers for " + point_text(config.reference["p0_scale"].Scalar()) +
               " only: n/a here.";
   const auto thesis = [&](const char* key, const std::string& name) {
-    return thesis_here ? cell_or_missing(reference_value(config, key, name)) : Cell::text("n/a");
+    return thesis_here ? number_or_missing(reference_value(config, key, name)) : Cell::text("n/a");
   };
   const auto groups = data.at(point);
   if (!groups.empty()) {
     const PlaneSlamGroup& g = *groups.front();
-    t.add_row(
-        {Cell::text("odometry"), cell_or_missing(median_of(g.values("odometry_max_error_m"))),
-         thesis("max_error_m", "odometry"), cell_or_missing(median_of(g.values("odometry_max_error_scan"))),
-         thesis("max_error_scan", "odometry"), cell_or_missing(median_of(g.values("odometry_final_error_m"))),
-         cell_or_missing(median_of(g.values("odometry_mean_error_m")))});
+    t.add_row({Cell::text("odometry"), number_or_missing(median_of(g.values("odometry_max_error_m"))),
+               thesis("max_error_m", "odometry"),
+               number_or_missing(median_of(g.values("odometry_max_error_scan"))),
+               thesis("max_error_scan", "odometry"),
+               number_or_missing(median_of(g.values("odometry_final_error_m"))),
+               number_or_missing(median_of(g.values("odometry_mean_error_m")))});
   }
   for (const PlaneSlamGroup* g : groups) {
-    t.add_row({Cell::text(g->method), cell_or_missing(median_of(g->values("max_error_m"))),
-               thesis("max_error_m", g->method), cell_or_missing(median_of(g->values("max_error_scan"))),
-               thesis("max_error_scan", g->method), cell_or_missing(median_of(g->values("final_error_m"))),
-               cell_or_missing(median_of(g->values("mean_error_m"))),
-               cell_or_missing(median_of(g->values("mean_nees"))),
-               cell_or_missing(100.0 * median_of(g->values("inconsistent_fraction"))),
-               cell_or_missing(median_of(g->values("failed_steps"))),
-               cell_or_missing(median_of(g->values("map_size")))});
+    t.add_row({Cell::text(g->method), number_or_missing(median_of(g->values("max_error_m"))),
+               thesis("max_error_m", g->method), number_or_missing(median_of(g->values("max_error_scan"))),
+               thesis("max_error_scan", g->method), number_or_missing(median_of(g->values("final_error_m"))),
+               number_or_missing(median_of(g->values("mean_error_m"))),
+               number_or_missing(median_of(g->values("mean_nees"))),
+               number_or_missing(100.0 * median_of(g->values("inconsistent_fraction"))),
+               number_or_missing(median_of(g->values("failed_steps"))),
+               number_or_missing(median_of(g->values("map_size")))});
   }
   return t;
 }
@@ -96,9 +97,9 @@ Table failure_table(const PlaneSlamRows& data) {
       }
       t.add_row({Cell::text(point), Cell::text(g->method), Cell::number(failed_runs), Cell::number(ended),
                  Cell::number(static_cast<double>(g->rows.size() + g->ended.size())), Cell::number(npd),
-                 Cell::number(chol), cell_or_missing(first),
-                 cell_or_missing(median_of(g->values("max_error_m"))),
-                 cell_or_missing(median_of(g->values("final_error_m")))});
+                 Cell::number(chol), number_or_missing(first),
+                 number_or_missing(median_of(g->values("max_error_m"))),
+                 number_or_missing(median_of(g->values("final_error_m")))});
     }
   }
   return t;
@@ -120,7 +121,7 @@ ReportFigure nees_figure(const PlaneSlamRows& data, const PlaneSlamParams& param
   }
   distinguish_series(plot);  // the methods only: the bound stays a plain line
   if (n > 0 && std::isfinite(bound))
-    plot.series.push_back({"χ²₆(" + number_text(params.nees_probability, 2) + ") bound",
+    plot.series.push_back({"χ²₆(" + format_number(params.nees_probability, 2, "n/a") + ") bound",
                            {0.0, double(n - 1)},
                            {bound, bound},
                            PlotSeries::Style::line,

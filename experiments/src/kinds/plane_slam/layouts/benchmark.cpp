@@ -1,4 +1,4 @@
-// E19 layout (§6.4, figs 6.3–6.10): the Wulf (eqs. 6.1–6.3) and Kümmerle (eq. 6.6) metrics,
+// Layout (§6.4, figs 6.3–6.10): the Wulf (eqs. 6.1–6.3) and Kümmerle (eq. 6.6) metrics,
 // translation and rotation separately, for every filter; the per-scan errors behind them; and
 // whether Kümmerle's relative translation errors spike at the route's loop closures — spikes by
 // robust z-score, loop closures = the first scans that come back within revisit_radius of a place
@@ -35,14 +35,14 @@ Table metrics_table(const ExperimentConfig& config, const PlaneSlamRows& data, c
       .add_compared_column("Kümmerle σ_T", 3)
       .add_compared_column("Kümmerle σ_R", 3);
   const auto add = [&](const std::string& name, const PlaneSlamGroup& g, const std::string& p) {
-    const auto ref = [&](const char* key) { return cell_or_missing(reference_value(config, key, name)); };
+    const auto ref = [&](const char* key) { return number_or_missing(reference_value(config, key, name)); };
     const double scans = prefix.empty() ? median_of(g.values("scans")) : double(g.first()->value("scans"));
     t.add_row(
-        {Cell::text(name), cell_or_missing(prefix.empty() ? scans : NAN),
-         cell_or_missing(median_of(g.values(p + "wulf_translation_m"))), ref("wulf_translation_m"),
-         cell_or_missing(median_of(g.values(p + "wulf_rotation_deg"))), ref("wulf_rotation_deg"),
-         cell_or_missing(median_of(g.values(p + "kummerle_translation_m"))), ref("kummerle_translation_m"),
-         cell_or_missing(median_of(g.values(p + "kummerle_rotation_deg"))), ref("kummerle_rotation_deg")});
+        {Cell::text(name), number_or_missing(prefix.empty() ? scans : NAN),
+         number_or_missing(median_of(g.values(p + "wulf_translation_m"))), ref("wulf_translation_m"),
+         number_or_missing(median_of(g.values(p + "wulf_rotation_deg"))), ref("wulf_rotation_deg"),
+         number_or_missing(median_of(g.values(p + "kummerle_translation_m"))), ref("kummerle_translation_m"),
+         number_or_missing(median_of(g.values(p + "kummerle_rotation_deg"))), ref("kummerle_rotation_deg")});
   };
   const auto groups = data.at(data.points.front());
   if (!groups.empty()) add("odometry", *groups.front(), prefix + "odometry_");
@@ -66,8 +66,8 @@ ReportFigure metric_figure(const PlaneSlamRows& data, const std::string& name, c
       if (std::isfinite(y[k]) && y[k] > peak) peak = y[k], at = k;
     top = std::max(top, peak);
     // The peak in the legend: a one-relation spike (SEIF's at a loop closure) is a hairline.
-    plot.add_line(g->method + " (σ = " + number_text(g->first()->value(value), 3) + ", peak " +
-                      number_text(peak, 2) + " at " + std::to_string(at) + ")",
+    plot.add_line(g->method + " (σ = " + format_number(g->first()->value(value), 3, "n/a") + ", peak " +
+                      format_number(peak, 2, "n/a") + " at " + std::to_string(at) + ")",
                   scan_axis(y.size()), y);
   }
   distinguish_series(plot);  // UKF and CKF coincide almost everywhere; the revisit lines stay plain
@@ -114,9 +114,9 @@ Claim spike_claim(const PlaneSlamGroup& g, const PlaneSlamParams& params,
                 "70, 200, 350, 460)";
   c.verdict = std::isfinite(base) ? verdict_greater(share, base) : Verdict::not_comparable;
   c.evidence = std::to_string(near) + " of " + std::to_string(spikes) + " spikes (robust z > " +
-               number_text(params.spike_threshold, 1) + ", over all repetitions) within ±" +
+               format_number(params.spike_threshold, 1, "n/a") + ", over all repetitions) within ±" +
                std::to_string(params.spike_window) + " scans of a loop closure: " + describe(share) +
-               " against the base rate " + number_text(base, 2) +
+               " against the base rate " + format_number(base, 2, "n/a") +
                " of relations that close; loop closures at " + join(revisits) +
                "; spikes of repetition 1 at " + join(first_spikes);
   return c;
@@ -146,8 +146,9 @@ ReportSection benchmark_report(const ExperimentConfig& config, const PlaneSlamPa
       longest = g->first();
   const std::vector<Eigen::Vector3d> truth = positions(series_or_empty(*longest, "truth"));
   const std::vector<std::size_t> revisits = revisit_starts(truth, params.revisit_radius, params.revisit_gap);
-  section.notes += " Loop closures on this route (revisit radius " + number_text(params.revisit_radius, 0) +
-                   " m, gap " + std::to_string(params.revisit_gap) + " scans): scans " + join(revisits) + ".";
+  section.notes += " Loop closures on this route (revisit radius " +
+                   format_number(params.revisit_radius, 0, "n/a") + " m, gap " +
+                   std::to_string(params.revisit_gap) + " scans): scans " + join(revisits) + ".";
 
   if (auto sigma = plane_slam_sigma_point_table(config)) section.tables.push_back(*sigma);
   section.tables.push_back(metrics_table(config, data, "", "Wulf and Kümmerle metrics over each filter's run",

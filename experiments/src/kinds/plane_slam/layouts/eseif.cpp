@@ -1,4 +1,4 @@
-// E22 layout (extension; Walter, Eustice & Leonard, IJRR 2007): ESEIF beside the thesis' SEIF
+// Layout (extension; Walter, Eustice & Leonard, IJRR 2007): ESEIF beside the thesis' SEIF
 // and the EKF — consistency (pose NEES over the run against the χ² band), update cost against
 // the map size, final error, and Ω's pattern (exactly sparse by relocalization vs SEIF's).
 #include <algorithm>
@@ -63,8 +63,8 @@ NeesSummary nees_summary(const PlaneSlamGroup& g, const std::string& name, std::
 
 std::string nees_text(const NeesSummary& s) {
   return "mean NEES " + describe(s.mean, "", 2) + " over " + std::to_string(s.blocks) + " blocks of " +
-         std::to_string(kBlock) + " scans; 95 % band of a consistent filter [" + number_text(s.band_lo, 2) +
-         ", " + number_text(s.band_hi, 2) + "]";
+         std::to_string(kBlock) + " scans; 95 % band of a consistent filter [" +
+         format_number(s.band_lo, 2, "n/a") + ", " + format_number(s.band_hi, 2, "n/a") + "]";
 }
 
 ReportFigure nees_figure(const PlaneSlamRows& data) {
@@ -145,14 +145,14 @@ ReportSection eseif_report(const ExperimentConfig& config, const PlaneSlamParams
     marginal[g->method] = nees_summary(*g, "nees_marginal", ++seed);
     growth[g->method] = time_growth(*g, "step_ms", ++seed);
     const NeesSummary& n = nees[g->method];
-    t.add_row({Cell::text(g->method), cell_or_missing(n.mean.estimate), cell_or_missing(n.mean.lo),
-               cell_or_missing(n.mean.hi), cell_or_missing(marginal[g->method].mean.estimate),
-               cell_or_missing(median_of(g->values("final_error_m"))),
-               cell_or_missing(median_of(g->values("mean_error_m"))),
-               cell_or_missing(growth[g->method].median_ms),
-               cell_or_missing(growth[g->method].slope.estimate),
-               cell_or_missing(median_of(g->values("max_active_landmarks"))),
-               cell_or_missing(median_of(g->values("relocations")))});
+    t.add_row({Cell::text(g->method), number_or_missing(n.mean.estimate), number_or_missing(n.mean.lo),
+               number_or_missing(n.mean.hi), number_or_missing(marginal[g->method].mean.estimate),
+               number_or_missing(median_of(g->values("final_error_m"))),
+               number_or_missing(median_of(g->values("mean_error_m"))),
+               number_or_missing(growth[g->method].median_ms),
+               number_or_missing(growth[g->method].slope.estimate),
+               number_or_missing(median_of(g->values("max_active_landmarks"))),
+               number_or_missing(median_of(g->values("relocations")))});
   }
   section.tables.push_back(t);
   section.figures.push_back(nees_figure(data));
@@ -180,9 +180,10 @@ ReportSection eseif_report(const ExperimentConfig& config, const PlaneSlamParams
         {"ESEIF's update cost stays bounded as the map grows (time per scan changes by < 50 % of its median "
          "across the map's range)",
          verdict_in_band(g.growth, -kFlatGrowth, kFlatGrowth),
-         "slope " + describe(g.slope, " ms/landmark", 5) + "; growth over " + number_text(g.map_lo, 0) + "–" +
-             number_text(g.map_hi, 0) + " landmarks " + describe(g.growth, "", 2) + " × median " +
-             number_text(g.median_ms, 3) + " ms (n = scans pooled over repetitions)",
+         "slope " + describe(g.slope, " ms/landmark", 5) + "; growth over " +
+             format_number(g.map_lo, 0, "n/a") + "–" + format_number(g.map_hi, 0, "n/a") + " landmarks " +
+             describe(g.growth, "", 2) + " × median " + format_number(g.median_ms, 3, "n/a") +
+             " ms (n = scans pooled over repetitions)",
          ClaimKind::thesis});
   }
   if (growth.count("ekf")) {
@@ -190,8 +191,9 @@ ReportSection eseif_report(const ExperimentConfig& config, const PlaneSlamParams
     section.claims.push_back({"The EKF's time per scan grows with the map (the contrast ESEIF removes)",
                               verdict_greater(g.growth, kFlatGrowth),
                               "growth " + describe(g.growth, "", 2) + " × median " +
-                                  number_text(g.median_ms, 3) + " ms over " + number_text(g.map_lo, 0) + "–" +
-                                  number_text(g.map_hi, 0) + " landmarks",
+                                  format_number(g.median_ms, 3, "n/a") + " ms over " +
+                                  format_number(g.map_lo, 0, "n/a") + "–" +
+                                  format_number(g.map_hi, 0, "n/a") + " landmarks",
                               ClaimKind::sanity});
   }
   const PlaneSlamGroup* es = data.find("eseif", data.points.front());
@@ -201,15 +203,15 @@ ReportSection eseif_report(const ExperimentConfig& config, const PlaneSlamParams
         bootstrap_paired_mean_difference(es->values("final_error_m"), se->values("final_error_m"), ++seed);
     const double seif_error = median_of(se->values("final_error_m"));
     const double tolerance = kErrorTolerance * seif_error;
-    section.claims.push_back({"ESEIF's final error ≈ SEIF's or better (ESEIF − SEIF below " +
-                                  number_text(100 * kErrorTolerance, 0) + " % of SEIF's final error)",
-                              verdict_less(d, tolerance),
-                              "ESEIF − SEIF final position error " + describe(d, " m", 3) +
-                                  " paired over repetitions; SEIF median " + number_text(seif_error, 3) +
-                                  " m, ESEIF median " +
-                                  number_text(median_of(es->values("final_error_m")), 3) + " m; tolerance " +
-                                  number_text(tolerance, 3) + " m",
-                              ClaimKind::thesis});
+    section.claims.push_back(
+        {"ESEIF's final error ≈ SEIF's or better (ESEIF − SEIF below " +
+             format_number(100 * kErrorTolerance, 0, "n/a") + " % of SEIF's final error)",
+         verdict_less(d, tolerance),
+         "ESEIF − SEIF final position error " + describe(d, " m", 3) +
+             " paired over repetitions; SEIF median " + format_number(seif_error, 3, "n/a") +
+             " m, ESEIF median " + format_number(median_of(es->values("final_error_m")), 3, "n/a") +
+             " m; tolerance " + format_number(tolerance, 3, "n/a") + " m",
+         ClaimKind::thesis});
   }
   for (Claim& c : declared_claims(config, params, data)) section.claims.push_back(c);
   for (Claim& c : beats_odometry_claims(data, config.seed)) section.claims.push_back(c);

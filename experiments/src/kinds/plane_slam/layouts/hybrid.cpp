@@ -1,4 +1,4 @@
-// E21 layout (extension, the thesis' future work §7.2): each filter driven by the odometry and by
+// Layout (extension, the thesis' future work §7.2): each filter driven by the odometry and by
 // the FbML-NDT relative pose on the shared plane extraction (kit/fbmlndt_motion.hpp). Tables of
 // the accuracy (final / mean position and rotation error, Wulf, Kümmerle) and of the per-scan time
 // split (extraction, association, filter, registration); the error against the scan; and per
@@ -128,7 +128,7 @@ Table accuracy_table(const ExperimentConfig& config, const PlaneSlamRows& data) 
       .add_number_column("matcher used [%]", 0);
   const auto add = [&](const std::string& name, const std::string& motion, const PlaneSlamGroup& g,
                        const std::string& p) {
-    const auto m = [&](const std::string& v) { return cell_or_missing(median_of(g.values(p + v))); };
+    const auto m = [&](const std::string& v) { return number_or_missing(median_of(g.values(p + v))); };
     std::vector<double> final_rot, mean_rot;
     for (const RunRow* r : g.rows) {
       const auto& s = series_or_empty(*r, p.empty() ? "rotation_error_deg" : "odometry_rotation_error_deg");
@@ -138,11 +138,11 @@ Table accuracy_table(const ExperimentConfig& config, const PlaneSlamRows& data) 
       mean_rot.push_back(s.empty() ? kNaN : sum / double(s.size()));
     }
     const double matched = median_of(g.values("motion_matched_fraction"));
-    t.add_row({Cell::text(name), Cell::text(motion), cell_or_missing(median_of(g.values("scans")), 0),
-               m("final_error_m"), m("mean_error_m"), cell_or_missing(median_of(final_rot), 2),
-               cell_or_missing(median_of(mean_rot), 2), m("wulf_translation_m"), m("wulf_rotation_deg"),
+    t.add_row({Cell::text(name), Cell::text(motion), number_or_missing(median_of(g.values("scans")), 0),
+               m("final_error_m"), m("mean_error_m"), number_or_missing(median_of(final_rot), 2),
+               number_or_missing(median_of(mean_rot), 2), m("wulf_translation_m"), m("wulf_rotation_deg"),
                m("kummerle_translation_m"), m("kummerle_rotation_deg"),
-               cell_or_missing(p.empty() && std::isfinite(matched) ? 100.0 * matched : kNaN, 0)});
+               number_or_missing(p.empty() && std::isfinite(matched) ? 100.0 * matched : kNaN, 0)});
   };
   const auto groups = data.at(data.points.front());
   if (!groups.empty()) add("odometry (dead reckoning)", "—", *groups.front(), "odometry_");
@@ -178,9 +178,9 @@ Table cost_table(const PlaneSlamRows& data) {
     const auto m = [&](const char* v) { return median_of(g->values(v)); };
     const double e = m("extraction_ms_mean"), a = m("association_ms_mean"), f = m("filter_ms_mean"),
                  r = m("registration_ms_mean");
-    t.add_row({Cell::text(g->method), cell_or_missing(e, 1), cell_or_missing(a, 2), cell_or_missing(f, 2),
-               cell_or_missing(r, 1), cell_or_missing(e + a + f + r, 1),
-               cell_or_missing(100.0 * m("registration_extra"), 0)});
+    t.add_row({Cell::text(g->method), number_or_missing(e, 1), number_or_missing(a, 2),
+               number_or_missing(f, 2), number_or_missing(r, 1), number_or_missing(e + a + f + r, 1),
+               number_or_missing(100.0 * m("registration_extra"), 0)});
   }
   return t;
 }
@@ -196,12 +196,12 @@ Claim accuracy_claim(const Pair& p, const PlaneSlamParams& params, std::uint64_t
                 ": the hybrid (FbML-NDT-driven) filter is more accurate than the odometry-driven "
                 "one (§7.2: \"better accuracy\")";
   c.verdict = verdict_less(d, 0.0);
-  c.evidence = "mean position error per scan, hybrid − odometry-driven = " + describe(d, " m") +
-               " (paired scans of " + std::to_string(h.size()) +
-               " repetition(s), moving-block bootstrap, blocks of " + std::to_string(params.hybrid.block) +
-               " scans); mean error " + number_text(median_of(hm), 2) + " m vs " +
-               number_text(median_of(om), 2) + " m (medians); hybrid lower in " + std::to_string(wins) +
-               " of " + std::to_string(std::min(hm.size(), om.size())) + " repetitions";
+  c.evidence =
+      "mean position error per scan, hybrid − odometry-driven = " + describe(d, " m") + " (paired scans of " +
+      std::to_string(h.size()) + " repetition(s), moving-block bootstrap, blocks of " +
+      std::to_string(params.hybrid.block) + " scans); mean error " + format_number(median_of(hm), 2, "n/a") +
+      " m vs " + format_number(median_of(om), 2, "n/a") + " m (medians); hybrid lower in " +
+      std::to_string(wins) + " of " + std::to_string(std::min(hm.size(), om.size())) + " repetitions";
   return c;
 }
 
@@ -211,15 +211,15 @@ Claim cost_claim(const Pair& p, const PlaneSlamParams& params, std::uint64_t see
   Claim c;
   c.statement =
       p.filter + ": the hybrid costs little extra — the registration adds at most " +
-      number_text(100.0 * params.hybrid.max_extra_cost, 0) +
+      format_number(100.0 * params.hybrid.max_extra_cost, 0, "n/a") +
       " % to a step, the extraction being shared (§7.2: \"little extra cost\"; band from the config)";
   c.verdict = verdict_less(r, params.hybrid.max_extra_cost);
   c.evidence =
       "Σ registration / Σ (extraction + association + filter) over the hybrid run's scans = " + describe(r) +
       " (moving-block bootstrap); registration " +
-      number_text(median_of(p.hybrid->values("registration_ms_mean")), 1) + " ms vs extraction " +
-      number_text(median_of(p.hybrid->values("extraction_ms_mean")), 1) + " ms and filter " +
-      number_text(median_of(p.hybrid->values("filter_ms_mean")), 2) + " ms per scan";
+      format_number(median_of(p.hybrid->values("registration_ms_mean")), 1, "n/a") + " ms vs extraction " +
+      format_number(median_of(p.hybrid->values("extraction_ms_mean")), 1, "n/a") + " ms and filter " +
+      format_number(median_of(p.hybrid->values("filter_ms_mean")), 2, "n/a") + " ms per scan";
   return c;
 }
 
@@ -232,7 +232,7 @@ ReportSection hybrid_report(const ExperimentConfig& config, const PlaneSlamParam
       common_notes(config, params, data) +
       " Extension (the thesis' future work, §7.2): the FbML-NDT relative pose between consecutive scans, "
       "with Σ = " +
-      number_text(params.hybrid.noise_scale, 2) +
+      format_number(params.hybrid.noise_scale, 2, "n/a") +
       " · H⁻¹ (eq. 3.50), replaces the odometry increment and its Q in the prediction (eq. 4.72); "
       "Σ is mapped to the control's Euler-difference space by Q = J·Σ·Jᵀ (filters/relative_motion.hpp). "
       "Deviations and design choices, all ours since the thesis did not build it: the FbML-NDT sample is the "
@@ -240,8 +240,8 @@ ReportSection hybrid_report(const ExperimentConfig& config, const PlaneSlamParam
       "first stage of §4.1's extraction, so the extraction is shared), matched against the whole previous "
       "scan from the odometry increment; when the sample is degenerate, the registration fails, H is not "
       "positive definite or matcher and odometry disagree by more than " +
-      number_text(params.hybrid.alarm_translation, 1) + " m / " +
-      number_text(params.hybrid.alarm_rotation * 180.0 / 3.14159265358979323846, 0) +
+      format_number(params.hybrid.alarm_translation, 1, "n/a") + " m / " +
+      format_number(params.hybrid.alarm_rotation * 180.0 / 3.14159265358979323846, 0, "n/a") +
       "° (Table 3.3's alarm rule), the step predicts with the odometry instead (\"matcher used\" in the "
       "table); the correlation between consecutive registrations (they share a scan) is ignored.";
   section.tables.push_back(accuracy_table(config, data));

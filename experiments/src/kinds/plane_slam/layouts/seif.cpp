@@ -1,4 +1,4 @@
-// E17 layout (§5.2.1.4, figs 5.39–5.46): measurement- and motion-update times per scan of SEIF and
+// Layout (§5.2.1.4, figs 5.39–5.46): measurement- and motion-update times per scan of SEIF and
 // EKF and their growth with the map (least-squares slope of time against map size with a
 // bootstrap interval, sequence_analysis.hpp), SEIF's error, and the information-matrix images
 // (block pattern of Ω with and without sparsification, and for the whole map).
@@ -88,12 +88,13 @@ std::vector<ReportFigure> information_figures(const PlaneSlamRows& data) {
       const std::string title = "Information matrix " + what + ": " + std::to_string(landmarks) +
                                 " landmarks (" + std::to_string(dim) + "×" + std::to_string(dim) +
                                 "), after scan " + std::to_string(scan);
-      out.push_back({"information_" + g->method + "_" + std::to_string(landmarks),
-                     title + "; " + std::to_string(links.size() / 2) +
-                         " linked variable pairs (structural non-zero blocks), " +
-                         number_text(100.0 * static_cast<double>(grid.nonzeros) / double(dim * dim), 1) +
-                         " % of the entries",
-                     render_sparsity_svg(grid, title)});
+      out.push_back(
+          {"information_" + g->method + "_" + std::to_string(landmarks),
+           title + "; " + std::to_string(links.size() / 2) +
+               " linked variable pairs (structural non-zero blocks), " +
+               format_number(100.0 * static_cast<double>(grid.nonzeros) / double(dim * dim), 1, "n/a") +
+               " % of the entries",
+           render_sparsity_svg(grid, title)});
     }
   }
   return out;
@@ -103,16 +104,18 @@ namespace {
 
 Claim growth_claim(const std::string& method, const std::string& what, const TimeGrowth& g, bool flat) {
   Claim c;
-  c.statement = method + "'s " + what + " time " +
-                (flat ? "stays flat as the map grows (changes by < " + number_text(100 * kFlatGrowth, 0) +
-                            " % of its median across the map's range)"
-                      : "grows with the map (by > " + number_text(100 * kFlatGrowth, 0) +
-                            " % of its median across the map's range)");
+  c.statement =
+      method + "'s " + what + " time " +
+      (flat ? "stays flat as the map grows (changes by < " + format_number(100 * kFlatGrowth, 0, "n/a") +
+                  " % of its median across the map's range)"
+            : "grows with the map (by > " + format_number(100 * kFlatGrowth, 0, "n/a") +
+                  " % of its median across the map's range)");
   c.verdict =
       flat ? verdict_in_band(g.growth, -kFlatGrowth, kFlatGrowth) : verdict_greater(g.growth, kFlatGrowth);
-  c.evidence = "slope " + describe(g.slope, " ms/landmark", 4) + "; growth over " + number_text(g.map_lo, 0) +
-               "–" + number_text(g.map_hi, 0) + " landmarks " + describe(g.growth, "", 2) + " × median " +
-               number_text(g.median_ms, 3) + " ms (n = scans pooled over repetitions)";
+  c.evidence = "slope " + describe(g.slope, " ms/landmark", 4) + "; growth over " +
+               format_number(g.map_lo, 0, "n/a") + "–" + format_number(g.map_hi, 0, "n/a") + " landmarks " +
+               describe(g.growth, "", 2) + " × median " + format_number(g.median_ms, 3, "n/a") +
+               " ms (n = scans pooled over repetitions)";
   return c;
 }
 
@@ -147,12 +150,12 @@ ReportSection seif_report(const ExperimentConfig& config, const PlaneSlamParams&
   for (const PlaneSlamGroup* g : data.at(data.points.front())) {
     const TimeGrowth m = time_growth(*g, "measurement_ms", ++seed), p = time_growth(*g, "motion_ms", ++seed);
     growth[g->method] = {m, p};
-    t.add_row({Cell::text(g->method), cell_or_missing(m.median_ms), cell_or_missing(m.slope.estimate),
-               cell_or_missing(p.median_ms), cell_or_missing(p.slope.estimate),
-               cell_or_missing(median_of(g->values("map_size"))),
-               cell_or_missing(reference_value(config, "map_size", g->method)),
-               cell_or_missing(median_of(g->values("final_error_m"))),
-               cell_or_missing(reference_value(config, "final_error_m", g->method))});
+    t.add_row({Cell::text(g->method), number_or_missing(m.median_ms), number_or_missing(m.slope.estimate),
+               number_or_missing(p.median_ms), number_or_missing(p.slope.estimate),
+               number_or_missing(median_of(g->values("map_size"))),
+               number_or_missing(reference_value(config, "map_size", g->method)),
+               number_or_missing(median_of(g->values("final_error_m"))),
+               number_or_missing(reference_value(config, "final_error_m", g->method))});
   }
   section.tables.push_back(t);
   section.figures.push_back(

@@ -1,4 +1,4 @@
-// E2 layout (§5.1.1.2 A): table 5.1 (odometry error), one table per method like 5.2 / 5.3
+// Layout (§5.1.1.2 A): table 5.1 (odometry error), one table per method like 5.2 / 5.3
 // (mean / std / max per parameter, ours | thesis), a time / iteration / success table like 5.4,
 // the per-parameter error against the scan index (figs 5.7–5.9), the mean errors (fig 5.10), and
 // the thesis' claims with verdicts on the verdict model — for our improved variants (baseline,
@@ -16,7 +16,7 @@ namespace sextant {
 namespace {
 
 struct MethodStats {
-  const MethodRuns* runs = nullptr;
+  const MethodRows* runs = nullptr;
   RegistrationStats stats;
 };
 
@@ -34,12 +34,12 @@ std::string table_id(const YAML::Node& node) {
 }
 
 /// The claims of §5.1.1.2 A for one (baseline, proposed) pair.
-void add_pair_claims(const ExperimentConfig& config, const std::vector<MethodRuns>& methods,
+void add_pair_claims(const ExperimentConfig& config, const std::vector<MethodRows>& methods,
                      const std::string& baseline, const std::string& proposed, const std::string& tag,
                      std::uint64_t first_seed, std::vector<Claim>& claims) {
   if (baseline.empty() || proposed.empty()) return;
-  const MethodRuns* base = find_method(methods, baseline);
-  const MethodRuns* prop = find_method(methods, proposed);
+  const MethodRows* base = find_method(methods, baseline);
+  const MethodRows* prop = find_method(methods, proposed);
   const std::string vs = proposed + " vs " + baseline + " (" + tag + ")";
   claims.push_back(claim_more_successes(
       vs + ": " + proposed + " succeeds more often (thesis: ≈ 98 % vs ≈ 90 %)", prop, base));
@@ -56,8 +56,8 @@ void add_pair_claims(const ExperimentConfig& config, const std::vector<MethodRun
 
 /// Magnusson's trilinear NDT, cited by the thesis: ML-NDT's success rate at ≈ 5× NDT's cost.
 void add_trilinear_claim(const ExperimentConfig& config, const RegistrationParams& params,
-                         const std::vector<MethodRuns>& methods, std::vector<Claim>& claims) {
-  const MethodRuns* trilinear = nullptr;
+                         const std::vector<MethodRows>& methods, std::vector<Claim>& claims) {
+  const MethodRows* trilinear = nullptr;
   for (const auto& m : config.methods) {
     const RegistrationMethod method = read_registration_method(m.node, config.file);
     if (method.matcher == "ndt" && method.settings.IsMap() && method.settings["trilinear"].IsDefined() &&
@@ -65,8 +65,8 @@ void add_trilinear_claim(const ExperimentConfig& config, const RegistrationParam
       trilinear = find_method(methods, method.name);
   }
   if (!trilinear) return;
-  const MethodRuns* ndt = find_method(methods, params.baseline);
-  const MethodRuns* mlndt = find_method(methods, params.proposed);
+  const MethodRows* ndt = find_method(methods, params.baseline);
+  const MethodRows* mlndt = find_method(methods, params.proposed);
   const std::string statement =
       "NDT with trilinear interpolation reaches ML-NDT's success rate (±5 points) at ≈ 5× NDT's cost (band "
       "[2.5, 10]) (§5.1.1.2 A, citing Magnusson)";
@@ -81,7 +81,7 @@ void add_trilinear_claim(const ExperimentConfig& config, const RegistrationParam
 ReportSection accuracy_report(const ExperimentConfig& config, const RegistrationParams& params,
                               const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows) {
   const RegistrationStatsSettings settings = stats_settings(params);
-  const std::vector<MethodRuns> grouped = group_by_method(config, runs, rows);
+  const std::vector<MethodRows> grouped = group_by_method(config, runs, rows);
   std::vector<MethodStats> methods(grouped.size());
   for (std::size_t m = 0; m < methods.size(); ++m) {
     methods[m].runs = &grouped[m];

@@ -1,4 +1,4 @@
-// E1 layout (§5.1.1.1, figs 5.1–5.6): the scenes, basin radii per method and scene, success maps
+// Layout (§5.1.1.1, figs 5.1–5.6): the scenes, basin radii per method and scene, success maps
 // over offset × yaw, paired comparisons against NDT, the snapshot run's clouds, parameters and
 // scores against iteration, and the claims (registration/layouts/convergence_basin_claims.cpp).
 #include <algorithm>

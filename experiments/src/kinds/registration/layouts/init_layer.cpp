@@ -1,4 +1,4 @@
-// E4 layout (§5.1.1.3, table 5.8): initial guess f · Z_gt × starting layer → fail rate %,
+// Layout (§5.1.1.3, table 5.8): initial guess f · Z_gt × starting layer → fail rate %,
 // registration time s and error norm cm (of the successes), ours | thesis, per method; heat maps
 // of fail rate and time over (f, start layer); the adaptive starting layer (a method with
 // adaptive_start: one run per f over the whole sequence) as an extra row; and the thesis'
@@ -66,11 +66,6 @@ std::vector<double> axis_numbers(const ExperimentConfig& config, const std::stri
   return {NAN};
 }
 
-double point_number(const RunSpec& run, const std::string& axis) {
-  const auto it = run.point.find(axis);
-  return it == run.point.end() ? NAN : std::stod(it->second);
-}
-
 std::size_t index_of(const std::vector<double>& values, double v) {
   for (std::size_t i = 0; i < values.size(); ++i) {
     if ((std::isnan(v) && std::isnan(values[i])) || std::abs(values[i] - v) < 1e-9) return i;
@@ -121,12 +116,10 @@ ReportSection init_layer_report(const ExperimentConfig& config, const Registrati
     if (!rows[i] || !rows[i]->ok) continue;
     const RunRow& row = *rows[i];
     const std::size_t m = runs[i].method_index;
-    const std::size_t fi = index_of(fs, point_number(runs[i], "f"));
+    const std::size_t fi = index_of(fs, point_value(runs[i], "f", NAN));
     if (fi >= fs.size()) continue;
     if (methods[m].adaptive) {
-      const auto series = [&](const char* name) {
-        return row.series.count(name) ? row.series.at(name) : std::vector<double>{};
-      };
+      const auto series = [&](const char* name) { return series_or_empty(row, name); };
       const auto pair = series("adaptive_pair"), ok = series("adaptive_success"),
                  secs = series("adaptive_seconds_registration"), err = series("adaptive_translation_cm"),
                  layer = series("adaptive_start_layer"), rule = series("adaptive_rule_failure");
@@ -145,7 +138,7 @@ ReportSection init_layer_report(const ExperimentConfig& config, const Registrati
       }
       continue;
     }
-    const std::size_t li = index_of(layers, point_number(runs[i], "start_layer"));
+    const std::size_t li = index_of(layers, point_value(runs[i], "start_layer", NAN));
     if (li >= layers.size()) continue;
     cells[m][fi][li].add(row.value("reference_scan"), row.value("success") > 0.5,
                          row.value("seconds_registration"), row.value("translation_cm"));

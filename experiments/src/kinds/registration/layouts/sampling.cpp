@@ -1,4 +1,4 @@
-// E3 layout (§5.1.1.2 B, tables 5.5–5.7, fig 5.11): NDT and ML-NDT with uniform random sampling
+// Layout (§5.1.1.2 B, tables 5.5–5.7, fig 5.11): NDT and ML-NDT with uniform random sampling
 // beside grid-based sampling (GBS). Error statistics over the successful registrations only, as
 // the thesis' tables 5.5 and 5.6; success / time / iterations per method; table 5.7 as a 2×2 of
 // (sampling × method) with the verdicts "GBS better than random" and "ML-NDT better than NDT".
@@ -21,7 +21,7 @@ const char* const kMatchers[2] = {"ndt", "mlndt"};
 
 /// "a is better than b": more successes when the paired test decides; otherwise a smaller
 /// translation error on the pairs both solved.
-Claim claim_better(const std::string& statement, const MethodRuns* a, const MethodRuns* b,
+Claim claim_better(const std::string& statement, const MethodRows* a, const MethodRows* b,
                    std::uint64_t seed) {
   const Claim by_success = claim_more_successes(statement, a, b);
   if (by_success.verdict == Verdict::holds || by_success.verdict == Verdict::does_not_hold) return by_success;
@@ -42,7 +42,7 @@ ReportSection sampling_report(const ExperimentConfig& config, const Registration
                               const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows) {
   RegistrationStatsSettings settings = stats_settings(params);
   settings.errors_of_successes_only = true;  // tables 5.5 and 5.6
-  const std::vector<MethodRuns> grouped = group_by_method(config, runs, rows);
+  const std::vector<MethodRows> grouped = group_by_method(config, runs, rows);
   std::vector<RegistrationStats> stats;
   for (const auto& m : grouped) {
     std::vector<RegistrationSample> samples;

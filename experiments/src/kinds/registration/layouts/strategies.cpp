@@ -1,4 +1,4 @@
-// E6 layout (§5.1.2.2, table 5.9, figs 5.13–5.14): ML-NDT with regular, random, grid-based (GBS)
+// Layout (§5.1.2.2, table 5.9, figs 5.13–5.14): ML-NDT with regular, random, grid-based (GBS)
 // and feature-based (FBS) sampling from the odometry guess. Table 5.9 (iterations, matched points,
 // time, success), the sampling costs (feature extraction vs GBS), mean errors per parameter,
 // FbML-NDT's error per pair, and a computed test of "FbML-NDT's errors look zero-mean Gaussian,
@@ -64,7 +64,7 @@ std::string normality_evidence(const Normality& n) {
 ReportSection strategies_report(const ExperimentConfig& config, const RegistrationParams& params,
                                 const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows) {
   const RegistrationStatsSettings settings = stats_settings(params);
-  const std::vector<MethodRuns> grouped = group_by_method(config, runs, rows);
+  const std::vector<MethodRows> grouped = group_by_method(config, runs, rows);
   std::vector<std::string> samplers;
   std::vector<RegistrationStats> stats;
   for (std::size_t m = 0; m < grouped.size(); ++m) {
@@ -175,11 +175,11 @@ ReportSection strategies_report(const ExperimentConfig& config, const Registrati
 
   // Claims.
   std::uint64_t k = 0;
-  const MethodRuns* f = runs_of("fbs");
-  const MethodRuns* g = runs_of("gbs");
+  const MethodRows* f = runs_of("fbs");
+  const MethodRows* g = runs_of("gbs");
   std::vector<Claim> fastest, fewer, robust;
   for (const char* other : {"regular", "random", "gbs"}) {
-    const MethodRuns* o = runs_of(other);
+    const MethodRows* o = runs_of(other);
     fastest.push_back(claim_speedup("", o, f, 1.0, INFINITY, claim_seed(config, k++)));
     fewer.push_back(claim_smaller_on_solved("", f, o, "iterations", "", claim_seed(config, k++)));
     robust.push_back(claim_not_fewer_successes("", f, o, kSuccessMargin));
@@ -224,7 +224,7 @@ ReportSection strategies_report(const ExperimentConfig& config, const Registrati
   // ±3–5 cm wide on 100 pairs and could never fit inside ±2 cm. The verdict takes the 10 %-trimmed
   // mean (bootstrap interval), whose width the bulk sets; the plain mean stays in the evidence.
   for (const char* s : {"gbs", "fbs"}) {
-    const MethodRuns* m = runs_of(s);
+    const MethodRows* m = runs_of(s);
     Claim c{std::string(s == std::string("gbs") ? "GBS" : "FBS") + ": mean error below " +
                 format_number(cm, 1) + " cm and " + format_number(deg, 1) +
                 "° per parameter (95 % interval of the " + format_number(100 * kTrim, 0) +

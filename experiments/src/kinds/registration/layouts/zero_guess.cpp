@@ -1,4 +1,4 @@
-// E5 layout (§5.1.2.1, fig 5.12): FbML-NDT from a zero initial guess on a pair with a known motion
+// Layout (§5.1.2.1, fig 5.12): FbML-NDT from a zero initial guess on a pair with a known motion
 // (the thesis: Ford scans 1000–1004, 2 m along y, "the correct transformation with a few centimetre
 // error in three iterations"). Per run: iterations, error, and the parameters after every iteration.
 #include <algorithm>
@@ -36,7 +36,7 @@ Interval error_after(const std::vector<double>& trace, std::size_t k, double fin
 
 ReportSection zero_guess_report(const ExperimentConfig& config, const RegistrationParams& params,
                                 const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows) {
-  const std::vector<MethodRuns> grouped = group_by_method(config, runs, rows);
+  const std::vector<MethodRows> grouped = group_by_method(config, runs, rows);
   const double few_cm = reference_number(config.reference, "error_cm").value_or(5.0);
   const double iterations = reference_number(config.reference, "iterations").value_or(3.0);
   ReportSection section;
@@ -73,21 +73,20 @@ ReportSection zero_guess_report(const ExperimentConfig& config, const Registrati
       errors.push_back(r.value("translation_cm"));
 
       // Fig. 5.12: the six parameters against the iteration.
-      const auto it = r.series.find("trace_xi");
-      if (it == r.series.end() || it->second.size() < 6) continue;
-      after.push_back(
-          error_after(it->second, static_cast<std::size_t>(iterations), r.value("translation_cm")));
+      const std::vector<double>& trace = series_or_empty(r, "trace_xi");
+      if (trace.size() < 6) continue;
+      after.push_back(error_after(trace, static_cast<std::size_t>(iterations), r.value("translation_cm")));
       XYPlot plot;
       plot.title = m.name + " (" + offset + "): parameters per iteration";
       plot.x_label = "iteration";
       plot.y_label = "x, y, z [m]; α, β, γ [deg]";
       static const char* const kNames[6] = {"x", "y", "z", "α", "β", "γ"};
-      const std::size_t n = it->second.size() / 6;
+      const std::size_t n = trace.size() / 6;
       for (std::size_t k = 0; k < 6; ++k) {
         std::vector<double> x{0.0}, y{0.0};
         for (std::size_t j = 0; j < n; ++j) {
           x.push_back(static_cast<double>(j + 1));
-          y.push_back(it->second[6 * j + k] * (k < 3 ? 1.0 : 180.0 / 3.14159265358979323846));
+          y.push_back(trace[6 * j + k] * (k < 3 ? 1.0 : 180.0 / 3.14159265358979323846));
         }
         plot.add_line(kNames[k], x, y);
         plot.series.back().style = PlotSeries::Style::line_and_markers;

@@ -1,11 +1,11 @@
-// E7 layout (§5.1.3, fig 5.15): dead reckoning by the chained matcher vs the odometry over one
+// Layout (§5.1.3, fig 5.15): dead reckoning by the chained matcher vs the odometry over one
 // sequence. Table: end-point error ours | thesis; trajectory metrics (RPE per step, KITTI drift);
 // figures: top-down trajectories (truth, odometry, chained matcher) and error vs scan; TUM files.
 // Claims on the ratio of end-point errors (matcher / odometry) per repetition, with a bootstrap
 // interval of its median: "well below" (< ratio_below) and "about 7 m vs 60 m" (in ratio_band).
 #include <algorithm>
 
-#include "registration/report.hpp"
+#include "kit/reference_values.hpp"
 #include "sequence/report.hpp"
 #include "sextant/eval/verdict.hpp"
 
@@ -14,7 +14,7 @@ namespace sextant {
 ReportSection dead_reckoning_report(const ExperimentConfig& config, const SequenceParams& params,
                                     const std::vector<RunSpec>& runs,
                                     const std::vector<const RunRow*>& rows) {
-  const std::vector<SequenceRun> all = sequence_runs(runs, rows);
+  const std::vector<TrajectoryRun> all = trajectory_runs(runs, rows);
   const YAML::Node& ref = config.reference;
   const auto thesis_odometry = reference_number(ref, "end_point_error_odometry");
   const auto thesis_matcher = reference_number(ref, "end_point_error_matcher");
@@ -43,7 +43,7 @@ ReportSection dead_reckoning_report(const ExperimentConfig& config, const Sequen
            : "the scans of " + config.dataset.path.filename().string() + " instead of hannover1.");
 
   for (std::size_t m = 0; m < config.methods.size(); ++m) {
-    std::vector<SequenceRun> mine;
+    std::vector<TrajectoryRun> mine;
     for (const auto& r : all)
       if (r.method == m) mine.push_back(r);
     const std::string name = config.methods[m].name;
@@ -56,7 +56,7 @@ ReportSection dead_reckoning_report(const ExperimentConfig& config, const Sequen
     double failed = 0;
     for (const double f : run_values(mine, "not_converged")) failed += f;
     end.note = "Ours: mean [min, max] over " + std::to_string(mine.size()) +
-               " run(s), horizontal error [m]; " + fixed(failed, 0) + " of " +
+               " run(s), horizontal error [m]; " + format_number(failed, 0) + " of " +
                std::to_string(mine.size() * (params.scans - 1)) +
                " registrations stopped before convergence (their pose is chained all the same).";
     end.add_column("trajectory").add_compared_column("end-point error m", 2).add_column("range m");
@@ -67,7 +67,7 @@ ReportSection dead_reckoning_report(const ExperimentConfig& config, const Sequen
                                       : std::pair<double, double>{*std::min_element(v.begin(), v.end()),
                                                                   *std::max_element(v.begin(), v.end())};
       end.add_row({Cell::text(label), number_or_missing(mean_of(v)), number_or_missing(th),
-                   Cell::text(v.empty() ? "–" : "[" + fixed(lo) + ", " + fixed(hi) + "]")});
+                   Cell::text(v.empty() ? "–" : "[" + format_number(lo) + ", " + format_number(hi) + "]")});
     };
     add_end("odometry", "end_xy_odometry", thesis_odometry);
     add_end(name + " (chained)", "end_xy_estimate", thesis_matcher);
@@ -77,12 +77,12 @@ ReportSection dead_reckoning_report(const ExperimentConfig& config, const Sequen
 
     Table metrics = metrics_table("Trajectory metrics over the sequence, " + name,
                                   "trajectory_metrics" + suffix, mine.size());
-    add_metric_rows(metrics, "odometry", mine, &SequenceRun::odometry);
-    add_metric_rows(metrics, name + " (chained)", mine, &SequenceRun::estimate);
+    add_metric_rows(metrics, "odometry", mine, &TrajectoryRun::odometry);
+    add_metric_rows(metrics, name + " (chained)", mine, &TrajectoryRun::estimate);
     section.tables.push_back(metrics);
 
     if (!mine.empty()) {
-      const SequenceRun& first = mine.front();
+      const TrajectoryRun& first = mine.front();
       const std::vector<NamedPoses> chained{{name + " (chained)", &first.estimate, "#1f5fbf"}};
       section.figures.push_back(trajectory_figure(
           "trajectory" + suffix,
@@ -106,14 +106,14 @@ ReportSection dead_reckoning_report(const ExperimentConfig& config, const Sequen
     const Interval ratio = bootstrap_median(ratios, config.seed);
     const std::string evidence = "median ratio " + name + " / odometry of the end-point errors " +
                                  describe(ratio, "", 3) + "; mean end-point errors " +
-                                 fixed(mean_of(run_values(mine, "end_xy_estimate"))) + " m vs " +
-                                 fixed(mean_of(run_values(mine, "end_xy_odometry"))) + " m";
+                                 format_number(mean_of(run_values(mine, "end_xy_estimate"))) + " m vs " +
+                                 format_number(mean_of(run_values(mine, "end_xy_odometry"))) + " m";
     section.claims.push_back({"Chained " + name + " ends well below the odometry (end-point error ratio < " +
-                                  fixed(ratio_below) + ")",
+                                  format_number(ratio_below) + ")",
                               verdict_less(ratio, ratio_below), evidence});
     section.claims.push_back({"End-point error ≈ 7 m with " + name +
-                                  " vs ≈ 60 m with odometry (ratio 0.12, band [" + fixed(band[0]) + ", " +
-                                  fixed(band[1]) + "])",
+                                  " vs ≈ 60 m with odometry (ratio 0.12, band [" + format_number(band[0]) +
+                                  ", " + format_number(band[1]) + "])",
                               verdict_in_band(ratio, band[0], band[1]), evidence});
     // The end point of a route that loops back is a lucky or unlucky place to look; the mean over
     // the whole path is not.

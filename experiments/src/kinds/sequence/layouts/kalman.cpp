@@ -1,4 +1,4 @@
-// E9 layout (§5.1.3.2, §3.4.2, table 3.3, figs 5.19–5.20): the linear KF (control = odometry
+// Layout (§5.1.3.2, §3.4.2, table 3.3, figs 5.19–5.20): the linear KF (control = odometry
 // increment, measurement = the matcher's pose, R = H⁻¹) vs the matcher alone vs the odometry.
 // Tables: alarms ours | thesis; the position covariance at the checkpoint scans with the errors;
 // trajectory metrics. Figures: trajectories with covariance ellipses at the checkpoints, error vs
@@ -10,7 +10,7 @@
 
 #include <Eigen/Cholesky>
 
-#include "registration/report.hpp"
+#include "kit/reference_values.hpp"
 #include "sequence/report.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/eval/verdict.hpp"
@@ -19,7 +19,7 @@ namespace sextant {
 namespace {
 
 /// eᵀ P⁻¹ e of the position error at scan k (NaN when P is not positive definite).
-double position_nees(const SequenceRun& r, std::size_t k) {
+double position_nees(const TrajectoryRun& r, std::size_t k) {
   if (k >= r.covariance.size()) return kNaN;
   const Eigen::Vector3d e = r.estimate[k].translation() - r.truth[k].translation();
   const Eigen::LLT<Eigen::Matrix3d> llt(r.covariance[k]);
@@ -28,7 +28,7 @@ double position_nees(const SequenceRun& r, std::size_t k) {
 
 /// ellipse_scale 0: the number of σ that makes the largest drawn ellipse about 3 % of the
 /// trajectory's extent (a round 1, 2, 5 × 10^k), so the exaggeration is visible and stated.
-double auto_ellipse_scale(const SequenceRun& run, const std::vector<Eigen::Matrix3d>& ellipses) {
+double auto_ellipse_scale(const TrajectoryRun& run, const std::vector<Eigen::Matrix3d>& ellipses) {
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e300), hi = -lo;
   for (const auto& T : run.truth) {
     lo = lo.cwiseMin(T.translation().head<2>());
@@ -49,7 +49,7 @@ double auto_ellipse_scale(const SequenceRun& run, const std::vector<Eigen::Matri
 
 ReportSection kalman_report(const ExperimentConfig& config, const SequenceParams& params,
                             const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows) {
-  const std::vector<SequenceRun> all = sequence_runs(runs, rows);
+  const std::vector<TrajectoryRun> all = trajectory_runs(runs, rows);
   const auto thesis_alarms = reference_number(config.reference, "alarms");
   const double rate_below = reference_number(config.reference, "alarm_rate_below").value_or(0.1);
 
@@ -58,15 +58,16 @@ ReportSection kalman_report(const ExperimentConfig& config, const SequenceParams
       "Scans " + std::to_string(params.first_scan) + "–" +
       std::to_string(params.first_scan + params.scans - 1) +
       ". Table 3.3: x̂(k+1|k) = x̂(k|k) + u(k) with u the odometry increment in pose parameters, Q = diag(" +
-      fixed(params.kf.odometry_sigma_translation) + " m, " +
-      fixed(params.kf.odometry_sigma_rotation * 180 / M_PI) +
+      format_number(params.kf.odometry_sigma_translation) + " m, " +
+      format_number(params.kf.odometry_sigma_rotation * 180 / M_PI) +
       "°)²; measurement z = x̂(k|k) ⊕ T_k (the matcher's registration of scan k against scan k−1, started "
       "from the odometry increment), R = " +
-      fixed(params.measurement_noise_scale) +
+      format_number(params.measurement_noise_scale) +
       " · H⁻¹ (eq. 3.50) with H rotated into the world frame. Alarm (the odometry prediction is kept) when "
       "the "
       "matcher did not converge, H is not positive definite, or z and the prediction differ by more than " +
-      fixed(params.kf.alarm_translation) + " m or " + fixed(params.kf.alarm_rotation * 180 / M_PI, 1) +
+      format_number(params.kf.alarm_translation) + " m or " +
+      format_number(params.kf.alarm_rotation * 180 / M_PI, 1) +
       "°. The thesis shows the covariance ellipses without a claim on their size: with an absolute pose "
       "measurement at every accepted step, P(k|k) ≤ R(k), so the covariance stays bounded and grows by Q "
       "only on "
@@ -76,7 +77,7 @@ ReportSection kalman_report(const ExperimentConfig& config, const SequenceParams
       "(the odometry is 2D); synthetic campus instead of hannover1.";
 
   for (std::size_t m = 0; m < config.methods.size(); ++m) {
-    std::vector<SequenceRun> mine;
+    std::vector<TrajectoryRun> mine;
     for (const auto& r : all)
       if (r.method == m) mine.push_back(r);
     const std::string name = config.methods[m].name;
@@ -135,13 +136,13 @@ ReportSection kalman_report(const ExperimentConfig& config, const SequenceParams
 
     Table metrics = metrics_table("Trajectory metrics over the sequence, " + name,
                                   "trajectory_metrics" + suffix, mine.size());
-    add_metric_rows(metrics, "odometry", mine, &SequenceRun::odometry);
-    add_metric_rows(metrics, name + " alone (chained)", mine, &SequenceRun::matcher);
-    add_metric_rows(metrics, "KF (Table 3.3)", mine, &SequenceRun::estimate);
+    add_metric_rows(metrics, "odometry", mine, &TrajectoryRun::odometry);
+    add_metric_rows(metrics, name + " alone (chained)", mine, &TrajectoryRun::matcher);
+    add_metric_rows(metrics, "KF (Table 3.3)", mine, &TrajectoryRun::estimate);
     section.tables.push_back(metrics);
 
     if (!mine.empty()) {
-      const SequenceRun& first = mine.front();
+      const TrajectoryRun& first = mine.front();
       std::string scan_list;
       for (const int scan : params.ellipses_at)
         scan_list += (scan_list.empty() ? "" : ", ") + std::to_string(scan);
@@ -154,7 +155,7 @@ ReportSection kalman_report(const ExperimentConfig& config, const SequenceParams
           params.ellipse_scale > 0 ? params.ellipse_scale : auto_ellipse_scale(first, ellipses);
       const std::vector<NamedPoses> estimates{
           {name + " alone", &first.matcher, "#8e44ad"},
-          {"KF (" + fixed(scale, 0) + "σ ellipses)", &first.estimate, "#1f5fbf", ellipses, scale}};
+          {"KF (" + format_number(scale, 0) + "σ ellipses)", &first.estimate, "#1f5fbf", ellipses, scale}};
       section.figures.push_back(trajectory_figure(
           "trajectory" + suffix,
           "Figs 5.19–5.20: trajectories with the KF's position covariance at scans 15, 30, 45, 60 "
@@ -176,9 +177,9 @@ ReportSection kalman_report(const ExperimentConfig& config, const SequenceParams
 
     const Interval rate = wilson_interval(static_cast<std::size_t>(alarms), steps);
     section.claims.push_back({"Alarms are rare: matcher and odometry disagree seldom (thesis: " +
-                                  (thesis_alarms ? fixed(*thesis_alarms, 0) : std::string("–")) +
-                                  " alarm in its 60 scans; ours: rate < " + fixed(100 * rate_below, 0) +
-                                  " %)",
+                                  (thesis_alarms ? format_number(*thesis_alarms, 0) : std::string("–")) +
+                                  " alarm in its 60 scans; ours: rate < " +
+                                  format_number(100 * rate_below, 0) + " %)",
                               verdict_less(rate, rate_below), "alarm rate " + describe(rate)});
     const Interval better = bootstrap_paired_mean_difference(
         run_values(mine, "mean_xy_estimate"), run_values(mine, "mean_xy_odometry"), config.seed);
