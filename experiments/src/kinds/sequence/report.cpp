@@ -79,6 +79,13 @@ std::vector<TrajectoryRun> trajectory_runs(const std::vector<RunSpec>& runs,
   return out;
 }
 
+std::vector<TrajectoryRun> runs_of_method(const std::vector<TrajectoryRun>& runs, std::size_t method) {
+  std::vector<TrajectoryRun> out;
+  for (const auto& r : runs)
+    if (r.method == method) out.push_back(r);
+  return out;
+}
+
 std::vector<double> run_values(const std::vector<TrajectoryRun>& runs, const std::string& key) {
   std::vector<double> v;
   for (const auto& r : runs) v.push_back(r.row->value(key));

@@ -37,6 +37,9 @@ struct TrajectoryRun {
 std::vector<TrajectoryRun> trajectory_runs(const std::vector<RunSpec>& runs,
                                            const std::vector<const RunRow*>& rows);
 
+/// The runs of config method `method`, in expansion order.
+std::vector<TrajectoryRun> runs_of_method(const std::vector<TrajectoryRun>& runs, std::size_t method);
+
 /// Per-run values of one row key, in the order of `runs`.
 std::vector<double> run_values(const std::vector<TrajectoryRun>& runs, const std::string& key);
 

@@ -43,9 +43,7 @@ ReportSection dead_reckoning_report(const ExperimentConfig& config, const Sequen
            : "the scans of " + config.dataset.path.filename().string() + " instead of hannover1.");
 
   for (std::size_t m = 0; m < config.methods.size(); ++m) {
-    std::vector<TrajectoryRun> mine;
-    for (const auto& r : all)
-      if (r.method == m) mine.push_back(r);
+    const std::vector<TrajectoryRun> mine = runs_of_method(all, m);
     const std::string name = config.methods[m].name;
     const std::string suffix = config.methods.size() == 1 ? "" : "_" + name;
 

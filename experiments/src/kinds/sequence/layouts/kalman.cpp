@@ -77,9 +77,7 @@ ReportSection kalman_report(const ExperimentConfig& config, const SequenceParams
       "(the odometry is 2D); synthetic campus instead of hannover1.";
 
   for (std::size_t m = 0; m < config.methods.size(); ++m) {
-    std::vector<TrajectoryRun> mine;
-    for (const auto& r : all)
-      if (r.method == m) mine.push_back(r);
+    const std::vector<TrajectoryRun> mine = runs_of_method(all, m);
     const std::string name = config.methods[m].name;
     const std::string suffix = config.methods.size() == 1 ? "" : "_" + name;
 
