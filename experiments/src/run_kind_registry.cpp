@@ -8,22 +8,21 @@ const RunKindRegistry& run_kind_registry() {
   static const RunKindRegistry registry = [] {
     RunKindRegistry r("run kind");
     // One line per kind (keep sorted).
-    r.add("metric_examples", "E18: Wulf and Kümmerle metrics on the thesis' worked examples",
+    r.add("metric_examples", "the Wulf and Kümmerle metrics on the thesis' worked examples",
           [] { return make_metric_examples_kind(); });
-    r.add("plane_features", "E10, E11: plane merging tests, extraction and semantic association",
+    r.add("plane_features", "plane merging tests, extraction and semantic association",
           [] { return make_plane_features_kind(); });
-    r.add("plane_slam", "E12-E14, E16, E17, E19: plane SLAM over a campus scan sequence, any filter",
+    r.add("plane_slam", "plane SLAM over a campus scan sequence, any filter",
           [] { return make_plane_slam_kind(); });
-    r.add("pose_graph",
-          "E20: chained scan matching, a pose graph with loop closures, and the plane-SLAM filters",
+    r.add("pose_graph", "chained scan matching, a pose graph with loop closures, and the plane-SLAM filters",
           [] { return make_pose_graph_kind(); });
-    r.add("registration", "E1, E2, E4: scan pairs with an initial guess, any matcher × sampler",
+    r.add("registration", "scan pairs with an initial guess, any matcher × sampler",
           [] { return make_registration_kind(); });
-    r.add("sequence", "E7, E9: a matcher over a sequence of scans, chained or fused with odometry by a KF",
+    r.add("sequence", "a matcher over a sequence of scans, chained or fused with odometry by a KF",
           [] { return make_sequence_kind(); });
     r.add("selftest", "runner self-test: sleeps and records seeds (sharding, resume, merge)",
           [] { return make_selftest_kind(); });
-    r.add("simulation", "E8, E15: 2D room with ML-NDT into the EKF, range-bearing Monte Carlo of filters",
+    r.add("simulation", "2D room with ML-NDT into the EKF, range-bearing Monte Carlo of filters",
           [] { return make_simulation_kind(); });
     return r;
   }();

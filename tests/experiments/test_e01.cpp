@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "basin_analysis.hpp"
-#include "registration_scenes.hpp"
+#include "registration/layouts/convergence_basin_analysis.hpp"
+#include "registration/scenes.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/experiments/report.hpp"
 #include "sextant/experiments/run_row.hpp"

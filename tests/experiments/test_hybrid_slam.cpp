@@ -4,8 +4,8 @@
 // figures, claims).
 #include <gtest/gtest.h>
 
-#include "plane_slam_hybrid.hpp"
-#include "plane_slam_sequence.hpp"
+#include "kit/fbmlndt_motion.hpp"
+#include "kit/plane_slam_driver.hpp"
 #include "sextant/experiments/report.hpp"
 #include "sextant/experiments/run_row.hpp"
 #include "sextant/experiments/runner.hpp"
@@ -94,7 +94,7 @@ TEST(HybridSlam, FbmlndtMotionOnCampusScansIsTheTrueIncrement) {
 TEST(HybridSlam, HybridEkfIsCloserEarlyAndBoundedAtTheEnd) {
   const synth::Campus& c = campus();
   constexpr std::size_t kScans = 30;
-  SequenceData data;
+  CampusScans data;
   data.campus = &c;
   for (std::size_t k = 0; k < kScans; ++k) data.clouds.push_back(c.scan(k).cloud);
   PlaneSlamParams params;
@@ -109,19 +109,19 @@ TEST(HybridSlam, HybridEkfIsCloserEarlyAndBoundedAtTheEnd) {
   hybrid.name = "ekf_fbmlndt";
   hybrid.motion = MotionSource::kFbmlndt;
   hybrid.matcher = YAML::Load("{preset: default, bounds_quantile: 0}");  // as measured (see above)
-  const FilterSequenceRun odo = run_sequence(data, params, s, kScans, 7);
-  const FilterSequenceRun hyb = run_sequence(data, params, s, kScans, 7, hybrid);
-  const auto error = [&](const FilterSequenceRun& r, std::size_t k) {
+  const RecordedRun odo = record_plane_slam(data, params, s, kScans, 7);
+  const RecordedRun hyb = record_plane_slam(data, params, s, kScans, 7, hybrid);
+  const auto error = [&](const RecordedRun& r, std::size_t k) {
     return (r.steps[k].pose.head<3>() - c.ground_truth[k].translation()).norm();
   };
   ASSERT_EQ(hyb.steps.size(), kScans);
   int matched = 0;
-  for (const SequenceStep& st : hyb.steps) matched += st.matched_motion == 1;
+  for (const RecordedStep& st : hyb.steps) matched += st.matched_motion == 1;
   EXPECT_GE(matched, static_cast<int>(kScans) - 6) << "the matcher predicts nearly every step";
   EXPECT_EQ(odo.steps.back().matched_motion, -1);
   EXPECT_EQ(odo.steps.back().registration_seconds, 0.0);
   EXPECT_GT(hyb.steps.back().registration_seconds, 0.0);
-  const auto rotation = [&](const FilterSequenceRun& r, std::size_t k) {
+  const auto rotation = [&](const RecordedRun& r, std::size_t k) {
     const Eigen::Matrix3d R = rotation_from_euler(r.steps[k].pose[3], r.steps[k].pose[4], r.steps[k].pose[5]);
     return Eigen::AngleAxisd(R.transpose() * c.ground_truth[k].linear()).angle();
   };

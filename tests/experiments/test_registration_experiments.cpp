@@ -6,9 +6,9 @@
 #include <cmath>
 #include <map>
 
-#include "../../experiments/src/kinds/registration_adaptive.hpp"
-#include "../../experiments/src/kinds/registration_claims.hpp"
-#include "../../experiments/src/kinds/registration_figures.hpp"
+#include "kit/adaptive_start.hpp"
+#include "registration/claims.hpp"
+#include "registration/figures.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/experiments/report.hpp"
 #include "sextant/experiments/run_row.hpp"
@@ -261,7 +261,7 @@ TEST(RegistrationFigures, Fig510LegendCarriesTheSuccessRate) {
 TEST(RegistrationClaims, NonInferiorSuccessCanGoEitherWay) {
   std::vector<RunRow> storage(300);
   const auto method = [&](const std::string& name, std::size_t offset, std::size_t successes) {
-    MethodRuns m;
+    MethodRows m;
     m.name = name;
     for (std::size_t i = 0; i < 100; ++i) {
       RunRow& r = storage[offset + i];
@@ -271,7 +271,7 @@ TEST(RegistrationClaims, NonInferiorSuccessCanGoEitherWay) {
     }
     return m;
   };
-  const MethodRuns fbs = method("fbs", 0, 100), regular = method("regular", 100, 97),
+  const MethodRows fbs = method("fbs", 0, 100), regular = method("regular", 100, 97),
                    worse = method("worse", 200, 80);
   EXPECT_EQ(claim_more_successes("", &fbs, &regular).verdict, Verdict::inconclusive);
   EXPECT_EQ(claim_not_fewer_successes("", &fbs, &regular, 0.05).verdict, Verdict::holds);

@@ -1,15 +1,15 @@
 // A real sequence without odometry gets one simulated from its reference with the campus' error
-// model (simulated_odometry_dataset.hpp), so E2 runs on real scans (issue 25).
+// model (kit/simulated_odometry_dataset.hpp), so E2 runs on real scans (issue 25).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 
-#include "dataset_source.hpp"
+#include "kit/dataset_source.hpp"
+#include "kit/simulated_odometry_dataset.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/experiments/experiment_config.hpp"
 #include "sextant/synth/odometry.hpp"
-#include "simulated_odometry_dataset.hpp"
 #include "test_helpers.hpp"
 
 namespace sextant {

@@ -1,13 +1,8 @@
 #pragma once
-// A run kind executes the runs of one family of experiments and lays out its report. One file
-// per kind under src/kinds/, registered by name in run_kind_registry():
-//   metric_examples — E18: the Wulf and Kümmerle metrics on the thesis' worked examples (exact)
-//   plane_slam      — E12–E14, E16, E17, E19: plane SLAM over a campus scan sequence, any filter
-//   pose_graph      — E20: chained scan matching, a pose graph with loop closures, filters beside it
-//   registration    — E1–E4, E6: scan pairs with an initial guess, any matcher × sampler
-//   sequence        — E7, E9: a matcher over consecutive scans, chained or fused by a KF
-//   plane_features  — E10, E11: plane merging tests, extraction and semantic association
-//   simulation      — E8, E15: 2D room with ML-NDT into the EKF, range–bearing filter Monte Carlo
+// A run kind executes the runs of one family of experiments and lays out its report. One folder
+// per kind under src/kinds/<family>/ (what families share in src/kinds/kit/), registered by name
+// in run_kind_registry(). Which experiments use which kind and layout is in their YAML configs
+// (`kind:`, `params.report`), not in comments here.
 #include <filesystem>
 #include <memory>
 #include <string>

@@ -1,0 +1,29 @@
+#pragma once
+// A registration method of an experiment config, as the registration and sequence kinds read it:
+//
+//   methods:
+//     - {name: mlndt, matcher: mlndt, settings: {solver: lm}, sampler: gbs, sampler_settings: {...},
+//        adaptive_start: {...}}   # optional: the thesis' adaptive starting layer (adaptive_start.hpp)
+#include <string>
+
+#include <yaml-cpp/yaml.h>
+
+#include "kit/adaptive_start.hpp"
+
+namespace sextant {
+
+struct RegistrationMethod {
+  std::string name;
+  std::string matcher;
+  YAML::Node settings;  ///< may be null (defaults)
+  std::string sampler = "all";
+  YAML::Node sampler_settings;
+  bool adaptive = false;  ///< `adaptive_start` given: the thesis' adaptive starting layer
+  AdaptiveStartSettings adaptive_start;
+  int last_layer = 0;  ///< adaptive: the pyramid's last layer (mlndt / fbmlndt `layers`)
+};
+
+/// Reads one method; checks the matcher and sampler names and their settings by building them.
+RegistrationMethod read_registration_method(const YAML::Node& node, const std::string& file);
+
+}  // namespace sextant

@@ -1,0 +1,40 @@
+// The registration rows as eval's statistics take them.
+#include "registration/report.hpp"
+
+#include <cmath>
+
+namespace sextant {
+
+RegistrationSample sample_of(const RunRow& row) {
+  RegistrationSample s;
+  s.estimate = series_to_isometry(series_or_empty(row, "estimate"));
+  s.ground_truth = series_to_isometry(series_or_empty(row, "ground_truth"));
+  s.converged = row.value("converged") > 0.5;
+  s.iterations = static_cast<int>(row.value("iterations"));
+  s.seconds = row.value("seconds_registration");
+  const double input = row.value("input_points"), percent = row.value("matched_percent");
+  if (std::isfinite(input) && std::isfinite(percent) && input > 0) {
+    s.total_points = static_cast<std::size_t>(input);
+    s.matched_points = static_cast<std::size_t>(std::llround(percent / 100.0 * input));
+  }
+  return s;
+}
+
+std::optional<RegistrationSample> odometry_sample_of(const RunRow& row) {
+  const auto it = row.series.find("odometry");
+  const auto gt = row.series.find("ground_truth");
+  if (it == row.series.end() || gt == row.series.end()) return std::nullopt;
+  RegistrationSample s;
+  s.estimate = series_to_isometry(it->second);
+  s.ground_truth = series_to_isometry(gt->second);
+  return s;
+}
+
+RegistrationStatsSettings stats_settings(const RegistrationParams& params) {
+  RegistrationStatsSettings s;
+  s.axes = params.axes;
+  s.success = thesis_success_criterion(params.success);
+  return s;
+}
+
+}  // namespace sextant
