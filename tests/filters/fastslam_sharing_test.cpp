@@ -26,9 +26,10 @@ Eigen::Vector4d random_plane(Rng& rng) {
 
 /// A filter whose particles are spread by 1 m around the origin, with kLandmarks landmarks known
 /// exactly in the world (so the particles disagree on where they see them from).
-std::unique_ptr<FastSlam> spread_filter(std::vector<Eigen::Vector4d>& planes) {
-  auto filter =
-      std::make_unique<FastSlam>(std::make_shared<PlaneSlamModel>(), FastSlamSettings{kParticles, 0.5}, 4);
+std::unique_ptr<FastSlam> spread_filter(std::vector<Eigen::Vector4d>& planes,
+                                        double resample_threshold = 0.5) {
+  auto filter = std::make_unique<FastSlam>(std::make_shared<PlaneSlamModel>(),
+                                           FastSlamSettings{kParticles, resample_threshold}, 4);
   Rng rng(8);
   Eigen::VectorXd x0 = Eigen::VectorXd::Zero(6 + 4 * kLandmarks);
   Eigen::VectorXd sigma = Eigen::VectorXd::Constant(x0.size(), 1e-3);
@@ -112,10 +113,11 @@ TEST(FastSlamSharing, AParticlesUpdateDoesNotChangeItsSiblingsLandmarks) {
 }
 
 // An observation thousands of σ from every particle's prediction: every likelihood underflows
-// exp(), but the log weights normalise to finite weights summing to 1 and the estimate stays finite.
+// exp(), but the log weights normalise to finite weights summing to 1 and the estimate stays
+// finite. Resampling is off: it would reset the weights to 1/N and hide a broken normalisation.
 TEST(FastSlamSharing, ImpossibleObservationLeavesFiniteWeights) {
   std::vector<Eigen::Vector4d> planes;
-  auto filter = spread_filter(planes);
+  auto filter = spread_filter(planes, 0.0);
   Eigen::Vector4d z = PlaneSlamModel().observe(Eigen::VectorXd::Zero(6), planes[0]);
   z[3] += 500.0;  // 50 000 σ
   const StepResult r = filter->update({z}, kR, {0});
