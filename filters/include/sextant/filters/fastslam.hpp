@@ -30,6 +30,11 @@
 //                 Landmarks of one particle are independent given its path, so C_i is block
 //                 diagonal; the cross terms come from the spread. O(N n²);
 //   joint_covariance(ids)  the same, over the pose and the given landmarks only, O(N (p + k l)²).
+// Costs per step (N particles, M landmarks, k observations): predict O(N); update
+// O(N (k³ + k log M)) and resampling O(N) (no map is copied, landmark_map.hpp); augment
+// O(N log M). The Filter views are not O(log M): mean() is O(N M) (cached until the next step),
+// covariance() O(N M²) and joint_covariance(ids) O(N |ids|²) — a runner timing steps against
+// the map size should not ask for covariance() (run_slam: record_pose_covariance = false).
 // initialize(x0, P0): poses are drawn from N(x0_v, P0_vv); landmarks in x0 start at their
 // conditional Gaussian given each particle's pose, keeping only the diagonal landmark blocks
 // (FastSLAM cannot hold correlations between landmarks of one particle).
