@@ -2,6 +2,7 @@
 #include <cstdint>
 
 #include "sextant/filters/eseif.hpp"
+#include "sextant/filters/fastslam.hpp"
 #include "sextant/filters/filter.hpp"
 #include "sextant/filters/gaussian_filters.hpp"
 #include "sextant/filters/seif.hpp"
@@ -36,6 +37,8 @@ FilterFactory default_filter(const std::string& name) {
     return [](Model m) -> std::unique_ptr<Filter> {
       return std::make_unique<Eseif>("eseif", std::move(m), EseifSettings{});
     };
+  if (name == "fastslam2")
+    return [](Model m) -> std::unique_ptr<Filter> { return std::make_unique<FastSlam>(std::move(m)); };
   if (name == "eif")
     return [](Model m) -> std::unique_ptr<Filter> {
       SeifSettings s;  // SEIF without sparsification, exact mean recovery

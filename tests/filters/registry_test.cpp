@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "sextant/core/error.hpp"
+#include "sextant/filters/fastslam.hpp"
 #include "sextant/filters/filter.hpp"
 #include "sextant/filters/range_bearing_model.hpp"
 #include "sextant/filters/yaml.hpp"
@@ -10,7 +11,7 @@ namespace {
 
 TEST(FilterRegistry, KnowsEveryFilter) {
   auto model = std::make_shared<RangeBearingModel>();
-  for (const std::string name : {"ekf", "ukf", "ckf", "rspkf", "seif", "eif", "eseif"}) {
+  for (const std::string name : {"ekf", "ukf", "ckf", "rspkf", "seif", "eif", "eseif", "fastslam2"}) {
     ASSERT_TRUE(filter_registry().contains(name)) << name;
     EXPECT_EQ(make_filter(name, model)->name(), name);
   }
@@ -28,6 +29,13 @@ TEST(FilterRegistry, SettingsErrorsNameTheKey) {
   EXPECT_THROW(make_filter("rspkf", model, YAML::Load("iterations: 0"), "f.yaml"), InputError);
   EXPECT_THROW(make_filter("seif", model, YAML::Load("mean_recovery: magic"), "f.yaml"), InputError);
   EXPECT_THROW(make_filter("ekf", model, YAML::Load("joseph_form: maybe"), "f.yaml"), InputError);
+  EXPECT_THROW(make_filter("fastslam2", model, YAML::Load("particles: 0"), "f.yaml"), InputError);
+  EXPECT_THROW(make_filter("fastslam2", model, YAML::Load("resample_threshold: 2"), "f.yaml"), InputError);
+  auto f = make_filter("fastslam2", model, YAML::Load("{particles: 7, seed: 3}"), "f.yaml");
+  auto* particles = dynamic_cast<FastSlam*>(f.get());
+  ASSERT_NE(particles, nullptr);
+  ASSERT_TRUE(particles->initialize(Eigen::VectorXd::Zero(3), Eigen::MatrixXd::Identity(3, 3)).ok());
+  EXPECT_EQ(particles->particles().size(), 7u);
 }
 
 TEST(Filters, BadInputIsAStatusNotACrash) {

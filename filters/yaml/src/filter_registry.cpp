@@ -2,6 +2,7 @@
 
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/filters/eseif.hpp"
+#include "sextant/filters/fastslam.hpp"
 #include "sextant/filters/gaussian_filters.hpp"
 #include "sextant/filters/seif.hpp"
 #include "sextant/filters/yaml.hpp"
@@ -96,6 +97,17 @@ void fill(FilterRegistry& r) {
                                             std::to_string(model->pose_dim()) + ")");
           in.finish();
           return std::make_unique<Eseif>("eseif", std::move(model), s);
+        });
+  r.add("fastslam2", "FastSLAM 2.0 (Montemerlo et al. 2003): particles with per-landmark EKFs, shared map",
+        [](std::shared_ptr<const SlamModel> model, const YAML::Node& node, const std::string& file) {
+          SettingsReader in(node, file);
+          FastSlamSettings s;
+          in.read("particles", s.particles);
+          in.read("resample_threshold", s.resample_threshold);
+          check(in, s);
+          const std::uint64_t seed = read_seed(in);
+          in.finish();
+          return std::make_unique<FastSlam>(std::move(model), s, seed);
         });
   r.add("eif", "extended information filter: SEIF without sparsification, exact mean recovery",
         [](std::shared_ptr<const SlamModel> model, const YAML::Node& node, const std::string& file) {
