@@ -17,6 +17,7 @@
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/yaml.hpp"
 #include "sextant/odometry/yaml.hpp"
+#include "sextant/posegraph/loop_closing.hpp"
 #include "sextant/posegraph/relative_pose_factor.hpp"
 #include "sextant/synth/odometry.hpp"
 
@@ -52,21 +53,6 @@ PoseList guess_odometry(const synth::Campus& campus, const PoseGraphParams& para
   return synth::simulate_odometry(truth, campus.settings.odometry, odometry_rng);
 }
 
-/// Element-wise median of the matrices (a "typical" information), identity when empty.
-Matrix6d median_information(const std::vector<Matrix6d>& all) {
-  if (all.empty()) return Matrix6d::Identity();
-  Matrix6d out;
-  std::vector<double> v(all.size());
-  for (int r = 0; r < 6; ++r)
-    for (int c = 0; c < 6; ++c) {
-      for (std::size_t k = 0; k < all.size(); ++k) v[k] = all[k](r, c);
-      std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
-      out(r, c) = v[v.size() / 2];
-    }
-  Matrix6d L;
-  return sqrt_information(out, &L) ? out : Matrix6d::Identity();
-}
-
 /// A run's own deep copy of a method's YAML (yaml-cpp nodes are not safe to walk from several
 /// threads at once; the runs execute concurrently and share the session's methods).
 OdometryMethod private_copy(const OdometryMethod& m) {
@@ -76,35 +62,6 @@ OdometryMethod private_copy(const OdometryMethod& m) {
   copy.settings.reset(YAML::Clone(m.settings));  // reset: `=` would write into m's node
   copy.sampler_settings.reset(YAML::Clone(m.sampler_settings));
   return copy;
-}
-
-struct Closure {
-  LoopClosureCandidate candidate;
-  LoopClosureDecision decision;
-  Eigen::Isometry3d measured = Eigen::Isometry3d::Identity();
-  double seconds = 0.0;
-};
-
-std::vector<Closure> verify_closures(const PreloadedCampus& data, const LoopClosureSettings& settings,
-                                     const OdometryMethod& method, const PoseList& estimate,
-                                     std::set<std::pair<std::size_t, std::size_t>>& tried, Rng& rng) {
-  std::vector<Closure> closures;
-  for (const LoopClosureCandidate& c : find_loop_closure_candidates(estimate, settings))
-    if (tried.insert({c.i, c.j}).second) closures.push_back({c, {}, Eigen::Isometry3d::Identity(), 0.0});
-  std::vector<std::uint64_t> seeds(closures.size());
-  for (auto& s : seeds) s = rng.bits();
-  tbb::parallel_for(std::size_t{0}, closures.size(), [&](std::size_t k) {
-    Closure& c = closures[k];
-    const auto matcher = make_matcher(method.matcher, method.settings, "<loop closure>");
-    const auto sampler = make_sampler(method.sampler, method.sampler_settings, "<loop closure>");
-    Rng local(seeds[k]);
-    const PairMatch m = match_pair(*matcher, *sampler, data.clouds()[c.candidate.i],
-                                   data.clouds()[c.candidate.j], c.candidate.guess, local);
-    c.decision = judge_loop_closure(m.result, c.candidate, settings);
-    c.measured = m.result.T;
-    c.seconds = m.result.seconds + m.reference_seconds + m.sampling_seconds;
-  });
-  return closures;
 }
 
 /// `count` pairs (i, j), |i − j| ≥ the closures' index gap, truly ≥ min_distance apart.
@@ -120,38 +77,6 @@ std::vector<std::pair<std::size_t, std::size_t>> false_pairs(const PoseList& tru
     out.emplace_back(i, j);
   }
   return out;
-}
-
-/// The graph with its odometry edges' information divided by `inflation`, starting from `start`
-/// (its own initial poses when empty).
-PoseGraph scaled(const PoseGraph& g, double inflation, const PoseList& start = {}) {
-  PoseGraph out;
-  for (const Eigen::Isometry3d& T : start.size() == g.size() ? start : g.poses()) out.add_node(T);
-  for (const PoseGraphEdge& e : g.edges())
-    out.add_edge(e.i, e.j, e.measured,
-                 e.kind == EdgeKind::odometry ? Matrix6d(e.information / inflation) : e.information, e.kind);
-  return out;
-}
-
-/// How overconfident the odometry information R = H⁻¹ is, from the accepted closures: with the
-/// closures trusted fully (no robust loss) a consistent graph leaves each closure an error eᵀΩe of
-/// about 6 (χ²₆); the median over the closures / 6, applied and re-measured three times, is the
-/// variance inflation (≥ 1). 1 when nothing is accepted.
-double information_inflation(const PoseGraph& g, const PoseGraphSettings& settings) {
-  PoseGraphSettings plain = settings;
-  plain.loss = RobustLoss::none;
-  double inflation = 1.0;
-  for (int pass = 0; pass < 3; ++pass) {
-    PoseGraph probe = scaled(g, inflation);
-    const PoseGraphReport r = probe.optimize(plain);
-    if (!r.ok || r.closure_chi2.empty()) break;
-    std::vector<double> chi2 = r.closure_chi2;
-    std::nth_element(chi2.begin(), chi2.begin() + static_cast<std::ptrdiff_t>(chi2.size() / 2), chi2.end());
-    const double factor = chi2[chi2.size() / 2] / 6.0;
-    if (!(factor > 1.0) || !std::isfinite(factor)) break;
-    inflation *= factor;
-  }
-  return inflation;
 }
 
 void put_solve(const PoseGraphReport& r, const std::string& prefix, RunRow& row) {
@@ -206,66 +131,43 @@ void run_pose_graph_method(const PreloadedCampus& data, const PoseGraphParams& p
   const OdometryResult odometry = run_odometry(data, s, 0, n);
   Rng rng(seed ^ 0x5E20C105E5ULL);
 
-  // The graph over the chain: one odometry edge per registration, Ω from its Hessian (eq. 3.50);
-  // a step whose Hessian gives no positive-definite Ω (or that did not converge) gets the median Ω.
-  std::vector<Matrix6d> informations(odometry.steps.size());
-  std::vector<bool> usable(odometry.steps.size(), false);
-  std::vector<Matrix6d> good;
+  // The graph over the chain (one edge per registration, Ω from its Hessian, eq. 3.50) and its
+  // loops closed in rounds from the proximity search (posegraph/loop_closing.hpp).
+  std::vector<ChainStep> chain;
   double registration_seconds = 0.0, not_converged = 0.0;
-  for (std::size_t k = 0; k < odometry.steps.size(); ++k) {
-    const OdometryStep& st = odometry.steps[k];
+  for (const OdometryStep& st : odometry.steps) {
     registration_seconds += st.seconds;
     row.series["step_mean_score"].push_back(st.matched_points ? st.score / double(st.matched_points) : kNaN);
     not_converged += st.converged ? 0.0 : 1.0;
-    informations[k] = information_from_pose6_hessian(st.hessian, st.relative);
-    Matrix6d L;
-    usable[k] = st.converged && sqrt_information(informations[k], &L);
-    if (usable[k]) good.push_back(informations[k]);
+    chain.push_back({st.relative, st.hessian, st.converged});
   }
-  const Matrix6d typical = median_information(good);
-  PoseGraph graph;
-  for (const Eigen::Isometry3d& T : odometry.poses) graph.add_node(T);
-  for (std::size_t k = 0; k < odometry.steps.size(); ++k)
-    graph.add_edge(k, k + 1, odometry.steps[k].relative, usable[k] ? informations[k] : typical,
-                   EdgeKind::odometry);
-
-  // Rounds: candidates along the current estimate (the chain first, then the graph solved with the
-  // closures accepted so far, whose guesses are better), each pair tried once.
-  std::vector<Closure> closures;
-  std::vector<Matrix6d> accepted_information;
-  std::set<std::pair<std::size_t, std::size_t>> tried;
-  double closure_seconds = 0.0, solve_seconds = 0.0, solve_iterations = 0.0;
-  double inflation = 1.0;
+  const OdometryGraph odometry_edges = odometry_graph(odometry.poses, chain);
+  LoopClosingSettings closing;
+  closing.source = LoopCandidateSource::proximity;
+  closing.closure = params.loop_closure;
+  closing.graph = params.graph;
+  closing.rounds = params.closure_rounds;
+  closing.calibrate_information = params.calibrate_information;
+  const OdometryMethod closure_method = private_copy(closure);
+  const ClosureRegistration register_closure =
+      [&](std::size_t i, std::size_t j, const Eigen::Isometry3d& guess, std::uint64_t sampler_seed) {
+        const auto matcher = make_matcher(closure_method.matcher, closure_method.settings, "<loop closure>");
+        const auto sampler =
+            make_sampler(closure_method.sampler, closure_method.sampler_settings, "<loop closure>");
+        Rng local(sampler_seed);
+        const PairMatch m = match_pair(*matcher, *sampler, data.clouds()[i], data.clouds()[j], guess, local);
+        RegistrationResult r = m.result;
+        r.seconds += m.reference_seconds + m.sampling_seconds;
+        return r;
+      };
+  const LoopClosingResult closed = close_loops(odometry_edges.graph, {}, register_closure, closing, rng);
+  PoseGraph graph = closed.graph;
+  const std::vector<Matrix6d>& accepted_information = closed.accepted_information;
+  const Matrix6d& typical = odometry_edges.typical_information;
   PoseGraphSettings plain_settings = params.graph;
   plain_settings.loss = RobustLoss::none;
-  PoseGraph clean = graph;
-  PoseGraphReport solved = clean.optimize(params.graph);
-  const OdometryMethod closure_method = private_copy(closure);
-  for (std::size_t round = 0; round < params.closure_rounds; ++round) {
-    const std::vector<Closure> found =
-        verify_closures(data, params.loop_closure, closure_method, clean.poses(), tried, rng);
-    for (const Closure& c : found) {
-      closure_seconds += c.seconds;
-      if (!c.decision.accepted) continue;
-      graph.add_edge(c.candidate.i, c.candidate.j, c.measured, c.decision.information,
-                     EdgeKind::loop_closure);
-      accepted_information.push_back(c.decision.information);
-    }
-    closures.insert(closures.end(), found.begin(), found.end());
-    inflation = params.calibrate_information ? information_inflation(graph, params.graph) : 1.0;
-    // The verified closures are trusted first (no robust loss: from the chain, a true closure's error
-    // is far outside the robust loss' scale and would be switched off at once), then the robust loss
-    // refines from there.
-    PoseGraph trusted = scaled(graph, inflation);
-    const PoseGraphReport first = trusted.optimize(plain_settings);
-    clean = scaled(graph, inflation, first.ok ? trusted.poses() : PoseList{});
-    solved = clean.optimize(params.graph);
-    solve_seconds += first.seconds;
-    solve_iterations += first.iterations;
-    solve_seconds += solved.seconds;
-    solve_iterations += solved.iterations;
-    if (found.empty()) break;
-  }
+  double closure_seconds = 0.0;
+  for (const ClosureAttempt& c : closed.attempts) closure_seconds += c.seconds;
 
   // False closures: "same place" between truly distant poses, with a typical closure's information.
   const Matrix6d false_information =
@@ -274,32 +176,32 @@ void run_pose_graph_method(const PreloadedCampus& data, const PoseGraphParams& p
   for (const auto& [i, j] : pairs)
     graph.add_edge(i, j, Eigen::Isometry3d::Identity(), false_information, EdgeKind::loop_closure);
   // The false closure arrives into the solved map (as it would in incremental mapping).
-  PoseGraph robust = scaled(graph, inflation, clean.poses()), plain = robust;
+  PoseGraph robust = with_odometry_information_scaled(graph, closed.inflation, closed.poses), plain = robust;
   const PoseGraphReport robust_report = robust.optimize(params.graph);
   const PoseGraphReport plain_report = plain.optimize(plain_settings);
 
   put_metrics(odometry.poses, truth, "chained_", row);
-  put_metrics(clean.poses(), truth, "graph_", row);
+  put_metrics(closed.poses, truth, "graph_", row);
   put_metrics(robust.poses(), truth, "false_robust_", row);
   put_metrics(plain.poses(), truth, "false_plain_", row);
   row.series["truth"] = poses_to_series(truth);
-  put_solve(solved, "graph_solve_", row);
-  row.values["graph_solve_seconds"] = solve_seconds;  // every round's solve
-  row.values["graph_solve_iterations"] = solve_iterations;
+  put_solve(closed.solve, "graph_solve_", row);
+  row.values["graph_solve_seconds"] = closed.solve_seconds;  // every round's solve
+  row.values["graph_solve_iterations"] = closed.solve_iterations;
   put_solve(robust_report, "false_robust_solve_", row);
   put_solve(plain_report, "false_plain_solve_", row);
   auto& v = row.values;
   v["scans"] = static_cast<double>(n);
   v["registration_seconds"] = registration_seconds;
   v["not_converged"] = not_converged;
-  v["fallback_information"] = static_cast<double>(odometry.steps.size() - good.size());
+  v["fallback_information"] = static_cast<double>(odometry_edges.fallback_information);
   v["closure_seconds"] = closure_seconds;
-  v["information_inflation"] = inflation;
-  v["candidates"] = static_cast<double>(closures.size());
+  v["information_inflation"] = closed.inflation;
+  v["candidates"] = static_cast<double>(closed.attempts.size());
   v["accepted"] = static_cast<double>(accepted_information.size());
   v["false_closures"] = static_cast<double>(pairs.size());
   std::size_t accepted_index = 0;
-  for (const Closure& c : closures) {
+  for (const ClosureAttempt& c : closed.attempts) {
     auto& se = row.series;
     se["closure_i"].push_back(static_cast<double>(c.candidate.i));
     se["closure_j"].push_back(static_cast<double>(c.candidate.j));
@@ -311,8 +213,8 @@ void run_pose_graph_method(const PreloadedCampus& data, const PoseGraphParams& p
         relative(relative(truth[c.candidate.i], truth[c.candidate.j]), c.measured);
     se["closure_true_error_m"].push_back(translation_norm(error));
     se["closure_true_error_deg"].push_back(rotation_angle(error) * kDegPerRad);
-    const bool weighted = c.decision.accepted && accepted_index < solved.closure_weights.size();
-    se["closure_weight"].push_back(weighted ? solved.closure_weights[accepted_index] : kNaN);
+    const bool weighted = c.decision.accepted && accepted_index < closed.solve.closure_weights.size();
+    se["closure_weight"].push_back(weighted ? closed.solve.closure_weights[accepted_index] : kNaN);
     if (c.decision.accepted) ++accepted_index;
   }
   for (std::size_t k = 0; k < pairs.size(); ++k) {
