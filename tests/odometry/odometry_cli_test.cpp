@@ -215,6 +215,13 @@ TEST(OdometryCli, LoopClosureByPlaceRecognitionOnTheCampus) {
   const std::string metrics = read_text(tmp / "out" / "metrics.json");
   EXPECT_EQ(json_number(metrics, "accepted", "loop_closure"), static_cast<double>(accepted)) << metrics;
   EXPECT_LT(json_number(metrics, "ate_m", "estimate"), json_number(metrics, "ate_m", "chained")) << metrics;
+  // Scored against the campus' true revisits (proximity candidates: none were searched).
+  EXPECT_EQ(json_number(metrics, "accepted", "descriptor"), static_cast<double>(accepted)) << metrics;
+  EXPECT_EQ(json_number(metrics, "accepted_wrong", "descriptor"), 0.0) << metrics;
+  EXPECT_GE(json_number(metrics, "precision", "descriptor"), 0.9) << metrics;
+  EXPECT_GT(json_number(metrics, "recall", "descriptor"), 0.0) << metrics;
+  EXPECT_EQ(metrics.find("\"proximity\""), std::string::npos) << metrics;
+  EXPECT_NE(r.output.find("descriptor candidates"), std::string::npos) << r.output;
 }
 
 // Issue 26: -q keeps the results (the trust counts and the accuracy) and drops the rest; -v adds a

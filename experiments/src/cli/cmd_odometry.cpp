@@ -234,11 +234,25 @@ int run_odometry_command(const OdometryOptions& o) {
   if (loops) {
     write_trajectories(out / "chained", *dataset, o.first, result.poses, std::nullopt);
     write_loop_closures_csv(out / "loop_closures.csv", o.first, *loops, truth);
-    loop_summary =
-        LoopClosureSummary{o.loop_closure, loops->closing.attempts.size(), loops->closing.accepted(),
-                           loops->seconds, loops->descriptor_seconds,      std::nullopt};
+    loop_summary = LoopClosureSummary{o.loop_closure,
+                                      loops->closing.attempts.size(),
+                                      loops->closing.accepted(),
+                                      loops->seconds,
+                                      loops->descriptor_seconds,
+                                      std::nullopt,
+                                      {}};
     std::string problem;
     if (truth && scans >= 2) loop_summary->chained = trajectory_accuracy(result.poses, *truth, &problem);
+    if (truth)
+      for (const SourceScore& score : score_sources(*loops, *truth)) {
+        const LoopDetectionScore& c = score.candidates;
+        loop_summary->sources.push_back({to_string(score.source),
+                                         {{"candidates", double(c.candidates)},
+                                          {"precision", c.precision},
+                                          {"recall", c.recall},
+                                          {"accepted", double(score.accepted)},
+                                          {"accepted_wrong", double(score.accepted_wrong)}}});
+      }
   }
   write_metrics_json(out / "metrics.json", estimate_accuracy, odometry_accuracy, scans, counts, seconds,
                      loop_summary);
@@ -257,6 +271,14 @@ int run_odometry_command(const OdometryOptions& o) {
     std::cout << "loops:    " << loops->closing.accepted() << " of " << loops->closing.attempts.size()
               << " candidates closed (" << o.loop_closure << "; " << loops->place_matches
               << " place matches), in " << std::setprecision(1) << loops->seconds << " s\n";
+  if (loop_summary)
+    for (const auto& [source, numbers] : loop_summary->sources) {
+      std::cout << "  " << std::setw(10) << std::left << source << std::right;
+      for (const auto& [key, value] : numbers)
+        std::cout << " " << key << " " << std::setprecision(key == "precision" || key == "recall" ? 2 : 0)
+                  << value;
+      std::cout << "\n";
+    }
   if (loop_summary && loop_summary->chained)
     std::cout << "chained:  " << accuracy_line(*loop_summary->chained) << " (before closing the loops)\n";
   if (!truth) {

@@ -65,6 +65,33 @@ OdometryLoopClosure close_odometry_loops(const Dataset& dataset, std::size_t fir
   return out;
 }
 
+std::vector<SourceScore> score_sources(const OdometryLoopClosure& closure,
+                                       const std::vector<Eigen::Isometry3d>& truth) {
+  const LoopClosingSettings defaults;
+  RevisitSettings revisit;
+  revisit.radius = defaults.closure.radius;
+  revisit.min_index_gap = defaults.closure.min_index_gap;
+  revisit.tolerance = defaults.closure.stride;
+  std::vector<SourceScore> out;
+  for (const LoopCandidateSource source : {LoopCandidateSource::proximity, LoopCandidateSource::descriptor}) {
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    SourceScore score;
+    score.source = source;
+    for (const ClosureAttempt& a : closure.closing.attempts) {
+      if (a.source != source) continue;
+      pairs.emplace_back(a.candidate.i, a.candidate.j);
+      if (!a.decision.accepted) continue;
+      ++score.accepted;
+      const double apart = (truth[a.candidate.i].translation() - truth[a.candidate.j].translation()).norm();
+      score.accepted_wrong += apart > revisit.radius ? 1 : 0;
+    }
+    if (pairs.empty()) continue;
+    score.candidates = score_loop_candidates(pairs, truth, revisit);
+    out.push_back(score);
+  }
+  return out;
+}
+
 void write_loop_closures_csv(const std::filesystem::path& file, std::size_t first,
                              const OdometryLoopClosure& closure,
                              const std::optional<std::vector<Eigen::Isometry3d>>& truth) {

@@ -12,6 +12,7 @@
 #include <Eigen/Geometry>
 
 #include "sextant/core/dataset.hpp"
+#include "sextant/eval/loop_detection_metrics.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/posegraph/loop_closing.hpp"
 
@@ -28,6 +29,20 @@ struct OdometryLoopClosure {
 OdometryLoopClosure close_odometry_loops(const Dataset& dataset, std::size_t first, std::size_t count,
                                          const OdometryResult& chain, const OdometrySettings& settings,
                                          LoopCandidateSource source);
+
+/// How one candidate source did against the ground truth: its candidates' precision and recall
+/// of the true revisits (eval/loop_detection_metrics.hpp: within the proximity radius, 10 m, at
+/// least 30 scans apart; a candidate finds the revisiting scans within its stride), and how many
+/// of its accepted closures join scans that are truly not the same place.
+struct SourceScore {
+  LoopCandidateSource source = LoopCandidateSource::proximity;
+  LoopDetectionScore candidates;
+  std::size_t accepted = 0, accepted_wrong = 0;
+};
+
+/// One score per source that proposed candidates (in the order proximity, descriptor).
+std::vector<SourceScore> score_sources(const OdometryLoopClosure& closure,
+                                       const std::vector<Eigen::Isometry3d>& truth);
 
 /// loop_closures.csv: scans, source, descriptor distance, decision and its measures, and (with
 /// ground truth) the verified registration's error against the true relative pose.

@@ -120,6 +120,11 @@ void write_metrics_json(const std::filesystem::path& file, const std::optional<T
                                {"seconds", json_value(loops->seconds)},
                                {"descriptor_seconds", json_value(loops->descriptor_seconds)},
                                {"chained", loops->chained ? accuracy_json(*loops->chained) : Json()}};
+  if (loops)
+    for (const auto& [source, numbers] : loops->sources) {
+      Json& entry = metrics["loop_closure"]["sources"][source];
+      for (const auto& [key, value] : numbers) entry[key] = json_value(value);
+    }
   write_file_atomically(file, json_line(metrics) + "\n");
 }
 

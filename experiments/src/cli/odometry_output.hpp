@@ -48,6 +48,9 @@ struct LoopClosureSummary {
   std::size_t candidates = 0, accepted = 0;
   double seconds = 0.0, descriptor_seconds = 0.0;
   std::optional<TrajectoryAccuracy> chained;
+  /// Per source, with ground truth: "proximity" / "descriptor" → candidates, precision, recall,
+  /// accepted, accepted_wrong (odometry_loop_closure.hpp).
+  std::vector<std::pair<std::string, std::vector<std::pair<std::string, double>>>> sources;
 };
 
 /// metrics.json: the step counts, the estimate's accuracy and, when the dataset has odometry, the
