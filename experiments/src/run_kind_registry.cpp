@@ -16,6 +16,8 @@ const RunKindRegistry& run_kind_registry() {
           [] { return make_plane_slam_kind(); });
     r.add("pose_graph", "chained scan matching, a pose graph with loop closures, and the plane-SLAM filters",
           [] { return make_pose_graph_kind(); });
+    r.add("place_recognition", "loop-closure candidates by proximity or Scan Context under inflated drift",
+          [] { return make_place_recognition_kind(); });
     r.add("registration", "scan pairs with an initial guess, any matcher × sampler",
           [] { return make_registration_kind(); });
     r.add("sequence", "a matcher over a sequence of scans, chained or fused with odometry by a KF",

@@ -8,6 +8,7 @@ namespace sextant {
 
 std::unique_ptr<RunKind> make_metric_examples_kind();
 std::unique_ptr<RunKind> make_plane_slam_kind();
+std::unique_ptr<RunKind> make_place_recognition_kind();
 std::unique_ptr<RunKind> make_pose_graph_kind();
 std::unique_ptr<RunKind> make_registration_kind();
 std::unique_ptr<RunKind> make_selftest_kind();

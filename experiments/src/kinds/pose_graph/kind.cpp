@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "kinds.hpp"
+#include "kit/campus.hpp"
 #include "pose_graph/params.hpp"
 #include "pose_graph/pipeline.hpp"
 #include "pose_graph/report.hpp"
@@ -18,19 +19,6 @@ namespace {
 
 constexpr char kKind[] = "pose_graph";
 
-synth::CampusSettings campus_settings(const ExperimentConfig& config, std::uint64_t* seed) {
-  if (config.dataset.source != DatasetSource::kSynthetic)
-    throw InputError(config.file, "", "key 'dataset': the pose_graph kind needs source: synthetic");
-  *seed = config.dataset.seed;
-  return synth::read_campus_settings(config.dataset.campus, config.file, seed);
-}
-
-synth::Campus open_campus(const ExperimentConfig& config) {
-  std::uint64_t seed = 0;
-  const synth::CampusSettings settings = campus_settings(config, &seed);
-  return synth::generate_campus(settings, seed);
-}
-
 class PoseGraphSession : public KindSession {
  public:
   PoseGraphSession(const ExperimentConfig& config, PoseGraphParams params,
@@ -38,7 +26,7 @@ class PoseGraphSession : public KindSession {
       : file_(config.file),
         params_(std::move(params)),
         methods_(std::move(methods)),
-        campus_(open_campus(config)),
+        campus_(open_campus(config, kKind)),
         data_(campus_, params_.scans ? params_.scans : campus_.size(),
               params_.filters.landmarks == LandmarkSource::kTrue) {}
 
@@ -79,7 +67,7 @@ class PoseGraphKind : public RunKind {
       throw InputError(config.file, "",
                        "key 'sweep': the pose_graph kind has no sweep axes (use repetitions)");
     std::uint64_t seed = 0;
-    const synth::CampusSettings campus = campus_settings(config, &seed);
+    const synth::CampusSettings campus = campus_settings(config, kKind, &seed);
     if (params.scans > static_cast<std::size_t>(campus.trajectory.scans))
       throw InputError(config.file, "", "key 'scans': more than the campus' trajectory.scans");
     if (params.scans == 1) throw InputError(config.file, "", "key 'scans': a sequence needs ≥ 2 scans");
