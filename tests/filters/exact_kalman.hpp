@@ -2,10 +2,13 @@
 // The exact Kalman filter over the joint state [pose; landmarks] of the linear-Gaussian SLAM
 // model (LinearSlamModel: x' = A x + B u, z = m − C x, m = C x + z), written densely and
 // independently of the filters: the reference of linear_gaussian_test.cpp and fastslam_test.cpp.
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/LU>
+
+#include "sextant/filters/range_bearing_model.hpp"
 
 namespace sextant::test {
 
@@ -54,5 +57,25 @@ struct ExactKalman {
     P = J * Pj * J.transpose();
   }
 };
+
+/// The linear-Gaussian test problem both tests run: the model, its matrices, the first state.
+struct LinearScenario {
+  std::shared_ptr<LinearSlamModel> model;
+  Eigen::MatrixXd A, B, C, Q, R, P0;
+  Eigen::VectorXd x0;
+};
+
+inline LinearScenario linear_scenario() {
+  LinearScenario s;
+  s.A = (Eigen::MatrixXd(2, 2) << 1.0, 0.1, -0.05, 0.95).finished();
+  s.B = (Eigen::MatrixXd(2, 2) << 1.0, 0.0, 0.2, 1.0).finished();
+  s.C = (Eigen::MatrixXd(2, 2) << 1.0, 0.0, 0.3, 1.0).finished();
+  s.Q = (Eigen::MatrixXd(2, 2) << 0.04, 0.01, 0.01, 0.09).finished();
+  s.R = (Eigen::MatrixXd(2, 2) << 0.25, -0.05, -0.05, 0.16).finished();
+  s.P0 = (Eigen::MatrixXd(2, 2) << 0.5, 0.1, 0.1, 0.3).finished();
+  s.x0 = Eigen::Vector2d(1.0, -1.0);
+  s.model = std::make_shared<LinearSlamModel>(s.A, s.B, s.C);
+  return s;
+}
 
 }  // namespace sextant::test

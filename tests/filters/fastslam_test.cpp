@@ -53,24 +53,8 @@ TEST(FastSlam, LandmarkUpdateOfOneParticleIsTheEkfFormula) {
   EXPECT_LT((filter.particles()[0].pose - pose).norm(), 1e-15);  // Σ_s = 0: the pose stays
 }
 
-struct LinearScenario {
-  std::shared_ptr<LinearSlamModel> model;
-  Eigen::MatrixXd A, B, C, Q, R, P0;
-  Eigen::VectorXd x0;
-};
-
-LinearScenario linear_scenario() {
-  LinearScenario s;
-  s.A = (Eigen::MatrixXd(2, 2) << 1.0, 0.1, -0.05, 0.95).finished();
-  s.B = (Eigen::MatrixXd(2, 2) << 1.0, 0.0, 0.2, 1.0).finished();
-  s.C = (Eigen::MatrixXd(2, 2) << 1.0, 0.0, 0.3, 1.0).finished();
-  s.Q = (Eigen::MatrixXd(2, 2) << 0.04, 0.01, 0.01, 0.09).finished();
-  s.R = (Eigen::MatrixXd(2, 2) << 0.25, -0.05, -0.05, 0.16).finished();
-  s.P0 = (Eigen::MatrixXd(2, 2) << 0.5, 0.1, 0.1, 0.3).finished();
-  s.x0 = Eigen::Vector2d(1.0, -1.0);
-  s.model = std::make_shared<LinearSlamModel>(s.A, s.B, s.C);
-  return s;
-}
+using test::linear_scenario;
+using test::LinearScenario;
 
 /// A draw from N(0, S).
 Eigen::VectorXd noise(const Eigen::MatrixXd& S, Rng& rng) {

@@ -14,28 +14,12 @@
 namespace sextant {
 namespace {
 
-struct Scenario {
-  std::shared_ptr<LinearSlamModel> model;
-  Eigen::MatrixXd A, B, C, Q, R, P0;
-  Eigen::VectorXd x0;
-};
-
-Scenario make_scenario() {
-  Scenario s;
-  s.A = (Eigen::MatrixXd(2, 2) << 1.0, 0.1, -0.05, 0.95).finished();
-  s.B = (Eigen::MatrixXd(2, 2) << 1.0, 0.0, 0.2, 1.0).finished();
-  s.C = (Eigen::MatrixXd(2, 2) << 1.0, 0.0, 0.3, 1.0).finished();
-  s.Q = (Eigen::MatrixXd(2, 2) << 0.04, 0.01, 0.01, 0.09).finished();
-  s.R = (Eigen::MatrixXd(2, 2) << 0.25, -0.05, -0.05, 0.16).finished();
-  s.P0 = (Eigen::MatrixXd(2, 2) << 0.5, 0.1, 0.1, 0.3).finished();
-  s.x0 = Eigen::Vector2d(1.0, -1.0);
-  s.model = std::make_shared<LinearSlamModel>(s.A, s.B, s.C);
-  return s;
-}
+using test::linear_scenario;
+using test::LinearScenario;
 
 // Runs the same random sequence through the filter and the exact KF; returns the worst
 // relative difference of mean and covariance over the run.
-double worst_difference(Filter& filter, const Scenario& s, int landmarks = 3) {
+double worst_difference(Filter& filter, const LinearScenario& s, int landmarks = 3) {
   test::ExactKalman kf{s.A, s.B, s.C, s.x0, s.P0};
   EXPECT_TRUE(filter.initialize(s.x0, s.P0).ok());
   Rng rng(11);
@@ -74,7 +58,7 @@ double worst_difference(Filter& filter, const Scenario& s, int landmarks = 3) {
 }
 
 TEST(LinearGaussian, EveryFilterMatchesTheExactKalmanFilter) {
-  const Scenario s = make_scenario();
+  const LinearScenario s = linear_scenario();
   YAML::Node seif_unbounded = YAML::Load("{max_active_landmarks: 0, mean_recovery: exact}");
   YAML::Node seif_wide = YAML::Load("{max_active_landmarks: 10, mean_recovery: exact}");
   YAML::Node joseph = YAML::Load("{joseph_form: true}");
@@ -101,7 +85,7 @@ TEST(LinearGaussian, EveryFilterMatchesTheExactKalmanFilter) {
 // must not cost exactness on a linear-Gaussian problem, at any state size; nor the scaled
 // transform with α = 1e-3 (W₀ ≈ −10⁶).
 TEST(LinearGaussian, UnscentedVariantsWithNegativeCentreWeightsMatchTheExactKalmanFilter) {
-  const Scenario s = make_scenario();
+  const LinearScenario s = linear_scenario();
   const YAML::Node julier = YAML::Load("{alpha: 1.0, beta: 0.0, kappa_three_minus_n: true}");
   const YAML::Node julier_beta = YAML::Load("{alpha: 1.0, beta: 2.0, kappa_three_minus_n: true}");
   const YAML::Node scaled = YAML::Load("{alpha: 1.0e-3, beta: 2.0, kappa: 0.0}");
