@@ -20,6 +20,7 @@
 #include <map>
 #include <set>
 
+#include "kit/row_keys.hpp"
 #include "plane_slam/report.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
@@ -104,7 +105,7 @@ std::vector<std::string> sweep_points(const ExperimentConfig& config) {
 std::map<int, bool> failed(const PlaneSlamGroup& g) {
   std::map<int, bool> out;
   for (const RunRow* r : g.rows) {
-    const double f = r->value("failed_steps");
+    const double f = r->value(keys::kFailedSteps);
     out[r->repetition] = std::isfinite(f) && f > 0.0;
   }
   for (const RunRow* r : g.ended) out[r->repetition] = true;
