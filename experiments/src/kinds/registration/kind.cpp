@@ -16,6 +16,7 @@
 #include "kit/adaptive_start.hpp"
 #include "kit/dataset_source.hpp"
 #include "kit/row_keys.hpp"
+#include "registration/layouts/layouts.hpp"
 #include "registration/report.hpp"
 #include "registration/row_keys.hpp"
 #include "registration/scenes.hpp"
@@ -165,7 +166,7 @@ class RegistrationSession : public KindSession {
     row.series[keys::kScore] = std::move(score);
     row.series[keys::kLayer] = std::move(layer);
     row.series["step_norm"] = std::move(step);
-    if (displaced || params_.report == RegistrationLayout::kZeroGuess) {
+    if (displaced || params_.report->trace_xi) {
       std::vector<double> xi;  // [tx ty tz α β γ] after each iteration, eq. (3.12) (figs 5.3, 5.5, 5.12)
       for (const auto& t : m.result.trace) xi.insert(xi.end(), t.xi.data(), t.xi.data() + 6);
       row.series[keys::kTraceXi] = std::move(xi);
@@ -269,10 +270,9 @@ class RegistrationKind : public RunKind {
     if (params.pairs == PairSource::kDisplaced)
       check_displaced_sweep(config, read_displaced_settings(config, params));
     check_experiment_dataset(config, "registration");
-    check_registration_reference(config, params);
+    params.report->check_reference(config);
     for (const auto& m : config.methods) {
-      if (params.report != RegistrationLayout::kInitLayer &&
-          read_registration_method(m.node, config.file).adaptive)
+      if (!params.report->adaptive_start && read_registration_method(m.node, config.file).adaptive)
         throw InputError(
             config.file, at_line(yaml_line(m.node)),
             "key 'adaptive_start': the adaptive starting layer is reported by report: init_layer only");
@@ -291,15 +291,7 @@ class RegistrationKind : public RunKind {
     for (auto& r : used) {
       if (r && r->values.count("skipped") && r->value("skipped") > 0.5) r = nullptr;
     }
-    switch (params.report) {
-      case RegistrationLayout::kBasin: return basin_report(config, params, runs, used);
-      case RegistrationLayout::kInitLayer: return init_layer_report(config, params, runs, used);
-      case RegistrationLayout::kSampling: return sampling_report(config, params, runs, used);
-      case RegistrationLayout::kStrategies: return strategies_report(config, params, runs, used);
-      case RegistrationLayout::kZeroGuess: return zero_guess_report(config, params, runs, used);
-      case RegistrationLayout::kAccuracy: break;
-    }
-    return accuracy_report(config, params, runs, used);
+    return params.report->report(config, params, runs, used);
   }
 };
 
