@@ -15,6 +15,7 @@
 #include "kit/dataset_source.hpp"
 #include "kit/row_codec.hpp"
 #include "kit/row_keys.hpp"
+#include "sequence/layouts/layouts.hpp"
 #include "sequence/report.hpp"
 #include "sequence/row_keys.hpp"
 #include "sequence/settings.hpp"
@@ -220,7 +221,7 @@ class SequenceKind : public RunKind {
     if (params.odometry == SequenceOdometry::kDataset && config.repetitions > 1)
       throw InputError(config.file, "",
                        "key 'repetitions': with odometry: dataset every repetition would be identical");
-    check_sequence_reference(config, params);
+    params.report->check_reference(config);
   }
 
   std::unique_ptr<KindSession> prepare(const ExperimentConfig& config, const PrepareContext&) const override {
@@ -230,8 +231,7 @@ class SequenceKind : public RunKind {
   ReportSection report(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
                        const std::vector<const RunRow*>& rows) const override {
     const SequenceParams params = read_sequence_params(config);
-    if (params.report == SequenceLayout::kKalman) return kalman_report(config, params, runs, rows);
-    return dead_reckoning_report(config, params, runs, rows);
+    return params.report->report(config, params, runs, rows);
   }
 };
 
