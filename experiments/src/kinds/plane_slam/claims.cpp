@@ -194,8 +194,7 @@ std::vector<Claim> declared_claims(const ExperimentConfig& config, const PlaneSl
   return out;
 }
 
-void check_plane_slam_reference(const ExperimentConfig& config, const PlaneSlamParams& params) {
-  (void)params;
+void check_plane_slam_reference(const ExperimentConfig& config) {
   const YAML::Node& ref = config.reference;
   if (!ref.IsDefined() || ref.IsNull()) return;
   if (!ref.IsMap()) throw InputError(config.file, at_line(yaml_line(ref)), "key 'reference' must be a map");

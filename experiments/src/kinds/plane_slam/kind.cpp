@@ -16,6 +16,7 @@
 #include "kinds.hpp"
 #include "kit/plane_slam_driver.hpp"
 #include "kit/row_keys.hpp"
+#include "plane_slam/layouts/layouts.hpp"
 #include "plane_slam/report.hpp"
 #include "plane_slam/row_keys.hpp"
 #include "sextant/core/chi_square.hpp"
@@ -292,6 +293,7 @@ class PlaneSlamKind : public RunKind {
 
   void validate(const ExperimentConfig& config) const override {
     const PlaneSlamParams params = read_plane_slam_params(config);
+    const PlaneSlamLayout& layout = plane_slam_layout(config, params);
     for (const PlaneSlamMethod& m : read_methods(config)) {
       (void)plane_slam_settings(params, m, kNaN, config.file);
       if (m.motion == MotionSource::kFbmlndt && params.landmarks != LandmarkSource::kExtracted)
@@ -309,7 +311,7 @@ class PlaneSlamKind : public RunKind {
     if (params.scans > static_cast<std::size_t>(campus.trajectory.scans))
       throw InputError(config.file, "", "key 'scans': more than the campus' trajectory.scans");
     check_plane_slam_claims(config, params);
-    check_plane_slam_reference(config, params);
+    layout.check_reference(config);
   }
 
   std::unique_ptr<KindSession> prepare(const ExperimentConfig& config, const PrepareContext&) const override {
@@ -319,15 +321,9 @@ class PlaneSlamKind : public RunKind {
   ReportSection report(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
                        const std::vector<const RunRow*>& rows) const override {
     const PlaneSlamParams params = read_plane_slam_params(config);
+    const PlaneSlamLayout& layout = plane_slam_layout(config, params);
     const PlaneSlamRows data = collect_plane_slam_rows(config, runs, rows);
-    switch (params.report) {
-      case PlaneSlamLayout::kSeif: return seif_report(config, params, data);
-      case PlaneSlamLayout::kBenchmark: return benchmark_report(config, params, data);
-      case PlaneSlamLayout::kEseif: return eseif_report(config, params, data);
-      case PlaneSlamLayout::kHybrid: return hybrid_report(config, params, data);
-      case PlaneSlamLayout::kAccuracy: break;
-    }
-    return accuracy_report(config, params, data);
+    return layout.report(config, params, data);
   }
 };
 
