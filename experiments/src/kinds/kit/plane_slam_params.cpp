@@ -80,12 +80,7 @@ PlaneSlamParams read_plane_slam_params(const ExperimentConfig& config) {
   p.odometry = read_choice<OdometrySource>(
       in, "odometry", OdometrySource::kCampus,
       {{"campus", OdometrySource::kCampus}, {"resample", OdometrySource::kResample}});
-  p.report = read_choice<PlaneSlamLayout>(in, "report", PlaneSlamLayout::kAccuracy,
-                                          {{"accuracy", PlaneSlamLayout::kAccuracy},
-                                           {"seif", PlaneSlamLayout::kSeif},
-                                           {"benchmark", PlaneSlamLayout::kBenchmark},
-                                           {"eseif", PlaneSlamLayout::kEseif},
-                                           {"hybrid", PlaneSlamLayout::kHybrid}});
+  in.read("report", p.report);  // a name of plane_slam/layouts/layouts.cpp, checked by that kind
   p.scans = read_count(in, "scans", 0);
   p.min_points = read_count(in, "min_points", p.min_points);
   p.ellipse_every = read_count(in, "ellipse_every", p.ellipse_every);

@@ -50,7 +50,6 @@ namespace sextant {
 
 enum class LandmarkSource { kTrue, kExtracted };
 enum class OdometrySource { kCampus, kResample };
-enum class PlaneSlamLayout { kAccuracy, kSeif, kBenchmark, kEseif, kHybrid };
 enum class MotionSource { kOdometry, kFbmlndt };
 
 /// Hybrid SLAM: how the FbML-NDT relative pose becomes the motion prediction.
@@ -68,7 +67,7 @@ struct PlaneSlamParams {
   std::size_t min_points = 300;
   OdometrySource odometry = OdometrySource::kCampus;
   YAML::Node slam;  ///< PlaneSlamSettings keys without `filter` / `filter_settings` (may be null)
-  PlaneSlamLayout report = PlaneSlamLayout::kAccuracy;
+  std::string report = "accuracy";  ///< the plane_slam kind's layout (checked against its table)
   std::vector<std::size_t> information_at;
   double nees_probability = 0.99;
   bool marginal_nees = false;      ///< also record the NEES from the exact marginal (SEIF: of Ω)

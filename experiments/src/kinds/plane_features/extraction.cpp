@@ -25,6 +25,7 @@
 
 #include "kit/dataset_source.hpp"
 #include "plane_features/extraction.hpp"
+#include "plane_features/row_keys.hpp"
 #include "plane_features/study.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
@@ -90,12 +91,12 @@ class ExtractionSession : public KindSession {
       throw std::runtime_error("scan " + std::to_string(i + 1) + " is past the campus");
     const ScanFeatures a = features(i), b = features(i + 1);
     const ExtractionStatistics& st = a.extraction.stats;
-    row.values["points"] = static_cast<double>(st.points);
-    row.values["cell_planes"] = static_cast<double>(st.cell_planes);
-    row.values["merged_planes"] = static_cast<double>(st.merged_planes);
-    row.values["horizontal_removed"] = static_cast<double>(st.horizontal_removed);
-    row.values["too_small_removed"] = static_cast<double>(st.too_small_removed);
-    row.values["landmarks"] = static_cast<double>(st.landmarks);
+    row.values[keys::kPoints] = static_cast<double>(st.points);
+    row.values[keys::kCellPlanes] = static_cast<double>(st.cell_planes);
+    row.values[keys::kMergedPlanes] = static_cast<double>(st.merged_planes);
+    row.values[keys::kHorizontalRemoved] = static_cast<double>(st.horizontal_removed);
+    row.values[keys::kTooSmallRemoved] = static_cast<double>(st.too_small_removed);
+    row.values[keys::kLandmarks] = static_cast<double>(st.landmarks);
     row.values["extraction_seconds"] = st.seconds;
 
     // Extraction precision (features on a true plane within the tolerances) and recall (true
@@ -113,18 +114,18 @@ class ExtractionSession : public KindSession {
       ++visible;
       recalled += found.count(v.landmark);
     }
-    row.values["true_positives"] = static_cast<double>(tp);
-    row.values["visible_true_planes"] = static_cast<double>(visible);
-    row.values["recalled_true_planes"] = static_cast<double>(recalled);
+    row.values[keys::kTruePositives] = static_cast<double>(tp);
+    row.values[keys::kVisibleTruePlanes] = static_cast<double>(visible);
+    row.values[keys::kRecalledTruePlanes] = static_cast<double>(recalled);
 
     const Eigen::Isometry3d truth = campus_->ground_truth[i].inverse() * campus_->ground_truth[i + 1];
     const Eigen::Isometry3d odometry = campus_->odometry[i].inverse() * campus_->odometry[i + 1];
-    row.values["true_yaw_deg"] = std::atan2(truth.rotation()(1, 0), truth.rotation()(0, 0)) * 180.0 / kPi;
-    row.values["true_translation_m"] = truth.translation().norm();
+    row.values[keys::kTrueYawDeg] = std::atan2(truth.rotation()(1, 0), truth.rotation()(0, 0)) * 180.0 / kPi;
+    row.values[keys::kTrueTranslationM] = truth.translation().norm();
     std::set<int> in_map(a.truth.begin(), a.truth.end());
     std::size_t possible = 0;  // features of scan i + 1 whose true plane scan i also has
     for (int id : b.truth) possible += id >= 0 && in_map.count(id) ? 1 : 0;
-    row.values["association_possible"] = static_cast<double>(possible);
+    row.values[keys::kAssociationPossible] = static_cast<double>(possible);
     const std::map<std::string, Eigen::Isometry3d> poses{
         {"none", Eigen::Isometry3d::Identity()}, {"odometry", odometry}, {"truth", truth}};
     AssociationResult predicted;  // fig. 5.24
@@ -188,7 +189,7 @@ class ExtractionSession : public KindSession {
     }
     const Eigen::Isometry3d& pose = campus_->ground_truth[i];  // fig. 5.25
     store_hulls(a.extraction.landmarks, pose, "world_hull", row);
-    row.values["pose_x"] = pose.translation().x(), row.values["pose_y"] = pose.translation().y();
+    row.values[keys::kPoseX] = pose.translation().x(), row.values[keys::kPoseY] = pose.translation().y();
   }
 
   ScanFeatures features(std::size_t scan) const {

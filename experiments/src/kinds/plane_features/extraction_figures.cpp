@@ -7,6 +7,7 @@
 
 #include "kit/number_format.hpp"
 #include "plane_features/extraction.hpp"
+#include "plane_features/row_keys.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/experiments/run_row.hpp"
 
@@ -65,7 +66,7 @@ std::vector<ReportFigure> extraction_figures(const ExtractionStudyParams& p,
     figures.push_back({"cell_segments_scan_" + scan,
                        "Fig. 5.21: convex hulls of the plane segments found in the " +
                            format_number(p.extraction.cell_size, 1) + " m cells of scan " + scan + " (" +
-                           format_number(r->value("cell_planes"), 0) +
+                           format_number(r->value(keys::kCellPlanes), 0) +
                            " segments) before merging; horizontal ones (ground) in grey",
                        render_svg(plot)});
   }
@@ -79,7 +80,8 @@ std::vector<ReportFigure> extraction_figures(const ExtractionStudyParams& p,
     plot.series.push_back(outline(*r, "hull", "merged features after ground removal", "#1f77b4"));
     figures.push_back({"features_scan_" + std::to_string(scan),
                        "Figs 5.22–5.23: convex hulls of the merged features of scan " + std::to_string(scan) +
-                           " after ground removal (" + format_number(r->value("landmarks"), 0) + " features)",
+                           " after ground removal (" + format_number(r->value(keys::kLandmarks), 0) +
+                           " features)",
                        render_svg(plot)});
   }
   // Fig. 5.24: correspondence across the turn under the predicted pose.
@@ -96,7 +98,7 @@ std::vector<ReportFigure> extraction_figures(const ExtractionStudyParams& p,
     figures.push_back({"correspondence_scans_" + a + "_" + b,
                        "Fig. 5.24: the features of scan " + b + " moved into scan " + a +
                            "'s frame by the predicted (odometry) pose across the " +
-                           format_number(std::abs(r->value("true_yaw_deg")), 1) + "° turn, " +
+                           format_number(std::abs(r->value(keys::kTrueYawDeg)), 1) + "° turn, " +
                            format_number(r->value("assoc_odometry_matches"), 0) + " associated pairs (" +
                            format_number(r->value("assoc_odometry_correct"), 0) +
                            " correct); one corresponded pair in dark colours",
@@ -109,8 +111,8 @@ std::vector<ReportFigure> extraction_figures(const ExtractionStudyParams& p,
   for (const auto& [scan, r] : by_scan) {
     append(hulls.x, series_or_empty(*r, "world_hull_x")),
         append(hulls.y, series_or_empty(*r, "world_hull_y"));
-    if (std::isfinite(r->value("pose_x")))
-      poses.x.push_back(r->value("pose_x")), poses.y.push_back(r->value("pose_y"));
+    if (std::isfinite(r->value(keys::kPoseX)))
+      poses.x.push_back(r->value(keys::kPoseX)), poses.y.push_back(r->value(keys::kPoseY));
   }
   if (!poses.x.empty()) {
     map.series = {hulls, poses};

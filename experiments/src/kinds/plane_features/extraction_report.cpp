@@ -8,6 +8,7 @@
 #include "kit/number_format.hpp"
 #include "kit/reference_values.hpp"
 #include "plane_features/extraction.hpp"
+#include "plane_features/row_keys.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/verdict.hpp"
 #include "sextant/experiments/run_row.hpp"
@@ -140,20 +141,20 @@ ReportSection extraction_report(const ExperimentConfig& config, const Extraction
   std::vector<double> sx, prec, rec;
   for (const auto& [scan, r] : by_scan) {
     sx.push_back(static_cast<double>(scan));
-    prec.push_back(r->value("true_positives") / r->value("landmarks"));
-    rec.push_back(r->value("recalled_true_planes") / r->value("visible_true_planes"));
+    prec.push_back(r->value(keys::kTruePositives) / r->value(keys::kLandmarks));
+    rec.push_back(r->value(keys::kRecalledTruePlanes) / r->value(keys::kVisibleTruePlanes));
     if (scan >= p.first_scans) continue;
     first.add_row(
-        {Cell::text(std::to_string(scan)), Cell::number(r->value("points")),
-         Cell::number(r->value("cell_planes")), Cell::number(r->value("merged_planes")),
-         Cell::number(r->value("horizontal_removed")), Cell::number(r->value("too_small_removed")),
-         Cell::number(r->value("landmarks")),
+        {Cell::text(std::to_string(scan)), Cell::number(r->value(keys::kPoints)),
+         Cell::number(r->value(keys::kCellPlanes)), Cell::number(r->value(keys::kMergedPlanes)),
+         Cell::number(r->value(keys::kHorizontalRemoved)), Cell::number(r->value(keys::kTooSmallRemoved)),
+         Cell::number(r->value(keys::kLandmarks)),
          scan == 0 ? number_or_missing(thesis_features) : Cell::missing(),
-         Cell::text(count_text(r->value("true_positives"), r->value("landmarks"))),
-         Cell::text(count_text(r->value("recalled_true_planes"), r->value("visible_true_planes")))});
+         Cell::text(count_text(r->value(keys::kTruePositives), r->value(keys::kLandmarks))),
+         Cell::text(count_text(r->value(keys::kRecalledTruePlanes), r->value(keys::kVisibleTruePlanes)))});
     std::vector<Cell> cells{Cell::text(std::to_string(scan) + " → " + std::to_string(scan + 1)),
-                            Cell::number(r->value("true_yaw_deg")),
-                            Cell::number(r->value("true_translation_m"))};
+                            Cell::number(r->value(keys::kTrueYawDeg)),
+                            Cell::number(r->value(keys::kTrueTranslationM))};
     for (const std::string& pose : association_poses()) {
       cells.push_back(Cell::text(
           count_text(r->value("assoc_" + pose + "_correct"), r->value("assoc_" + pose + "_matches"))));
@@ -185,14 +186,14 @@ ReportSection extraction_report(const ExperimentConfig& config, const Extraction
                     number_or_missing(i.lo), number_or_missing(i.hi)});
     return i;
   };
-  add_total("extraction precision", sum("true_positives"), sum("landmarks"));
-  add_total("extraction recall", sum("recalled_true_planes"), sum("visible_true_planes"));
+  add_total("extraction precision", sum(keys::kTruePositives), sum(keys::kLandmarks));
+  add_total("extraction recall", sum(keys::kRecalledTruePlanes), sum(keys::kVisibleTruePlanes));
   std::map<std::string, Interval> precision;
   for (const std::string& pose : association_poses()) {
     precision[pose] = add_total("association precision, " + pose + " pose", sum("assoc_" + pose + "_correct"),
                                 sum("assoc_" + pose + "_true_plane"));
     add_total("association recall, " + pose + " pose", sum("assoc_" + pose + "_correct"),
-              sum("association_possible"));
+              sum(keys::kAssociationPossible));
   }
   section.tables.push_back(totals);
 
@@ -207,7 +208,7 @@ ReportSection extraction_report(const ExperimentConfig& config, const Extraction
                      ")",
                  Verdict::not_comparable, "scan 0 missing"};
   if (scan0 != by_scan.end() && std::isfinite(thesis_features)) {
-    const double n = scan0->second->value("landmarks");
+    const double n = scan0->second->value(keys::kLandmarks);
     features.verdict =
         verdict_in_band(Interval{n, n, n, 0.95, 1}, thesis_features / factor, thesis_features * factor);
     features.evidence =
@@ -217,7 +218,7 @@ ReportSection extraction_report(const ExperimentConfig& config, const Extraction
   // "Trivial motion" (thesis, scans 1 → 2): the pairs whose true shift is below trivial_motion_m.
   double none_correct = 0, none_true = 0, trivial = 0;
   for (const auto& [scan, r] : by_scan) {
-    if (scan == p.turn_scan || !(r->value("true_translation_m") < trivial_motion)) continue;
+    if (scan == p.turn_scan || !(r->value(keys::kTrueTranslationM) < trivial_motion)) continue;
     none_correct += r->value("assoc_none_correct"), none_true += r->value("assoc_none_true_plane"), ++trivial;
   }
   const Interval none_small =
@@ -228,7 +229,7 @@ ReportSection extraction_report(const ExperimentConfig& config, const Extraction
   std::string pair0 = "; precision without pose over every non-turn pair " + describe(none_all);
   if (scan0 != by_scan.end())
     pair0 +=
-        "; pair 0 → 1 (shift " + format_number(scan0->second->value("true_translation_m"), 2) + " m): " +
+        "; pair 0 → 1 (shift " + format_number(scan0->second->value(keys::kTrueTranslationM), 2) + " m): " +
         count_text(scan0->second->value("assoc_none_correct"), scan0->second->value("assoc_none_matches")) +
         " correct (thesis " + format_number(thesis_associated, 0) + " associated)";
   section.claims.push_back({"Without odometry, features of consecutive scans with trivial motion (< " +
@@ -240,7 +241,7 @@ ReportSection extraction_report(const ExperimentConfig& config, const Extraction
                                           : format_number(trivial, 0) + " pairs: " + describe(none_small)) +
                                 pair0});
   Claim turn_claim{
-      "The " + format_number(turn_row ? std::abs(turn_row->value("true_yaw_deg")) : NAN, 1) +
+      "The " + format_number(turn_row ? std::abs(turn_row->value(keys::kTrueYawDeg)) : NAN, 1) +
           "° turn cannot be dealt with without a guess of the motion (fewer correct associations "
           "without a pose than with the true one, the guess of table 5.10)",
       Verdict::not_comparable, "turn pair missing"};
@@ -258,7 +259,7 @@ ReportSection extraction_report(const ExperimentConfig& config, const Extraction
     // Decided by the thresholds, not by the data: a vertical plane's normal turns by the yaw, so when
     // the yaw exceeds t_o no correct match can pass C_o without a pose (ground planes are removed).
     // What is left to test is that the true pose finds some: a sanity check, not the thesis' claim.
-    const double yaw = std::abs(turn_row->value("true_yaw_deg"));
+    const double yaw = std::abs(turn_row->value(keys::kTrueYawDeg));
     if (yaw > p.association.thresholds.orientation_deg) {
       turn_claim.kind = ClaimKind::sanity;
       turn_claim.evidence +=

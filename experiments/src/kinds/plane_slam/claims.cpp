@@ -20,6 +20,7 @@
 #include <map>
 #include <set>
 
+#include "kit/row_keys.hpp"
 #include "plane_slam/report.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
@@ -104,7 +105,7 @@ std::vector<std::string> sweep_points(const ExperimentConfig& config) {
 std::map<int, bool> failed(const PlaneSlamGroup& g) {
   std::map<int, bool> out;
   for (const RunRow* r : g.rows) {
-    const double f = r->value("failed_steps");
+    const double f = r->value(keys::kFailedSteps);
     out[r->repetition] = std::isfinite(f) && f > 0.0;
   }
   for (const RunRow* r : g.ended) out[r->repetition] = true;
@@ -193,8 +194,7 @@ std::vector<Claim> declared_claims(const ExperimentConfig& config, const PlaneSl
   return out;
 }
 
-void check_plane_slam_reference(const ExperimentConfig& config, const PlaneSlamParams& params) {
-  (void)params;
+void check_plane_slam_reference(const ExperimentConfig& config) {
   const YAML::Node& ref = config.reference;
   if (!ref.IsDefined() || ref.IsNull()) return;
   if (!ref.IsMap()) throw InputError(config.file, at_line(yaml_line(ref)), "key 'reference' must be a map");

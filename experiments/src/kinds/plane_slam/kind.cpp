@@ -15,7 +15,10 @@
 
 #include "kinds.hpp"
 #include "kit/plane_slam_driver.hpp"
+#include "kit/row_keys.hpp"
+#include "plane_slam/layouts/layouts.hpp"
 #include "plane_slam/report.hpp"
+#include "plane_slam/row_keys.hpp"
 #include "sextant/core/chi_square.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/units.hpp"
@@ -72,10 +75,10 @@ void put_max(const std::vector<double>& v, RunRow& row, const std::string& value
 void put_benchmarks(const PoseList& estimate, const PoseList& truth, const std::string& prefix, RunRow& row) {
   const WulfResult w = wulf_metric(estimate, truth);
   const KummerleResult k = kummerle_metric(estimate, truth);
-  row.values[prefix + "wulf_translation_m"] = w.status.ok ? w.position_rms : kNaN;
-  row.values[prefix + "wulf_rotation_deg"] = w.status.ok ? w.orientation_rms * kDegPerRad : kNaN;
-  row.values[prefix + "kummerle_translation_m"] = k.status.ok ? k.translation_rms : kNaN;
-  row.values[prefix + "kummerle_rotation_deg"] = k.status.ok ? k.rotation_rms * kDegPerRad : kNaN;
+  row.values[prefix + keys::kWulfTranslationM] = w.status.ok ? w.position_rms : kNaN;
+  row.values[prefix + keys::kWulfRotationDeg] = w.status.ok ? w.orientation_rms * kDegPerRad : kNaN;
+  row.values[prefix + keys::kKummerleTranslationM] = k.status.ok ? k.translation_rms : kNaN;
+  row.values[prefix + keys::kKummerleRotationDeg] = k.status.ok ? k.rotation_rms * kDegPerRad : kNaN;
 }
 
 /// Extracted landmarks: the mean per-scan times of extraction, association, filter (predict +
@@ -84,16 +87,16 @@ void put_benchmarks(const PoseList& estimate, const PoseList& truth, const std::
 void put_step_costs(RunRow& row) {
   auto& s = row.series;
   auto& v = row.values;
-  v["extraction_ms_mean"] = mean_of(s["extraction_ms"]);
-  v["association_ms_mean"] = mean_of(s["association_ms"]);
+  v["extraction_ms_mean"] = mean_of(s[keys::kExtractionMs]);
+  v["association_ms_mean"] = mean_of(s[keys::kAssociationMs]);
   v["filter_ms_mean"] = v["motion_ms_mean"] + v["measurement_ms_mean"];
-  v["registration_ms_mean"] = mean_of(s["registration_ms"]);
+  v["registration_ms_mean"] = mean_of(s[keys::kRegistrationMs]);
   v["registration_extra"] =
       v["registration_ms_mean"] / (v["extraction_ms_mean"] + v["association_ms_mean"] + v["filter_ms_mean"]);
   double matched = 0.0, judged = 0.0;
   for (double m : s["matched_motion"])
     if (m >= 0.0) matched += m, ++judged;
-  v["motion_matched_fraction"] = judged > 0.0 ? matched / judged : kNaN;
+  v[keys::kMotionMatchedFraction] = judged > 0.0 ? matched / judged : kNaN;
 }
 
 /// The estimated vertical planes as top-down segments over their true landmark's extent: each
@@ -133,35 +136,35 @@ void fill_row(const RecordedRun& r, const synth::Campus& campus, const PlaneSlam
     const RecordedStep& st = r.steps[k];
     const Vector6d t = to_pose6(campus.ground_truth[k]).vector(), o = r.odometry[k].vector();
     const bool finite = st.pose.allFinite();
-    s["error_m"].push_back(finite ? (st.pose.head<3>() - t.head<3>()).norm() : kNaN);
-    s["rotation_error_deg"].push_back(finite ? rotation_error(st.pose, t) * kDegPerRad : kNaN);
-    s["odometry_error_m"].push_back((o.head<3>() - t.head<3>()).norm());
-    s["odometry_rotation_error_deg"].push_back(rotation_error(o, t) * kDegPerRad);
+    s[keys::kErrorM].push_back(finite ? (st.pose.head<3>() - t.head<3>()).norm() : kNaN);
+    s[keys::kRotationErrorDeg].push_back(finite ? rotation_error(st.pose, t) * kDegPerRad : kNaN);
+    s[keys::kOdometryErrorM].push_back((o.head<3>() - t.head<3>()).norm());
+    s[keys::kOdometryRotationErrorDeg].push_back(rotation_error(o, t) * kDegPerRad);
     const double nees = pose_nees(st.pose, t, st.covariance);
-    s["nees"].push_back(nees);
-    if (st.has_marginal) s["nees_marginal"].push_back(pose_nees(st.pose, t, st.marginal));
+    s[keys::kNees].push_back(nees);
+    if (st.has_marginal) s[keys::kNeesMarginal].push_back(pose_nees(st.pose, t, st.marginal));
     if (st.active >= 0) s["active_landmarks"].push_back(st.active);
     if (std::isfinite(nees)) {
       ++judged;
       if (nees > bound) ++inconsistent;
     }
-    s["motion_ms"].push_back(1e3 * st.motion_seconds);
-    s["measurement_ms"].push_back(1e3 * st.measurement_seconds);
-    s["step_ms"].push_back(1e3 * (st.motion_seconds + st.measurement_seconds));
-    s["map_size"].push_back(static_cast<double>(st.map_size));
+    s[keys::kMotionMs].push_back(1e3 * st.motion_seconds);
+    s[keys::kMeasurementMs].push_back(1e3 * st.measurement_seconds);
+    s[keys::kStepMs].push_back(1e3 * (st.motion_seconds + st.measurement_seconds));
+    s[keys::kMapSize].push_back(static_cast<double>(st.map_size));
     if (params.landmarks == LandmarkSource::kExtracted) {
-      s["extraction_ms"].push_back(1e3 * st.extraction_seconds);
-      s["association_ms"].push_back(1e3 * st.association_seconds);
-      s["registration_ms"].push_back(1e3 * st.registration_seconds);
+      s[keys::kExtractionMs].push_back(1e3 * st.extraction_seconds);
+      s[keys::kAssociationMs].push_back(1e3 * st.association_seconds);
+      s[keys::kRegistrationMs].push_back(1e3 * st.registration_seconds);
       s["matched_motion"].push_back(st.matched_motion);
     }
     for (int i = 0; i < 6; ++i) {
-      s["trajectory"].push_back(st.pose[i]);
-      s["truth"].push_back(t[i]);
-      s["odometry"].push_back(o[i]);
+      s[keys::kTrajectory].push_back(st.pose[i]);
+      s[keys::kTruth].push_back(t[i]);
+      s[keys::kOdometry].push_back(o[i]);
     }
     for (int i = 0; i < 3; ++i)
-      for (int j = i; j < 3; ++j) s["position_covariance"].push_back(st.covariance(i, j));
+      for (int j = i; j < 3; ++j) s[keys::kPositionCovariance].push_back(st.covariance(i, j));
     if (!st.ok) {
       ++failed;
       if (!std::isfinite(first_failure)) first_failure = static_cast<double>(k);
@@ -177,11 +180,11 @@ void fill_row(const RecordedRun& r, const synth::Campus& campus, const PlaneSlam
   const std::string failure = slam_run_failure(r.map.size(), failed, n);
   const bool measured = params.failures_are_results && failed > 0 && !r.map.empty();
   if (!failure.empty() && !measured) throw std::runtime_error(failure);
-  row.values["ended_by_failures"] = failure.empty() ? 0.0 : 1.0;
+  row.values[keys::kEndedByFailures] = failure.empty() ? 0.0 : 1.0;
   for (const Eigen::Vector4d& m : r.map)
     for (int i = 0; i < 4; ++i) s["map"].push_back(m[i]);
   for (int id : r.map_truth) s["map_truth"].push_back(id);
-  s["map_segments"] = map_segments(r, campus);
+  s[keys::kMapSegments] = map_segments(r, campus);
   for (std::size_t i = 0; i < r.information.size(); ++i) {
     const InformationPattern& p = r.information[i];
     s["information_" + std::to_string(i)] = p.links;
@@ -190,39 +193,39 @@ void fill_row(const RecordedRun& r, const synth::Campus& campus, const PlaneSlam
   }
 
   auto& v = row.values;
-  v["scans"] = static_cast<double>(n);
-  put_max(s["error_m"], row, "max_error_m", "max_error_scan");
-  put_max(s["rotation_error_deg"], row, "max_rotation_deg", "");
-  put_max(s["odometry_error_m"], row, "odometry_max_error_m", "odometry_max_error_scan");
-  v["final_error_m"] = s["error_m"].back();
-  v["final_rotation_deg"] = s["rotation_error_deg"].back();
-  v["mean_error_m"] = mean_of(s["error_m"]);
-  v["odometry_final_error_m"] = s["odometry_error_m"].back();
-  v["odometry_mean_error_m"] = mean_of(s["odometry_error_m"]);
-  v["mean_nees"] = mean_of(s["nees"]);
-  if (s.count("nees_marginal")) v["mean_nees_marginal"] = mean_of(s["nees_marginal"]);
+  v[keys::kScans] = static_cast<double>(n);
+  put_max(s[keys::kErrorM], row, "max_error_m", "max_error_scan");
+  put_max(s[keys::kRotationErrorDeg], row, "max_rotation_deg", "");
+  put_max(s[keys::kOdometryErrorM], row, "odometry_max_error_m", "odometry_max_error_scan");
+  v["final_error_m"] = s[keys::kErrorM].back();
+  v["final_rotation_deg"] = s[keys::kRotationErrorDeg].back();
+  v["mean_error_m"] = mean_of(s[keys::kErrorM]);
+  v[keys::kOdometryFinalErrorM] = s[keys::kOdometryErrorM].back();
+  v[keys::kOdometryMeanErrorM] = mean_of(s[keys::kOdometryErrorM]);
+  v["mean_nees"] = mean_of(s[keys::kNees]);
+  if (s.count(keys::kNeesMarginal)) v["mean_nees_marginal"] = mean_of(s[keys::kNeesMarginal]);
   if (s.count("active_landmarks")) put_max(s["active_landmarks"], row, "max_active_landmarks", "");
   v["relocations"] = static_cast<double>(r.relocations);
   v["skipped_relocations"] = static_cast<double>(r.skipped_relocations);
-  v["nees_bound"] = bound;
+  v[keys::kNeesBound] = bound;
   v["inconsistent_fraction"] =
       judged ? static_cast<double>(inconsistent) / static_cast<double>(judged) : kNaN;
-  v["failed_steps"] = static_cast<double>(failed);
-  v["first_failure_scan"] = first_failure;
-  v["not_positive_definite"] = static_cast<double>(r.summary.not_positive_definite);
-  v["cholesky_failures"] = static_cast<double>(r.summary.cholesky_failures);
+  v[keys::kFailedSteps] = static_cast<double>(failed);
+  v[keys::kFirstFailureScan] = first_failure;
+  v[keys::kNotPositiveDefinite] = static_cast<double>(r.summary.not_positive_definite);
+  v[keys::kCholeskyFailures] = static_cast<double>(r.summary.cholesky_failures);
   v["singular_innovations"] = static_cast<double>(r.summary.singular_innovations);
-  v["map_size"] = static_cast<double>(r.map.size());
-  v["updates"] = static_cast<double>(updates);
+  v[keys::kMapSize] = static_cast<double>(r.map.size());
+  v[keys::kUpdates] = static_cast<double>(updates);
   v["gated"] = static_cast<double>(gated);
-  v["motion_ms_mean"] = mean_of(s["motion_ms"]);
-  v["measurement_ms_mean"] = mean_of(s["measurement_ms"]);
+  v["motion_ms_mean"] = mean_of(s[keys::kMotionMs]);
+  v["measurement_ms_mean"] = mean_of(s[keys::kMeasurementMs]);
   if (params.landmarks == LandmarkSource::kExtracted) put_step_costs(row);
   put_benchmarks(estimate, truth, "", row);
   put_benchmarks(odometry, truth, "odometry_", row);
   const KummerleResult k = kummerle_metric(estimate, truth);
-  for (double e : k.translation_errors) s["kummerle_translation_m"].push_back(e);
-  for (double e : k.rotation_errors) s["kummerle_rotation_deg"].push_back(e * kDegPerRad);
+  for (double e : k.translation_errors) s[keys::kKummerleTranslationM].push_back(e);
+  for (double e : k.rotation_errors) s[keys::kKummerleRotationDeg].push_back(e * kDegPerRad);
   const KummerleResult ko = kummerle_metric(odometry, truth);
   for (double e : ko.translation_errors) s["odometry_kummerle_translation_m"].push_back(e);
   for (double e : ko.rotation_errors) s["odometry_kummerle_rotation_deg"].push_back(e * kDegPerRad);
@@ -290,6 +293,7 @@ class PlaneSlamKind : public RunKind {
 
   void validate(const ExperimentConfig& config) const override {
     const PlaneSlamParams params = read_plane_slam_params(config);
+    const PlaneSlamLayout& layout = plane_slam_layout(config, params);
     for (const PlaneSlamMethod& m : read_methods(config)) {
       (void)plane_slam_settings(params, m, kNaN, config.file);
       if (m.motion == MotionSource::kFbmlndt && params.landmarks != LandmarkSource::kExtracted)
@@ -307,7 +311,7 @@ class PlaneSlamKind : public RunKind {
     if (params.scans > static_cast<std::size_t>(campus.trajectory.scans))
       throw InputError(config.file, "", "key 'scans': more than the campus' trajectory.scans");
     check_plane_slam_claims(config, params);
-    check_plane_slam_reference(config, params);
+    layout.check_reference(config);
   }
 
   std::unique_ptr<KindSession> prepare(const ExperimentConfig& config, const PrepareContext&) const override {
@@ -317,15 +321,9 @@ class PlaneSlamKind : public RunKind {
   ReportSection report(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
                        const std::vector<const RunRow*>& rows) const override {
     const PlaneSlamParams params = read_plane_slam_params(config);
+    const PlaneSlamLayout& layout = plane_slam_layout(config, params);
     const PlaneSlamRows data = collect_plane_slam_rows(config, runs, rows);
-    switch (params.report) {
-      case PlaneSlamLayout::kSeif: return seif_report(config, params, data);
-      case PlaneSlamLayout::kBenchmark: return benchmark_report(config, params, data);
-      case PlaneSlamLayout::kEseif: return eseif_report(config, params, data);
-      case PlaneSlamLayout::kHybrid: return hybrid_report(config, params, data);
-      case PlaneSlamLayout::kAccuracy: break;
-    }
-    return accuracy_report(config, params, data);
+    return layout.report(config, params, data);
   }
 };
 

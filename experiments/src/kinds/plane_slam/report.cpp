@@ -6,7 +6,9 @@
 
 #include "kit/filter_parameters.hpp"
 #include "kit/reference_values.hpp"
+#include "kit/row_keys.hpp"
 #include "plane_slam/report.hpp"
+#include "plane_slam/row_keys.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/eval/verdict.hpp"
 #include "sextant/filters/plane_slam_model.hpp"
@@ -90,8 +92,9 @@ std::string common_notes(const ExperimentConfig& config, const PlaneSlamParams& 
   std::size_t scans = 0;
   for (const PlaneSlamGroup& g : data.groups)
     if (g.first())
-      scans = std::max(
-          scans, g.first()->series.count("error_m") ? series_or_empty(*g.first(), "error_m").size() : 0);
+      scans = std::max(scans, g.first()->series.count(keys::kErrorM)
+                                  ? series_or_empty(*g.first(), keys::kErrorM).size()
+                                  : 0);
   std::string s =
       "Landmarks: " + landmark_text(params) + ". Odometry: " +
       (params.odometry == OdometrySource::kResample
@@ -160,7 +163,7 @@ ReportFigure map_figure(const ExperimentConfig& config, const PlaneSlamParams& p
   TrajectoryPlot plot;
   plot.title = "Map and trajectories, " + method + " (2σ position ellipses)";
   TrajectorySeries planes{"estimated planes (vertical)", {}, "#9467bd", {}, 10, 2.0};
-  const auto& seg = series_or_empty(row, "map_segments");
+  const auto& seg = series_or_empty(row, keys::kMapSegments);
   for (std::size_t k = 0; k + 3 < seg.size(); k += 4) {
     planes.positions.emplace_back(seg[k], seg[k + 1], 0.0);
     planes.positions.emplace_back(seg[k + 2], seg[k + 3], 0.0);
@@ -168,12 +171,13 @@ ReportFigure map_figure(const ExperimentConfig& config, const PlaneSlamParams& p
   }
   if (!planes.positions.empty()) plot.trajectories.push_back(planes);
   plot.trajectories.push_back(  // wide underneath, the estimate dashed on it
-      {"ground truth", positions(series_or_empty(row, "truth")), "#2ca02c", {}, 10, 2.0, "", 3.5});
+      {"ground truth", positions(series_or_empty(row, keys::kTruth)), "#2ca02c", {}, 10, 2.0, "", 3.5});
   plot.trajectories.push_back(
-      {"odometry", positions(series_or_empty(row, "odometry")), "#ff7f0e", {}, 10, 2.0});
+      {"odometry", positions(series_or_empty(row, keys::kOdometry)), "#ff7f0e", {}, 10, 2.0});
   TrajectorySeries est{
-      method, positions(series_or_empty(row, "trajectory")), "#1f77b4", {}, params.ellipse_every, 2.0, "8 4"};
-  const auto& c = series_or_empty(row, "position_covariance");
+      method, positions(series_or_empty(row, keys::kTrajectory)), "#1f77b4", {}, params.ellipse_every, 2.0,
+      "8 4"};
+  const auto& c = series_or_empty(row, keys::kPositionCovariance);
   for (std::size_t k = 0; k + 5 < c.size(); k += 6) {
     Eigen::Matrix3d P;
     P << c[k], c[k + 1], c[k + 2], c[k + 1], c[k + 3], c[k + 4], c[k + 2], c[k + 4], c[k + 5];

@@ -7,6 +7,7 @@
 //   plane_slam/layouts/eseif.cpp     — ESEIF vs SEIF: NEES, update cost against the map, error
 //   plane_slam/layouts/hybrid.cpp    — odometry- vs FbML-NDT-driven filters, accuracy and cost
 // and the thesis' comparative claims declared in params.claims (plane_slam/claims.cpp).
+// Each layout is one line in the table of plane_slam/layouts/layouts.cpp.
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -112,17 +113,7 @@ std::vector<Claim> beats_odometry_claims(const PlaneSlamRows& data, std::uint64_
 std::vector<Claim> declared_claims(const ExperimentConfig& config, const PlaneSlamParams& params,
                                    const PlaneSlamRows& data);
 void check_plane_slam_claims(const ExperimentConfig& config, const PlaneSlamParams& params);
-void check_plane_slam_reference(const ExperimentConfig& config, const PlaneSlamParams& params);
-
-ReportSection accuracy_report(const ExperimentConfig& config, const PlaneSlamParams& params,
-                              const PlaneSlamRows& data);
-ReportSection seif_report(const ExperimentConfig& config, const PlaneSlamParams& params,
-                          const PlaneSlamRows& data);
-ReportSection eseif_report(const ExperimentConfig& config, const PlaneSlamParams& params,
-                           const PlaneSlamRows& data);
-ReportSection benchmark_report(const ExperimentConfig& config, const PlaneSlamParams& params,
-                               const PlaneSlamRows& data);
-ReportSection hybrid_report(const ExperimentConfig& config, const PlaneSlamParams& params,
-                            const PlaneSlamRows& data);
+/// The reference check every layout shares (named in plane_slam/layouts/layouts.cpp).
+void check_plane_slam_reference(const ExperimentConfig& config);
 
 }  // namespace sextant

@@ -12,6 +12,7 @@
 #include "kit/number_format.hpp"
 #include "kit/row_codec.hpp"
 #include "pose_graph/report.hpp"
+#include "pose_graph/row_keys.hpp"
 #include "sextant/eval/verdict.hpp"
 
 namespace sextant {
@@ -34,8 +35,8 @@ std::vector<double> batch_means(const std::vector<double>& v, std::size_t size) 
 void paired_batches(const std::vector<const RunRow*>& rows, const std::string& a, const std::string& b,
                     std::size_t size, std::vector<double>& out_a, std::vector<double>& out_b) {
   for (const RunRow* r : rows) {
-    const std::vector<double> ma = batch_means(series_or_empty(*r, a + "ate_errors"), size);
-    const std::vector<double> mb = batch_means(series_or_empty(*r, b + "ate_errors"), size);
+    const std::vector<double> ma = batch_means(series_or_empty(*r, a + keys::kAteErrors), size);
+    const std::vector<double> mb = batch_means(series_or_empty(*r, b + keys::kAteErrors), size);
     const std::size_t n = std::min(ma.size(), mb.size());
     out_a.insert(out_a.end(), ma.begin(), ma.begin() + static_cast<std::ptrdiff_t>(n));
     out_b.insert(out_b.end(), mb.begin(), mb.begin() + static_cast<std::ptrdiff_t>(n));
@@ -49,7 +50,7 @@ double median_value(const std::vector<const RunRow*>& rows, const std::string& k
 }
 
 std::string ate_text(const std::vector<const RunRow*>& rows, const std::string& prefix) {
-  return format_number(median_value(rows, prefix + "ate_m"), 2) + " m";
+  return format_number(median_value(rows, prefix + keys::kAteM), 2) + " m";
 }
 
 }  // namespace
@@ -70,8 +71,9 @@ std::vector<Claim> pose_graph_claims(const ExperimentConfig& config, const PoseG
        "ATE " + ate_text(rows, "graph_") + " (pose graph) vs " + ate_text(rows, "chained_") +
            " (chained), medians over " + reps + "; mean position error difference graph − chained " +
            describe(gain, " m") + ", bootstrap over " + std::to_string(graph.size()) + " paired means of " +
-           std::to_string(B) + "-scan batches; " + format_number(median_value(rows, "accepted"), 0) + " of " +
-           format_number(median_value(rows, "candidates"), 0) + " candidate closures accepted (median)",
+           std::to_string(B) + "-scan batches; " + format_number(median_value(rows, keys::kAccepted), 0) +
+           " of " + format_number(median_value(rows, keys::kCandidates), 0) +
+           " candidate closures accepted (median)",
        ClaimKind::thesis});
 
   std::vector<double> robust, clean_r, plain, clean_p;
@@ -80,7 +82,7 @@ std::vector<Claim> pose_graph_claims(const ExperimentConfig& config, const PoseG
   const Interval robust_shift = bootstrap_paired_mean_difference(robust, clean_r, config.seed + 1);
   const Interval plain_shift = bootstrap_paired_mean_difference(plain, clean_p, config.seed + 2);
   const double tol = params.false_closure_tolerance_m;
-  const bool injected = median_value(rows, "false_closures") > 0;
+  const bool injected = median_value(rows, keys::kFalseClosures) > 0;
   claims.push_back(
       {"The robust (" + to_string(params.graph.loss) +
            ") loss keeps a false loop closure from wrecking the map: the mean position error rises "
@@ -103,24 +105,25 @@ std::vector<Claim> pose_graph_claims(const ExperimentConfig& config, const PoseG
 
   std::vector<double> share;
   for (const RunRow* r : rows) {
-    const double work = r->value("registration_seconds") + r->value("closure_seconds");
-    share.push_back(r->value("graph_solve_seconds") / work);
+    const double work = r->value(keys::kRegistrationSeconds) + r->value(keys::kClosureSeconds);
+    share.push_back(r->value(keys::kGraphSolveSeconds) / work);
   }
   Interval cost{median_finite(share), NAN, NAN, 1.0, share.size()};
   if (!share.empty()) {
     cost.lo = *std::min_element(share.begin(), share.end());
     cost.hi = *std::max_element(share.begin(), share.end());
   }
-  claims.push_back({"The graph solve is cheap beside the registrations: under " +
-                        format_number(100 * params.solve_budget, 0) + " % of their time",
-                    rows.empty() ? Verdict::not_comparable : verdict_less(cost, params.solve_budget),
-                    "measured: graph solve " + format_number(median_value(rows, "graph_solve_seconds"), 3) +
-                        " s (" + format_number(median_value(rows, "graph_solve_iterations"), 0) +
-                        " LM iterations) vs " + format_number(median_value(rows, "registration_seconds"), 1) +
-                        " s of odometry and " + format_number(median_value(rows, "closure_seconds"), 1) +
-                        " s of closure registrations (single-thread sums, medians); share " + describe(cost) +
-                        " — the range over " + reps + ", not a confidence interval",
-                    ClaimKind::sanity});
+  claims.push_back(
+      {"The graph solve is cheap beside the registrations: under " +
+           format_number(100 * params.solve_budget, 0) + " % of their time",
+       rows.empty() ? Verdict::not_comparable : verdict_less(cost, params.solve_budget),
+       "measured: graph solve " + format_number(median_value(rows, keys::kGraphSolveSeconds), 3) + " s (" +
+           format_number(median_value(rows, keys::kGraphSolveIterations), 0) + " LM iterations) vs " +
+           format_number(median_value(rows, keys::kRegistrationSeconds), 1) + " s of odometry and " +
+           format_number(median_value(rows, keys::kClosureSeconds), 1) +
+           " s of closure registrations (single-thread sums, medians); share " + describe(cost) +
+           " — the range over " + reps + ", not a confidence interval",
+       ClaimKind::sanity});
   return claims;
 }
 

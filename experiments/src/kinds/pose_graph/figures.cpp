@@ -7,7 +7,9 @@
 
 #include "kit/number_format.hpp"
 #include "kit/row_codec.hpp"
+#include "kit/row_keys.hpp"
 #include "pose_graph/report.hpp"
+#include "pose_graph/row_keys.hpp"
 #include "sextant/eval/plots.hpp"
 
 namespace sextant {
@@ -51,15 +53,15 @@ ReportFigure closures_figure(const RunRow& row, const std::vector<TrajectoryKind
   plot.y_label = "y [m]";
   plot.width = 760;
   plot.height = 600;
-  add_path(plot, "ground truth", positions_of(row, "truth"), "#000000");
+  add_path(plot, "ground truth", positions_of(row, keys::kTruth), "#000000");
   add_path(plot, kinds[0].label, positions_of(row, "chained_trajectory"), kinds[0].color);
   const std::vector<Eigen::Vector3d> graph = positions_of(row, "graph_trajectory");
   add_path(plot, kinds[1].label, graph, kinds[1].color);
   PlotSeries accepted{
       "accepted closure (at scan j of the graph)", {}, {}, PlotSeries::Style::markers, "#2a9d3a"};
   PlotSeries rejected{"rejected candidate", {}, {}, PlotSeries::Style::markers, "#c0392b"};
-  const std::vector<double>& j = series_or_empty(row, "closure_j");
-  const std::vector<double>& why = series_or_empty(row, "closure_rejection");
+  const std::vector<double>& j = series_or_empty(row, keys::kClosureJ);
+  const std::vector<double>& why = series_or_empty(row, keys::kClosureRejection);
   for (std::size_t k = 0; k < j.size() && k < why.size(); ++k) {
     const auto at = static_cast<std::size_t>(j[k]);
     if (at >= graph.size()) continue;
@@ -86,16 +88,17 @@ ReportFigure false_closure_figure(const RunRow& row, const std::vector<Trajector
   plot.y_label = "y [m]";
   plot.width = 760;
   plot.height = 600;
-  const std::vector<Eigen::Vector3d> truth = positions_of(row, "truth");
+  const std::vector<Eigen::Vector3d> truth = positions_of(row, keys::kTruth);
   add_path(plot, "ground truth", truth, "#000000");
   for (std::size_t k = 2; k < kinds.size(); ++k)
-    add_path(plot, kinds[k].label, positions_of(row, kinds[k].prefix + "trajectory"), kinds[k].color);
+    add_path(plot, kinds[k].label, positions_of(row, kinds[k].prefix + keys::kTrajectory), kinds[k].color);
   PlotSeries link{"false closure (\"same place\"), drawn between the true poses",
                   {},
                   {},
                   PlotSeries::Style::line_and_markers,
                   "#8e44ad"};
-  const std::vector<double>&fi = series_or_empty(row, "false_i"), &fj = series_or_empty(row, "false_j");
+  const std::vector<double>&fi = series_or_empty(row, keys::kFalseI),
+        &fj = series_or_empty(row, keys::kFalseJ);
   for (std::size_t k = 0; k < fi.size() && k < fj.size(); ++k) {
     const auto i = static_cast<std::size_t>(fi[k]), j = static_cast<std::size_t>(fj[k]);
     if (i >= truth.size() || j >= truth.size()) continue;
@@ -125,7 +128,7 @@ ReportFigure error_figure(const MethodRows& odometry, const std::vector<MethodRo
     plot.series.push_back({name, x, e, PlotSeries::Style::line, color});
   };
   for (std::size_t k = 0; k < 2; ++k)
-    add(kinds[k].label, series_or_empty(row, kinds[k].prefix + "ate_errors"), kinds[k].color);
+    add(kinds[k].label, series_or_empty(row, kinds[k].prefix + keys::kAteErrors), kinds[k].color);
   for (const MethodRows& f : filters)
     if (!f.rows.empty())
       add(f.name + " (plane SLAM)", series_or_empty(*f.rows.front(), "filter_ate_errors"), "");

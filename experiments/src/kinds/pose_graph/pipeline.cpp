@@ -11,6 +11,8 @@
 
 #include "kit/number_format.hpp"
 #include "kit/row_codec.hpp"
+#include "kit/row_keys.hpp"
+#include "pose_graph/row_keys.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
 #include "sextant/filters/slam_run_failure.hpp"
@@ -31,13 +33,13 @@ void put_metrics(const PoseList& estimate, const PoseList& truth, const std::str
   const WulfResult w = wulf_metric(estimate, truth);
   const KummerleResult k = kummerle_metric(estimate, truth);
   auto& v = row.values;
-  v[prefix + "ate_m"] = ate.status.ok ? ate.translation.rms : kNaN;
-  v[prefix + "wulf_translation_m"] = w.status.ok ? w.position_rms : kNaN;
-  v[prefix + "wulf_rotation_deg"] = w.status.ok ? w.orientation_rms * kDegPerRad : kNaN;
-  v[prefix + "kummerle_translation_m"] = k.status.ok ? k.translation_rms : kNaN;
-  v[prefix + "kummerle_rotation_deg"] = k.status.ok ? k.rotation_rms * kDegPerRad : kNaN;
-  row.series[prefix + "ate_errors"] = ate.translation_errors;
-  row.series[prefix + "trajectory"] = poses_to_series(estimate);
+  v[prefix + keys::kAteM] = ate.status.ok ? ate.translation.rms : kNaN;
+  v[prefix + keys::kWulfTranslationM] = w.status.ok ? w.position_rms : kNaN;
+  v[prefix + keys::kWulfRotationDeg] = w.status.ok ? w.orientation_rms * kDegPerRad : kNaN;
+  v[prefix + keys::kKummerleTranslationM] = k.status.ok ? k.translation_rms : kNaN;
+  v[prefix + keys::kKummerleRotationDeg] = k.status.ok ? k.rotation_rms * kDegPerRad : kNaN;
+  row.series[prefix + keys::kAteErrors] = ate.translation_errors;
+  row.series[prefix + keys::kTrajectory] = poses_to_series(estimate);
 }
 
 /// The guesses' odometry: the campus' own, or redrawn from its model with the run seed exactly as
@@ -81,8 +83,8 @@ std::vector<std::pair<std::size_t, std::size_t>> false_pairs(const PoseList& tru
 
 void put_solve(const PoseGraphReport& r, const std::string& prefix, RunRow& row) {
   row.values[prefix + "ok"] = r.ok ? 1.0 : 0.0;
-  row.values[prefix + "iterations"] = r.iterations;
-  row.values[prefix + "seconds"] = r.seconds;
+  row.values[prefix + keys::kIterations] = r.iterations;
+  row.values[prefix + keys::kSeconds] = r.seconds;
   row.values[prefix + "initial_cost"] = r.initial_cost;
   row.values[prefix + "final_cost"] = r.final_cost;
 }
@@ -184,28 +186,28 @@ void run_pose_graph_method(const PreloadedCampus& data, const PoseGraphParams& p
   put_metrics(closed.poses, truth, "graph_", row);
   put_metrics(robust.poses(), truth, "false_robust_", row);
   put_metrics(plain.poses(), truth, "false_plain_", row);
-  row.series["truth"] = poses_to_series(truth);
+  row.series[keys::kTruth] = poses_to_series(truth);
   put_solve(closed.solve, "graph_solve_", row);
-  row.values["graph_solve_seconds"] = closed.solve_seconds;  // every round's solve
-  row.values["graph_solve_iterations"] = closed.solve_iterations;
+  row.values[keys::kGraphSolveSeconds] = closed.solve_seconds;  // every round's solve
+  row.values[keys::kGraphSolveIterations] = closed.solve_iterations;
   put_solve(robust_report, "false_robust_solve_", row);
   put_solve(plain_report, "false_plain_solve_", row);
   auto& v = row.values;
-  v["scans"] = static_cast<double>(n);
-  v["registration_seconds"] = registration_seconds;
-  v["not_converged"] = not_converged;
-  v["fallback_information"] = static_cast<double>(odometry_edges.fallback_information);
-  v["closure_seconds"] = closure_seconds;
-  v["information_inflation"] = closed.inflation;
-  v["candidates"] = static_cast<double>(closed.attempts.size());
-  v["accepted"] = static_cast<double>(accepted_information.size());
-  v["false_closures"] = static_cast<double>(pairs.size());
+  v[keys::kScans] = static_cast<double>(n);
+  v[keys::kRegistrationSeconds] = registration_seconds;
+  v[keys::kNotConverged] = not_converged;
+  v[keys::kFallbackInformation] = static_cast<double>(odometry_edges.fallback_information);
+  v[keys::kClosureSeconds] = closure_seconds;
+  v[keys::kInformationInflation] = closed.inflation;
+  v[keys::kCandidates] = static_cast<double>(closed.attempts.size());
+  v[keys::kAccepted] = static_cast<double>(accepted_information.size());
+  v[keys::kFalseClosures] = static_cast<double>(pairs.size());
   std::size_t accepted_index = 0;
   for (const ClosureAttempt& c : closed.attempts) {
     auto& se = row.series;
     se["closure_i"].push_back(static_cast<double>(c.candidate.i));
-    se["closure_j"].push_back(static_cast<double>(c.candidate.j));
-    se["closure_rejection"].push_back(static_cast<double>(c.decision.rejection));
+    se[keys::kClosureJ].push_back(static_cast<double>(c.candidate.j));
+    se[keys::kClosureRejection].push_back(static_cast<double>(c.decision.rejection));
     se["closure_mean_score"].push_back(c.decision.mean_score);
     se["closure_correction_m"].push_back(c.decision.correction_m);
     // How right the registration was (never used to decide): its error against the true relative pose.
@@ -214,14 +216,14 @@ void run_pose_graph_method(const PreloadedCampus& data, const PoseGraphParams& p
     se["closure_true_error_m"].push_back(translation_norm(error));
     se["closure_true_error_deg"].push_back(rotation_angle(error) * kDegPerRad);
     const bool weighted = c.decision.accepted && accepted_index < closed.solve.closure_weights.size();
-    se["closure_weight"].push_back(weighted ? closed.solve.closure_weights[accepted_index] : kNaN);
+    se[keys::kClosureWeight].push_back(weighted ? closed.solve.closure_weights[accepted_index] : kNaN);
     if (c.decision.accepted) ++accepted_index;
   }
   for (std::size_t k = 0; k < pairs.size(); ++k) {
-    row.series["false_i"].push_back(static_cast<double>(pairs[k].first));
-    row.series["false_j"].push_back(static_cast<double>(pairs[k].second));
+    row.series[keys::kFalseI].push_back(static_cast<double>(pairs[k].first));
+    row.series[keys::kFalseJ].push_back(static_cast<double>(pairs[k].second));
     const std::size_t index = accepted_information.size() + k;
-    row.series["false_weight"].push_back(
+    row.series[keys::kFalseWeight].push_back(
         index < robust_report.closure_weights.size() ? robust_report.closure_weights[index] : kNaN);
   }
 }
@@ -244,9 +246,9 @@ void run_filter_method(const PreloadedCampus& data, const PoseGraphParams& param
       slam_run_failure(run.map.size(), static_cast<std::size_t>(failed), run.steps.size());
   if (!failure.empty()) throw std::runtime_error(failure);
   put_metrics(estimate, truth, "filter_", row);
-  row.series["truth"] = poses_to_series(truth);
-  row.values["scans"] = static_cast<double>(n);
-  row.values["failed_steps"] = failed;
+  row.series[keys::kTruth] = poses_to_series(truth);
+  row.values[keys::kScans] = static_cast<double>(n);
+  row.values[keys::kFailedSteps] = failed;
   double motion = 0.0, measurement = 0.0;
   for (const RecordedStep& st : run.steps) motion += st.motion_seconds, measurement += st.measurement_seconds;
   row.values["filter_seconds"] = motion + measurement;

@@ -10,6 +10,8 @@
 
 #include "kit/number_format.hpp"
 #include "kit/row_codec.hpp"
+#include "kit/row_keys.hpp"
+#include "pose_graph/row_keys.hpp"
 #include "sextant/core/units.hpp"
 
 namespace sextant {
@@ -30,12 +32,13 @@ Table metrics_header(const std::string& caption, const std::string& label, const
   return t;
 }
 
-const char* const kMetricKeys[] = {"ate_m", "wulf_translation_m", "wulf_rotation_deg",
-                                   "kummerle_translation_m", "kummerle_rotation_deg"};
+const char* const kMetricKeys[] = {keys::kAteM, keys::kWulfTranslationM, keys::kWulfRotationDeg,
+                                   keys::kKummerleTranslationM, keys::kKummerleRotationDeg};
 
 void add_metric_row(Table& t, const std::string& label, const std::vector<const RunRow*>& rows,
                     const std::string& prefix) {
-  std::vector<Cell> cells{Cell::text(label), number_or_missing(median_finite(row_values(rows, "scans")), 0)};
+  std::vector<Cell> cells{Cell::text(label),
+                          number_or_missing(median_finite(row_values(rows, keys::kScans)), 0)};
   for (const char* key : kMetricKeys)
     cells.push_back(number_or_missing(median_finite(row_values(rows, prefix + key)), 3));
   t.add_row(cells);
@@ -46,8 +49,8 @@ void add_prefix_row(Table& t, const std::string& label, const std::vector<const 
                     const std::string& prefix, std::size_t n) {
   std::vector<std::vector<double>> v(5);
   for (const RunRow* r : rows) {
-    const PoseList all = series_to_poses(series_or_empty(*r, prefix + "trajectory"));
-    const PoseList truth_all = series_to_poses(series_or_empty(*r, "truth"));
+    const PoseList all = series_to_poses(series_or_empty(*r, prefix + keys::kTrajectory));
+    const PoseList truth_all = series_to_poses(series_or_empty(*r, keys::kTruth));
     if (all.size() < n || truth_all.size() < n || n < 2) continue;
     const PoseList est(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(n));
     const PoseList truth(truth_all.begin(), truth_all.begin() + static_cast<std::ptrdiff_t>(n));
@@ -92,28 +95,28 @@ Table closure_table(const MethodRows& odometry) {
       .add_number_column("inflation", 1);
   for (std::size_t k = 0; k < odometry.rows.size(); ++k) {
     const RunRow& r = *odometry.rows[k];
-    const std::vector<double>& why = series_or_empty(r, "closure_rejection");
+    const std::vector<double>& why = series_or_empty(r, keys::kClosureRejection);
     const auto count = [&](ClosureRejection c) {
       return static_cast<double>(std::count(why.begin(), why.end(), static_cast<double>(c)));
     };
     std::vector<double> w;
-    for (double x : series_or_empty(r, "closure_weight"))
+    for (double x : series_or_empty(r, keys::kClosureWeight))
       if (std::isfinite(x)) w.push_back(x);
     const double lowest = w.empty() ? NAN : *std::min_element(w.begin(), w.end());
-    const std::vector<double>& fw = series_or_empty(r, "false_weight");
+    const std::vector<double>& fw = series_or_empty(r, keys::kFalseWeight);
     t.add_row(
-        {Cell::text(std::to_string(k + 1)), number_or_missing(r.value("candidates"), 0),
-         number_or_missing(r.value("accepted"), 0),
+        {Cell::text(std::to_string(k + 1)), number_or_missing(r.value(keys::kCandidates), 0),
+         number_or_missing(r.value(keys::kAccepted), 0),
          number_or_missing(count(ClosureRejection::not_converged), 0),
          number_or_missing(count(ClosureRejection::score), 0),
          number_or_missing(count(ClosureRejection::correction), 0),
          Cell::text(format_number(median_finite(w), 3, "–") + " (" + format_number(lowest, 3, "–") + ")"),
          number_or_missing(fw.empty() ? NAN : fw.front(), 4),
-         number_or_missing(r.value("registration_seconds"), 1),
-         number_or_missing(r.value("closure_seconds"), 1),
-         number_or_missing(r.value("graph_solve_seconds"), 3),
-         number_or_missing(r.value("graph_solve_iterations"), 0),
-         number_or_missing(r.value("information_inflation"), 1)});
+         number_or_missing(r.value(keys::kRegistrationSeconds), 1),
+         number_or_missing(r.value(keys::kClosureSeconds), 1),
+         number_or_missing(r.value(keys::kGraphSolveSeconds), 3),
+         number_or_missing(r.value(keys::kGraphSolveIterations), 0),
+         number_or_missing(r.value(keys::kInformationInflation), 1)});
   }
   return t;
 }
@@ -206,7 +209,7 @@ ReportSection pose_graph_report(const ExperimentConfig& config, const PoseGraphP
       "filters that stop early (UKF, CKF: O(n³) per step) are compared on their prefix in a second table; "
       "registrations whose Hessian gives no positive-definite information get the median step information "
       "(counted: " +
-      format_number(odometry.rows.empty() ? NAN : odometry.rows.front()->value("fallback_information"), 0,
+      format_number(odometry.rows.empty() ? NAN : odometry.rows.front()->value(keys::kFallbackInformation), 0,
                     "–") +
       " in repetition 1).";
 
@@ -219,9 +222,9 @@ ReportSection pose_graph_report(const ExperimentConfig& config, const PoseGraphP
   section.tables.push_back(whole);
 
   std::vector<std::size_t> shorter;
-  const double full = median_finite(row_values(odometry.rows, "scans"));
+  const double full = median_finite(row_values(odometry.rows, keys::kScans));
   for (const MethodRows& f : filters) {
-    const double n = median_finite(row_values(f.rows, "scans"));
+    const double n = median_finite(row_values(f.rows, keys::kScans));
     if (std::isfinite(n) && n < full &&
         std::find(shorter.begin(), shorter.end(), std::size_t(n)) == shorter.end())
       shorter.push_back(static_cast<std::size_t>(n));
@@ -235,7 +238,7 @@ ReportSection pose_graph_report(const ExperimentConfig& config, const PoseGraphP
       if (k.prefix == "chained_" || k.prefix == "graph_")
         add_prefix_row(t, k.label, odometry.rows, k.prefix, n);
     for (const MethodRows& f : filters)
-      if (std::size_t(median_finite(row_values(f.rows, "scans"))) == n)
+      if (std::size_t(median_finite(row_values(f.rows, keys::kScans))) == n)
         add_prefix_row(t, f.name + " (plane SLAM)", f.rows, "filter_", n);
     section.tables.push_back(t);
   }

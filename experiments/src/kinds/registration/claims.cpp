@@ -6,6 +6,7 @@
 #include <random>
 
 #include "kit/dataset_source.hpp"
+#include "registration/row_keys.hpp"
 #include "sextant/eval/small_sample_intervals.hpp"
 
 namespace sextant {
@@ -20,7 +21,7 @@ Claim not_comparable(const std::string& statement, const std::string& why) {
 std::vector<bool> row_successes(const std::vector<const RunRow*>& rows) {
   std::vector<bool> v;
   v.reserve(rows.size());
-  for (const RunRow* r : rows) v.push_back(r->value("success") > 0.5);
+  for (const RunRow* r : rows) v.push_back(r->value(keys::kSuccess) > 0.5);
   return v;
 }
 
@@ -62,8 +63,8 @@ Claim claim_speedup(const std::string& statement, const MethodRows* slow, const 
   if (!slow || !fast) return not_comparable(statement, "a method has no runs");
   // Paired: each pair registered by both methods is one observation (its time ratio).
   const PairedRows p = pair_up(*slow, *fast);
-  const Interval ratio =
-      paired_ratio_interval(row_values(p.a, "seconds_registration"), row_values(p.b, "seconds_registration"));
+  const Interval ratio = paired_ratio_interval(row_values(p.a, keys::kSecondsRegistration),
+                                               row_values(p.b, keys::kSecondsRegistration));
   const Verdict v = std::isfinite(hi) ? verdict_in_band(ratio, lo, hi) : verdict_greater(ratio, lo);
   const std::string band = std::isfinite(hi)
                                ? "band [" + format_number(lo, 1) + ", " + format_number(hi, 1) + "]"
@@ -79,7 +80,7 @@ Claim claim_smaller_on_solved(const std::string& statement, const MethodRows* a,
   const PairedRows p = pair_up(*a, *b);
   std::vector<double> va, vb;
   for (std::size_t i = 0; i < p.a.size(); ++i) {
-    if (p.a[i]->value("success") > 0.5 && p.b[i]->value("success") > 0.5) {
+    if (p.a[i]->value(keys::kSuccess) > 0.5 && p.b[i]->value(keys::kSuccess) > 0.5) {
       va.push_back(p.a[i]->value(key));
       vb.push_back(p.b[i]->value(key));
     }
@@ -125,7 +126,7 @@ Claim claim_beats_guess(const MethodRows* m, const std::string& guess_name, std:
   // what the typical pair does.
   std::vector<double> difference;
   for (const RunRow* r : m->rows)
-    difference.push_back(r->value("translation_cm") - r->value("initial_translation_cm"));
+    difference.push_back(r->value(keys::kTranslationCm) - r->value(keys::kInitialTranslationCm));
   const Interval d = bootstrap_median(difference, seed);
   return Claim{statement, verdict_less(d, 0.0),
                "median of (error − guess error) per pair: " + describe(d, " cm"), ClaimKind::sanity};

@@ -15,7 +15,10 @@
 #include "kinds.hpp"
 #include "kit/adaptive_start.hpp"
 #include "kit/dataset_source.hpp"
+#include "kit/row_keys.hpp"
+#include "registration/layouts/layouts.hpp"
 #include "registration/report.hpp"
+#include "registration/row_keys.hpp"
 #include "registration/scenes.hpp"
 #include "registration/settings.hpp"
 #include "sextant/core/dataset.hpp"
@@ -129,30 +132,30 @@ class RegistrationSession : public KindSession {
     static const char* const kNames[6] = {"tx", "ty", "tz", "alpha", "beta", "gamma"};
     for (int k = 0; k < 6; ++k)
       row.values[std::string("error_") + kNames[k]] = error.parameters[static_cast<std::size_t>(k)];
-    row.values["translation_cm"] = error.translation_cm;
-    row.values["rotation_deg"] = error.rotation_deg;
-    row.values["initial_translation_cm"] = initial.translation_cm;
+    row.values[keys::kTranslationCm] = error.translation_cm;
+    row.values[keys::kRotationDeg] = error.rotation_deg;
+    row.values[keys::kInitialTranslationCm] = initial.translation_cm;
     row.values["initial_rotation_deg"] = initial.rotation_deg;
-    row.values["success"] =
+    row.values[keys::kSuccess] =
         thesis_success_criterion(params_.success).succeeded(error, m.result.converged) ? 1.0 : 0.0;
-    row.values["converged"] = m.result.converged ? 1.0 : 0.0;
+    row.values[keys::kConverged] = m.result.converged ? 1.0 : 0.0;
     row.values["termination"] = static_cast<double>(m.result.why);
-    row.values["iterations"] = m.result.iterations;
+    row.values[keys::kIterations] = m.result.iterations;
     row.values["seconds_align"] = m.result.seconds;
-    row.values["seconds_sampling"] = m.sampling_seconds;
-    row.values["seconds_registration"] = m.result.seconds + m.reference_seconds + m.sampling_seconds;
-    row.values["input_points"] = static_cast<double>(m.result.input_points);
-    row.values["matched_percent"] = m.result.input_points > 0
-                                        ? 100.0 * static_cast<double>(m.result.matched_points) /
-                                              static_cast<double>(m.result.input_points)
-                                        : NAN;
-    row.values["kept_fraction"] = m.kept_fraction;
-    if (!displaced) row.values["reference_scan"] = static_cast<double>(o.a);
-    row.series["estimate"] = isometry_to_series(m.result.T);
-    row.series["ground_truth"] = isometry_to_series(o.truth);
-    row.series["initial"] = isometry_to_series(o.guess);
+    row.values[keys::kSecondsSampling] = m.sampling_seconds;
+    row.values[keys::kSecondsRegistration] = m.result.seconds + m.reference_seconds + m.sampling_seconds;
+    row.values[keys::kInputPoints] = static_cast<double>(m.result.input_points);
+    row.values[keys::kMatchedPercent] = m.result.input_points > 0
+                                            ? 100.0 * static_cast<double>(m.result.matched_points) /
+                                                  static_cast<double>(m.result.input_points)
+                                            : NAN;
+    row.values[keys::kKeptFraction] = m.kept_fraction;
+    if (!displaced) row.values[keys::kReferenceScan] = static_cast<double>(o.a);
+    row.series[keys::kEstimate] = isometry_to_series(m.result.T);
+    row.series[keys::kGroundTruth] = isometry_to_series(o.truth);
+    row.series[keys::kInitial] = isometry_to_series(o.guess);
     if (!displaced && dataset_->odometry(o.a) && dataset_->odometry(o.b))
-      row.series["odometry"] =
+      row.series[keys::kOdometry] =
           isometry_to_series(relative(*dataset_->odometry(o.a), *dataset_->odometry(o.b)));
     std::vector<double> score, layer, step;
     for (const auto& t : m.result.trace) {
@@ -160,28 +163,28 @@ class RegistrationSession : public KindSession {
       layer.push_back(t.layer);
       step.push_back(t.step_norm);
     }
-    row.series["score"] = std::move(score);
-    row.series["layer"] = std::move(layer);
+    row.series[keys::kScore] = std::move(score);
+    row.series[keys::kLayer] = std::move(layer);
     row.series["step_norm"] = std::move(step);
-    if (displaced || params_.report == RegistrationLayout::kZeroGuess) {
+    if (displaced || params_.report->trace_xi) {
       std::vector<double> xi;  // [tx ty tz α β γ] after each iteration, eq. (3.12) (figs 5.3, 5.5, 5.12)
       for (const auto& t : m.result.trace) xi.insert(xi.end(), t.xi.data(), t.xi.data() + 6);
-      row.series["trace_xi"] = std::move(xi);
+      row.series[keys::kTraceXi] = std::move(xi);
     }
     if (displaced) record_displaced(o.scene, row);
   }
 
   /// E1's extras: the scene and offset, and the clouds of the snapshot run.
   void record_displaced(const DisplacedCase& c, RunRow& row) const {
-    row.values["scene"] = static_cast<double>(c.scene);
-    row.values["cell_edge_m"] = c.cell_edge;
+    row.values[keys::kScene] = static_cast<double>(c.scene);
+    row.values[keys::kCellEdgeM] = c.cell_edge;
     row.values["offset_m"] = c.offset_m;
     row.values["heading_deg"] = c.heading_deg;
     row.values["yaw_deg"] = c.yaw_deg;
     if (!c.snapshot) return;
     const int count = scenes_->settings().snapshot_points;
-    row.series["snapshot_reference"] = snapshot_points(*c.reference, count);
-    row.series["snapshot_input"] = snapshot_points(c.input, count);
+    row.series[keys::kSnapshotReference] = snapshot_points(*c.reference, count);
+    row.series[keys::kSnapshotInput] = snapshot_points(c.input, count);
   }
 
   /// The adaptive starting layer (kit/adaptive_start.hpp) as one run over every pair of the
@@ -216,11 +219,11 @@ class RegistrationSession : public KindSession {
       const bool failed = adaptive_failure(rule, o.m.result.T, odometry);
       failures += failed ? 1 : 0;
       ++done;
-      series["adaptive_pair"].push_back(static_cast<double>(o.a));
-      series["adaptive_start_layer"].push_back(layer);
-      series["adaptive_rule_failure"].push_back(failed ? 1.0 : 0.0);
-      for (const char* v :
-           {"success", "translation_cm", "rotation_deg", "seconds_registration", "iterations"})
+      series[keys::kAdaptivePair].push_back(static_cast<double>(o.a));
+      series[keys::kAdaptiveStartLayer].push_back(layer);
+      series[keys::kAdaptiveRuleFailure].push_back(failed ? 1.0 : 0.0);
+      for (const char* v : {keys::kSuccess, keys::kTranslationCm, keys::kRotationDeg,
+                            keys::kSecondsRegistration, keys::kIterations})
         series[std::string("adaptive_") + v].push_back(one.value(v));
     }
     for (auto& [name, values] : series) row.series[name] = std::move(values);
@@ -267,10 +270,9 @@ class RegistrationKind : public RunKind {
     if (params.pairs == PairSource::kDisplaced)
       check_displaced_sweep(config, read_displaced_settings(config, params));
     check_experiment_dataset(config, "registration");
-    check_registration_reference(config, params);
+    params.report->check_reference(config);
     for (const auto& m : config.methods) {
-      if (params.report != RegistrationLayout::kInitLayer &&
-          read_registration_method(m.node, config.file).adaptive)
+      if (!params.report->adaptive_start && read_registration_method(m.node, config.file).adaptive)
         throw InputError(
             config.file, at_line(yaml_line(m.node)),
             "key 'adaptive_start': the adaptive starting layer is reported by report: init_layer only");
@@ -289,15 +291,7 @@ class RegistrationKind : public RunKind {
     for (auto& r : used) {
       if (r && r->values.count("skipped") && r->value("skipped") > 0.5) r = nullptr;
     }
-    switch (params.report) {
-      case RegistrationLayout::kBasin: return basin_report(config, params, runs, used);
-      case RegistrationLayout::kInitLayer: return init_layer_report(config, params, runs, used);
-      case RegistrationLayout::kSampling: return sampling_report(config, params, runs, used);
-      case RegistrationLayout::kStrategies: return strategies_report(config, params, runs, used);
-      case RegistrationLayout::kZeroGuess: return zero_guess_report(config, params, runs, used);
-      case RegistrationLayout::kAccuracy: break;
-    }
-    return accuracy_report(config, params, runs, used);
+    return params.report->report(config, params, runs, used);
   }
 };
 

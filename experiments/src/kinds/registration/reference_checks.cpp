@@ -1,4 +1,5 @@
-// The checks of each registration layout's `reference:` block (InputError with file, line, key).
+// The checks of each registration layout's `reference:` block (InputError with file, line, key),
+// named in the layout table (registration/layouts/layouts.cpp).
 #include <array>
 #include <optional>
 
@@ -104,46 +105,49 @@ ParameterReference read_parameter_reference(const YAML::Node& node, const std::s
   return r;
 }
 
-void check_registration_reference(const ExperimentConfig& config, const RegistrationParams& params) {
-  if (params.report == RegistrationLayout::kBasin) {
-    (void)read_basin_report_settings(config);
-    return;
-  }
+void check_accuracy_reference(const ExperimentConfig& config) {
   SettingsReader in(config.reference, config.file);
-  switch (params.report) {
-    case RegistrationLayout::kAccuracy: {
-      const YAML::Node odometry = in.child("odometry");
-      if (odometry.IsDefined() && !odometry.IsNull()) check_accuracy_method(odometry, config.file);
-      check_map_of(in.child("methods"), config.file, "methods", check_accuracy_method);
-      break;
-    }
-    case RegistrationLayout::kBasin: break;  // read_basin_report_settings, above
-    case RegistrationLayout::kInitLayer:
-      check_map_of(in.child("table_5_8"), config.file, "table_5_8", check_layer_row);
-      check_map_of(in.child("guideline"), config.file, "guideline", check_guideline);
-      break;
-    case RegistrationLayout::kSampling: {
-      check_map_of(in.child("methods"), config.file, "methods", check_accuracy_method);
-      check_map_of(in.child("table_5_7"), config.file, "table_5_7", check_sampling_row);
-      break;
-    }
-    case RegistrationLayout::kStrategies: {
-      check_map_of(in.child("table_5_9"), config.file, "table_5_9", check_strategy_row);
-      SettingsReader sampling(in.child("sampling_seconds"), config.file);
-      SettingsReader below(in.child("mean_error_below"), config.file);
-      double x = 0;
-      for (const char* key : {"fbs", "gbs"}) sampling.read(key, x);
-      for (const char* key : {"translation_cm", "rotation_deg"}) below.read(key, x);
-      sampling.finish();
-      below.finish();
-      break;
-    }
-    case RegistrationLayout::kZeroGuess: {
-      double x = 0;
-      for (const char* key : {"iterations", "error_cm"}) in.read(key, x);
-      break;
-    }
-  }
+  const YAML::Node odometry = in.child("odometry");
+  if (odometry.IsDefined() && !odometry.IsNull()) check_accuracy_method(odometry, config.file);
+  check_map_of(in.child("methods"), config.file, "methods", check_accuracy_method);
+  in.finish();
+}
+
+void check_basin_reference(const ExperimentConfig& config) {
+  (void)read_basin_report_settings(config);
+}
+
+void check_init_layer_reference(const ExperimentConfig& config) {
+  SettingsReader in(config.reference, config.file);
+  check_map_of(in.child("table_5_8"), config.file, "table_5_8", check_layer_row);
+  check_map_of(in.child("guideline"), config.file, "guideline", check_guideline);
+  in.finish();
+}
+
+void check_sampling_reference(const ExperimentConfig& config) {
+  SettingsReader in(config.reference, config.file);
+  check_map_of(in.child("methods"), config.file, "methods", check_accuracy_method);
+  check_map_of(in.child("table_5_7"), config.file, "table_5_7", check_sampling_row);
+  in.finish();
+}
+
+void check_strategies_reference(const ExperimentConfig& config) {
+  SettingsReader in(config.reference, config.file);
+  check_map_of(in.child("table_5_9"), config.file, "table_5_9", check_strategy_row);
+  SettingsReader sampling(in.child("sampling_seconds"), config.file);
+  SettingsReader below(in.child("mean_error_below"), config.file);
+  double x = 0;
+  for (const char* key : {"fbs", "gbs"}) sampling.read(key, x);
+  for (const char* key : {"translation_cm", "rotation_deg"}) below.read(key, x);
+  sampling.finish();
+  below.finish();
+  in.finish();
+}
+
+void check_zero_guess_reference(const ExperimentConfig& config) {
+  SettingsReader in(config.reference, config.file);
+  double x = 0;
+  for (const char* key : {"iterations", "error_cm"}) in.read(key, x);
   in.finish();
 }
 

@@ -1,8 +1,7 @@
 #pragma once
-// The `registration` kind's report sections, one file per layout in registration/layouts/
-// (accuracy, convergence_basin, init_layer, sampling, strategies, zero_guess), and what they share:
-// rows as eval's RegistrationSample, the stats settings, the reference-block checks
-// (reference_checks.cpp).
+// What the `registration` kind's report layouts share (one file per layout in
+// registration/layouts/, one line each in the table of registration/layouts/layouts.cpp): rows as
+// eval's RegistrationSample, the stats settings, the thesis' per-parameter reference.
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,21 +30,5 @@ RegistrationStatsSettings stats_settings(const RegistrationParams& params);
 
 /// The thesis' mean / std / max per parameter: {mean: [6 numbers or null], std: [...], max: [...]}.
 ParameterReference read_parameter_reference(const YAML::Node& node, const std::string& file);
-
-/// Checks the reference block of the chosen layout (InputError with file, line, key).
-void check_registration_reference(const ExperimentConfig& config, const RegistrationParams& params);
-
-ReportSection accuracy_report(const ExperimentConfig& config, const RegistrationParams& params,
-                              const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows);
-ReportSection basin_report(const ExperimentConfig& config, const RegistrationParams& params,
-                           const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows);
-ReportSection init_layer_report(const ExperimentConfig& config, const RegistrationParams& params,
-                                const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows);
-ReportSection sampling_report(const ExperimentConfig& config, const RegistrationParams& params,
-                              const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows);
-ReportSection strategies_report(const ExperimentConfig& config, const RegistrationParams& params,
-                                const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows);
-ReportSection zero_guess_report(const ExperimentConfig& config, const RegistrationParams& params,
-                                const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows);
 
 }  // namespace sextant

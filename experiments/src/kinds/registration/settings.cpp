@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "registration/layouts/layouts.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/matchers/feature_based_sampler.hpp"
@@ -88,22 +89,8 @@ RegistrationParams read_registration_params(const ExperimentConfig& config) {
     in.fail("axes", "key 'axes': '" + axes + "' is not uos or internal");
   }
   in.read("report", report);
-  if (report == "accuracy") {
-    p.report = RegistrationLayout::kAccuracy;
-  } else if (report == "basin") {
-    p.report = RegistrationLayout::kBasin;
-  } else if (report == "init_layer") {
-    p.report = RegistrationLayout::kInitLayer;
-  } else if (report == "sampling") {
-    p.report = RegistrationLayout::kSampling;
-  } else if (report == "strategies") {
-    p.report = RegistrationLayout::kStrategies;
-  } else if (report == "zero_guess") {
-    p.report = RegistrationLayout::kZeroGuess;
-  } else {
-    in.fail("report", "key 'report': '" + report +
-                          "' is not accuracy, basin, init_layer, sampling, strategies or zero_guess");
-  }
+  p.report = find_registration_layout(report);
+  if (!p.report) in.fail("report", "key 'report': '" + report + "' is not " + registration_layout_names());
   in.read("baseline", p.baseline);
   in.read("proposed", p.proposed);
   p.displaced = in.child("displaced");

@@ -16,8 +16,8 @@
 //     second: 1                   # … and input scan index (default scan + 1)
 //     success: translation_50cm   # eval's thesis_success_criterion name
 //     axes: uos                   # uos (the thesis' tables) | internal
-//     report: accuracy            # accuracy | basin | init_layer | sampling
-//                                 # | strategies | zero_guess
+//     report: accuracy            # a layout of the table in registration/layouts/layouts.cpp:
+//                                 # accuracy | basin | init_layer | sampling | strategies | zero_guess
 //     baseline: ndt               # report: the method compared against ...
 //     proposed: mlndt             # ... this one in the claims
 //     displaced: {...}            # displaced: several scenes, offsets in NDT cells (registration/scenes.hpp)
@@ -41,7 +41,7 @@ namespace sextant {
 
 enum class PairSource { kConsecutive, kDisplaced };
 enum class GuessSource { kOdometry, kIdentity, kScaled };
-enum class RegistrationLayout { kAccuracy, kBasin, kInitLayer, kSampling, kStrategies, kZeroGuess };
+struct RegistrationLayout;  // registration/layouts/layouts.hpp
 
 struct RegistrationParams {
   PairSource pairs = PairSource::kConsecutive;
@@ -50,10 +50,10 @@ struct RegistrationParams {
   std::size_t second = 1;  ///< displaced: input scan index
   std::string success = "translation_50cm";
   AxisConvention axes = AxisConvention::uos;
-  RegistrationLayout report = RegistrationLayout::kAccuracy;
-  std::string baseline;         ///< method name (may be empty)
-  std::string proposed;         ///< method name (may be empty)
-  std::string thesis_baseline;  ///< thesis-faithful variant of the baseline (may be empty)
+  const RegistrationLayout* report = nullptr;  ///< the `report:` line of the layout table (set on read)
+  std::string baseline;                        ///< method name (may be empty)
+  std::string proposed;                        ///< method name (may be empty)
+  std::string thesis_baseline;                 ///< thesis-faithful variant of the baseline (may be empty)
   std::string thesis_proposed;  ///< thesis-faithful variant of the proposed method (may be empty)
   YAML::Node displaced;         ///< displaced: scenes and offset unit (registration/scenes.hpp); may be null
 

@@ -14,7 +14,10 @@
 #include "kinds.hpp"
 #include "kit/dataset_source.hpp"
 #include "kit/row_codec.hpp"
+#include "kit/row_keys.hpp"
+#include "sequence/layouts/layouts.hpp"
 #include "sequence/report.hpp"
+#include "sequence/row_keys.hpp"
 #include "sequence/settings.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/pose.hpp"
@@ -123,12 +126,12 @@ class SequenceSession : public KindSession {
     std::vector<double> alarms(params_.scans, 0.0), covariance;
     if (params_.filter == SequenceFilter::kKf) estimate = run_kf(steps, odometry, alarms, covariance);
 
-    row.series["ground_truth"] = poses_to_series(truth_);
-    row.series["odometry"] = poses_to_series(odometry);
-    row.series["estimate"] = poses_to_series(estimate);
+    row.series[keys::kGroundTruth] = poses_to_series(truth_);
+    row.series[keys::kOdometry] = poses_to_series(odometry);
+    row.series[keys::kEstimate] = poses_to_series(estimate);
     if (params_.filter == SequenceFilter::kKf) {
-      row.series["matcher"] = poses_to_series(chained);
-      row.series["covariance_xyz"] = std::move(covariance);
+      row.series[keys::kMatcher] = poses_to_series(chained);
+      row.series[keys::kCovarianceXyz] = std::move(covariance);
     }
     std::vector<double> converged, iterations, seconds;
     double total_seconds = 0, failures = 0;
@@ -139,27 +142,27 @@ class SequenceSession : public KindSession {
       total_seconds += step.seconds;
       failures += step.converged ? 0 : 1;
     }
-    row.series["converged"] = std::move(converged);
-    row.series["iterations"] = std::move(iterations);
-    row.series["seconds"] = std::move(seconds);
+    row.series[keys::kConverged] = std::move(converged);
+    row.series[keys::kIterations] = std::move(iterations);
+    row.series[keys::kSeconds] = std::move(seconds);
     const std::vector<double> odometry_xy = horizontal_errors(odometry, truth_);
     const std::vector<double> estimate_xy = horizontal_errors(estimate, truth_);
-    row.values["end_xy_odometry"] = odometry_xy.back();
-    row.values["end_xy_estimate"] = estimate_xy.back();
+    row.values[keys::kEndXyOdometry] = odometry_xy.back();
+    row.values[keys::kEndXyEstimate] = estimate_xy.back();
     row.values["end_3d_estimate"] = position_errors(estimate, truth_).back();
     row.values["end_xy_matcher"] = horizontal_errors(chained, truth_).back();
     row.values["max_xy_odometry"] = *std::max_element(odometry_xy.begin(), odometry_xy.end());
     row.values["max_xy_estimate"] = *std::max_element(estimate_xy.begin(), estimate_xy.end());
-    row.values["mean_xy_odometry"] = mean_of(odometry_xy);
-    row.values["mean_xy_estimate"] = mean_of(estimate_xy);
+    row.values[keys::kMeanXyOdometry] = mean_of(odometry_xy);
+    row.values[keys::kMeanXyEstimate] = mean_of(estimate_xy);
     row.values["mean_xy_matcher"] = mean_of(horizontal_errors(chained, truth_));
     row.values["path_length"] = path_distances(truth_).back();
-    row.values["not_converged"] = failures;
+    row.values[keys::kNotConverged] = failures;
     row.values["seconds_registration_mean"] = total_seconds / static_cast<double>(params_.scans - 1);
     if (params_.filter == SequenceFilter::kKf) {
       double count = 0;
       for (const double a : alarms) count += a;
-      row.values["alarms"] = count;
+      row.values[keys::kAlarms] = count;
       row.series["alarm"] = std::vector<double>(alarms.begin() + 1, alarms.end());
     }
   }
@@ -218,7 +221,7 @@ class SequenceKind : public RunKind {
     if (params.odometry == SequenceOdometry::kDataset && config.repetitions > 1)
       throw InputError(config.file, "",
                        "key 'repetitions': with odometry: dataset every repetition would be identical");
-    check_sequence_reference(config, params);
+    params.report->check_reference(config);
   }
 
   std::unique_ptr<KindSession> prepare(const ExperimentConfig& config, const PrepareContext&) const override {
@@ -228,8 +231,7 @@ class SequenceKind : public RunKind {
   ReportSection report(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
                        const std::vector<const RunRow*>& rows) const override {
     const SequenceParams params = read_sequence_params(config);
-    if (params.report == SequenceLayout::kKalman) return kalman_report(config, params, runs, rows);
-    return dead_reckoning_report(config, params, runs, rows);
+    return params.report->report(config, params, runs, rows);
   }
 };
 

@@ -7,6 +7,8 @@
 #include <functional>
 #include <limits>
 
+#include "kit/row_keys.hpp"
+#include "sequence/row_keys.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/core/units.hpp"
@@ -65,11 +67,11 @@ std::vector<TrajectoryRun> trajectory_runs(const std::vector<RunSpec>& runs,
     r.method = runs[i].method_index;
     r.repetition = runs[i].repetition;
     r.row = rows[i];
-    r.truth = series_to_poses(series_or_empty(*rows[i], "ground_truth"));
-    r.odometry = series_to_poses(series_or_empty(*rows[i], "odometry"));
-    r.estimate = series_to_poses(series_or_empty(*rows[i], "estimate"));
-    r.matcher = series_to_poses(series_or_empty(*rows[i], "matcher"));
-    const auto& c = series_or_empty(*rows[i], "covariance_xyz");
+    r.truth = series_to_poses(series_or_empty(*rows[i], keys::kGroundTruth));
+    r.odometry = series_to_poses(series_or_empty(*rows[i], keys::kOdometry));
+    r.estimate = series_to_poses(series_or_empty(*rows[i], keys::kEstimate));
+    r.matcher = series_to_poses(series_or_empty(*rows[i], keys::kMatcher));
+    const auto& c = series_or_empty(*rows[i], keys::kCovarianceXyz);
     for (std::size_t k = 0; k + 9 <= c.size(); k += 9)
       r.covariance.push_back(Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(c.data() + k));
     if (r.truth.size() < 2 || r.odometry.size() != r.truth.size() || r.estimate.size() != r.truth.size())
@@ -199,14 +201,16 @@ void add_metric_rows(Table& table, const std::string& label, const std::vector<T
                  number_or_missing(rpe_r, 3), number_or_missing(drift)});
 }
 
-void check_sequence_reference(const ExperimentConfig& config, const SequenceParams& params) {
+void check_dead_reckoning_reference(const ExperimentConfig& config) {
   SettingsReader in(config.reference, config.file);
-  if (params.report == SequenceLayout::kDeadReckoning) {
-    check_numbers(in, {"end_point_error_odometry", "end_point_error_matcher", "ratio_below"});
-    check_band(in, "ratio_band");
-  } else {
-    check_numbers(in, {"alarms", "alarm_rate_below"});
-  }
+  check_numbers(in, {"end_point_error_odometry", "end_point_error_matcher", "ratio_below"});
+  check_band(in, "ratio_band");
+  in.finish();
+}
+
+void check_kalman_reference(const ExperimentConfig& config) {
+  SettingsReader in(config.reference, config.file);
+  check_numbers(in, {"alarms", "alarm_rate_below"});
   in.finish();
 }
 

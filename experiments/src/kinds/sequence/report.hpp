@@ -1,7 +1,8 @@
 #pragma once
 // The `sequence` kind's report sections, one file per layout in sequence/layouts/
 // (dead_reckoning, kalman), and what they share: rows decoded into trajectories, errors, the
-// trajectory figure, TUM files, the metrics table, the reference-block checks.
+// trajectory figure, TUM files, the metrics table, the reference-block checks (named in the
+// layout table, sequence/layouts/layouts.cpp).
 #include <string>
 #include <utility>
 #include <vector>
@@ -74,13 +75,5 @@ Table metrics_table(const std::string& caption, const std::string& label, std::s
 /// One row of that table for the trajectory `member` of every run.
 void add_metric_rows(Table& table, const std::string& label, const std::vector<TrajectoryRun>& runs,
                      PoseList TrajectoryRun::*member);
-
-/// Checks the reference block of the chosen layout (InputError with file, line, key).
-void check_sequence_reference(const ExperimentConfig& config, const SequenceParams& params);
-
-ReportSection dead_reckoning_report(const ExperimentConfig& config, const SequenceParams& params,
-                                    const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows);
-ReportSection kalman_report(const ExperimentConfig& config, const SequenceParams& params,
-                            const std::vector<RunSpec>& runs, const std::vector<const RunRow*>& rows);
 
 }  // namespace sextant

@@ -1,5 +1,6 @@
 #include "sequence/settings.hpp"
 
+#include "sequence/layouts/layouts.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/core/units.hpp"
@@ -64,18 +65,13 @@ SequenceParams read_sequence_params(const ExperimentConfig& config) {
   }
   read_kf(in, p);
   in.read("report", report);
-  if (report == "dead_reckoning") {
-    p.report = SequenceLayout::kDeadReckoning;
-  } else if (report == "kalman") {
-    p.report = SequenceLayout::kKalman;
-    if (p.filter != SequenceFilter::kKf)
-      in.fail("report", "key 'report': the kalman layout needs filter: kf");
-  } else {
-    in.fail("report", "key 'report': '" + report + "' is not dead_reckoning or kalman");
-  }
+  p.report = find_sequence_layout(report);
+  if (!p.report) in.fail("report", "key 'report': '" + report + "' is not " + sequence_layout_names());
+  if (p.report->needs_kf && p.filter != SequenceFilter::kKf)
+    in.fail("report", "key 'report': the " + report + " layout needs filter: kf");
   in.read("ellipses_at", p.ellipses_at);
   for (const int k : p.ellipses_at) {
-    if (p.report != SequenceLayout::kKalman) break;  // only the kalman layout draws ellipses
+    if (!p.report->ellipses) break;  // only a layout that draws ellipses
     if (k < 1 || static_cast<std::size_t>(k) > p.scans)
       in.fail("ellipses_at",
               "key 'ellipses_at': " + std::to_string(k) + " is not a scan number in [1, scans]");

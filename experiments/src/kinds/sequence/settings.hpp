@@ -15,7 +15,7 @@
 //                                 # kf: Table 3.3's linear KF, control = odometry increment
 //     kf: {sigma_translation: 0.8, sigma_rotation_deg: 1, alarm_translation: 2,
 //          alarm_rotation_deg: 10, measurement_noise_scale: 1, initial_sigma: 0.01}
-//     report: dead_reckoning      # dead_reckoning | kalman
+//     report: dead_reckoning      # a layout of sequence/layouts/layouts.cpp: dead_reckoning | kalman
 //     ellipses_at: [15, 30, 45, 60]   # kalman: 1-based scan numbers with covariance ellipses
 //     ellipse_scale: 0            # kalman: ellipses drawn at this many σ (the thesis exaggerates);
 //                                 #   0 = automatic (the largest ≈ 3 % of the map), stated in the legend
@@ -33,17 +33,17 @@ namespace sextant {
 
 enum class SequenceOdometry { kSimulated, kDataset };
 enum class SequenceFilter { kNone, kKf };
-enum class SequenceLayout { kDeadReckoning, kKalman };
+struct SequenceLayout;  // sequence/layouts/layouts.hpp
 
 struct SequenceParams {
   std::size_t first_scan = 0;
   std::size_t scans = 100;  ///< ≥ 2
   SequenceOdometry odometry = SequenceOdometry::kSimulated;
   SequenceFilter filter = SequenceFilter::kNone;
-  ScanMatchingKfSettings kf;           ///< Q and the alarm thresholds (radians inside)
-  double measurement_noise_scale = 1;  ///< R = scale · H⁻¹
-  double initial_sigma = 0.01;         ///< P0 = σ² I (the first pose is the true one) [m, rad]
-  SequenceLayout report = SequenceLayout::kDeadReckoning;
+  ScanMatchingKfSettings kf;               ///< Q and the alarm thresholds (radians inside)
+  double measurement_noise_scale = 1;      ///< R = scale · H⁻¹
+  double initial_sigma = 0.01;             ///< P0 = σ² I (the first pose is the true one) [m, rad]
+  const SequenceLayout* report = nullptr;  ///< the `report:` line of the layout table (set on read)
   std::vector<int> ellipses_at{15, 30, 45, 60};
   double ellipse_scale = 0;  ///< σ multiple of the drawn ellipses; 0 = automatic
 };

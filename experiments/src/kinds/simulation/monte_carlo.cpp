@@ -22,6 +22,7 @@
 #include <string>
 
 #include "kit/number_format.hpp"
+#include "kit/row_keys.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/settings_reader.hpp"
@@ -32,6 +33,7 @@
 #include "sextant/filters/yaml.hpp"
 #include "simulation/model.hpp"
 #include "simulation/monte_carlo_report.hpp"
+#include "simulation/row_keys.hpp"
 
 namespace sextant {
 namespace {
@@ -167,29 +169,29 @@ class RangeBearingMonteCarlo : public SimulationModel {
     }
     const double count = static_cast<double>(n);
     row.values["steps"] = count;
-    row.values["failed_steps"] = static_cast<double>(result.failed_steps);
+    row.values[keys::kFailedSteps] = static_cast<double>(result.failed_steps);
     row.values["landmarks_mapped"] = static_cast<double>(result.landmark_index.size());
-    row.values["mean_position_error_m"] = sum_pos / count;
-    row.values["mean_heading_error_deg"] = sum_head / count / kRadPerDeg;
+    row.values[keys::kMeanPositionErrorM] = sum_pos / count;
+    row.values[keys::kMeanHeadingErrorDeg] = sum_head / count / kRadPerDeg;
     row.values["max_position_error_m"] = max_pos;
-    row.values["final_position_error_m"] = pos.empty() ? NAN : pos.back();
-    row.values["dead_reckoning_error_m"] = sum_odo / count;
-    row.values["mean_along_track_m"] = along / count;
-    row.values["mean_cross_track_m"] = cross / count;
-    row.values["mean_signed_heading_deg"] = signed_head / count / kRadPerDeg;
+    row.values[keys::kFinalPositionErrorM] = pos.empty() ? NAN : pos.back();
+    row.values[keys::kDeadReckoningErrorM] = sum_odo / count;
+    row.values[keys::kMeanAlongTrackM] = along / count;
+    row.values[keys::kMeanCrossTrackM] = cross / count;
+    row.values[keys::kMeanSignedHeadingDeg] = signed_head / count / kRadPerDeg;
     row.series["t"] = t;
-    row.series["position_error_m"] = pos;
-    row.series["heading_error_deg"] = head;
+    row.series[keys::kPositionErrorM] = pos;
+    row.series[keys::kHeadingErrorDeg] = head;
     if (spec.repetition == 0) {  // fig. 5.36: one run's paths and map
-      row.series["truth_x"] = truth_x, row.series["truth_y"] = truth_y;
-      row.series["est_x"] = est_x, row.series["est_y"] = est_y;
+      row.series[keys::kTruthX] = truth_x, row.series[keys::kTruthY] = truth_y;
+      row.series[keys::kEstX] = est_x, row.series[keys::kEstY] = est_y;
       const Eigen::VectorXd mean = filter->mean();
       std::vector<double> mx, my;
       for (const auto& [id, index] : result.landmark_index) {
         mx.push_back(mean[3 + 2 * index]);
         my.push_back(mean[4 + 2 * index]);
       }
-      row.series["map_x"] = mx, row.series["map_y"] = my;
+      row.series[keys::kMapX] = mx, row.series[keys::kMapY] = my;
     }
   }
 

@@ -8,10 +8,12 @@
 #include "kit/filter_parameters.hpp"
 #include "kit/number_format.hpp"
 #include "kit/row_groups.hpp"
+#include "kit/row_keys.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/verdict.hpp"
 #include "sextant/experiments/run_row.hpp"
 #include "simulation/monte_carlo_report.hpp"
+#include "simulation/row_keys.hpp"
 
 namespace sextant {
 namespace {
@@ -74,9 +76,9 @@ ReportSection monte_carlo_report(const ExperimentConfig& config, const MonteCarl
   XYPlot heading{"Average orientation error norm over the runs", "time [s]", "heading error [deg]", {}};
   for (const auto& m : config.methods) {
     if (!methods.count(m.name)) continue;
-    auto [t, e] = mean_curve(methods[m.name], "position_error_m");
+    auto [t, e] = mean_curve(methods[m.name], keys::kPositionErrorM);
     position.add_line(m.name, t, e);
-    auto [th, h] = mean_curve(methods[m.name], "heading_error_deg");
+    auto [th, h] = mean_curve(methods[m.name], keys::kHeadingErrorDeg);
     heading.add_line(m.name, th, h);
   }
   // The UKF's and the RSPKF's curves nearly coincide: dash patterns and markers keep both visible.
@@ -99,17 +101,17 @@ ReportSection monte_carlo_report(const ExperimentConfig& config, const MonteCarl
     if (found == methods.end() || found->second.rows.front()->repetition != 0) continue;
     const RunRow& r = *found->second.rows.front();
     if (!truth_drawn) {
-      map.series.push_back({"true path", series_or_empty(r, "truth_x"), series_or_empty(r, "truth_y"),
+      map.series.push_back({"true path", series_or_empty(r, keys::kTruthX), series_or_empty(r, keys::kTruthY),
                             PlotSeries::Style::line, "#000000"});
       truth_drawn = true;
     }
     static const char* const kDashes[] = {"", "7 4", "2 3"};
     static const PlotSeries::Marker kShapes[] = {PlotSeries::Marker::square, PlotSeries::Marker::triangle,
                                                  PlotSeries::Marker::diamond};
-    map.add_line(m.name + " path", series_or_empty(r, "est_x"), series_or_empty(r, "est_y"));
+    map.add_line(m.name + " path", series_or_empty(r, keys::kEstX), series_or_empty(r, keys::kEstY));
     map.series.back().dash = kDashes[drawn % 3];
-    map.series.push_back({m.name + " landmarks", series_or_empty(r, "map_x"), series_or_empty(r, "map_y"),
-                          PlotSeries::Style::markers, ""});
+    map.series.push_back({m.name + " landmarks", series_or_empty(r, keys::kMapX),
+                          series_or_empty(r, keys::kMapY), PlotSeries::Style::markers, ""});
     map.series.back().marker = kShapes[drawn % 3];
     map.series.back().marker_size = 3.5;
     ++drawn;
@@ -134,15 +136,15 @@ ReportSection monte_carlo_report(const ExperimentConfig& config, const MonteCarl
   table.add_number_column("failed steps", 0);
   const auto add_row = [&](const std::string& name, const MethodRows& m, bool dead_reckoning) {
     std::vector<Cell> cells{Cell::text(name), Cell::number(static_cast<double>(m.rows.size()))};
-    for (const char* v : {"mean_position_error_m", "mean_heading_error_deg", "mean_along_track_m",
-                          "mean_cross_track_m", "mean_signed_heading_deg"}) {
-      const bool shown = !dead_reckoning || std::string(v) == "mean_position_error_m";
-      const Interval i = mean_interval(m.values(dead_reckoning && shown ? "dead_reckoning_error_m" : v));
+    for (const char* v : {keys::kMeanPositionErrorM, keys::kMeanHeadingErrorDeg, keys::kMeanAlongTrackM,
+                          keys::kMeanCrossTrackM, keys::kMeanSignedHeadingDeg}) {
+      const bool shown = !dead_reckoning || std::string(v) == keys::kMeanPositionErrorM;
+      const Interval i = mean_interval(m.values(dead_reckoning && shown ? keys::kDeadReckoningErrorM : v));
       for (double x : {i.estimate, i.lo, i.hi})
         cells.push_back(shown ? number_or_missing(x) : Cell::missing());
     }
     double failed = 0;
-    for (double f : m.values("failed_steps")) failed += f;
+    for (double f : m.values(keys::kFailedSteps)) failed += f;
     cells.push_back(dead_reckoning ? Cell::missing() : Cell::number(failed));
     table.add_row(std::move(cells));
   };
@@ -170,9 +172,9 @@ ReportSection monte_carlo_report(const ExperimentConfig& config, const MonteCarl
                         number_or_missing(d.hi), Cell::number(static_cast<double>(d.n))});
     return d;
   };
-  const Interval dp = difference("mean_position_error_m", 1);
-  const Interval dh = difference("mean_heading_error_deg", 2);
-  (void)difference("final_position_error_m", 3);
+  const Interval dp = difference(keys::kMeanPositionErrorM, 1);
+  const Interval dh = difference(keys::kMeanHeadingErrorDeg, 2);
+  (void)difference(keys::kFinalPositionErrorM, 3);
   section.tables.push_back(diff_table);
   section.claims.push_back({"The RSPKF's average position error norm is below the UKF's (fig. 5.35)",
                             verdict_less(dp, 0.0),
@@ -181,9 +183,9 @@ ReportSection monte_carlo_report(const ExperimentConfig& config, const MonteCarl
                             verdict_less(dh, 0.0),
                             p.proposed + " − " + p.baseline + " per repetition " + describe(dh, "°", 3)});
 
-  const Interval along = mean_interval(prop.values("mean_along_track_m"));
-  const Interval cross = mean_interval(prop.values("mean_cross_track_m"));
-  const Interval sh = mean_interval(prop.values("mean_signed_heading_deg"));
+  const Interval along = mean_interval(prop.values(keys::kMeanAlongTrackM));
+  const Interval cross = mean_interval(prop.values(keys::kMeanCrossTrackM));
+  const Interval sh = mean_interval(prop.values(keys::kMeanSignedHeadingDeg));
   const double bp = p.bias_band_position, bh = p.bias_band_heading_deg;
   section.claims.push_back({"The RSPKF has no systematic error: its mean signed error is zero (within ±" +
                                 format_number(bp, 2) + " m, ±" + format_number(bh, 2) + "°)",
@@ -192,7 +194,7 @@ ReportSection monte_carlo_report(const ExperimentConfig& config, const MonteCarl
                             "along track " + describe(along, " m", 3) + ", cross track " +
                                 describe(cross, " m", 3) + ", heading " + describe(sh, "°", 3)});
   for (const auto& [name, m] : methods) {
-    std::vector<double> est = m.values("mean_position_error_m"), odo = m.values("dead_reckoning_error_m");
+    std::vector<double> est = m.values(keys::kMeanPositionErrorM), odo = m.values(keys::kDeadReckoningErrorM);
     const Interval d = bootstrap_paired_mean_difference(est, odo, config.seed + 7);
     section.claims.push_back({name + " is more accurate than dead reckoning of the same controls",
                               verdict_less(d, 0.0), "error − dead-reckoning error " + describe(d, " m", 3),

@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "kit/number_format.hpp"
+#include "kit/row_keys.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/settings_reader.hpp"
@@ -25,6 +26,7 @@
 #include "sextant/matchers/yaml.hpp"
 #include "simulation/model.hpp"
 #include "simulation/room.hpp"
+#include "simulation/row_keys.hpp"
 
 namespace sextant {
 namespace {
@@ -125,8 +127,8 @@ class Room2dModel : public SimulationModel {
     }
     const TimeLag lag = estimate_time_lag(path, t, ex, ey, p.lag_max, p.lag_step);
     const double updates = static_cast<double>(r.updates);
-    row.values["scans"] = n - 1;
-    row.values["updates"] = updates;
+    row.values[keys::kScans] = n - 1;
+    row.values[keys::kUpdates] = updates;
     row.values["rms_estimate_m"] = std::sqrt(sq_est / n);
     row.values["rms_odometry_m"] = std::sqrt(sq_odo / n);
     row.values["final_estimate_m"] = (r.steps.back().estimate - r.steps.back().truth).head<2>().norm();
@@ -138,9 +140,9 @@ class Room2dModel : public SimulationModel {
     row.values["along_track_m"] = along / n;
     row.values["xi_error_m"] = updates > 0 ? xi_error / updates : NAN;
     row.values["xi_sigma_m"] = updates > 0 ? xi_sigma / updates : NAN;
-    row.series = {{"t", t},          {"truth_x", tx},   {"truth_y", ty},    {"truth_h", th},
-                  {"est_x", ex},     {"est_y", ey},     {"est_h", eh},      {"odo_x", ox},
-                  {"odo_y", oy},     {"sigma_xy", sxy}, {"path_t", path.t}, {"path_x", path.x},
+    row.series = {{"t", t},          {keys::kTruthX, tx}, {keys::kTruthY, ty}, {"truth_h", th},
+                  {keys::kEstX, ex}, {keys::kEstY, ey},   {"est_h", eh},       {"odo_x", ox},
+                  {"odo_y", oy},     {"sigma_xy", sxy},   {"path_t", path.t},  {"path_x", path.x},
                   {"path_y", path.y}};
     if (spec.repetition == 0)
       record_scan_match(p.room, r, *matcher, spec.seed ^ 0x5CA11ULL, row);  // fig. 5.17
@@ -184,7 +186,7 @@ ReportFigure trajectory_figure(const RoomParams& p, const RunRow& row, const std
                                10,
                                2.0});
   plot.trajectories.push_back({method + " estimate",
-                               polyline(series_or_empty(row, "est_x"), series_or_empty(row, "est_y")),
+                               polyline(series_or_empty(row, keys::kEstX), series_or_empty(row, keys::kEstY)),
                                "#1f77b4",
                                {},
                                10,
@@ -233,10 +235,10 @@ ReportSection Room2dModel::report(const ExperimentConfig& config, const std::vec
       if (t.empty())
         t = rt, e_sum.assign(t.size(), 0.0), o_sum.assign(t.size(), 0.0), count.assign(t.size(), 0.0);
       for (std::size_t k = 0; k < std::min(t.size(), rt.size()); ++k) {
-        e_sum[k] += std::hypot(series_or_empty(r, "est_x")[k] - series_or_empty(r, "truth_x")[k],
-                               series_or_empty(r, "est_y")[k] - series_or_empty(r, "truth_y")[k]);
-        o_sum[k] += std::hypot(series_or_empty(r, "odo_x")[k] - series_or_empty(r, "truth_x")[k],
-                               series_or_empty(r, "odo_y")[k] - series_or_empty(r, "truth_y")[k]);
+        e_sum[k] += std::hypot(series_or_empty(r, keys::kEstX)[k] - series_or_empty(r, keys::kTruthX)[k],
+                               series_or_empty(r, keys::kEstY)[k] - series_or_empty(r, keys::kTruthY)[k]);
+        o_sum[k] += std::hypot(series_or_empty(r, "odo_x")[k] - series_or_empty(r, keys::kTruthX)[k],
+                               series_or_empty(r, "odo_y")[k] - series_or_empty(r, keys::kTruthY)[k]);
         count[k] += 1;
       }
     }
@@ -276,9 +278,9 @@ ReportSection Room2dModel::report(const ExperimentConfig& config, const std::vec
                   "time shift τ [s]",
                   "RMS distance ‖ê(t) − p(t − τ)‖ [m]",
                   {}};
-      const TimeLag lag =
-          estimate_time_lag(path_of(*first), series_or_empty(*first, "t"), series_or_empty(*first, "est_x"),
-                            series_or_empty(*first, "est_y"), p.lag_max, p.lag_step);
+      const TimeLag lag = estimate_time_lag(path_of(*first), series_or_empty(*first, "t"),
+                                            series_or_empty(*first, keys::kEstX),
+                                            series_or_empty(*first, keys::kEstY), p.lag_max, p.lag_step);
       cost.add_line(method, lag.taus, lag.rms);
       section.figures.push_back(
           {"lag_alignment_" + method,

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kit/row_keys.hpp"
 #include "plane_slam/report.hpp"
+#include "plane_slam/row_keys.hpp"
 #include "sextant/eval/statistics.hpp"
 #include "sextant/eval/verdict.hpp"
 
@@ -44,8 +46,8 @@ Table error_table(const ExperimentConfig& config, const PlaneSlamRows& data, con
                thesis("max_error_m", "odometry"),
                number_or_missing(median_of(g.values("odometry_max_error_scan"))),
                thesis("max_error_scan", "odometry"),
-               number_or_missing(median_of(g.values("odometry_final_error_m"))),
-               number_or_missing(median_of(g.values("odometry_mean_error_m")))});
+               number_or_missing(median_of(g.values(keys::kOdometryFinalErrorM))),
+               number_or_missing(median_of(g.values(keys::kOdometryMeanErrorM)))});
   }
   for (const PlaneSlamGroup* g : groups) {
     t.add_row({Cell::text(g->method), number_or_missing(median_of(g->values("max_error_m"))),
@@ -54,8 +56,8 @@ Table error_table(const ExperimentConfig& config, const PlaneSlamRows& data, con
                number_or_missing(median_of(g->values("mean_error_m"))),
                number_or_missing(median_of(g->values("mean_nees"))),
                number_or_missing(100.0 * median_of(g->values("inconsistent_fraction"))),
-               number_or_missing(median_of(g->values("failed_steps"))),
-               number_or_missing(median_of(g->values("map_size")))});
+               number_or_missing(median_of(g->values(keys::kFailedSteps))),
+               number_or_missing(median_of(g->values(keys::kMapSize)))});
   }
   return t;
 }
@@ -88,11 +90,11 @@ Table failure_table(const PlaneSlamRows& data) {
       double ended = static_cast<double>(g->ended.size());
       double failed_runs = ended, npd = 0, chol = 0, first = NAN;
       for (const RunRow* r : g->rows) {
-        if (r->value("ended_by_failures") > 0) ++ended;  // failures_are_results: kept as a row
-        if (r->value("failed_steps") > 0) ++failed_runs;
-        npd += r->value("not_positive_definite");
-        chol += r->value("cholesky_failures");
-        const double f = r->value("first_failure_scan");
+        if (r->value(keys::kEndedByFailures) > 0) ++ended;  // failures_are_results: kept as a row
+        if (r->value(keys::kFailedSteps) > 0) ++failed_runs;
+        npd += r->value(keys::kNotPositiveDefinite);
+        chol += r->value(keys::kCholeskyFailures);
+        const double f = r->value(keys::kFirstFailureScan);
         if (std::isfinite(f) && !(f >= first)) first = f;
       }
       t.add_row({Cell::text(point), Cell::text(g->method), Cell::number(failed_runs), Cell::number(ended),
@@ -114,9 +116,9 @@ ReportFigure nees_figure(const PlaneSlamRows& data, const PlaneSlamParams& param
   std::size_t n = 0;
   double bound = NAN;
   for (const PlaneSlamGroup* g : data.at(point)) {
-    const auto& y = series_or_empty(*g->first(), "nees");
+    const auto& y = series_or_empty(*g->first(), keys::kNees);
     n = std::max(n, y.size());
-    bound = g->first()->value("nees_bound");
+    bound = g->first()->value(keys::kNeesBound);
     plot.add_line(g->method, scan_axis(y.size()), y);
   }
   distinguish_series(plot);  // the methods only: the bound stays a plain line
@@ -142,11 +144,11 @@ ReportSection accuracy_report(const ExperimentConfig& config, const PlaneSlamPar
   for (const std::string& point : data.points) {
     section.tables.push_back(error_table(config, data, point));
     if (data.at(point).empty()) continue;
-    section.figures.push_back(error_figure(data, point, "error_m", "odometry_error_m", "error_vs_scan",
+    section.figures.push_back(error_figure(data, point, keys::kErrorM, keys::kOdometryErrorM, "error_vs_scan",
                                            "position error norm [m]", "Position error norm per scan"));
-    section.figures.push_back(error_figure(data, point, "rotation_error_deg", "odometry_rotation_error_deg",
-                                           "rotation_error_vs_scan", "rotation error norm [deg]",
-                                           "Rotation error norm per scan"));
+    section.figures.push_back(error_figure(data, point, keys::kRotationErrorDeg,
+                                           keys::kOdometryRotationErrorDeg, "rotation_error_vs_scan",
+                                           "rotation error norm [deg]", "Rotation error norm per scan"));
     section.figures.push_back(nees_figure(data, params, point));
   }
   if (data.points.size() > 1) section.tables.push_back(failure_table(data));

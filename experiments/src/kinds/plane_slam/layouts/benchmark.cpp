@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kit/row_keys.hpp"
 #include "plane_slam/report.hpp"
+#include "plane_slam/row_keys.hpp"
 #include "sextant/eval/sequence_analysis.hpp"
 #include "sextant/eval/statistics.hpp"
 #include "sextant/eval/verdict.hpp"
@@ -36,13 +38,15 @@ Table metrics_table(const ExperimentConfig& config, const PlaneSlamRows& data, c
       .add_compared_column("Kümmerle σ_R", 3);
   const auto add = [&](const std::string& name, const PlaneSlamGroup& g, const std::string& p) {
     const auto ref = [&](const char* key) { return number_or_missing(reference_value(config, key, name)); };
-    const double scans = prefix.empty() ? median_of(g.values("scans")) : double(g.first()->value("scans"));
-    t.add_row(
-        {Cell::text(name), number_or_missing(prefix.empty() ? scans : NAN),
-         number_or_missing(median_of(g.values(p + "wulf_translation_m"))), ref("wulf_translation_m"),
-         number_or_missing(median_of(g.values(p + "wulf_rotation_deg"))), ref("wulf_rotation_deg"),
-         number_or_missing(median_of(g.values(p + "kummerle_translation_m"))), ref("kummerle_translation_m"),
-         number_or_missing(median_of(g.values(p + "kummerle_rotation_deg"))), ref("kummerle_rotation_deg")});
+    const double scans =
+        prefix.empty() ? median_of(g.values(keys::kScans)) : double(g.first()->value(keys::kScans));
+    t.add_row({Cell::text(name), number_or_missing(prefix.empty() ? scans : NAN),
+               number_or_missing(median_of(g.values(p + keys::kWulfTranslationM))), ref("wulf_translation_m"),
+               number_or_missing(median_of(g.values(p + keys::kWulfRotationDeg))), ref("wulf_rotation_deg"),
+               number_or_missing(median_of(g.values(p + keys::kKummerleTranslationM))),
+               ref("kummerle_translation_m"),
+               number_or_missing(median_of(g.values(p + keys::kKummerleRotationDeg))),
+               ref("kummerle_rotation_deg")});
   };
   const auto groups = data.at(data.points.front());
   if (!groups.empty()) add("odometry", *groups.front(), prefix + "odometry_");
@@ -95,7 +99,7 @@ Claim spike_claim(const PlaneSlamGroup& g, const PlaneSlamParams& params,
   std::size_t spikes = 0, near = 0;
   std::vector<std::size_t> first_spikes;
   for (const RunRow* r : g.rows) {
-    const std::vector<std::size_t> s = robust_spikes(series_or_empty(*r, "kummerle_translation_m"),
+    const std::vector<std::size_t> s = robust_spikes(series_or_empty(*r, keys::kKummerleTranslationM),
                                                      params.spike_threshold, params.spike_window);
     if (r == g.first()) first_spikes = s;
     for (std::size_t d : distance_to_nearest(s, revisits)) {
@@ -142,9 +146,9 @@ ReportSection benchmark_report(const ExperimentConfig& config, const PlaneSlamPa
   // Loop closures from the ground truth of the longest run.
   const RunRow* longest = groups.front()->first();
   for (const PlaneSlamGroup* g : groups)
-    if (series_or_empty(*g->first(), "truth").size() > series_or_empty(*longest, "truth").size())
+    if (series_or_empty(*g->first(), keys::kTruth).size() > series_or_empty(*longest, keys::kTruth).size())
       longest = g->first();
-  const std::vector<Eigen::Vector3d> truth = positions(series_or_empty(*longest, "truth"));
+  const std::vector<Eigen::Vector3d> truth = positions(series_or_empty(*longest, keys::kTruth));
   const std::vector<std::size_t> revisits = revisit_starts(truth, params.revisit_radius, params.revisit_gap);
   section.notes += " Loop closures on this route (revisit radius " +
                    format_number(params.revisit_radius, 0, "n/a") + " m, gap " +
@@ -159,23 +163,23 @@ ReportSection benchmark_report(const ExperimentConfig& config, const PlaneSlamPa
                                                std::to_string(params.compare_scans) +
                                                " scans, which every filter ran (the claims compare these)",
                                            "benchmark_metrics_prefix"));
-  section.figures.push_back(metric_figure(data, "error_m", "wulf_translation_m", "wulf_translation",
+  section.figures.push_back(metric_figure(data, keys::kErrorM, keys::kWulfTranslationM, "wulf_translation",
                                           "position error [m]",
                                           "Wulf: position error per scan (figs 6.3–6.6)", {}));
-  section.figures.push_back(metric_figure(data, "rotation_error_deg", "wulf_rotation_deg", "wulf_rotation",
-                                          "orientation error [deg]",
+  section.figures.push_back(metric_figure(data, keys::kRotationErrorDeg, keys::kWulfRotationDeg,
+                                          "wulf_rotation", "orientation error [deg]",
                                           "Wulf: orientation error per scan (figs 6.3–6.6)", {}));
-  section.figures.push_back(metric_figure(data, "kummerle_translation_m", "kummerle_translation_m",
+  section.figures.push_back(metric_figure(data, keys::kKummerleTranslationM, keys::kKummerleTranslationM,
                                           "kummerle_translation", "relative translation error [m]",
                                           "Kümmerle: relative translation error per relation (figs 6.7–6.10)",
                                           revisits));
-  section.figures.push_back(metric_figure(data, "kummerle_rotation_deg", "kummerle_rotation_deg",
+  section.figures.push_back(metric_figure(data, keys::kKummerleRotationDeg, keys::kKummerleRotationDeg,
                                           "kummerle_rotation", "relative rotation error [deg]",
                                           "Kümmerle: relative rotation error per relation (figs 6.7–6.10)",
                                           revisits));
   section.claims = declared_claims(config, params, data);
   for (const PlaneSlamGroup* g : groups) {
-    const std::size_t relations = series_or_empty(*g->first(), "kummerle_translation_m").size();
+    const std::size_t relations = series_or_empty(*g->first(), keys::kKummerleTranslationM).size();
     section.claims.push_back(spike_claim(*g, params, revisits, relations));
   }
   for (Claim& c : beats_odometry_claims(data, config.seed)) section.claims.push_back(c);

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "plane_slam/report.hpp"
+#include "plane_slam/row_keys.hpp"
 #include "sextant/core/chi_square.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/eval/statistics.hpp"
@@ -76,11 +77,12 @@ ReportFigure nees_figure(const PlaneSlamRows& data) {
   std::size_t n = 0;
   for (const PlaneSlamGroup* g : data.at(data.points.front())) {
     const RunRow& r = *g->first();
-    const auto& v = series_or_empty(r, "nees");
+    const auto& v = series_or_empty(r, keys::kNees);
     n = std::max(n, v.size());
     plot.add_line(g->method, scan_axis(v.size()), v);
-    if (g->method == "seif" && r.series.count("nees_marginal"))
-      plot.add_line("seif (exact marginal of Ω)", scan_axis(v.size()), series_or_empty(r, "nees_marginal"));
+    if (g->method == "seif" && r.series.count(keys::kNeesMarginal))
+      plot.add_line("seif (exact marginal of Ω)", scan_axis(v.size()),
+                    series_or_empty(r, keys::kNeesMarginal));
   }
   distinguish_series(plot);  // the filters only: the χ² band stays plain
   const double lo = chi_square_quantile(0.025, 6.0), hi = chi_square_quantile(0.975, 6.0);
@@ -141,9 +143,9 @@ ReportSection eseif_report(const ExperimentConfig& config, const PlaneSlamParams
   std::map<std::string, NeesSummary> nees, marginal;
   std::map<std::string, TimeGrowth> growth;
   for (const PlaneSlamGroup* g : data.at(data.points.front())) {
-    nees[g->method] = nees_summary(*g, "nees", ++seed);
-    marginal[g->method] = nees_summary(*g, "nees_marginal", ++seed);
-    growth[g->method] = time_growth(*g, "step_ms", ++seed);
+    nees[g->method] = nees_summary(*g, keys::kNees, ++seed);
+    marginal[g->method] = nees_summary(*g, keys::kNeesMarginal, ++seed);
+    growth[g->method] = time_growth(*g, keys::kStepMs, ++seed);
     const NeesSummary& n = nees[g->method];
     t.add_row({Cell::text(g->method), number_or_missing(n.mean.estimate), number_or_missing(n.mean.lo),
                number_or_missing(n.mean.hi), number_or_missing(marginal[g->method].mean.estimate),
@@ -156,8 +158,8 @@ ReportSection eseif_report(const ExperimentConfig& config, const PlaneSlamParams
   }
   section.tables.push_back(t);
   section.figures.push_back(nees_figure(data));
-  section.figures.push_back(time_figure(data, "step_ms", "step_time_vs_map", "Time per scan", true));
-  section.figures.push_back(error_figure(data, data.points.front(), "error_m", "odometry_error_m",
+  section.figures.push_back(time_figure(data, keys::kStepMs, "step_time_vs_map", "Time per scan", true));
+  section.figures.push_back(error_figure(data, data.points.front(), keys::kErrorM, keys::kOdometryErrorM,
                                          "error_vs_scan", "position error norm [m]",
                                          "Position error norm per scan"));
   for (ReportFigure& f : information_figures(data)) section.figures.push_back(std::move(f));

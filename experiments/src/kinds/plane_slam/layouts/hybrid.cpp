@@ -11,7 +11,9 @@
 #include <limits>
 #include <map>
 
+#include "kit/row_keys.hpp"
 #include "plane_slam/report.hpp"
+#include "plane_slam/row_keys.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/eval/statistics.hpp"
@@ -97,8 +99,8 @@ std::vector<std::vector<double>> per_repetition(const PlaneSlamGroup& g, const s
 std::vector<std::vector<double>> rest_ms(const PlaneSlamGroup& g) {
   std::vector<std::vector<double>> out;
   for (const RunRow* r : g.rows) {
-    const auto &e = series_or_empty(*r, "extraction_ms"), &a = series_or_empty(*r, "association_ms");
-    const auto &m = series_or_empty(*r, "motion_ms"), &u = series_or_empty(*r, "measurement_ms");
+    const auto &e = series_or_empty(*r, keys::kExtractionMs), &a = series_or_empty(*r, keys::kAssociationMs);
+    const auto &m = series_or_empty(*r, keys::kMotionMs), &u = series_or_empty(*r, keys::kMeasurementMs);
     std::vector<double> v;
     for (std::size_t k = 0; k < e.size() && k < a.size() && k < m.size() && k < u.size(); ++k)
       v.push_back(e[k] + a[k] + m[k] + u[k]);
@@ -131,17 +133,18 @@ Table accuracy_table(const ExperimentConfig& config, const PlaneSlamRows& data) 
     const auto m = [&](const std::string& v) { return number_or_missing(median_of(g.values(p + v))); };
     std::vector<double> final_rot, mean_rot;
     for (const RunRow* r : g.rows) {
-      const auto& s = series_or_empty(*r, p.empty() ? "rotation_error_deg" : "odometry_rotation_error_deg");
+      const auto& s =
+          series_or_empty(*r, p.empty() ? keys::kRotationErrorDeg : keys::kOdometryRotationErrorDeg);
       double sum = 0;
       for (double x : s) sum += x;
       final_rot.push_back(s.empty() ? kNaN : s.back());
       mean_rot.push_back(s.empty() ? kNaN : sum / double(s.size()));
     }
-    const double matched = median_of(g.values("motion_matched_fraction"));
-    t.add_row({Cell::text(name), Cell::text(motion), number_or_missing(median_of(g.values("scans")), 0),
+    const double matched = median_of(g.values(keys::kMotionMatchedFraction));
+    t.add_row({Cell::text(name), Cell::text(motion), number_or_missing(median_of(g.values(keys::kScans)), 0),
                m("final_error_m"), m("mean_error_m"), number_or_missing(median_of(final_rot), 2),
-               number_or_missing(median_of(mean_rot), 2), m("wulf_translation_m"), m("wulf_rotation_deg"),
-               m("kummerle_translation_m"), m("kummerle_rotation_deg"),
+               number_or_missing(median_of(mean_rot), 2), m(keys::kWulfTranslationM),
+               m(keys::kWulfRotationDeg), m(keys::kKummerleTranslationM), m(keys::kKummerleRotationDeg),
                number_or_missing(p.empty() && std::isfinite(matched) ? 100.0 * matched : kNaN, 0)});
   };
   const auto groups = data.at(data.points.front());
@@ -186,7 +189,7 @@ Table cost_table(const PlaneSlamRows& data) {
 }
 
 Claim accuracy_claim(const Pair& p, const PlaneSlamParams& params, std::uint64_t seed) {
-  const auto h = per_repetition(*p.hybrid, "error_m"), o = per_repetition(*p.odometry, "error_m");
+  const auto h = per_repetition(*p.hybrid, keys::kErrorM), o = per_repetition(*p.odometry, keys::kErrorM);
   const Interval d = block_bootstrap(h, o, params.hybrid.block, false, seed);
   std::size_t wins = 0;
   const auto hm = p.hybrid->values("mean_error_m"), om = p.odometry->values("mean_error_m");
@@ -206,7 +209,7 @@ Claim accuracy_claim(const Pair& p, const PlaneSlamParams& params, std::uint64_t
 }
 
 Claim cost_claim(const Pair& p, const PlaneSlamParams& params, std::uint64_t seed) {
-  const Interval r = block_bootstrap(per_repetition(*p.hybrid, "registration_ms"), rest_ms(*p.hybrid),
+  const Interval r = block_bootstrap(per_repetition(*p.hybrid, keys::kRegistrationMs), rest_ms(*p.hybrid),
                                      params.hybrid.block, true, seed);
   Claim c;
   c.statement =
@@ -247,11 +250,12 @@ ReportSection hybrid_report(const ExperimentConfig& config, const PlaneSlamParam
   section.tables.push_back(accuracy_table(config, data));
   section.tables.push_back(cost_table(data));
   section.figures.push_back(error_figure(
-      data, data.points.front(), "error_m", "odometry_error_m", "hybrid_error", "position error [m]",
+      data, data.points.front(), keys::kErrorM, keys::kOdometryErrorM, "hybrid_error", "position error [m]",
       "Position error against the scan, odometry-driven and hybrid filters"));
-  section.figures.push_back(error_figure(
-      data, data.points.front(), "rotation_error_deg", "odometry_rotation_error_deg", "hybrid_rotation_error",
-      "rotation error [deg]", "Rotation error against the scan, odometry-driven and hybrid filters"));
+  section.figures.push_back(
+      error_figure(data, data.points.front(), keys::kRotationErrorDeg, keys::kOdometryRotationErrorDeg,
+                   "hybrid_rotation_error", "rotation error [deg]",
+                   "Rotation error against the scan, odometry-driven and hybrid filters"));
   std::uint64_t seed = config.seed;
   for (const Pair& p : pairs(config, data)) {
     section.claims.push_back(accuracy_claim(p, params, seed++));

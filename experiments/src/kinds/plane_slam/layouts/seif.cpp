@@ -7,6 +7,7 @@
 #include <map>
 
 #include "plane_slam/report.hpp"
+#include "plane_slam/row_keys.hpp"
 #include "sextant/eval/sequence_analysis.hpp"
 #include "sextant/eval/sparsity.hpp"
 #include "sextant/eval/statistics.hpp"
@@ -17,7 +18,7 @@ TimeGrowth time_growth(const PlaneSlamGroup& g, const std::string& time, std::ui
   std::vector<double> x, y;
   for (const RunRow* r : g.rows) {
     const auto& t = series_or_empty(*r, time);
-    const auto& m = series_or_empty(*r, "map_size");
+    const auto& m = series_or_empty(*r, keys::kMapSize);
     for (std::size_t k = 1; k < std::min(t.size(), m.size()); ++k) {
       x.push_back(m[k]);
       y.push_back(t[k]);
@@ -49,7 +50,7 @@ ReportFigure time_figure(const PlaneSlamRows& data, const std::string& time, con
     std::vector<double> y = series_or_empty(r, time);
     if (!y.empty()) y.front() = NAN;  // scan 0: no motion update; its augmentations are not comparable
     if (against_map)
-      plot.add_scatter(g->method, series_or_empty(r, "map_size"), y);
+      plot.add_scatter(g->method, series_or_empty(r, keys::kMapSize), y);
     else
       plot.add_line(g->method, scan_axis(y.size()), y);
   }
@@ -148,23 +149,24 @@ ReportSection seif_report(const ExperimentConfig& config, const PlaneSlamParams&
   std::uint64_t seed = config.seed * 7919u;
   std::map<std::string, std::pair<TimeGrowth, TimeGrowth>> growth;
   for (const PlaneSlamGroup* g : data.at(data.points.front())) {
-    const TimeGrowth m = time_growth(*g, "measurement_ms", ++seed), p = time_growth(*g, "motion_ms", ++seed);
+    const TimeGrowth m = time_growth(*g, keys::kMeasurementMs, ++seed),
+                     p = time_growth(*g, keys::kMotionMs, ++seed);
     growth[g->method] = {m, p};
     t.add_row({Cell::text(g->method), number_or_missing(m.median_ms), number_or_missing(m.slope.estimate),
                number_or_missing(p.median_ms), number_or_missing(p.slope.estimate),
-               number_or_missing(median_of(g->values("map_size"))),
+               number_or_missing(median_of(g->values(keys::kMapSize))),
                number_or_missing(reference_value(config, "map_size", g->method)),
                number_or_missing(median_of(g->values("final_error_m"))),
                number_or_missing(reference_value(config, "final_error_m", g->method))});
   }
   section.tables.push_back(t);
   section.figures.push_back(
-      time_figure(data, "measurement_ms", "measurement_time", "Measurement update", false));
-  section.figures.push_back(time_figure(data, "motion_ms", "motion_time", "Motion update", false));
+      time_figure(data, keys::kMeasurementMs, "measurement_time", "Measurement update", false));
+  section.figures.push_back(time_figure(data, keys::kMotionMs, "motion_time", "Motion update", false));
   section.figures.push_back(
-      time_figure(data, "measurement_ms", "measurement_time_vs_map", "Measurement update", true));
-  section.figures.push_back(time_figure(data, "motion_ms", "motion_time_vs_map", "Motion update", true));
-  section.figures.push_back(error_figure(data, data.points.front(), "error_m", "odometry_error_m",
+      time_figure(data, keys::kMeasurementMs, "measurement_time_vs_map", "Measurement update", true));
+  section.figures.push_back(time_figure(data, keys::kMotionMs, "motion_time_vs_map", "Motion update", true));
+  section.figures.push_back(error_figure(data, data.points.front(), keys::kErrorM, keys::kOdometryErrorM,
                                          "error_vs_scan", "position error norm [m]",
                                          "Position error norm per scan"));
   for (ReportFigure& f : information_figures(data)) section.figures.push_back(std::move(f));

@@ -10,6 +10,7 @@
 #include "registration/deviations.hpp"
 #include "registration/figures.hpp"
 #include "registration/report.hpp"
+#include "registration/row_keys.hpp"
 #include "sextant/eval/plots.hpp"
 
 namespace sextant {
@@ -48,10 +49,10 @@ void add_pair_claims(const ExperimentConfig& config, const std::vector<MethodRow
                     base, prop, 2.0, 8.0, claim_seed(config, first_seed)));
   claims.push_back(claim_smaller_on_solved(
       vs + ": " + proposed + " needs fewer iterations (thesis: 12.77 vs 25), on the pairs both solved", prop,
-      base, "iterations", "", claim_seed(config, first_seed + 1)));
+      base, keys::kIterations, "", claim_seed(config, first_seed + 1)));
   claims.push_back(claim_smaller_on_solved(
       vs + ": " + proposed + " is more accurate (thesis: tables 5.2, 5.3), on the pairs both solved", prop,
-      base, "translation_cm", " cm", claim_seed(config, first_seed + 2)));
+      base, keys::kTranslationCm, " cm", claim_seed(config, first_seed + 2)));
 }
 
 /// Magnusson's trilinear NDT, cited by the thesis: ML-NDT's success rate at ≈ 5× NDT's cost.
@@ -111,7 +112,7 @@ ReportSection accuracy_report(const ExperimentConfig& config, const Registration
     for (const RunRow* r : grouped.front().rows) {
       if (auto s = odometry_sample_of(*r)) {
         odometry.push_back(*s);
-        odometry_scan.push_back(r->value("reference_scan"));
+        odometry_scan.push_back(r->value(keys::kReferenceScan));
       }
     }
   }
@@ -159,7 +160,7 @@ ReportSection accuracy_report(const ExperimentConfig& config, const Registration
   for (const auto& m : methods) {
     const YAML::Node ref = child_or_null(method_refs, m.runs->name);
     double kept = 0;
-    for (const RunRow* r : m.runs->rows) kept += r->value("kept_fraction");
+    for (const RunRow* r : m.runs->rows) kept += r->value(keys::kKeptFraction);
     summary.add_row(
         {Cell::text(m.runs->name), number_or_missing(m.stats.count ? 100.0 * m.stats.success_rate : NAN),
          number_or_missing(reference_number(ref, "success_percent")),
@@ -188,7 +189,7 @@ ReportSection accuracy_report(const ExperimentConfig& config, const Registration
     plot.add_scatter("odometry", odometry_scan, y);
   }
   for (const auto& m : methods) {
-    std::vector<double> x = row_values(m.runs->rows, "reference_scan"), y;
+    std::vector<double> x = row_values(m.runs->rows, keys::kReferenceScan), y;
     for (const auto& e : m.stats.errors) y.push_back(e.translation_cm);
     plot.add_scatter(m.runs->name, x, y);
   }
@@ -219,7 +220,7 @@ ReportSection accuracy_report(const ExperimentConfig& config, const Registration
        {std::make_pair("5_8", params.baseline), std::make_pair("5_9", params.proposed)}) {
     for (const auto& m : methods) {
       if (m.runs->name == name && !name.empty())
-        per_parameter(fig, name, row_values(m.runs->rows, "reference_scan"), m.stats.errors);
+        per_parameter(fig, name, row_values(m.runs->rows, keys::kReferenceScan), m.stats.errors);
     }
   }
   // Fig. 5.10 with the thesis' three (odometry, NDT, ML-NDT) in both variants; each method's mean over

@@ -4,9 +4,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kit/row_keys.hpp"
 #include "registration/layouts/convergence_basin.hpp"
 #include "registration/layouts/convergence_basin_figures.hpp"
 #include "registration/report.hpp"
+#include "registration/row_keys.hpp"
 #include "registration/scenes.hpp"
 #include "sextant/eval/statistics.hpp"
 #include "sextant/eval/verdict.hpp"
@@ -187,7 +189,7 @@ Table ratio_table(const BasinData& d, const RegistrationParams& params) {
 std::vector<const RunRow*> snapshot_rows(const BasinData& d) {
   std::vector<const RunRow*> out(d.methods.size(), nullptr);
   for (const BasinRun& r : d.runs)
-    if (r.repetition == 0 && r.row->series.count("snapshot_input")) out[r.method] = r.row;
+    if (r.repetition == 0 && r.row->series.count(keys::kSnapshotInput)) out[r.method] = r.row;
   return out;
 }
 
@@ -213,11 +215,11 @@ void add_snapshot_figures(const BasinData& d, const RegistrationParams& params, 
     if (m < 0 || !snap[static_cast<std::size_t>(m)]) continue;
     const RunRow& row = *snap[static_cast<std::size_t>(m)];
     const std::string& name = d.methods[static_cast<std::size_t>(m)];
-    section.figures.push_back(
-        cloud_figure("clouds_after_" + name, "After alignment by " + name + " (fig 5.2; " + where + ")",
-                     "After " + name + ": error " + format_number(row.value("translation_cm") / 100.0, 2) +
-                         " m, " + format_number(row.value("rotation_deg"), 1) + "°",
-                     row, series_to_isometry(row.series.at("estimate"))));
+    section.figures.push_back(cloud_figure(
+        "clouds_after_" + name, "After alignment by " + name + " (fig 5.2; " + where + ")",
+        "After " + name + ": error " + format_number(row.value(keys::kTranslationCm) / 100.0, 2) + " m, " +
+            format_number(row.value(keys::kRotationDeg), 1) + "°",
+        row, series_to_isometry(row.series.at(keys::kEstimate))));
   }
   for (const long m : {b, p}) {
     if (m < 0 || !snap[static_cast<std::size_t>(m)]) continue;

@@ -5,7 +5,9 @@
 #include <limits>
 #include <map>
 
+#include "kit/row_keys.hpp"
 #include "registration/report.hpp"
+#include "registration/row_keys.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/experiments/run_row.hpp"
@@ -27,14 +29,14 @@ std::string point_key(const RunSpec& run) {
 }  // namespace
 
 std::vector<std::pair<double, double>> iterate_errors(const RunRow& row) {
-  const Eigen::Isometry3d truth = series_to_isometry(series_or_empty(row, "ground_truth"));
-  const std::vector<double>& xi = series_or_empty(row, "trace_xi");
+  const Eigen::Isometry3d truth = series_to_isometry(series_or_empty(row, keys::kGroundTruth));
+  const std::vector<double>& xi = series_or_empty(row, keys::kTraceXi);
   std::vector<std::pair<double, double>> out;
   const auto add = [&](const Eigen::Isometry3d& T) {
     const Eigen::Isometry3d E = truth.inverse() * T;
     out.emplace_back(translation_norm(E), rotation_angle(E) * kDegPerRad);
   };
-  add(series_to_isometry(series_or_empty(row, "initial")));
+  add(series_to_isometry(series_or_empty(row, keys::kInitial)));
   for (std::size_t k = 0; k + 6 <= xi.size(); k += 6) {
     Vector6d v;
     for (int j = 0; j < 6; ++j) v[j] = xi[k + static_cast<std::size_t>(j)];
@@ -51,8 +53,8 @@ double settle_iteration(const std::vector<std::pair<double, double>>& errors, co
 }
 
 double iterations_in_last_layer(const RunRow& row) {
-  const std::vector<double>& layer = series_or_empty(row, "layer");
-  if (layer.empty()) return row.value("iterations");
+  const std::vector<double>& layer = series_or_empty(row, keys::kLayer);
+  if (layer.empty()) return row.value(keys::kIterations);
   std::size_t k = 0;
   while (k < layer.size() && layer[layer.size() - 1 - k] == layer.back()) ++k;
   return static_cast<double>(k);
@@ -60,7 +62,7 @@ double iterations_in_last_layer(const RunRow& row) {
 
 double post_settle_jitter_cm(const RunRow& row, double settle) {
   if (!std::isfinite(settle)) return kNaN;
-  const std::vector<double>& xi = series_or_empty(row, "trace_xi");
+  const std::vector<double>& xi = series_or_empty(row, keys::kTraceXi);
   const std::size_t n = xi.size() / 6;  // iterates 1..n are trace entries 0..n-1
   double sum = 0;
   int count = 0;
@@ -80,15 +82,15 @@ std::vector<BasinRun> basin_runs(const std::vector<RunSpec>& runs, const std::ve
     const RunRow& row = *rows[i];
     BasinRun r;
     r.method = runs[i].method_index;
-    r.scene = static_cast<std::size_t>(std::max(0.0, row.value("scene")));
+    r.scene = static_cast<std::size_t>(std::max(0.0, row.value(keys::kScene)));
     r.offset = label_value(runs[i], "offset") + label_value(runs[i], "tx");
     r.yaw = std::abs(label_value(runs[i], "yaw"));
     r.direction = static_cast<int>(label_value(runs[i], "direction"));
     r.repetition = runs[i].repetition;
     r.point = point_key(runs[i]);
-    r.success = criterion.ok(row.value("translation_cm") / 100.0, row.value("rotation_deg"));
-    r.iterations = row.value("iterations");
-    r.seconds = row.value("seconds_registration");
+    r.success = criterion.ok(row.value(keys::kTranslationCm) / 100.0, row.value(keys::kRotationDeg));
+    r.iterations = row.value(keys::kIterations);
+    r.seconds = row.value(keys::kSecondsRegistration);
     r.settle = r.success ? settle_iteration(iterate_errors(row), criterion) : kNaN;
     r.jitter_cm = post_settle_jitter_cm(row, r.settle);
     r.last_layer_iterations = iterations_in_last_layer(row);

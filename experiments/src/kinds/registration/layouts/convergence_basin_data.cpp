@@ -5,6 +5,7 @@
 #include <map>
 
 #include "registration/layouts/convergence_basin.hpp"
+#include "registration/row_keys.hpp"
 #include "registration/scenes.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
@@ -141,7 +142,7 @@ BasinData basin_data(const ExperimentConfig& config, const RegistrationParams& p
   for (const BasinRun& r : d.runs) {
     offsets.push_back(r.offset);
     yaws.push_back(r.yaw);
-    if (r.scene < d.cell_edge.size()) d.cell_edge[r.scene] = r.row->value("cell_edge_m");
+    if (r.scene < d.cell_edge.size()) d.cell_edge[r.scene] = r.row->value(keys::kCellEdgeM);
   }
   d.offsets = distinct(offsets);
   d.yaws = distinct(yaws);

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "kit/row_keys.hpp"
 #include "registration/layouts/convergence_basin_analysis.hpp"
 #include "registration/report.hpp"
+#include "registration/row_keys.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/eval/plots.hpp"
@@ -31,8 +33,8 @@ PointCloud cloud_of(const std::vector<double>& xyz) {
 
 /// Iterate k's six parameters (k = 0: the initial guess) in m and deg.
 std::vector<Vector6d> iterates(const RunRow& row) {
-  std::vector<Vector6d> out{to_pose6(series_to_isometry(series_or_empty(row, "initial"))).vector()};
-  const std::vector<double>& xi = series_or_empty(row, "trace_xi");
+  std::vector<Vector6d> out{to_pose6(series_to_isometry(series_or_empty(row, keys::kInitial))).vector()};
+  const std::vector<double>& xi = series_or_empty(row, keys::kTraceXi);
   for (std::size_t k = 0; k + 6 <= xi.size(); k += 6) {
     Vector6d v;
     for (int j = 0; j < 6; ++j) v[j] = xi[k + static_cast<std::size_t>(j)];
@@ -45,8 +47,8 @@ std::vector<Vector6d> iterates(const RunRow& row) {
 
 ReportFigure cloud_figure(const std::string& id, const std::string& caption, const std::string& title,
                           const RunRow& snapshot, const Eigen::Isometry3d& T) {
-  const std::vector<double>& ref = series_or_empty(snapshot, "snapshot_reference");
-  const std::vector<double>& in = series_or_empty(snapshot, "snapshot_input");
+  const std::vector<double>& ref = series_or_empty(snapshot, keys::kSnapshotReference);
+  const std::vector<double>& in = series_or_empty(snapshot, keys::kSnapshotInput);
   XYPlot plot;
   plot.title = title;
   plot.x_label = "x [m]";
@@ -93,22 +95,24 @@ ReportScene cloud_scene(const std::string& id, const std::string& caption, const
   std::vector<Eigen::Isometry3d> poses{Eigen::Isometry3d::Identity()};
   view.states.push_back("before: identity guess");
   for (const auto& [name, row] : after) {
-    poses.push_back(series_to_isometry(series_or_empty(*row, "estimate")));
-    view.states.push_back("after " + name + " (" + format_number(row->value("translation_cm") / 100.0, 2) +
-                          " m, " + format_number(row->value("rotation_deg"), 1) + "° off)");
+    poses.push_back(series_to_isometry(series_or_empty(*row, keys::kEstimate)));
+    view.states.push_back("after " + name + " (" +
+                          format_number(row->value(keys::kTranslationCm) / 100.0, 2) + " m, " +
+                          format_number(row->value(keys::kRotationDeg), 1) + "° off)");
   }
-  poses.push_back(series_to_isometry(series_or_empty(snapshot, "ground_truth")));
+  poses.push_back(series_to_isometry(series_or_empty(snapshot, keys::kGroundTruth)));
   view.states.push_back("ground truth");
-  view.clouds.push_back({"reference", cloud_of(series_or_empty(snapshot, "snapshot_reference")), "", {}, {}});
   view.clouds.push_back(
-      {"input", cloud_of(series_or_empty(snapshot, "snapshot_input")), "", std::move(poses), {}});
+      {"reference", cloud_of(series_or_empty(snapshot, keys::kSnapshotReference)), "", {}, {}});
+  view.clouds.push_back(
+      {"input", cloud_of(series_or_empty(snapshot, keys::kSnapshotInput)), "", std::move(poses), {}});
   return scene;
 }
 
 std::vector<ReportFigure> parameter_figures(const std::string& method, const std::string& figure,
                                             const RunRow& row) {
   const std::vector<Vector6d> steps = iterates(row);
-  const Vector6d truth = to_pose6(series_to_isometry(series_or_empty(row, "ground_truth"))).vector();
+  const Vector6d truth = to_pose6(series_to_isometry(series_or_empty(row, keys::kGroundTruth))).vector();
   static const char* const kNames[6] = {"tx", "ty", "tz", "α", "β", "γ"};
   std::vector<ReportFigure> out;
   for (int part = 0; part < 2; ++part) {
@@ -147,8 +151,8 @@ ReportFigure score_figure(const std::string& id, const std::string& caption, con
   plot.x_label = "iteration";
   plot.y_label = per_layer ? "score normalised per layer: (s − s_last) / (s_first − s_last)" : "score";
   for (std::size_t m = 0; m < rows.size(); ++m) {
-    const std::vector<double>& score = series_or_empty(*rows[m].second, "score");
-    const std::vector<double>& layer = series_or_empty(*rows[m].second, "layer");
+    const std::vector<double>& score = series_or_empty(*rows[m].second, keys::kScore);
+    const std::vector<double>& layer = series_or_empty(*rows[m].second, keys::kLayer);
     const std::vector<double> y = per_layer ? normalise_per_layer(score, layer) : score;
     // One line per layer (the first named), all in the method's colour.
     std::size_t begin = 0;

@@ -12,6 +12,7 @@
 #include "registration/claims.hpp"
 #include "registration/deviations.hpp"
 #include "registration/report.hpp"
+#include "registration/row_keys.hpp"
 #include "sextant/eval/plots.hpp"
 
 namespace sextant {
@@ -120,9 +121,9 @@ ReportSection init_layer_report(const ExperimentConfig& config, const Registrati
     if (fi >= fs.size()) continue;
     if (methods[m].adaptive) {
       const auto series = [&](const char* name) { return series_or_empty(row, name); };
-      const auto pair = series("adaptive_pair"), ok = series("adaptive_success"),
+      const auto pair = series(keys::kAdaptivePair), ok = series("adaptive_success"),
                  secs = series("adaptive_seconds_registration"), err = series("adaptive_translation_cm"),
-                 layer = series("adaptive_start_layer"), rule = series("adaptive_rule_failure");
+                 layer = series(keys::kAdaptiveStartLayer), rule = series(keys::kAdaptiveRuleFailure);
       for (std::size_t k = 0;
            k < pair.size() && k < ok.size() && k < secs.size() && k < err.size() && k < layer.size(); ++k) {
         cells[m][fi][0].add(pair[k], ok[k] > 0.5, secs[k], err[k]);
@@ -140,8 +141,8 @@ ReportSection init_layer_report(const ExperimentConfig& config, const Registrati
     }
     const std::size_t li = index_of(layers, point_value(runs[i], "start_layer", NAN));
     if (li >= layers.size()) continue;
-    cells[m][fi][li].add(row.value("reference_scan"), row.value("success") > 0.5,
-                         row.value("seconds_registration"), row.value("translation_cm"));
+    cells[m][fi][li].add(row.value(keys::kReferenceScan), row.value(keys::kSuccess) > 0.5,
+                         row.value(keys::kSecondsRegistration), row.value(keys::kTranslationCm));
     pairs = std::max(pairs, cells[m][fi][li].success.size());
   }
 

@@ -12,6 +12,7 @@
 #include "registration/deviations.hpp"
 #include "registration/figures.hpp"
 #include "registration/report.hpp"
+#include "registration/row_keys.hpp"
 
 namespace sextant {
 namespace {
@@ -25,7 +26,7 @@ Claim claim_better(const std::string& statement, const MethodRows* a, const Meth
                    std::uint64_t seed) {
   const Claim by_success = claim_more_successes(statement, a, b);
   if (by_success.verdict == Verdict::holds || by_success.verdict == Verdict::does_not_hold) return by_success;
-  const Claim by_error = claim_smaller_on_solved(statement, a, b, "translation_cm", " cm", seed);
+  const Claim by_error = claim_smaller_on_solved(statement, a, b, keys::kTranslationCm, " cm", seed);
   return Claim{statement, by_error.verdict,
                by_success.evidence + "; success inconclusive, so by accuracy: " + by_error.evidence};
 }
@@ -91,7 +92,7 @@ ReportSection sampling_report(const ExperimentConfig& config, const Registration
       .add_number_column("pairs", 0);
   for (std::size_t m = 0; m < grouped.size(); ++m) {
     double kept = 0;
-    for (const RunRow* r : grouped[m].rows) kept += r->value("kept_fraction");
+    for (const RunRow* r : grouped[m].rows) kept += r->value(keys::kKeptFraction);
     const double n = static_cast<double>(grouped[m].rows.size());
     summary.add_row(
         {Cell::text(grouped[m].name), number_or_missing(stats[m].count ? 100.0 * stats[m].success_rate : NAN),
@@ -136,7 +137,7 @@ ReportSection sampling_report(const ExperimentConfig& config, const Registration
           std::string("Fig. 5.11") + (translation ? " (a)" : " (b)") + ": " + ml_random + " relative " +
               (translation ? "translation" : "rotation") + " error per pair (failures included)",
           ml_random + (translation ? ": translation error" : ": rotation error"),
-          row_values(grouped[m].rows, "reference_scan"), stats[m].errors, translation,
+          row_values(grouped[m].rows, keys::kReferenceScan), stats[m].errors, translation,
           translation && params.success == "translation_50cm" ? 50.0 : 0.0));
   }
 
@@ -151,7 +152,8 @@ ReportSection sampling_report(const ExperimentConfig& config, const Registration
       "With random sampling ML-NDT's translation error is smaller than NDT's (thesis: about half), on the "
       "pairs both "
       "solved",
-      method("random", "mlndt"), method("random", "ndt"), "translation_cm", " cm", claim_seed(config, 1)));
+      method("random", "mlndt"), method("random", "ndt"), keys::kTranslationCm, " cm",
+      claim_seed(config, 1)));
   std::uint64_t k = 10;
   for (const char* matcher : kMatchers)
     section.claims.push_back(claim_better(std::string("Table 5.7: GBS is better than random sampling for ") +

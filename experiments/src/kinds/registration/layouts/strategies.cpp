@@ -10,10 +10,12 @@
 //     mean_error_below: {translation_cm: 2, rotation_deg: 0.3}  # GBS and FBS
 #include <cmath>
 
+#include "kit/row_keys.hpp"
 #include "registration/claims.hpp"
 #include "registration/deviations.hpp"
 #include "registration/figures.hpp"
 #include "registration/report.hpp"
+#include "registration/row_keys.hpp"
 #include "sextant/eval/statistics.hpp"
 
 namespace sextant {
@@ -112,9 +114,9 @@ ReportSection strategies_report(const ExperimentConfig& config, const Registrati
     };
     std::vector<double> matched;
     for (const RunRow* r : grouped[m].rows)
-      matched.push_back(r->value("kept_fraction") * r->value("matched_percent"));
+      matched.push_back(r->value(keys::kKeptFraction) * r->value(keys::kMatchedPercent));
     const SampleStats mt = summarize(matched),
-                      sampling = summarize(row_values(grouped[m].rows, "seconds_sampling"));
+                      sampling = summarize(row_values(grouped[m].rows, keys::kSecondsSampling));
     const bool any = stats[m].count > 0;
     table.add_row({Cell::text(grouped[m].name), Cell::text(samplers[m]),
                    number_or_missing(any ? stats[m].iterations.mean : NAN), thesis(0),
@@ -170,7 +172,7 @@ ReportSection strategies_report(const ExperimentConfig& config, const Registrati
           std::string("Fig. 5.13") + (translation ? " (a)" : " (b)") + ": FbML-NDT (" + grouped[fbs].name +
               ") relative " + (translation ? "translation" : "rotation") + " error per pair",
           grouped[fbs].name + (translation ? ": translation error" : ": rotation error"),
-          row_values(grouped[fbs].rows, "reference_scan"), stats[fbs].errors, translation, 0.0));
+          row_values(grouped[fbs].rows, keys::kReferenceScan), stats[fbs].errors, translation, 0.0));
   }
 
   // Claims.
@@ -181,7 +183,7 @@ ReportSection strategies_report(const ExperimentConfig& config, const Registrati
   for (const char* other : {"regular", "random", "gbs"}) {
     const MethodRows* o = runs_of(other);
     fastest.push_back(claim_speedup("", o, f, 1.0, INFINITY, claim_seed(config, k++)));
-    fewer.push_back(claim_smaller_on_solved("", f, o, "iterations", "", claim_seed(config, k++)));
+    fewer.push_back(claim_smaller_on_solved("", f, o, keys::kIterations, "", claim_seed(config, k++)));
     robust.push_back(claim_not_fewer_successes("", f, o, kSuccessMargin));
   }
   const auto combine = [&](const std::string& statement, const std::vector<Claim>& parts) {
@@ -209,8 +211,8 @@ ReportSection strategies_report(const ExperimentConfig& config, const Registrati
            claim_speedup("", runs_of("random"), g, 1.0, INFINITY, claim_seed(config, k++))});
   if (f && g) {
     const Interval cost =
-        bootstrap_ratio_of_medians(row_values(f->rows, "seconds_sampling"),
-                                   row_values(g->rows, "seconds_sampling"), claim_seed(config, k++));
+        bootstrap_ratio_of_medians(row_values(f->rows, keys::kSecondsSampling),
+                                   row_values(g->rows, keys::kSecondsSampling), claim_seed(config, k++));
     section.claims.push_back(
         Claim{"Feature extraction costs ≈ 10× GBS's sampling (thesis: ≈ 1 s vs ≈ 0.1 s; band [3, 30])",
               verdict_in_band(cost, 3.0, 30.0), "median sampling time FBS / GBS = " + describe(cost, "×")});

@@ -6,9 +6,11 @@
 
 #include <Eigen/Core>
 
+#include "kit/row_keys.hpp"
 #include "registration/claims.hpp"
 #include "registration/deviations.hpp"
 #include "registration/report.hpp"
+#include "registration/row_keys.hpp"
 #include "sextant/eval/plots.hpp"
 
 namespace sextant {
@@ -65,17 +67,18 @@ ReportSection zero_guess_report(const ExperimentConfig& config, const Registrati
       const RunRow& r = *rows[i];
       std::string offset;
       for (const auto& [axis, label] : runs[i].point) offset += axis + " = " + label + " ";
-      t.add_row({Cell::text(m.name), Cell::text(offset), number_or_missing(r.value("iterations")),
-                 number_or_missing(r.value("translation_cm")), number_or_missing(r.value("rotation_deg")),
-                 number_or_missing(r.value("converged")),
-                 number_or_missing(r.value("initial_translation_cm"))});
-      its.push_back(r.value("iterations"));
-      errors.push_back(r.value("translation_cm"));
+      t.add_row({Cell::text(m.name), Cell::text(offset), number_or_missing(r.value(keys::kIterations)),
+                 number_or_missing(r.value(keys::kTranslationCm)),
+                 number_or_missing(r.value(keys::kRotationDeg)), number_or_missing(r.value(keys::kConverged)),
+                 number_or_missing(r.value(keys::kInitialTranslationCm))});
+      its.push_back(r.value(keys::kIterations));
+      errors.push_back(r.value(keys::kTranslationCm));
 
       // Fig. 5.12: the six parameters against the iteration.
-      const std::vector<double>& trace = series_or_empty(r, "trace_xi");
+      const std::vector<double>& trace = series_or_empty(r, keys::kTraceXi);
       if (trace.size() < 6) continue;
-      after.push_back(error_after(trace, static_cast<std::size_t>(iterations), r.value("translation_cm")));
+      after.push_back(
+          error_after(trace, static_cast<std::size_t>(iterations), r.value(keys::kTranslationCm)));
       XYPlot plot;
       plot.title = m.name + " (" + offset + "): parameters per iteration";
       plot.x_label = "iteration";

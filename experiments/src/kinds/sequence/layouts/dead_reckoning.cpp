@@ -6,7 +6,9 @@
 #include <algorithm>
 
 #include "kit/reference_values.hpp"
+#include "kit/row_keys.hpp"
 #include "sequence/report.hpp"
+#include "sequence/row_keys.hpp"
 #include "sextant/eval/verdict.hpp"
 
 namespace sextant {
@@ -52,7 +54,7 @@ ReportSection dead_reckoning_report(const ExperimentConfig& config, const Sequen
                   " scans, " + name + " vs odometry (ours | thesis)";
     end.label = "end_point_error" + suffix;
     double failed = 0;
-    for (const double f : run_values(mine, "not_converged")) failed += f;
+    for (const double f : run_values(mine, keys::kNotConverged)) failed += f;
     end.note = "Ours: mean [min, max] over " + std::to_string(mine.size()) +
                " run(s), horizontal error [m]; " + format_number(failed, 0) + " of " +
                std::to_string(mine.size() * (params.scans - 1)) +
@@ -67,8 +69,8 @@ ReportSection dead_reckoning_report(const ExperimentConfig& config, const Sequen
       end.add_row({Cell::text(label), number_or_missing(mean_of(v)), number_or_missing(th),
                    Cell::text(v.empty() ? "–" : "[" + format_number(lo) + ", " + format_number(hi) + "]")});
     };
-    add_end("odometry", "end_xy_odometry", thesis_odometry);
-    add_end(name + " (chained)", "end_xy_estimate", thesis_matcher);
+    add_end("odometry", keys::kEndXyOdometry, thesis_odometry);
+    add_end(name + " (chained)", keys::kEndXyEstimate, thesis_matcher);
     add_end("odometry, largest along the path", "max_xy_odometry", std::nullopt);
     add_end(name + " (chained), largest along the path", "max_xy_estimate", std::nullopt);
     section.tables.push_back(end);
@@ -100,12 +102,12 @@ ReportSection dead_reckoning_report(const ExperimentConfig& config, const Sequen
     // Claims: the ratio matcher / odometry of the end-point errors, per run.
     std::vector<double> ratios;
     for (const auto& r : mine)
-      ratios.push_back(r.row->value("end_xy_estimate") / r.row->value("end_xy_odometry"));
+      ratios.push_back(r.row->value(keys::kEndXyEstimate) / r.row->value(keys::kEndXyOdometry));
     const Interval ratio = bootstrap_median(ratios, config.seed);
     const std::string evidence = "median ratio " + name + " / odometry of the end-point errors " +
                                  describe(ratio, "", 3) + "; mean end-point errors " +
-                                 format_number(mean_of(run_values(mine, "end_xy_estimate"))) + " m vs " +
-                                 format_number(mean_of(run_values(mine, "end_xy_odometry"))) + " m";
+                                 format_number(mean_of(run_values(mine, keys::kEndXyEstimate))) + " m vs " +
+                                 format_number(mean_of(run_values(mine, keys::kEndXyOdometry))) + " m";
     section.claims.push_back({"Chained " + name + " ends well below the odometry (end-point error ratio < " +
                                   format_number(ratio_below) + ")",
                               verdict_less(ratio, ratio_below), evidence});
@@ -116,7 +118,7 @@ ReportSection dead_reckoning_report(const ExperimentConfig& config, const Sequen
     // The end point of a route that loops back is a lucky or unlucky place to look; the mean over
     // the whole path is not.
     const Interval closer = bootstrap_paired_mean_difference(
-        run_values(mine, "mean_xy_estimate"), run_values(mine, "mean_xy_odometry"), config.seed);
+        run_values(mine, keys::kMeanXyEstimate), run_values(mine, keys::kMeanXyOdometry), config.seed);
     section.claims.push_back({"Chained " + name +
                                   " stays closer to the truth than the odometry over the path "
                                   "(mean horizontal error)",

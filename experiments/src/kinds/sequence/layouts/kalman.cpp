@@ -12,6 +12,7 @@
 
 #include "kit/reference_values.hpp"
 #include "sequence/report.hpp"
+#include "sequence/row_keys.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/eval/verdict.hpp"
 
@@ -82,7 +83,7 @@ ReportSection kalman_report(const ExperimentConfig& config, const SequenceParams
     const std::string suffix = config.methods.size() == 1 ? "" : "_" + name;
 
     double alarms = 0;
-    for (const double a : run_values(mine, "alarms")) alarms += std::isfinite(a) ? a : 0;
+    for (const double a : run_values(mine, keys::kAlarms)) alarms += std::isfinite(a) ? a : 0;
     const std::size_t steps = mine.size() * (params.scans - 1);
     Table alarm_table;
     alarm_table.caption = "§5.1.3.2: alarms (matcher and odometry disagree → odometry used), " + name;
@@ -180,7 +181,7 @@ ReportSection kalman_report(const ExperimentConfig& config, const SequenceParams
                                   format_number(100 * rate_below, 0) + " %)",
                               verdict_less(rate, rate_below), "alarm rate " + describe(rate)});
     const Interval better = bootstrap_paired_mean_difference(
-        run_values(mine, "mean_xy_estimate"), run_values(mine, "mean_xy_odometry"), config.seed);
+        run_values(mine, keys::kMeanXyEstimate), run_values(mine, keys::kMeanXyOdometry), config.seed);
     section.claims.push_back(
         {"The KF beats the odometry (mean horizontal error over the sequence)", verdict_less(better, 0.0),
          "KF − odometry, paired over runs: " + describe(better, " m"), ClaimKind::sanity});
