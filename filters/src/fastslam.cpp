@@ -69,10 +69,13 @@ StepResult FastSlam::initialize(const Eigen::VectorXd& x0, const Eigen::MatrixXd
   const int count = landmark_count(*model_, x0.size());
   const Eigen::Index rest = x0.size() - p;
   const Eigen::MatrixXd Pvv = P0.topLeftCorner(p, p);
-  const Eigen::MatrixXd gain =  // P_mv P_vv⁺ (minimal-norm solve: P_vv may be singular)
-      Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(Pvv)
-          .solve(P0.bottomLeftCorner(rest, p).transpose())
-          .transpose();
+  // P_mv P_vv⁺ (minimal-norm solve: P_vv may be singular); no landmarks, no gain (Eigen's solve of
+  // an empty right-hand side binds a reference to its null data).
+  const Eigen::MatrixXd gain =
+      rest == 0 ? Eigen::MatrixXd(0, p)
+                : Eigen::MatrixXd(Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd>(Pvv)
+                                      .solve(P0.bottomLeftCorner(rest, p).transpose())
+                                      .transpose());
   const Eigen::MatrixXd conditional =
       P0.bottomRightCorner(rest, rest) - gain * P0.bottomLeftCorner(rest, p).transpose();
   StepStatus status = StepStatus::kOk;
