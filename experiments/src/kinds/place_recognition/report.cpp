@@ -8,6 +8,7 @@
 #include "kit/row_codec.hpp"
 #include "place_recognition/place_recognition.hpp"
 #include "sextant/eval/plots.hpp"
+#include "sextant/eval/statistics.hpp"
 #include "sextant/eval/verdict.hpp"
 
 namespace sextant {
@@ -26,13 +27,12 @@ Groups group(const std::vector<RunSpec>& runs, const std::vector<const RunRow*>&
   return out;
 }
 
-double median_of(const std::vector<const RunRow*>& rows, const char* key) {
+/// The median of `key` over the rows (NaN when none is finite).
+double median_over(const std::vector<const RunRow*>& rows, const char* key) {
   std::vector<double> v;
   for (const RunRow* r : rows)
     if (std::isfinite(r->value(key))) v.push_back(r->value(key));
-  if (v.empty()) return NAN;
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+  return median_of(v);
 }
 
 double total_of(const std::vector<const RunRow*>& rows, const char* key) {
@@ -59,12 +59,13 @@ Table detection_table(const Groups& groups) {
       .add_number_column("loop closing [s]", 1);
   for (const auto& [drift, methods] : groups)
     for (const auto& [method, rows] : methods)
-      t.add_row({Cell::text(format_number(drift, 2)), Cell::text(method),
-                 Cell::number(median_of(rows, k::kCandidates)), Cell::number(median_of(rows, k::kPrecision)),
-                 Cell::number(median_of(rows, k::kRecall)), Cell::number(median_of(rows, k::kAccepted)),
-                 Cell::number(median_of(rows, k::kAcceptedWrong)),
-                 Cell::number(median_of(rows, k::kChainedAte)), Cell::number(median_of(rows, k::kClosedAte)),
-                 Cell::number(median_of(rows, k::kClosingSeconds))});
+      t.add_row(
+          {Cell::text(format_number(drift, 2)), Cell::text(method),
+           Cell::number(median_over(rows, k::kCandidates)), Cell::number(median_over(rows, k::kPrecision)),
+           Cell::number(median_over(rows, k::kRecall)), Cell::number(median_over(rows, k::kAccepted)),
+           Cell::number(median_over(rows, k::kAcceptedWrong)),
+           Cell::number(median_over(rows, k::kChainedAte)), Cell::number(median_over(rows, k::kClosedAte)),
+           Cell::number(median_over(rows, k::kClosingSeconds))});
   return t;
 }
 
@@ -129,8 +130,8 @@ std::vector<Claim> claims(const ExperimentConfig& config, const Groups& groups) 
     out.push_back({"The proximity search alone closes no loop" + at + " (the drift exceeds its radius)",
                    accepted == 0.0 ? Verdict::holds : Verdict::does_not_hold,
                    format_number(accepted, 0) + " closures accepted over " + std::to_string(rows->size()) +
-                       " repetition(s); median ATE " + format_number(median_of(*rows, k::kChainedAte), 2) +
-                       " m chained, " + format_number(median_of(*rows, k::kClosedAte), 2) + " m after",
+                       " repetition(s); median ATE " + format_number(median_over(*rows, k::kChainedAte), 2) +
+                       " m chained, " + format_number(median_over(*rows, k::kClosedAte), 2) + " m after",
                    ClaimKind::thesis});
   }
   if (const auto* rows = find("descriptor")) {
@@ -142,9 +143,10 @@ std::vector<Claim> claims(const ExperimentConfig& config, const Groups& groups) 
         {"Place recognition closes the loops" + at + ": the mean position error falls below half the chain's",
          closed.empty() ? Verdict::not_comparable : verdict_less(gain, 0.0),
          "closed − ½ chained " + describe(gain, " m") + " over " + std::to_string(closed.size()) +
-             " paired 20-scan batch means; median ATE " + format_number(median_of(*rows, k::kChainedAte), 2) +
-             " → " + format_number(median_of(*rows, k::kClosedAte), 2) + " m, " +
-             format_number(median_of(*rows, k::kAccepted), 0) + " closures accepted (median)",
+             " paired 20-scan batch means; median ATE " +
+             format_number(median_over(*rows, k::kChainedAte), 2) + " → " +
+             format_number(median_over(*rows, k::kClosedAte), 2) + " m, " +
+             format_number(median_over(*rows, k::kAccepted), 0) + " closures accepted (median)",
          ClaimKind::thesis});
     double wrong = 0.0;
     for (const auto& [d, per_method] : groups)

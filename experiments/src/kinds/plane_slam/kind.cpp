@@ -14,6 +14,7 @@
 #include <Eigen/Cholesky>
 
 #include "kinds.hpp"
+#include "kit/campus.hpp"
 #include "kit/plane_slam_driver.hpp"
 #include "kit/row_keys.hpp"
 #include "plane_slam/layouts/layouts.hpp"
@@ -30,15 +31,6 @@
 
 namespace sextant {
 namespace {
-
-synth::Campus open_campus(const ExperimentConfig& config) {
-  if (config.dataset.source != DatasetSource::kSynthetic)
-    throw InputError(config.file, "", "key 'dataset': the plane_slam kind needs source: synthetic");
-  std::uint64_t seed = config.dataset.seed;
-  const synth::CampusSettings settings =
-      synth::read_campus_settings(config.dataset.campus, config.file, &seed);
-  return synth::generate_campus(settings, seed);
-}
 
 std::vector<PlaneSlamMethod> read_methods(const ExperimentConfig& config) {
   std::vector<PlaneSlamMethod> methods;
@@ -245,7 +237,7 @@ class PlaneSlamSession : public KindSession {
       : file_(config.file),
         params_(std::move(params)),
         methods_(std::move(methods)),
-        campus_(open_campus(config)) {
+        campus_(open_campus(config, "plane_slam")) {
     const std::size_t scans = needed_scans();
     data_.campus = &campus_;
     if (params_.landmarks == LandmarkSource::kTrue)
@@ -303,11 +295,8 @@ class PlaneSlamKind : public RunKind {
                              "params.landmarks: extracted");
     }
     check_plane_slam_sweep(config);
-    if (config.dataset.source != DatasetSource::kSynthetic)
-      throw InputError(config.file, "", "key 'dataset': the plane_slam kind needs source: synthetic");
-    std::uint64_t seed = config.dataset.seed;
-    const synth::CampusSettings campus =
-        synth::read_campus_settings(config.dataset.campus, config.file, &seed);
+    std::uint64_t seed = 0;
+    const synth::CampusSettings campus = campus_settings(config, "plane_slam", &seed);
     if (params.scans > static_cast<std::size_t>(campus.trajectory.scans))
       throw InputError(config.file, "", "key 'scans': more than the campus' trajectory.scans");
     check_plane_slam_claims(config, params);

@@ -2,6 +2,7 @@
 // the series the runs record. Adding a layout: its file in this folder and one line here.
 #include "registration/layouts/layouts.hpp"
 
+#include "kit/layout_table.hpp"
 #include "registration/settings.hpp"
 
 namespace sextant {
@@ -41,20 +42,11 @@ const std::vector<RegistrationLayout>& registration_layouts() {
 }
 
 const RegistrationLayout* find_registration_layout(const std::string& name) {
-  for (const RegistrationLayout& l : registration_layouts()) {
-    if (name == l.name) return &l;
-  }
-  return nullptr;
+  return find_layout(registration_layouts(), name);
 }
 
 std::string registration_layout_names() {
-  const auto& table = registration_layouts();
-  std::string out;
-  for (std::size_t i = 0; i < table.size(); ++i) {
-    if (i > 0) out += i + 1 == table.size() ? " or " : ", ";
-    out += table[i].name;
-  }
-  return out;
+  return layout_names(registration_layouts());
 }
 
 }  // namespace sextant

@@ -2,6 +2,7 @@
 // it needs of the run. Adding a layout: its file in this folder and one line here.
 #include "sequence/layouts/layouts.hpp"
 
+#include "kit/layout_table.hpp"
 #include "sequence/settings.hpp"
 
 namespace sextant {
@@ -24,20 +25,11 @@ const std::vector<SequenceLayout>& sequence_layouts() {
 }
 
 const SequenceLayout* find_sequence_layout(const std::string& name) {
-  for (const SequenceLayout& l : sequence_layouts()) {
-    if (name == l.name) return &l;
-  }
-  return nullptr;
+  return find_layout(sequence_layouts(), name);
 }
 
 std::string sequence_layout_names() {
-  const auto& table = sequence_layouts();
-  std::string out;
-  for (std::size_t i = 0; i < table.size(); ++i) {
-    if (i > 0) out += i + 1 == table.size() ? " or " : ", ";
-    out += table[i].name;
-  }
-  return out;
+  return layout_names(sequence_layouts());
 }
 
 }  // namespace sextant
