@@ -2,7 +2,7 @@
 # The real-sequence benchmark (issue 22): `sextant odometry` with no options over the built-in
 # campus and the two trustworthy stretches of the shared MulRan Riverside02 excerpt (0–107 and
 # 116–165; its reference is wrong in between, see ../shared/data/README.md), then the same scans
-# with PCL's GICP (`--method pcl_gicp`, without Sextant's recovery) as the baseline row. Prints one
+# with PCL's GICP (`--method pcl_gicp --map scan --no-recover`: a plain GICP loop) as the baseline row. Prints one
 # table: ATE, RPE, KITTI drift, time per scan and the trust counts (untrusted steps, recovered steps).
 #
 #   bench/sequences.sh [build/experiments/sextant] [path/to/mulran_riverside02] [output folder]
@@ -44,10 +44,11 @@ run() {  # run <id> <label> <method> <dataset> [odometry options...]
 
 echo "| sequence | method | ATE [m] | RPE per step [m / °] | KITTI drift [%] | ms per scan | not converged | untrusted | recovered |"
 echo "|---|---|---|---|---|---|---|---|---|"
-# The baseline is the peer as it is: no recovery (its trust is still counted).
+# The baseline is the peer as a plain GICP loop runs it: scan to scan, no recovery (its trust is
+# still counted).
 for method in mlndt pcl_gicp; do
   extra=()
-  [ "$method" = mlndt ] || extra=(--no-recover)
+  [ "$method" = mlndt ] || extra=(--no-recover --map scan)
   run campus "campus (468 scans, odometry guess)" "$method" campus "${extra[@]}"
   run mulran0 "MulRan 0–107" "$method" "$mulran" --first 0 --scans 108 "${extra[@]}"
   run mulran116 "MulRan 116–165" "$method" "$mulran" --first 116 --scans 50 "${extra[@]}"

@@ -6,7 +6,7 @@
 #include <deque>
 #include <memory>
 #include <mutex>
-#include <optional>
+#include <vector>
 
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
@@ -17,12 +17,17 @@
 #include "sextant/odometry/local_map.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/odometry/sequence_trust.hpp"
+#include "sextant/odometry/suspect_choice.hpp"
 
 namespace sextant {
 namespace {
 
 /// Scans loaded and registered together on the parallel path (bounds the memory held).
 constexpr std::size_t kChunk = 16;
+
+/// Fits within this factor of each other count as equal when no registration is trusted: the
+/// sequence check's own tolerance (SequenceTrustSettings::fit_factor) [ratio].
+constexpr double kSuspectFitBand = SequenceTrustSettings{}.fit_factor;
 
 std::string dataset_label(const Dataset& dataset) {
   const DatasetMetadata& m = dataset.metadata();
@@ -101,22 +106,21 @@ struct Worker {
   }
 
   /// An untrusted step: the wide basin from each of `starts` (the guess first) until a registration
-  /// is trusted; when none is, the step chains `starts.back()` (the last trusted motion) and stays
-  /// untrusted. The sequence check only triggers this search: the wide basin's answer is judged on
+  /// is trusted; when none is, the step chains one of the registrations whose only flaw is their fit
+  /// (suspect_choice.hpp), else `starts.back()` (the last trusted motion), and stays untrusted. The sequence check only triggers this search: the wide basin's answer is judged on
   /// its own (registration_quality.hpp), since a step may rightly overlap less than its neighbours
   /// (a corner, an open space; measured on the campus: right poses 0.70 where the median is 0.87).
   void recover(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
                const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed) const {
     if (step.trusted() || !recovery || starts.empty()) return;  // recovery: null when it is off
     double seconds = step.seconds;
-    // The least suspect registration so far: converged, enough overlap, every direction
-    // constrained, only its fit above the bar. The first registration counts as it was judged on
-    // its own (a sequence check may have flagged an absolutely sound one).
-    std::optional<OdometryStep> least_suspect;
+    // The registrations whose only flaw is their fit: converged, enough overlap, every direction
+    // constrained. The first registration counts as it was judged on its own (a sequence check may
+    // have flagged an absolutely sound one).
+    std::vector<OdometryStep> suspects;
     const auto consider = [&](const OdometryStep& candidate, Trust absolute) {
-      if (!candidate.converged || (absolute != Trust::kSuspect && absolute != Trust::kOk)) return;
-      if (!least_suspect || candidate.quality.fit_ratio < least_suspect->quality.fit_ratio)
-        least_suspect = candidate;
+      if (candidate.converged && (absolute == Trust::kSuspect || absolute == Trust::kOk))
+        suspects.push_back(candidate);
     };
     consider(step, step.first_trust);
     for (const Eigen::Isometry3d& start : starts) {
@@ -134,11 +138,15 @@ struct Worker {
       }
       consider(again, again.quality.trust);
     }
-    if (least_suspect) {
-      // Nothing trusted, but a registration whose only flaw is its fit: evidence from the scans,
-      // where the prior (the guess, the last trusted motion) has none. The step stays untrusted.
+    if (!suspects.empty()) {
+      // Nothing trusted, but registrations whose only flaw is their fit: evidence from the scans,
+      // where the prior (the guess, the last trusted motion) has none. The scans choose a band of
+      // fits, the prior chooses inside it (suspect_choice.hpp). The step stays untrusted.
+      std::vector<SuspectCandidate> candidates;
+      for (const OdometryStep& s : suspects) candidates.push_back({s.relative, s.quality.fit_ratio});
+      const std::size_t chosen = choose_suspect(candidates, input, step.guess, kSuspectFitBand);
       const Trust first = step.first_trust;
-      step = std::move(*least_suspect);
+      step = std::move(suspects[chosen]);
       step.first_trust = first;
       step.quality.trust = Trust::kSuspect;
       step.recovery = "least_suspect";

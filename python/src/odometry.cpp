@@ -151,7 +151,7 @@ method, preset, sampling, sampler_settings, **settings: the matcher and sampler,
     (mlndt with preset "default" and GBS by default).
 guess: where each registration starts: "odometry", "constant_velocity", "identity"; None: odometry
     when the dataset has it, else constant_velocity (the CLI's default).
-map: "scan" (register against the previous scan) or "local_map" (the last local_map_scans scans).
+map: "local_map" (the default: the last local_map_scans scans) or "scan" (the previous scan).
 first, scans: the scans first … first + scans − 1 (scans = 0: to the end).
 min_range: drop points closer than this to the sensor [m]. seed: sampler seed (per-step seeds derive
     from it). recover: an untrusted step is registered again with the wide basin (the CLI's default;
@@ -201,7 +201,7 @@ void bind_odometry(py::module_& m) {
       });
   m.def("odometry", &odometry, kOdometryDoc, py::arg("dataset"), py::arg("method") = "mlndt",
         py::arg("preset") = py::none(), py::arg("sampling") = "gbs", py::arg("guess") = py::none(),
-        py::arg("map") = "scan", py::arg("first") = 0, py::arg("scans") = 0, py::arg("local_map_scans") = 5,
+        py::arg("map") = "local_map", py::arg("first") = 0, py::arg("scans") = 0, py::arg("local_map_scans") = 5,
         py::arg("min_range") = 0.0, py::arg("seed") = 1, py::arg("recover") = true,
         py::arg("poses") = py::none(), py::arg("odometry_poses") = py::none(), py::arg("times") = py::none(),
         py::arg("campus_seed") = 1, py::arg("jobs") = 0, py::arg("sampler_settings") = py::none());

@@ -38,7 +38,7 @@ struct OdometryOptions : MatcherOptions {
   std::string dataset, out;
   std::string poses;  ///< ground truth for a scan folder: TUM or KITTI file (default: poses.txt beside it)
   std::string guess;  ///< empty: odometry when the dataset has it, else constant_velocity
-  std::string map = "scan";
+  std::string map = "local_map";
   std::string loop_closure;  ///< empty: none; proximity, descriptor or both
   std::size_t first = 0;
   std::size_t scans = 0;  ///< 0: to the end of the dataset
@@ -331,7 +331,7 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--guess", o->guess,
                   "Initial guess: odometry, constant_velocity, identity (default: odometry when the dataset "
                   "has it, else constant_velocity)");
-  cmd->add_option("--map", o->map, "Register against the previous scan or a local map: scan, local_map")
+  cmd->add_option("--map", o->map, "Register against a local map of the last scans (local_map) or the previous scan (scan)")
       ->capture_default_str();
   cmd->add_option("--loop-closure", o->loop_closure,
                   "Close the trajectory's loops in a pose graph, with candidates from: proximity (the "

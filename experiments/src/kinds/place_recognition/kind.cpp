@@ -55,7 +55,8 @@ class PlaceRecognitionSession : public KindSession {
       : dataset_(open_campus(config, kKind)), n_(scans ? scans : dataset_.size()), clouds_(n_) {
     for (const MethodConfig& m : config.methods) sources_.push_back(source_of(m, config.file));
     for (std::size_t k = 0; k < n_; ++k) truth_.push_back(*dataset_.ground_truth(k));
-    OdometrySettings s;  // the defaults: ML-NDT on a GBS sample, the campus' odometry as the guess
+    OdometrySettings s;  // ML-NDT on a GBS sample, the campus' odometry as the guess,
+    s.map = OdometryMap::scan;  // scan to scan as E20's chain
     s.seed = config.seed;
     s.initial_pose = truth_.front();
     chain_ = run_odometry(dataset_, s, 0, n_);

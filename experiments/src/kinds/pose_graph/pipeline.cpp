@@ -126,6 +126,7 @@ void run_pose_graph_method(const PreloadedCampus& data, const PoseGraphParams& p
   OdometrySettings s;
   s.registration = odometry_registration(private_copy(method));
   s.guess = params.guess;
+  s.map = OdometryMap::scan;  // E20 chains scan-to-scan registrations (its edges are pairwise)
   s.seed = seed;
   s.odometry = guess_odometry(data.campus(), params, n, seed);
   s.initial_pose = truth.front();

@@ -53,7 +53,10 @@ struct OdometryRegistration {
 struct OdometrySettings {
   OdometryRegistration registration;
   OdometryGuess guess = OdometryGuess::odometry;
-  OdometryMap map = OdometryMap::scan;
+  /// The local map by default: measured better than scan-to-scan on the campus and both MulRan
+  /// stretches (docs/matcher_defaults.md, "Scan-to-scan or a local map"); scan-to-scan runs its
+  /// registrations in parallel with the odometry guess
+  OdometryMap map = OdometryMap::local_map;
   std::size_t local_map_scans = 5;            ///< local_map: scans in the map (k ≥ 1)
   std::size_t local_map_max_points = 150000;  ///< local_map: voxel-filter the map above this size
   double local_map_voxel = 0.2;               ///< local_map: voxel edge [m] (centroid per voxel)
@@ -104,7 +107,8 @@ struct OdometryStep {
   /// registration was not trusted; a wide-basin one is), "restart" (a matcher without a wide
   /// basin, registered again from another start, is), "least_suspect" (none is trusted, but one
   /// converged with enough overlap and every direction constrained and only its fit above the bar:
-  /// the lowest fit of them is chained, the step stays untrusted), "guess" / "last_motion" (no such
+  /// of those with about the lowest fit, the one nearest the guess is chained (suspect_choice.hpp),
+  /// the step stays untrusted), "guess" / "last_motion" (no such
   /// registration either: the odometry guess, or the last trusted motion of a constant-velocity run,
   /// is chained and the step stays untrusted).
   std::string recovery;
