@@ -107,9 +107,10 @@ struct Worker {
 
   /// An untrusted step: the wide basin from each of `starts` (the guess first) until a registration
   /// is trusted; when none is, the step chains one of the registrations whose only flaw is their fit
-  /// (suspect_choice.hpp), else `starts.back()` (the last trusted motion), and stays untrusted. The sequence check only triggers this search: the wide basin's answer is judged on
-  /// its own (registration_quality.hpp), since a step may rightly overlap less than its neighbours
-  /// (a corner, an open space; measured on the campus: right poses 0.70 where the median is 0.87).
+  /// (suspect_choice.hpp), else `starts.back()` (the last trusted motion), and stays untrusted. The sequence
+  /// check only triggers this search: the wide basin's answer is judged on its own
+  /// (registration_quality.hpp), since a step may rightly overlap less than its neighbours (a corner, an open
+  /// space; measured on the campus: right poses 0.70 where the median is 0.87).
   void recover(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
                const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed) const {
     if (step.trusted() || !recovery || starts.empty()) return;  // recovery: null when it is off
