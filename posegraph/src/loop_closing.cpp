@@ -74,33 +74,6 @@ OdometryGraph odometry_graph(const std::vector<Eigen::Isometry3d>& chained,
   return out;
 }
 
-PoseGraph with_odometry_information_scaled(const PoseGraph& g, double inflation,
-                                           const std::vector<Eigen::Isometry3d>& start) {
-  PoseGraph out;
-  for (const Eigen::Isometry3d& T : start.size() == g.size() ? start : g.poses()) out.add_node(T);
-  for (const PoseGraphEdge& e : g.edges())
-    out.add_edge(e.i, e.j, e.measured,
-                 e.kind == EdgeKind::odometry ? Matrix6d(e.information / inflation) : e.information, e.kind);
-  return out;
-}
-
-double information_inflation(const PoseGraph& g, const PoseGraphSettings& settings) {
-  PoseGraphSettings plain = settings;
-  plain.loss = RobustLoss::none;
-  double inflation = 1.0;
-  for (int pass = 0; pass < 3; ++pass) {
-    PoseGraph probe = with_odometry_information_scaled(g, inflation);
-    const PoseGraphReport r = probe.optimize(plain);
-    if (!r.ok || r.closure_chi2.empty()) break;
-    std::vector<double> chi2 = r.closure_chi2;
-    std::nth_element(chi2.begin(), chi2.begin() + static_cast<std::ptrdiff_t>(chi2.size() / 2), chi2.end());
-    const double factor = chi2[chi2.size() / 2] / 6.0;
-    if (!(factor > 1.0) || !std::isfinite(factor)) break;
-    inflation *= factor;
-  }
-  return inflation;
-}
-
 namespace {
 
 /// The candidates of this round not tried before: the descriptor's (first round only), then the
@@ -165,14 +138,18 @@ LoopClosingResult close_loops(const PoseGraph& odometry, const std::vector<Place
       out.accepted_information.push_back(a.decision.information);
     }
     out.attempts.insert(out.attempts.end(), found.begin(), found.end());
-    out.inflation = settings.calibrate_information ? information_inflation(out.graph, settings.graph) : 1.0;
+    if (settings.calibrate_information) {
+      out.variance = estimate_variance_components(out.graph, settings.graph, settings.variance);
+      out.inflation = out.variance.ok ? out.variance.odometry : 1.0;
+      out.closure_variance = out.variance.ok ? out.variance.closures : 1.0;
+    }
     // The verified closures are trusted first (no robust loss: from the chain, a true closure's
     // error is far outside the robust loss' scale and would be switched off at once), then the
     // robust loss refines from there.
-    PoseGraph trusted = with_odometry_information_scaled(out.graph, out.inflation);
+    PoseGraph trusted = with_information_scaled(out.graph, out.inflation, out.closure_variance);
     const PoseGraphReport first = trusted.optimize(plain);
-    clean = with_odometry_information_scaled(out.graph, out.inflation,
-                                             first.ok ? trusted.poses() : std::vector<Eigen::Isometry3d>{});
+    clean = with_information_scaled(out.graph, out.inflation, out.closure_variance,
+                                    first.ok ? trusted.poses() : std::vector<Eigen::Isometry3d>{});
     out.solve = clean.optimize(settings.graph);
     out.solve_seconds += first.seconds + out.solve.seconds;
     out.solve_iterations += first.iterations + out.solve.iterations;

@@ -111,7 +111,8 @@ TEST(LoopClosing, ProximityClosesASmallDriftAndPlacesCloseALargeOne) {
       EXPECT_EQ(r.accepted() > 0, should_close) << drift_deg << "° " << to_string(source);
       if (should_close)
         EXPECT_LT(worst_error(r.poses, truth), 0.25 * worst_error(chain, truth))
-            << drift_deg << "° " << to_string(source);
+            << drift_deg << "° " << to_string(source) << " σ² " << r.inflation << " " << r.closure_variance
+            << " " << r.variance.message << " accepted " << r.accepted();
       else
         EXPECT_NEAR(worst_error(r.poses, truth), worst_error(chain, truth), 1e-6);  // nothing to close
     }

@@ -20,7 +20,7 @@
 //     odometry: resample       # campus: the dataset's odometry; resample: drawn per run from the
 //                              # run seed with the campus' odometry model (Monte Carlo repetitions)
 //     slam: {sigma_xy: 0.5, …} # PlaneSlamSettings keys (filters/plane_slam.hpp) except filter
-//     report: accuracy         # accuracy | seif | benchmark | eseif
+//     report: accuracy         # accuracy | seif | benchmark | eseif | hybrid | fastslam
 //     marginal_nees: false     # also the NEES from the exact marginal of SEIF's Ω (nees_marginal)
 //     information_at: [118, 0] # information filters: block pattern of Ω when the map first
 //                              # reaches these sizes (0: after the last scan)

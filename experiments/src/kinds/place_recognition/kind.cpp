@@ -99,6 +99,7 @@ class PlaceRecognitionSession : public KindSession {
         close_loops(odometry_graph(chained, steps).graph, places_, register_closure, closing, rng);
     row.values[k::kClosingSeconds] = seconds_since(t0);
     row.values["information_inflation"] = closed.inflation;
+    row.values["closure_variance"] = closed.closure_variance;
     row.values["graph_solve_ok"] = closed.solve.ok ? 1.0 : 0.0;
     row.values["graph_solve_iterations"] = closed.solve_iterations;
     row.series["closure_chi2"] = closed.solve.closure_chi2;

@@ -6,6 +6,7 @@
 //   plane_slam/layouts/benchmark.cpp — Wulf and Kümmerle per filter, spikes at loop closures
 //   plane_slam/layouts/eseif.cpp     — ESEIF vs SEIF: NEES, update cost against the map, error
 //   plane_slam/layouts/hybrid.cpp    — odometry- vs FbML-NDT-driven filters, accuracy and cost
+//   plane_slam/layouts/fastslam.cpp  — accuracy, and the time per scan against the map size (E23)
 // and the thesis' comparative claims declared in params.claims (plane_slam/claims.cpp).
 // Each layout is one line in the table of plane_slam/layouts/layouts.cpp.
 #include <cmath>

@@ -17,7 +17,7 @@
 //                    max_mean_score: 6, min_matched_fraction: 0.5, max_correction_m: 8,
 //                    max_correction_deg: 20, information_scale: 1}     # loop_closure.hpp
 //     closure_rounds: 2          # candidates along the chain, then along the graph solved so far
-//     calibrate_information: true   # odometry R = H⁻¹ inflated until the accepted closures fit (χ²₆)
+//     calibrate_information: true   # odometry and closure Ω rescaled by variance component estimation
 //     graph: {loss: cauchy, loss_scale: 3, max_iterations: 100}      # pose_graph.hpp
 //     false_closures: 1           # injected "same place" closures between far-apart poses
 //     false_closure_min_distance: 40   # [m] true distance between the poses a false closure joins
@@ -45,8 +45,8 @@ struct PoseGraphParams {
   OdometrySource odometry = OdometrySource::kResample;
   OdometryGuess guess = OdometryGuess::odometry;
   LoopClosureSettings loop_closure;
-  bool calibrate_information =
-      true;  ///< inflate R = H⁻¹ of the odometry edges by the closures' χ² (pipeline)
+  /// Rescale the odometry and closure Ω by their variance components (posegraph/variance_components.hpp)
+  bool calibrate_information = true;
   std::size_t closure_rounds = 2;  ///< candidate searches: along the chain, then along each solved graph
   PoseGraphSettings graph;
   std::size_t false_closures = 1;

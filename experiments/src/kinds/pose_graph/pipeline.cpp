@@ -179,7 +179,8 @@ void run_pose_graph_method(const PreloadedCampus& data, const PoseGraphParams& p
   for (const auto& [i, j] : pairs)
     graph.add_edge(i, j, Eigen::Isometry3d::Identity(), false_information, EdgeKind::loop_closure);
   // The false closure arrives into the solved map (as it would in incremental mapping).
-  PoseGraph robust = with_odometry_information_scaled(graph, closed.inflation, closed.poses), plain = robust;
+  PoseGraph robust = with_information_scaled(graph, closed.inflation, closed.closure_variance, closed.poses),
+            plain = robust;
   const PoseGraphReport robust_report = robust.optimize(params.graph);
   const PoseGraphReport plain_report = plain.optimize(plain_settings);
 
@@ -200,6 +201,7 @@ void run_pose_graph_method(const PreloadedCampus& data, const PoseGraphParams& p
   v[keys::kFallbackInformation] = static_cast<double>(odometry_edges.fallback_information);
   v[keys::kClosureSeconds] = closure_seconds;
   v[keys::kInformationInflation] = closed.inflation;
+  v["closure_variance"] = closed.closure_variance;
   v[keys::kCandidates] = static_cast<double>(closed.attempts.size());
   v[keys::kAccepted] = static_cast<double>(accepted_information.size());
   v[keys::kFalseClosures] = static_cast<double>(pairs.size());

@@ -185,12 +185,14 @@ ReportSection pose_graph_report(const ExperimentConfig& config, const PoseGraphP
       "accepted so far (better guesses), each pair tried once; the closure registrations may use their own "
       "matcher settings (closure_settings, e.g. ML-NDT's wide basin). R = H⁻¹ is far too confident for the "
       "chain: " +
-      (params.calibrate_information
-           ? std::string(
-                 "the odometry edges' information is divided by a variance inflation chosen so that the "
-                 "accepted closures, trusted fully, end with a median error eᵀΩe of 6 (χ²₆) — from the "
-                 "closures, not from the ground truth (table: inflation); ")
-           : std::string("no calibration (calibrate_information: false); ")) +
+      (params.calibrate_information ? std::string("the odometry edges' and the closures' information are "
+                                                  "rescaled by their variance components "
+                                                  "(Helmert / Förstner: σ²_g = v_gᵀW_g v_g / r_g per edge "
+                                                  "group, iterated; the redundancies from "
+                                                  "the chain's accumulated covariance) — from the residuals, "
+                                                  "not from the ground truth (table: "
+                                                  "inflation = σ²_odometry); ")
+                                    : std::string("no calibration (calibrate_information: false); ")) +
       "the graph is solved first without the robust loss from the chain (a true closure's error there is far "
       "outside the loss' scale and would be switched off at once), then with it. Robustness check: " +
       std::to_string(params.false_closures) +

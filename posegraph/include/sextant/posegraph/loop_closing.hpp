@@ -12,7 +12,11 @@
 // Each candidate pair is registered once (scan j onto scan i, by the caller's registration) and
 // judged by judge_loop_closure. In rounds, the graph is solved with the closures accepted so far
 // (trusted first without the robust loss, then with it) and the proximity search runs again along
-// the better estimate, until a round finds no new pair.
+// the better estimate, until a round finds no new pair. Before each round's solves, the stated
+// information of the odometry and of the closures is calibrated by variance component estimation
+// (variance_components.hpp): the registrations' Hessians (eq. 3.50) are overconfident, and a chain
+// whose covariance does not explain the closures' misclosures pushes true closures into the robust
+// loss' flat tail.
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -27,6 +31,7 @@
 #include "sextant/posegraph/loop_closure.hpp"
 #include "sextant/posegraph/pose_graph.hpp"
 #include "sextant/posegraph/scan_context.hpp"
+#include "sextant/posegraph/variance_components.hpp"
 
 namespace sextant {
 
@@ -40,8 +45,18 @@ struct LoopClosingSettings {
   LoopClosureSettings closure;     ///< proximity candidates and the acceptance tests
   ScanContextSettings descriptor;  ///< descriptor candidates
   PoseGraphSettings graph;
-  std::size_t rounds = 3;             ///< candidate searches at most (each along the last solve)
-  bool calibrate_information = true;  ///< scale the odometry Ω by information_inflation
+  std::size_t rounds = 3;  ///< candidate searches at most (each along the last solve)
+  /// Rescale the odometry and closure Ω by their estimated variance components (Helmert/Förstner)
+  bool calibrate_information = true;
+  /// Only the odometry's factor is estimated (σ²_c = 1): the closures are verified one by one and
+  /// their stated Ω is what the robust loss' scale is measured in; from a few, often near-exact,
+  /// closures σ²_c collapses towards 0 and the Cauchy loss then switches every closure off.
+  VarianceComponentSettings variance = odometry_only();
+  static VarianceComponentSettings odometry_only() {
+    VarianceComponentSettings v;
+    v.estimate_closures = false;
+    return v;
+  }
 
   bool valid(std::string* why) const;
 };
@@ -67,17 +82,6 @@ OdometryGraph odometry_graph(const std::vector<Eigen::Isometry3d>& chained,
 /// the median is not positive definite.
 Matrix6d median_information(const std::vector<Matrix6d>& all);
 
-/// `g` with its odometry edges' information divided by `inflation`, starting from `start` (its own
-/// poses when `start` has another size).
-PoseGraph with_odometry_information_scaled(const PoseGraph& g, double inflation,
-                                           const std::vector<Eigen::Isometry3d>& start = {});
-
-/// How overconfident the odometry information is, from the accepted closures: with the closures
-/// trusted fully (no robust loss) a consistent graph leaves each closure an error eᵀΩe of about 6
-/// (χ²₆); the median over the closures / 6, applied and re-measured three times, is the variance
-/// inflation (≥ 1). 1 without closures.
-double information_inflation(const PoseGraph& g, const PoseGraphSettings& settings);
-
 struct ClosureAttempt {
   LoopClosureCandidate candidate;
   LoopCandidateSource source = LoopCandidateSource::proximity;
@@ -97,7 +101,9 @@ struct LoopClosingResult {
   PoseGraphReport solve;                 ///< … and its report (closure weights in acceptance order)
   std::vector<ClosureAttempt> attempts;  ///< every candidate tried, in the order tried
   std::vector<Matrix6d> accepted_information;
-  double inflation = 1.0;
+  double inflation = 1.0;         ///< σ²_o: the odometry covariance factor (1 when not calibrated)
+  double closure_variance = 1.0;  ///< σ²_c: the closures' covariance factor
+  VarianceComponents variance;    ///< the last round's estimate
   double solve_seconds = 0.0, solve_iterations = 0.0;  ///< every round's two solves
   std::size_t accepted() const { return accepted_information.size(); }
 };

@@ -13,6 +13,7 @@ ReportSection seif_report(const ExperimentConfig&, const PlaneSlamParams&, const
 ReportSection benchmark_report(const ExperimentConfig&, const PlaneSlamParams&, const PlaneSlamRows&);
 ReportSection eseif_report(const ExperimentConfig&, const PlaneSlamParams&, const PlaneSlamRows&);
 ReportSection hybrid_report(const ExperimentConfig&, const PlaneSlamParams&, const PlaneSlamRows&);
+ReportSection fastslam_report(const ExperimentConfig&, const PlaneSlamParams&, const PlaneSlamRows&);
 
 const std::vector<PlaneSlamLayout>& plane_slam_layouts() {
   // name, report, reference check
@@ -22,6 +23,7 @@ const std::vector<PlaneSlamLayout>& plane_slam_layouts() {
       {"benchmark", benchmark_report, check_plane_slam_reference},
       {"eseif", eseif_report, check_plane_slam_reference},
       {"hybrid", hybrid_report, check_plane_slam_reference},
+      {"fastslam", fastslam_report, check_plane_slam_reference},
   };
   return table;
 }
