@@ -43,4 +43,12 @@ LoopDetectionScore score_loop_candidates(const std::vector<std::pair<std::size_t
   return s;
 }
 
+std::size_t count_false_closures(const std::vector<std::pair<std::size_t, std::size_t>>& accepted,
+                                 const PoseList& truth, double radius) {
+  std::size_t wrong = 0;
+  for (const auto& [i, j] : accepted)
+    if (i < truth.size() && j < truth.size() && !same_place(truth, i, j, radius)) ++wrong;
+  return wrong;
+}
+
 }  // namespace sextant

@@ -25,6 +25,16 @@ TEST(LoopDetectionMetrics, RevisitingScansAreThoseBackNearAnEarlierOne) {
   for (std::size_t j = 60; j < 80; ++j) EXPECT_TRUE(r[j]) << j;
 }
 
+TEST(LoopDetectionMetrics, FalseClosuresJoinPlacesTrulyFartherApartThanTheRadius) {
+  // 60 → 0 is 0.5 m apart (right), 75 → 40 is 25 m apart (wrong), 45 → 50 is 5 m apart: wrong at a
+  // 1 m radius, right at 10 m (the index gap is not this function's business); 5 → 90 is outside.
+  const PoseList truth = out_and_back();
+  const std::vector<std::pair<std::size_t, std::size_t>> accepted{{0, 60}, {40, 75}, {45, 50}, {5, 90}};
+  EXPECT_EQ(count_false_closures(accepted, truth, 1.0), 2u);
+  EXPECT_EQ(count_false_closures(accepted, truth, 10.0), 1u);
+  EXPECT_EQ(count_false_closures({}, truth, 1.0), 0u);
+}
+
 TEST(LoopDetectionMetrics, PrecisionAndRecallCountWhatTheyShould) {
   RevisitSettings s;
   s.radius = 1.0;

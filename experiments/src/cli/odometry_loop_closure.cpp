@@ -74,18 +74,17 @@ std::vector<SourceScore> score_sources(const OdometryLoopClosure& closure,
   revisit.tolerance = defaults.closure.stride;
   std::vector<SourceScore> out;
   for (const LoopCandidateSource source : {LoopCandidateSource::proximity, LoopCandidateSource::descriptor}) {
-    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    std::vector<std::pair<std::size_t, std::size_t>> pairs, accepted;
     SourceScore score;
     score.source = source;
     for (const ClosureAttempt& a : closure.closing.attempts) {
       if (a.source != source) continue;
       pairs.emplace_back(a.candidate.i, a.candidate.j);
-      if (!a.decision.accepted) continue;
-      ++score.accepted;
-      const double apart = (truth[a.candidate.i].translation() - truth[a.candidate.j].translation()).norm();
-      score.accepted_wrong += apart > revisit.radius ? 1 : 0;
+      if (a.decision.accepted) accepted.push_back(pairs.back());
     }
     if (pairs.empty()) continue;
+    score.accepted = accepted.size();
+    score.accepted_wrong = count_false_closures(accepted, truth, revisit.radius);
     score.candidates = score_loop_candidates(pairs, truth, revisit);
     out.push_back(score);
   }

@@ -35,4 +35,9 @@ std::vector<bool> revisiting_scans(const PoseList& truth, const RevisitSettings&
 LoopDetectionScore score_loop_candidates(const std::vector<std::pair<std::size_t, std::size_t>>& candidates,
                                          const PoseList& truth, const RevisitSettings& settings);
 
+/// The accepted closures (pairs of scan indices into `truth`) whose scans are truly more than
+/// `radius` apart: closures that join two different places. Pairs outside `truth` are not counted.
+std::size_t count_false_closures(const std::vector<std::pair<std::size_t, std::size_t>>& accepted,
+                                 const PoseList& truth, double radius);
+
 }  // namespace sextant

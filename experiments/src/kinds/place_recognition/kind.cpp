@@ -55,7 +55,7 @@ class PlaceRecognitionSession : public KindSession {
       : dataset_(open_campus(config, kKind)), n_(scans ? scans : dataset_.size()), clouds_(n_) {
     for (const MethodConfig& m : config.methods) sources_.push_back(source_of(m, config.file));
     for (std::size_t k = 0; k < n_; ++k) truth_.push_back(*dataset_.ground_truth(k));
-    OdometrySettings s;  // ML-NDT on a GBS sample, the campus' odometry as the guess,
+    OdometrySettings s;         // ML-NDT on a GBS sample, the campus' odometry as the guess,
     s.map = OdometryMap::scan;  // scan to scan as E20's chain
     s.seed = config.seed;
     s.initial_pose = truth_.front();
@@ -125,19 +125,18 @@ class PlaceRecognitionSession : public KindSession {
     revisit.radius = closing.closure.radius;
     revisit.min_index_gap = closing.closure.min_index_gap;
     revisit.tolerance = closing.closure.stride;
-    std::vector<std::pair<std::size_t, std::size_t>> pairs;
-    double wrong = 0.0;
+    std::vector<std::pair<std::size_t, std::size_t>> pairs, accepted;
     for (const ClosureAttempt& a : closed.attempts) {
       pairs.emplace_back(a.candidate.i, a.candidate.j);
-      const double apart = (truth_[a.candidate.i].translation() - truth_[a.candidate.j].translation()).norm();
-      if (a.decision.accepted && apart > revisit.radius) wrong += 1.0;
+      if (a.decision.accepted) accepted.push_back(pairs.back());
     }
     const LoopDetectionScore score = score_loop_candidates(pairs, truth_, revisit);
     row.values[k::kCandidates] = static_cast<double>(score.candidates);
     row.values[k::kPrecision] = score.precision;
     row.values[k::kRecall] = score.recall;
     row.values[k::kAccepted] = static_cast<double>(closed.accepted());
-    row.values[k::kAcceptedWrong] = wrong;
+    row.values[k::kAcceptedWrong] =
+        static_cast<double>(count_false_closures(accepted, truth_, revisit.radius));
     row.values[k::kPlaceMatches] = static_cast<double>(places_.size());
     row.values[k::kDescriptorMs] = descriptor_ms_;
     row.values[k::kSearchMs] = search_ms_;
