@@ -1,0 +1,39 @@
+// The table of the simulation kind's models: `model:` name → checks, run, report.
+// Adding a model: its file and one line here.
+#include "simulation/layouts/layouts.hpp"
+
+#include <string>
+
+#include "kit/layout_table.hpp"
+#include "sextant/core/settings_reader.hpp"
+
+namespace sextant {
+
+// Each model's checks, run and report (simulation/<model>.cpp).
+void validate_room_2d(const ExperimentConfig&);
+void run_room_2d(const ExperimentConfig&, const RunSpec&, RunRow&);
+ReportSection room_2d_report(const ExperimentConfig&, const std::vector<RunSpec>&,
+                             const std::vector<const RunRow*>&);
+void validate_range_bearing(const ExperimentConfig&);
+void run_range_bearing(const ExperimentConfig&, const RunSpec&, RunRow&);
+ReportSection range_bearing_report(const ExperimentConfig&, const std::vector<RunSpec>&,
+                                   const std::vector<const RunRow*>&);
+
+const std::vector<SimulationLayout>& simulation_layouts() {
+  // name, validate, run, report
+  static const std::vector<SimulationLayout> table{
+      {"room_2d", validate_room_2d, run_room_2d, room_2d_report},
+      {"range_bearing", validate_range_bearing, run_range_bearing, range_bearing_report},
+  };
+  return table;
+}
+
+const SimulationLayout& simulation_layout(const ExperimentConfig& config) {
+  SettingsReader in(config.params, config.file);
+  std::string model;
+  in.require("model", model);
+  if (const SimulationLayout* l = find_layout(simulation_layouts(), model)) return *l;
+  in.fail("model", "key 'model': '" + model + "' is not " + layout_names(simulation_layouts()));
+}
+
+}  // namespace sextant
