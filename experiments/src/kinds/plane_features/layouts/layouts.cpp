@@ -2,10 +2,7 @@
 // Adding a study: its file and one line here.
 #include "plane_features/layouts/layouts.hpp"
 
-#include <string>
-
 #include "kit/layout_table.hpp"
-#include "sextant/core/settings_reader.hpp"
 
 namespace sextant {
 
@@ -29,11 +26,7 @@ const std::vector<PlaneFeaturesLayout>& plane_features_layouts() {
 }
 
 const PlaneFeaturesLayout& plane_features_layout(const ExperimentConfig& config) {
-  SettingsReader in(config.params, config.file);
-  std::string study;
-  in.require("study", study);
-  if (const PlaneFeaturesLayout* l = find_layout(plane_features_layouts(), study)) return *l;
-  in.fail("study", "key 'study': '" + study + "' is not " + layout_names(plane_features_layouts()));
+  return layout_named_by(plane_features_layouts(), config, "study");
 }
 
 }  // namespace sextant

@@ -2,10 +2,7 @@
 // Adding a model: its file and one line here.
 #include "simulation/layouts/layouts.hpp"
 
-#include <string>
-
 #include "kit/layout_table.hpp"
-#include "sextant/core/settings_reader.hpp"
 
 namespace sextant {
 
@@ -29,11 +26,7 @@ const std::vector<SimulationLayout>& simulation_layouts() {
 }
 
 const SimulationLayout& simulation_layout(const ExperimentConfig& config) {
-  SettingsReader in(config.params, config.file);
-  std::string model;
-  in.require("model", model);
-  if (const SimulationLayout* l = find_layout(simulation_layouts(), model)) return *l;
-  in.fail("model", "key 'model': '" + model + "' is not " + layout_names(simulation_layouts()));
+  return layout_named_by(simulation_layouts(), config, "model");
 }
 
 }  // namespace sextant
