@@ -78,6 +78,14 @@ Eigen::MatrixXd Eseif::covariance() const {
   return dense.llt().solve(Eigen::MatrixXd::Identity(dense.rows(), dense.cols()));
 }
 
+FilterDiagnostics Eseif::diagnostics() const {
+  FilterDiagnostics d;
+  d.information = &omega_;
+  d.relocations = relocations_;
+  d.skipped_relocations = skipped_;
+  return d;
+}
+
 Eigen::MatrixXd Eseif::joint_covariance(const std::vector<int>& landmarks) const {
   std::vector<int> vars{kPose};
   for (int j : landmarks) {

@@ -15,6 +15,10 @@ std::string to_string(StepStatus status) {
   return "unknown";
 }
 
+FilterDiagnostics Filter::diagnostics() const {
+  return {};
+}
+
 std::string Filter::approximation() const {
   return "linearised (Jacobians, eqs. 4.62-4.68): no sigma points";
 }

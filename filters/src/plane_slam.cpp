@@ -217,14 +217,22 @@ PlaneSlamStep PlaneSlam::step(const Vector6d& u, const Matrix6d& Q) {
 PlaneSlamRun run_plane_slam(const PlaneSlamSettings& settings, std::size_t count,
                             const std::function<PointCloud(std::size_t)>& scan,
                             const std::vector<Eigen::Isometry3d>& odometry, const Pose6& initial_pose,
-                            std::uint64_t seed) {
+                            std::uint64_t seed, const PlaneSlamStepCallback& on_step,
+                            const PlaneSlamMotionSource& motion) {
   if (odometry.size() < count) throw std::invalid_argument("run_plane_slam: fewer odometry poses than scans");
   PlaneSlam slam(settings, initial_pose, seed);
   PlaneSlamRun run;
   for (std::size_t i = 0; i < count; ++i) {
-    run.steps.push_back(slam.step(scan(i), to_pose6(odometry[i])));
+    const auto t_step = Clock::now();
+    const PlaneExtraction& extraction = slam.extract(scan(i));
+    MotionIncrement m{Vector6d::Zero(), settings.process_noise()};
+    if (i > 0) m.u = odometry_increment(to_pose6(odometry[i - 1]), to_pose6(odometry[i]));  // eq. 4.72
+    if (motion && i > 0) m = motion(i, extraction, slam.filter(), m);
+    run.steps.push_back(slam.step(m.u, m.Q));
+    run.steps.back().seconds = since(t_step);
     run.trajectory.push_back(slam.pose());
     if (!run.steps.back().filter.ok()) ++run.failed_steps;
+    if (on_step) on_step(i, run.steps.back(), slam.filter());
   }
   run.summary = slam.filter().summary();
   run.map_size = slam.map().size();

@@ -72,6 +72,13 @@ std::vector<int> Seif::markov_blanket(const std::vector<int>& landmarks) const {
   return blanket;
 }
 
+FilterDiagnostics Seif::diagnostics() const {
+  FilterDiagnostics d;
+  d.information = &omega_;
+  d.approximate_covariance = true;
+  return d;
+}
+
 Eigen::MatrixXd Seif::joint_covariance(const std::vector<int>& landmarks) const {
   const std::vector<int> blanket = markov_blanket(landmarks);
   const Eigen::MatrixXd omega_bb = omega_.gather(blanket, false);

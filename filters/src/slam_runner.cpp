@@ -7,15 +7,18 @@ bool SlamRunSettings::valid(std::string* /*why*/) const {
 }
 
 SlamRunResult run_slam(Filter& filter, const std::vector<SlamStepInput>& steps, const Eigen::MatrixXd& Q,
-                       const Eigen::MatrixXd& R, const SlamRunSettings& settings, std::map<int, int> known) {
+                       const Eigen::MatrixXd& R, const SlamRunSettings& settings, std::map<int, int> known,
+                       const SlamStepCallback& on_step) {
   SlamRunResult result;
   result.landmark_index = std::move(known);
   const int p = filter.model().pose_dim();
   for (const SlamStepInput& step : steps) {
     SlamStepRecord record;
-    const StepResult predicted = filter.predict(step.u, Q);
-    record.predict_status = predicted.status;
-    record.predict_seconds = predicted.seconds;
+    if (step.u.size() > 0) {  // motion update (eq. 4.72 for plane SLAM)
+      const StepResult predicted = filter.predict(step.u, Q);
+      record.predict_status = predicted.status;
+      record.predict_seconds = predicted.seconds;
+    }
 
     std::vector<Eigen::VectorXd> zs;
     std::vector<int> associations;
@@ -50,6 +53,7 @@ SlamRunResult run_slam(Filter& filter, const std::vector<SlamStepInput>& steps, 
     record.pose = mean.head(p);
     if (settings.record_pose_covariance) record.pose_covariance = filter.covariance().topLeftCorner(p, p);
     if (!record.ok()) ++result.failed_steps;
+    if (on_step) on_step(result.steps.size(), record, filter);
     result.steps.push_back(std::move(record));
   }
   result.summary = filter.summary();

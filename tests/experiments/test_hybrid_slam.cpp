@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "kit/fbmlndt_motion.hpp"
-#include "kit/plane_slam_driver.hpp"
+#include "kit/plane_slam_record.hpp"
 #include "sextant/experiments/report.hpp"
 #include "sextant/experiments/run_row.hpp"
 #include "sextant/experiments/runner.hpp"

@@ -1,6 +1,7 @@
 #pragma once
-// The finished rows of an experiment grouped by method, so that two methods are compared on the
-// same sweep points and repetitions.
+// The finished rows of an experiment grouped by method (over the whole sweep, or per sweep point
+// as plane_slam groups them), so that two methods are compared on the same sweep points and
+// repetitions.
 #include <map>
 #include <string>
 #include <vector>
@@ -15,9 +16,14 @@ struct MethodRows {
   std::string name;
   std::vector<const RunRow*> rows;                ///< ok rows in expansion order
   std::map<std::string, const RunRow*> by_point;  ///< point_key → row
+  /// The sweep label the rows are at, when grouped per sweep point ("" otherwise).
+  std::string point;
+  /// Failed runs the family still counts (plane_slam: a filter that failed on most steps).
+  std::vector<const RunRow*> ended;
 
   /// `value(key)` of each row, in expansion order (NaN when missing).
   std::vector<double> values(const std::string& key) const;
+  const RunRow* first() const { return rows.empty() ? nullptr : rows.front(); }
 };
 
 /// "axis=label;…;rep=N": a sweep point and repetition, the same for every method.

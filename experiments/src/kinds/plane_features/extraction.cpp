@@ -25,8 +25,8 @@
 
 #include "kit/dataset_source.hpp"
 #include "plane_features/extraction.hpp"
+#include "plane_features/layouts/layouts.hpp"
 #include "plane_features/row_keys.hpp"
-#include "plane_features/study.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/core/units.hpp"
@@ -219,53 +219,46 @@ class ExtractionSession : public KindSession {
   const synth::Campus* campus_ = nullptr;  ///< owned by dataset_
 };
 
-class ExtractionStudy : public PlaneFeaturesStudy {
- public:
-  void validate(const ExperimentConfig& config) const override {
-    (void)read_extraction_study_params(config);
-    if (config.dataset.source != DatasetSource::kSynthetic)
-      throw InputError(config.file, "",
-                       "key 'dataset': the extraction study needs source: synthetic (true planes)");
-    check_experiment_dataset(config, "plane_features");
-    if (config.sweep.size() != 1 || config.sweep[0].name != "scan")
-      throw InputError(config.file, "", "key 'sweep': the extraction study needs exactly one axis 'scan'");
-    for (const auto& v : config.sweep[0].values)
-      if (!v.IsScalar() || v.as<long long>(-1) < 0)
-        throw InputError(config.file, at_line(yaml_line(v)), "key 'scan': scan indices are integers >= 0");
-    for (const auto& m : config.methods) {
-      SettingsReader in(m.node, config.file);
-      std::string name;
-      in.require("name", name);
-      in.finish();
-    }
-    if (config.methods.size() != 1)
-      throw InputError(config.file, "", "key 'methods': the extraction study takes one method");
-    SettingsReader ref(config.reference, config.file);
-    double x = 0;
-    ref.read("first_scan_features", x);
-    ref.read("second_scan_associated", x);
-    ref.read("feature_band_factor", x);
-    ref.read("association_precision_floor", x);
-    ref.read("trivial_motion_m", x);
-    std::vector<std::vector<double>> table;
-    ref.read("table_5_10", table);
-    ref.finish();
-  }
-
-  std::unique_ptr<KindSession> prepare(const ExperimentConfig& config) const override {
-    return std::make_unique<ExtractionSession>(config, read_extraction_study_params(config));
-  }
-
-  ReportSection report(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
-                       const std::vector<const RunRow*>& rows) const override {
-    return extraction_report(config, read_extraction_study_params(config), runs, rows);
-  }
-};
-
 }  // namespace
 
-std::unique_ptr<PlaneFeaturesStudy> make_extraction_study() {
-  return std::make_unique<ExtractionStudy>();
+void validate_extraction_study(const ExperimentConfig& config) {
+  (void)read_extraction_study_params(config);
+  if (config.dataset.source != DatasetSource::kSynthetic)
+    throw InputError(config.file, "",
+                     "key 'dataset': the extraction study needs source: synthetic (true planes)");
+  check_experiment_dataset(config, "plane_features");
+  if (config.sweep.size() != 1 || config.sweep[0].name != "scan")
+    throw InputError(config.file, "", "key 'sweep': the extraction study needs exactly one axis 'scan'");
+  for (const auto& v : config.sweep[0].values)
+    if (!v.IsScalar() || v.as<long long>(-1) < 0)
+      throw InputError(config.file, at_line(yaml_line(v)), "key 'scan': scan indices are integers >= 0");
+  for (const auto& m : config.methods) {
+    SettingsReader in(m.node, config.file);
+    std::string name;
+    in.require("name", name);
+    in.finish();
+  }
+  if (config.methods.size() != 1)
+    throw InputError(config.file, "", "key 'methods': the extraction study takes one method");
+  SettingsReader ref(config.reference, config.file);
+  double x = 0;
+  ref.read("first_scan_features", x);
+  ref.read("second_scan_associated", x);
+  ref.read("feature_band_factor", x);
+  ref.read("association_precision_floor", x);
+  ref.read("trivial_motion_m", x);
+  std::vector<std::vector<double>> table;
+  ref.read("table_5_10", table);
+  ref.finish();
+}
+
+std::unique_ptr<KindSession> prepare_extraction_study(const ExperimentConfig& config) {
+  return std::make_unique<ExtractionSession>(config, read_extraction_study_params(config));
+}
+
+ReportSection extraction_study_report(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
+                                      const std::vector<const RunRow*>& rows) {
+  return extraction_report(config, read_extraction_study_params(config), runs, rows);
 }
 
 }  // namespace sextant

@@ -16,8 +16,8 @@
 
 #include "kit/number_format.hpp"
 #include "kit/reference_values.hpp"
+#include "plane_features/layouts/layouts.hpp"
 #include "plane_features/merging.hpp"
-#include "plane_features/study.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/core/settings_reader.hpp"
@@ -99,42 +99,38 @@ std::vector<double> reference_row(const YAML::Node& reference, int c, int pair) 
   return v;
 }
 
-class MergingStudy : public PlaneFeaturesStudy {
- public:
-  void validate(const ExperimentConfig& config) const override {
-    (void)read_merging_params(config);
-    for (const auto& m : config.methods) {
-      SettingsReader in(m.node, config.file);
-      std::string name;
-      in.require("name", name);
-      in.finish();
-    }
-    if (config.methods.size() != 1 || !config.sweep.empty())
-      throw InputError(config.file, "", "key 'methods': the merging study takes one method and no sweep");
-    SettingsReader ref(config.reference, config.file);
-    for (const char* c : {"case1", "case2"}) {
-      std::map<std::string, std::vector<double>> rows;
-      ref.read(c, rows);
-      for (const auto& [pair, v] : rows)
-        if ((pair != "1-2" && pair != "1-3") || v.size() != 4)
-          ref.fail(c, std::string("key '") + c + "': pairs \"1-2\", \"1-3\" of [C_o, C_t, C_p, d_c]");
-    }
-    double factor = 2;
-    ref.read("jump_band_factor", factor);
-    ref.finish();
-    if (!(factor > 1)) ref.fail("jump_band_factor", "key 'jump_band_factor' must be > 1");
+}  // namespace
+
+void validate_merging_study(const ExperimentConfig& config) {
+  (void)read_merging_params(config);
+  for (const auto& m : config.methods) {
+    SettingsReader in(m.node, config.file);
+    std::string name;
+    in.require("name", name);
+    in.finish();
   }
-
-  std::unique_ptr<KindSession> prepare(const ExperimentConfig& config) const override {
-    return std::make_unique<MergingSession>(read_merging_params(config), config.seed);
+  if (config.methods.size() != 1 || !config.sweep.empty())
+    throw InputError(config.file, "", "key 'methods': the merging study takes one method and no sweep");
+  SettingsReader ref(config.reference, config.file);
+  for (const char* c : {"case1", "case2"}) {
+    std::map<std::string, std::vector<double>> rows;
+    ref.read(c, rows);
+    for (const auto& [pair, v] : rows)
+      if ((pair != "1-2" && pair != "1-3") || v.size() != 4)
+        ref.fail(c, std::string("key '") + c + "': pairs \"1-2\", \"1-3\" of [C_o, C_t, C_p, d_c]");
   }
+  double factor = 2;
+  ref.read("jump_band_factor", factor);
+  ref.finish();
+  if (!(factor > 1)) ref.fail("jump_band_factor", "key 'jump_band_factor' must be > 1");
+}
 
-  ReportSection report(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
-                       const std::vector<const RunRow*>& rows) const override;
-};
+std::unique_ptr<KindSession> prepare_merging_study(const ExperimentConfig& config) {
+  return std::make_unique<MergingSession>(read_merging_params(config), config.seed);
+}
 
-ReportSection MergingStudy::report(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
-                                   const std::vector<const RunRow*>& rows) const {
+ReportSection merging_study_report(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
+                                   const std::vector<const RunRow*>& rows) {
   const MergingParams p = read_merging_params(config);
   std::vector<const RunRow*> ok;
   const RunRow* first = nullptr;
@@ -281,12 +277,6 @@ ReportSection MergingStudy::report(const ExperimentConfig& config, const std::ve
        ok.empty() ? Verdict::not_comparable : (right == ok.size() ? Verdict::holds : Verdict::does_not_hold),
        std::to_string(right) + " of " + std::to_string(ok.size()) + " repetitions", ClaimKind::sanity});
   return section;
-}
-
-}  // namespace
-
-std::unique_ptr<PlaneFeaturesStudy> make_merging_study() {
-  return std::make_unique<MergingStudy>();
 }
 
 }  // namespace sextant

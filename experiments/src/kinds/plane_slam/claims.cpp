@@ -102,7 +102,7 @@ std::vector<std::string> sweep_points(const ExperimentConfig& config) {
 }
 
 /// Per repetition: did the filter fail a step? Runs the failures ended count as failed.
-std::map<int, bool> failed(const PlaneSlamGroup& g) {
+std::map<int, bool> failed(const MethodRows& g) {
   std::map<int, bool> out;
   for (const RunRow* r : g.rows) {
     const double f = r->value(keys::kFailedSteps);
@@ -113,7 +113,7 @@ std::map<int, bool> failed(const PlaneSlamGroup& g) {
 }
 
 /// The repetitions both groups have, paired (compare_paired_successes pairs by index).
-PairedRates paired_failures(const PlaneSlamGroup& a, const PlaneSlamGroup& b) {
+PairedRates paired_failures(const MethodRows& a, const MethodRows& b) {
   const std::map<int, bool> fa = failed(a), fb = failed(b);
   std::vector<bool> va, vb;
   for (const auto& [rep, f] : fa) {
@@ -128,7 +128,7 @@ PairedRates paired_failures(const PlaneSlamGroup& a, const PlaneSlamGroup& b) {
 Claim decide(const DeclaredClaim& c, const PlaneSlamRows& data, std::uint64_t seed) {
   Claim out{c.statement, Verdict::not_comparable, "", ClaimKind::thesis};
   const std::string point = c.point.empty() ? data.points.front() : c.point;
-  const PlaneSlamGroup* a = data.find(c.a, point);
+  const MethodRows* a = data.find(c.a, point);
   if (!a || (a->rows.empty() && (c.type != "fails_more" || a->ended.empty()))) {
     out.evidence = "no finished runs of " + c.a;
     return out;
@@ -147,7 +147,7 @@ Claim decide(const DeclaredClaim& c, const PlaneSlamRows& data, std::uint64_t se
   }
   std::vector<Verdict> verdicts;
   for (const std::string& name : c.b) {
-    const PlaneSlamGroup* b = data.find(name, point);
+    const MethodRows* b = data.find(name, point);
     if (!b || (b->rows.empty() && (c.type != "fails_more" || b->ended.empty()))) {
       verdicts.push_back(Verdict::not_comparable);
       out.evidence += (out.evidence.empty() ? "" : "; ") + ("no finished runs of " + name);

@@ -1,5 +1,5 @@
 // `plane_slam`: one run = one filter over the first scans of the
-// synthetic campus at one sweep point (p0_scale) and repetition (kit/plane_slam_driver.hpp). Each
+// synthetic campus at one sweep point (p0_scale) and repetition (kit/plane_slam_record.hpp). Each
 // row holds per scan the position / rotation error against the ground truth, the NEES of the
 // pose, the motion- and measurement-update times and the map size; the estimated, true and
 // dead-reckoned trajectories with the pose covariances; the final map; the information-matrix
@@ -15,7 +15,7 @@
 
 #include "kinds.hpp"
 #include "kit/campus.hpp"
-#include "kit/plane_slam_driver.hpp"
+#include "kit/plane_slam_record.hpp"
 #include "kit/row_keys.hpp"
 #include "plane_slam/layouts/layouts.hpp"
 #include "plane_slam/report.hpp"

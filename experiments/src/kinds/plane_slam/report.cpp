@@ -14,21 +14,15 @@
 #include "sextant/filters/plane_slam_model.hpp"
 
 namespace sextant {
-std::vector<double> PlaneSlamGroup::values(const std::string& name) const {
-  std::vector<double> out;
-  for (const RunRow* r : rows) out.push_back(r ? r->value(name) : kNaN);
-  return out;
-}
-
-const PlaneSlamGroup* PlaneSlamRows::find(const std::string& method, const std::string& point) const {
-  for (const PlaneSlamGroup& g : groups)
-    if (g.method == method && g.point == point) return &g;
+const MethodRows* PlaneSlamRows::find(const std::string& method, const std::string& point) const {
+  for (const MethodRows& g : groups)
+    if (g.name == method && g.point == point) return &g;
   return nullptr;
 }
 
-std::vector<const PlaneSlamGroup*> PlaneSlamRows::at(const std::string& point) const {
-  std::vector<const PlaneSlamGroup*> out;
-  for (const PlaneSlamGroup& g : groups)
+std::vector<const MethodRows*> PlaneSlamRows::at(const std::string& point) const {
+  std::vector<const MethodRows*> out;
+  for (const MethodRows& g : groups)
     if (g.point == point && !g.rows.empty()) out.push_back(&g);
   return out;
 }
@@ -41,7 +35,11 @@ PlaneSlamRows collect_plane_slam_rows(const ExperimentConfig& config, const std:
     for (const YAML::Node& v : axis.values) data.points.push_back(v.IsScalar() ? v.Scalar() : YAML::Dump(v));
   if (data.points.empty()) data.points.push_back("");
   for (const std::string& point : data.points)
-    for (const MethodConfig& m : config.methods) data.groups.push_back({m.name, point, {}, {}});
+    for (const MethodConfig& m : config.methods) {
+      data.groups.emplace_back();
+      data.groups.back().name = m.name;
+      data.groups.back().point = point;
+    }
   for (std::size_t i = 0; i < runs.size(); ++i) {
     if (!rows[i]) continue;
     // slam_run_failure's words for a filter that failed on more than half of its steps.
@@ -49,8 +47,11 @@ PlaneSlamRows collect_plane_slam_rows(const ExperimentConfig& config, const std:
     if (!rows[i]->ok && !ended) continue;
     const auto it = runs[i].point.find(kP0ScaleAxis);
     const std::string point = it == runs[i].point.end() ? "" : it->second;
-    for (PlaneSlamGroup& g : data.groups)
-      if (g.method == runs[i].method && g.point == point) (ended ? g.ended : g.rows).push_back(rows[i]);
+    for (MethodRows& g : data.groups)
+      if (g.name == runs[i].method && g.point == point) {
+        (ended ? g.ended : g.rows).push_back(rows[i]);
+        if (!ended) g.by_point[point_key(runs[i].point, runs[i].repetition)] = rows[i];
+      }
   }
   return data;
 }
@@ -90,7 +91,7 @@ std::string landmark_text(const PlaneSlamParams& params) {
 std::string common_notes(const ExperimentConfig& config, const PlaneSlamParams& params,
                          const PlaneSlamRows& data) {
   std::size_t scans = 0;
-  for (const PlaneSlamGroup& g : data.groups)
+  for (const MethodRows& g : data.groups)
     if (g.first())
       scans = std::max(scans, g.first()->series.count(keys::kErrorM)
                                   ? series_or_empty(*g.first(), keys::kErrorM).size()
@@ -141,7 +142,7 @@ ReportFigure error_figure(const PlaneSlamRows& data, const std::string& point, c
   plot.x_label = "scan";
   plot.y_label = y_label;
   bool odometry_drawn = odometry_series.empty();
-  for (const PlaneSlamGroup* g : data.at(point)) {
+  for (const MethodRows* g : data.at(point)) {
     const RunRow& row = *g->first();
     if (!odometry_drawn) {
       const auto& o = series_or_empty(row, odometry_series);
@@ -149,7 +150,7 @@ ReportFigure error_figure(const PlaneSlamRows& data, const std::string& point, c
       odometry_drawn = true;
     }
     const auto& y = series_or_empty(row, series_name);
-    plot.add_line(g->method, scan_axis(y.size()), y);
+    plot.add_line(g->name, scan_axis(y.size()), y);
   }
   // Filters with near-equal errors (UKF and CKF) overlap: each method its own dashes and markers.
   distinguish_series(plot, odometry_series.empty() || plot.series.empty() ? 0 : 1);
@@ -199,13 +200,13 @@ ReportFigure map_figure(const ExperimentConfig& config, const PlaneSlamParams& p
 std::vector<Claim> beats_odometry_claims(const PlaneSlamRows& data, std::uint64_t seed) {
   std::vector<Claim> out;
   for (const std::string& point : data.points) {
-    for (const PlaneSlamGroup* g : data.at(point)) {
+    for (const MethodRows* g : data.at(point)) {
       for (const char* measure : {"max_error_m", "final_error_m"}) {
         const std::string odometry = std::string("odometry_") + measure;
         const Interval d = bootstrap_paired_mean_difference(g->values(measure), g->values(odometry), seed);
         Claim c;
         c.kind = ClaimKind::sanity;
-        c.statement = g->method + (point.empty() ? "" : " (" + point_text(point) + ")") + ": " +
+        c.statement = g->name + (point.empty() ? "" : " (" + point_text(point) + ")") + ": " +
                       (measure == std::string("max_error_m") ? "maximum" : "final") +
                       " position error below the odometry's";
         c.verdict = verdict_less(d, 0.0);

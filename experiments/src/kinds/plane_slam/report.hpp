@@ -19,6 +19,7 @@
 
 #include "kit/number_format.hpp"
 #include "kit/plane_slam_params.hpp"
+#include "kit/row_groups.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/table.hpp"
 #include "sextant/eval/verdict.hpp"
@@ -28,26 +29,17 @@
 
 namespace sextant {
 
-/// The finished rows of one method at one sweep point, by repetition.
-struct PlaneSlamGroup {
-  std::string method;
-  std::string point;  ///< p0_scale label ("" without a sweep)
-  std::vector<const RunRow*> rows;
-  /// Runs that ended as failed runs because the filter failed on most of its steps
-  /// (slam_run_failure): no trajectory to score, but a filter failure to count (E13's P0 study).
-  std::vector<const RunRow*> ended;
-  const RunRow* first() const { return rows.empty() ? nullptr : rows.front(); }
-  /// One value per repetition (NaN where missing).
-  std::vector<double> values(const std::string& name) const;
-};
-
+/// The finished rows by method and sweep point: one MethodRows (kit/row_groups.hpp) per method
+/// and p0_scale label ("" without a sweep), its rows by repetition; `ended` holds the runs that
+/// ended as failed runs because the filter failed on most of its steps (slam_run_failure): no
+/// trajectory to score, but a filter failure to count (E13's P0 study).
 struct PlaneSlamRows {
   std::vector<std::string> points;  ///< sweep labels in config order ("" without a sweep)
-  std::vector<PlaneSlamGroup> groups;
+  std::vector<MethodRows> groups;
   int repetitions = 1;
-  const PlaneSlamGroup* find(const std::string& method, const std::string& point) const;
+  const MethodRows* find(const std::string& method, const std::string& point) const;
   /// Groups of one sweep point, in method order.
-  std::vector<const PlaneSlamGroup*> at(const std::string& point) const;
+  std::vector<const MethodRows*> at(const std::string& point) const;
 };
 
 PlaneSlamRows collect_plane_slam_rows(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
@@ -89,7 +81,7 @@ struct TimeGrowth {
   double median_ms = NAN;
   double map_lo = NAN, map_hi = NAN;
 };
-TimeGrowth time_growth(const PlaneSlamGroup& g, const std::string& time, std::uint64_t seed);
+TimeGrowth time_growth(const MethodRows& g, const std::string& time, std::uint64_t seed);
 /// "Flat" (a bounded cost, E17 and E22): the fitted time changes by less than this fraction of its
 /// median across the map's range.
 constexpr double kFlatGrowth = 0.5;

@@ -43,7 +43,7 @@ void put_metrics(const PoseList& estimate, const PoseList& truth, const std::str
 }
 
 /// The guesses' odometry: the campus' own, or redrawn from its model with the run seed exactly as
-/// the plane_slam kind draws the filters' odometry (kit/plane_slam_driver.cpp), so both see one draw.
+/// the plane_slam kind draws the filters' odometry (kit/plane_slam_record.cpp), so both see one draw.
 PoseList guess_odometry(const synth::Campus& campus, const PoseGraphParams& params, std::size_t n,
                         std::uint64_t seed) {
   const PoseList truth(campus.ground_truth.begin(),

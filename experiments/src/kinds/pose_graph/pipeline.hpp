@@ -6,12 +6,12 @@
 // from its registration Hessian (R = H⁻¹, eq. 3.50), is solved with the accepted closures, and —
 // for the robustness check — again with `false_closures` injected "same place" closures between
 // poses that are truly far apart, once with the robust loss and once without. A filter method:
-// the plane_slam kind's record_plane_slam (kit/plane_slam_driver.hpp) over the same scans.
+// the plane_slam kind's record_plane_slam (kit/plane_slam_record.hpp) over the same scans.
 // Every trajectory is scored by ATE (SE(3) Umeyama), Wulf (eqs. 6.1–6.3) and Kümmerle (eq. 6.6).
 #include <cstdint>
 #include <vector>
 
-#include "kit/plane_slam_driver.hpp"
+#include "kit/plane_slam_record.hpp"
 #include "pose_graph/params.hpp"
 #include "sextant/core/dataset.hpp"
 #include "sextant/experiments/run_row.hpp"

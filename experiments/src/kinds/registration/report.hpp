@@ -30,5 +30,10 @@ RegistrationStatsSettings stats_settings(const RegistrationParams& params);
 
 /// The thesis' mean / std / max per parameter: {mean: [6 numbers or null], std: [...], max: [...]}.
 ParameterReference read_parameter_reference(const YAML::Node& node, const std::string& file);
+/// Checks one method's accuracy block: {table, mean, std, max, success_percent, seconds, …}.
+void check_accuracy_method(const YAML::Node& node, const std::string& file);
+/// Checks each value of the map `node` (key `key`; absent or null: nothing) with `check`.
+void check_map_of(const YAML::Node& node, const std::string& file, const std::string& key,
+                  void (*check)(const YAML::Node&, const std::string&));
 
 }  // namespace sextant

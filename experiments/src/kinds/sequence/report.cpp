@@ -31,6 +31,8 @@ double mean_over(const std::vector<TrajectoryRun>& runs,
   return mean_of(v);
 }
 
+}  // namespace
+
 void check_numbers(SettingsReader& in, const std::vector<const char*>& keys) {
   double x = 0;
   for (const char* key : keys) in.read(key, x);
@@ -41,8 +43,6 @@ void check_band(SettingsReader& in, const char* key) {
   if (in.read(key, band) && (band.size() != 2 || !(band[0] < band[1])))
     in.fail(key, "key '" + std::string(key) + "': expected [low, high] with low < high");
 }
-
-}  // namespace
 
 std::vector<double> horizontal_errors(const PoseList& estimate, const PoseList& reference) {
   std::vector<double> e;
@@ -199,19 +199,6 @@ void add_metric_rows(Table& table, const std::string& label, const std::vector<T
   table.add_row({Cell::text(label), number_or_missing(end_xy), number_or_missing(end_3d),
                  number_or_missing(mean_xy), number_or_missing(rpe_t, 1), number_or_missing(rpe_t_max, 1),
                  number_or_missing(rpe_r, 3), number_or_missing(drift)});
-}
-
-void check_dead_reckoning_reference(const ExperimentConfig& config) {
-  SettingsReader in(config.reference, config.file);
-  check_numbers(in, {"end_point_error_odometry", "end_point_error_matcher", "ratio_below"});
-  check_band(in, "ratio_band");
-  in.finish();
-}
-
-void check_kalman_reference(const ExperimentConfig& config) {
-  SettingsReader in(config.reference, config.file);
-  check_numbers(in, {"alarms", "alarm_rate_below"});
-  in.finish();
 }
 
 }  // namespace sextant

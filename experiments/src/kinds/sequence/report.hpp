@@ -12,6 +12,7 @@
 #include "kit/number_format.hpp"
 #include "kit/row_codec.hpp"
 #include "sequence/settings.hpp"
+#include "sextant/core/settings_reader.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
 #include "sextant/experiments/report_model.hpp"
 #include "sextant/experiments/run_plan.hpp"
@@ -75,5 +76,9 @@ Table metrics_table(const std::string& caption, const std::string& label, std::s
 /// One row of that table for the trajectory `member` of every run.
 void add_metric_rows(Table& table, const std::string& label, const std::vector<TrajectoryRun>& runs,
                      PoseList TrajectoryRun::*member);
+
+/// Reference checks: each of `keys` is a number when given; `key` is [low, high] with low < high.
+void check_numbers(SettingsReader& in, const std::vector<const char*>& keys);
+void check_band(SettingsReader& in, const char* key);
 
 }  // namespace sextant

@@ -1,31 +1,25 @@
-// `simulation`: 2D simulations without a dataset; `params.model` picks the model
-// (simulation/model.hpp), which validates, runs and lays out its report.
-#include "simulation/model.hpp"
+// `simulation`: 2D simulations without a dataset; `params.model` picks the model's line in the
+// table of simulation/layouts/layouts.cpp, which validates, runs and lays out its report.
+#include <memory>
+#include <string>
+#include <vector>
 
 #include "kinds.hpp"
 #include "sextant/core/error.hpp"
-#include "sextant/core/settings_reader.hpp"
+#include "simulation/layouts/layouts.hpp"
 
 namespace sextant {
-namespace {
-
-std::unique_ptr<SimulationModel> model_of(const ExperimentConfig& config) {
-  SettingsReader in(config.params, config.file);
-  std::string model;
-  in.require("model", model);
-  if (model == "room_2d") return make_room_2d_model();
-  if (model == "range_bearing") return make_range_bearing_model();
-  in.fail("model", "key 'model': '" + model + "' is not room_2d or range_bearing");
-}
+namespace simulation_kind {
 
 class SimulationSession : public KindSession {
  public:
-  explicit SimulationSession(const ExperimentConfig& config) : config_(config), model_(model_of(config)) {}
-  void run(const RunSpec& run, RunRow& row) const override { model_->run(config_, run, row); }
+  explicit SimulationSession(const ExperimentConfig& config)
+      : config_(config), layout_(simulation_layout(config)) {}
+  void run(const RunSpec& run, RunRow& row) const override { layout_.run(config_, run, row); }
 
  private:
   ExperimentConfig config_;
-  std::unique_ptr<SimulationModel> model_;
+  const SimulationLayout& layout_;
 };
 
 class SimulationKind : public RunKind {
@@ -34,21 +28,21 @@ class SimulationKind : public RunKind {
   void validate(const ExperimentConfig& config) const override {
     if (config.dataset.source != DatasetSource::kNone)
       throw InputError(config.file, "", "key 'dataset': the simulation kind needs no dataset");
-    model_of(config)->validate(config);
+    simulation_layout(config).validate(config);
   }
   std::unique_ptr<KindSession> prepare(const ExperimentConfig& config, const PrepareContext&) const override {
     return std::make_unique<SimulationSession>(config);
   }
   ReportSection report(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
                        const std::vector<const RunRow*>& rows) const override {
-    return model_of(config)->report(config, runs, rows);
+    return simulation_layout(config).report(config, runs, rows);
   }
 };
 
-}  // namespace
+}  // namespace simulation_kind
 
 std::unique_ptr<RunKind> make_simulation_kind() {
-  return std::make_unique<SimulationKind>();
+  return std::make_unique<simulation_kind::SimulationKind>();
 }
 
 }  // namespace sextant

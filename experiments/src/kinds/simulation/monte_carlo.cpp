@@ -31,7 +31,7 @@
 #include "sextant/filters/range_bearing_sim.hpp"
 #include "sextant/filters/slam_run_failure.hpp"
 #include "sextant/filters/yaml.hpp"
-#include "simulation/model.hpp"
+#include "simulation/layouts/layouts.hpp"
 #include "simulation/monte_carlo_report.hpp"
 #include "simulation/row_keys.hpp"
 
@@ -116,98 +116,89 @@ FilterMethod read_filter_method(const YAML::Node& node, const std::string& file)
   return m;
 }
 
-class RangeBearingMonteCarlo : public SimulationModel {
- public:
-  void validate(const ExperimentConfig& config) const override {
-    (void)read_monte_carlo_params(config);
-    for (const auto& m : config.methods) (void)read_filter_method(m.node, config.file);
-    if (!config.sweep.empty())
-      throw InputError(config.file, "", "key 'sweep': range_bearing takes no sweep axes");
-  }
-
-  void run(const ExperimentConfig& config, const RunSpec& spec, RunRow& row) const override {
-    const MonteCarloParams p = read_monte_carlo_params(config);
-    const FilterMethod m = read_filter_method(config.methods.at(spec.method_index).node, config.file);
-    Rng world_rng(config.seed);
-    const RangeBearingWorld world = make_range_bearing_world(p.landmarks, p.side, world_rng);
-    Rng rng(spec.seed);
-    const RangeBearingRun sim = simulate_range_bearing(world, p.sim, rng);
-
-    // The RSPKF draws its random sigma points from its own seed: a different one per repetition.
-    YAML::Node settings = m.settings.IsMap() ? YAML::Clone(m.settings) : YAML::Node(YAML::NodeType::Map);
-    if (m.filter == "rspkf" && !settings["seed"]) settings["seed"] = spec.seed % 1000000007ULL;
-    auto model = std::make_shared<RangeBearingModel>(p.sim.model());
-    auto filter = make_filter(m.filter, model, settings, config.file);
-    filter->initialize(Eigen::VectorXd::Zero(3), p.initial_sigma.cwiseAbs2().asDiagonal().toDenseMatrix());
-    const SlamRunResult result =
-        run_slam(*filter, sim.steps, p.sim.control_noise(), p.sim.observation_noise());
-    const std::string failure =
-        slam_run_failure(result.landmark_index.size(), result.failed_steps, result.steps.size());
-    if (!failure.empty())
-      throw std::runtime_error(failure + " (of " + std::to_string(p.landmarks) + " landmarks)");
-
-    // Dead reckoning of the same noisy controls (eq. 5.7 without noise terms).
-    Eigen::VectorXd odo = Eigen::VectorXd::Zero(3);
-    std::vector<double> t, pos, head, truth_x, truth_y, est_x, est_y;
-    double sum_pos = 0, sum_head = 0, sum_odo = 0, along = 0, cross = 0, signed_head = 0, max_pos = 0;
-    const std::size_t n = std::min(result.steps.size(), sim.true_poses.size());
-    for (std::size_t k = 0; k < n; ++k) {
-      odo = model->process(odo, sim.steps[k].u);
-      const Eigen::Vector3d truth = sim.true_poses[k];
-      const Eigen::Vector3d est = result.steps[k].pose.head<3>();
-      const Eigen::Vector2d e = (est - truth).head<2>();
-      const double eh = wrap_angle(est.z() - truth.z());
-      const Eigen::Vector2d forward(std::cos(truth.z()), std::sin(truth.z()));
-      sum_pos += e.norm(), sum_head += std::abs(eh), sum_odo += (odo.head<2>() - truth.head<2>()).norm();
-      along += e.dot(forward), cross += forward.x() * e.y() - forward.y() * e.x(), signed_head += eh;
-      max_pos = std::max(max_pos, e.norm());
-      if ((k + 1) % static_cast<std::size_t>(p.record_every) != 0 && k + 1 != n) continue;
-      t.push_back(static_cast<double>(k + 1) * p.sim.dt);
-      pos.push_back(e.norm()), head.push_back(std::abs(eh) / kRadPerDeg);
-      truth_x.push_back(truth.x()), truth_y.push_back(truth.y()), est_x.push_back(est.x()),
-          est_y.push_back(est.y());
-    }
-    const double count = static_cast<double>(n);
-    row.values["steps"] = count;
-    row.values[keys::kFailedSteps] = static_cast<double>(result.failed_steps);
-    row.values["landmarks_mapped"] = static_cast<double>(result.landmark_index.size());
-    row.values[keys::kMeanPositionErrorM] = sum_pos / count;
-    row.values[keys::kMeanHeadingErrorDeg] = sum_head / count / kRadPerDeg;
-    row.values["max_position_error_m"] = max_pos;
-    row.values[keys::kFinalPositionErrorM] = pos.empty() ? NAN : pos.back();
-    row.values[keys::kDeadReckoningErrorM] = sum_odo / count;
-    row.values[keys::kMeanAlongTrackM] = along / count;
-    row.values[keys::kMeanCrossTrackM] = cross / count;
-    row.values[keys::kMeanSignedHeadingDeg] = signed_head / count / kRadPerDeg;
-    row.series["t"] = t;
-    row.series[keys::kPositionErrorM] = pos;
-    row.series[keys::kHeadingErrorDeg] = head;
-    if (spec.repetition == 0) {  // fig. 5.36: one run's paths and map
-      row.series[keys::kTruthX] = truth_x, row.series[keys::kTruthY] = truth_y;
-      row.series[keys::kEstX] = est_x, row.series[keys::kEstY] = est_y;
-      const Eigen::VectorXd mean = filter->mean();
-      std::vector<double> mx, my;
-      for (const auto& [id, index] : result.landmark_index) {
-        mx.push_back(mean[3 + 2 * index]);
-        my.push_back(mean[4 + 2 * index]);
-      }
-      row.series[keys::kMapX] = mx, row.series[keys::kMapY] = my;
-    }
-  }
-
-  ReportSection report(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
-                       const std::vector<const RunRow*>& rows) const override {
-    const MonteCarloParams p = read_monte_carlo_params(config);
-    Rng world_rng(config.seed);
-    return monte_carlo_report(config, p, make_range_bearing_world(p.landmarks, p.side, world_rng), runs,
-                              rows);
-  }
-};
-
 }  // namespace
 
-std::unique_ptr<SimulationModel> make_range_bearing_model() {
-  return std::make_unique<RangeBearingMonteCarlo>();
+void validate_range_bearing(const ExperimentConfig& config) {
+  (void)read_monte_carlo_params(config);
+  for (const auto& m : config.methods) (void)read_filter_method(m.node, config.file);
+  if (!config.sweep.empty())
+    throw InputError(config.file, "", "key 'sweep': range_bearing takes no sweep axes");
+}
+
+void run_range_bearing(const ExperimentConfig& config, const RunSpec& spec, RunRow& row) {
+  const MonteCarloParams p = read_monte_carlo_params(config);
+  const FilterMethod m = read_filter_method(config.methods.at(spec.method_index).node, config.file);
+  Rng world_rng(config.seed);
+  const RangeBearingWorld world = make_range_bearing_world(p.landmarks, p.side, world_rng);
+  Rng rng(spec.seed);
+  const RangeBearingRun sim = simulate_range_bearing(world, p.sim, rng);
+
+  // The RSPKF draws its random sigma points from its own seed: a different one per repetition.
+  YAML::Node settings = m.settings.IsMap() ? YAML::Clone(m.settings) : YAML::Node(YAML::NodeType::Map);
+  if (m.filter == "rspkf" && !settings["seed"]) settings["seed"] = spec.seed % 1000000007ULL;
+  auto model = std::make_shared<RangeBearingModel>(p.sim.model());
+  auto filter = make_filter(m.filter, model, settings, config.file);
+  filter->initialize(Eigen::VectorXd::Zero(3), p.initial_sigma.cwiseAbs2().asDiagonal().toDenseMatrix());
+  const SlamRunResult result = run_slam(*filter, sim.steps, p.sim.control_noise(), p.sim.observation_noise());
+  const std::string failure =
+      slam_run_failure(result.landmark_index.size(), result.failed_steps, result.steps.size());
+  if (!failure.empty())
+    throw std::runtime_error(failure + " (of " + std::to_string(p.landmarks) + " landmarks)");
+
+  // Dead reckoning of the same noisy controls (eq. 5.7 without noise terms).
+  Eigen::VectorXd odo = Eigen::VectorXd::Zero(3);
+  std::vector<double> t, pos, head, truth_x, truth_y, est_x, est_y;
+  double sum_pos = 0, sum_head = 0, sum_odo = 0, along = 0, cross = 0, signed_head = 0, max_pos = 0;
+  const std::size_t n = std::min(result.steps.size(), sim.true_poses.size());
+  for (std::size_t k = 0; k < n; ++k) {
+    odo = model->process(odo, sim.steps[k].u);
+    const Eigen::Vector3d truth = sim.true_poses[k];
+    const Eigen::Vector3d est = result.steps[k].pose.head<3>();
+    const Eigen::Vector2d e = (est - truth).head<2>();
+    const double eh = wrap_angle(est.z() - truth.z());
+    const Eigen::Vector2d forward(std::cos(truth.z()), std::sin(truth.z()));
+    sum_pos += e.norm(), sum_head += std::abs(eh), sum_odo += (odo.head<2>() - truth.head<2>()).norm();
+    along += e.dot(forward), cross += forward.x() * e.y() - forward.y() * e.x(), signed_head += eh;
+    max_pos = std::max(max_pos, e.norm());
+    if ((k + 1) % static_cast<std::size_t>(p.record_every) != 0 && k + 1 != n) continue;
+    t.push_back(static_cast<double>(k + 1) * p.sim.dt);
+    pos.push_back(e.norm()), head.push_back(std::abs(eh) / kRadPerDeg);
+    truth_x.push_back(truth.x()), truth_y.push_back(truth.y()), est_x.push_back(est.x()),
+        est_y.push_back(est.y());
+  }
+  const double count = static_cast<double>(n);
+  row.values["steps"] = count;
+  row.values[keys::kFailedSteps] = static_cast<double>(result.failed_steps);
+  row.values["landmarks_mapped"] = static_cast<double>(result.landmark_index.size());
+  row.values[keys::kMeanPositionErrorM] = sum_pos / count;
+  row.values[keys::kMeanHeadingErrorDeg] = sum_head / count / kRadPerDeg;
+  row.values["max_position_error_m"] = max_pos;
+  row.values[keys::kFinalPositionErrorM] = pos.empty() ? NAN : pos.back();
+  row.values[keys::kDeadReckoningErrorM] = sum_odo / count;
+  row.values[keys::kMeanAlongTrackM] = along / count;
+  row.values[keys::kMeanCrossTrackM] = cross / count;
+  row.values[keys::kMeanSignedHeadingDeg] = signed_head / count / kRadPerDeg;
+  row.series["t"] = t;
+  row.series[keys::kPositionErrorM] = pos;
+  row.series[keys::kHeadingErrorDeg] = head;
+  if (spec.repetition == 0) {  // fig. 5.36: one run's paths and map
+    row.series[keys::kTruthX] = truth_x, row.series[keys::kTruthY] = truth_y;
+    row.series[keys::kEstX] = est_x, row.series[keys::kEstY] = est_y;
+    const Eigen::VectorXd mean = filter->mean();
+    std::vector<double> mx, my;
+    for (const auto& [id, index] : result.landmark_index) {
+      mx.push_back(mean[3 + 2 * index]);
+      my.push_back(mean[4 + 2 * index]);
+    }
+    row.series[keys::kMapX] = mx, row.series[keys::kMapY] = my;
+  }
+}
+
+ReportSection range_bearing_report(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
+                                   const std::vector<const RunRow*>& rows) {
+  const MonteCarloParams p = read_monte_carlo_params(config);
+  Rng world_rng(config.seed);
+  return monte_carlo_report(config, p, make_range_bearing_world(p.landmarks, p.side, world_rng), runs, rows);
 }
 
 }  // namespace sextant

@@ -24,7 +24,7 @@
 #include "sextant/filters/room_sim_2d.hpp"
 #include "sextant/filters/yaml.hpp"
 #include "sextant/matchers/yaml.hpp"
-#include "simulation/model.hpp"
+#include "simulation/layouts/layouts.hpp"
 #include "simulation/room.hpp"
 #include "simulation/row_keys.hpp"
 
@@ -78,80 +78,6 @@ TimedPath path_of(const RunRow& row) {
   return p;
 }
 
-class Room2dModel : public SimulationModel {
- public:
-  void validate(const ExperimentConfig& config) const override {
-    (void)read_room_params(config);
-    for (const auto& m : config.methods) (void)read_room_method(m.node, config.file);
-    if (!config.sweep.empty()) throw InputError(config.file, "", "key 'sweep': room_2d takes no sweep axes");
-    if (config.reference.IsDefined() && !config.reference.IsNull() &&
-        !(config.reference.IsMap() && config.reference.size() == 0))
-      throw InputError(config.file, at_line(yaml_line(config.reference)),
-                       "key 'reference': the thesis gives no numbers for E8; leave it empty");
-  }
-
-  void run(const ExperimentConfig& config, const RunSpec& spec, RunRow& row) const override {
-    const RoomParams p = read_room_params(config);
-    const RoomMethod m = read_room_method(config.methods.at(spec.method_index).node, config.file);
-    auto matcher = make_matcher(m.matcher, m.settings, config.file);
-    Rng rng(spec.seed);
-    const RoomSim2dRun r = run_room_sim_2d(p.room, *matcher, rng);
-
-    std::vector<double> t, tx, ty, th, ex, ey, eh, ox, oy, sxy;
-    double sq_est = 0, sq_odo = 0, max_heading = 0, along = 0, xi_error = 0, xi_sigma = 0;
-    for (const RoomSimStep& s : r.steps) {
-      t.push_back(s.time);
-      tx.push_back(s.truth.x()), ty.push_back(s.truth.y()), th.push_back(s.truth.z());
-      ex.push_back(s.estimate.x()), ey.push_back(s.estimate.y()), eh.push_back(s.estimate.z());
-      ox.push_back(s.odometry.x()), oy.push_back(s.odometry.y());
-      sxy.push_back(std::sqrt(s.covariance.topLeftCorner<2, 2>().trace()));
-      sq_est += (s.estimate - s.truth).head<2>().squaredNorm();
-      sq_odo += (s.odometry - s.truth).head<2>().squaredNorm();
-      max_heading = std::max(max_heading, std::abs(wrap_angle(s.estimate.z() - s.truth.z())));
-      // Along-track error: positive when the estimate is behind the truth along its heading.
-      along -=
-          (s.estimate - s.truth).head<2>().dot(Eigen::Vector2d(std::cos(s.truth.z()), std::sin(s.truth.z())));
-      if (s.status == RoomSimStatus::kUpdated && s.time > 0) {
-        xi_error += (s.xi_measured - s.xi_true).head<2>().norm();
-        xi_sigma += std::sqrt(s.R.topLeftCorner<2, 2>().trace());
-      }
-    }
-    const double n = static_cast<double>(r.steps.size());
-    TimedPath path;
-    path.t.push_back(0.0), path.x.push_back(r.steps.front().truth.x()),
-        path.y.push_back(r.steps.front().truth.y());
-    for (std::size_t k = 0; k < r.truth_path.size(); ++k) {
-      path.t.push_back(static_cast<double>(k + 1) * p.room.dt);
-      path.x.push_back(r.truth_path[k].x());
-      path.y.push_back(r.truth_path[k].y());
-    }
-    const TimeLag lag = estimate_time_lag(path, t, ex, ey, p.lag_max, p.lag_step);
-    const double updates = static_cast<double>(r.updates);
-    row.values[keys::kScans] = n - 1;
-    row.values[keys::kUpdates] = updates;
-    row.values["rms_estimate_m"] = std::sqrt(sq_est / n);
-    row.values["rms_odometry_m"] = std::sqrt(sq_odo / n);
-    row.values["final_estimate_m"] = (r.steps.back().estimate - r.steps.back().truth).head<2>().norm();
-    row.values["final_odometry_m"] = (r.steps.back().odometry - r.steps.back().truth).head<2>().norm();
-    row.values["max_heading_deg"] = max_heading * 180.0 / kPi;
-    row.values["lag_s"] = lag.lag;
-    row.values["lag_cost_m"] = lag.rms_at_lag;
-    row.values["zero_lag_cost_m"] = lag.rms_at_zero;
-    row.values["along_track_m"] = along / n;
-    row.values["xi_error_m"] = updates > 0 ? xi_error / updates : NAN;
-    row.values["xi_sigma_m"] = updates > 0 ? xi_sigma / updates : NAN;
-    row.series = {{"t", t},          {keys::kTruthX, tx}, {keys::kTruthY, ty}, {"truth_h", th},
-                  {keys::kEstX, ex}, {keys::kEstY, ey},   {"est_h", eh},       {"odo_x", ox},
-                  {"odo_y", oy},     {"sigma_xy", sxy},   {"path_t", path.t},  {"path_x", path.x},
-                  {"path_y", path.y}};
-    if (spec.repetition == 0)
-      record_scan_match(p.room, r, *matcher, spec.seed ^ 0x5CA11ULL, row);  // fig. 5.17
-  }
-
-  ReportSection report(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
-                       const std::vector<const RunRow*>& rows) const override;
-};
-
 std::vector<Eigen::Vector3d> polyline(const std::vector<double>& x, const std::vector<double>& y) {
   std::vector<Eigen::Vector3d> out;
   for (std::size_t i = 0; i < std::min(x.size(), y.size()); ++i) out.emplace_back(x[i], y[i], 0.0);
@@ -196,8 +122,77 @@ ReportFigure trajectory_figure(const RoomParams& p, const RunRow& row, const std
           render_svg(plot)};
 }
 
-ReportSection Room2dModel::report(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
-                                  const std::vector<const RunRow*>& rows) const {
+}  // namespace
+
+void validate_room_2d(const ExperimentConfig& config) {
+  (void)read_room_params(config);
+  for (const auto& m : config.methods) (void)read_room_method(m.node, config.file);
+  if (!config.sweep.empty()) throw InputError(config.file, "", "key 'sweep': room_2d takes no sweep axes");
+  if (config.reference.IsDefined() && !config.reference.IsNull() &&
+      !(config.reference.IsMap() && config.reference.size() == 0))
+    throw InputError(config.file, at_line(yaml_line(config.reference)),
+                     "key 'reference': the thesis gives no numbers for E8; leave it empty");
+}
+
+void run_room_2d(const ExperimentConfig& config, const RunSpec& spec, RunRow& row) {
+  const RoomParams p = read_room_params(config);
+  const RoomMethod m = read_room_method(config.methods.at(spec.method_index).node, config.file);
+  auto matcher = make_matcher(m.matcher, m.settings, config.file);
+  Rng rng(spec.seed);
+  const RoomSim2dRun r = run_room_sim_2d(p.room, *matcher, rng);
+
+  std::vector<double> t, tx, ty, th, ex, ey, eh, ox, oy, sxy;
+  double sq_est = 0, sq_odo = 0, max_heading = 0, along = 0, xi_error = 0, xi_sigma = 0;
+  for (const RoomSimStep& s : r.steps) {
+    t.push_back(s.time);
+    tx.push_back(s.truth.x()), ty.push_back(s.truth.y()), th.push_back(s.truth.z());
+    ex.push_back(s.estimate.x()), ey.push_back(s.estimate.y()), eh.push_back(s.estimate.z());
+    ox.push_back(s.odometry.x()), oy.push_back(s.odometry.y());
+    sxy.push_back(std::sqrt(s.covariance.topLeftCorner<2, 2>().trace()));
+    sq_est += (s.estimate - s.truth).head<2>().squaredNorm();
+    sq_odo += (s.odometry - s.truth).head<2>().squaredNorm();
+    max_heading = std::max(max_heading, std::abs(wrap_angle(s.estimate.z() - s.truth.z())));
+    // Along-track error: positive when the estimate is behind the truth along its heading.
+    along -=
+        (s.estimate - s.truth).head<2>().dot(Eigen::Vector2d(std::cos(s.truth.z()), std::sin(s.truth.z())));
+    if (s.status == RoomSimStatus::kUpdated && s.time > 0) {
+      xi_error += (s.xi_measured - s.xi_true).head<2>().norm();
+      xi_sigma += std::sqrt(s.R.topLeftCorner<2, 2>().trace());
+    }
+  }
+  const double n = static_cast<double>(r.steps.size());
+  TimedPath path;
+  path.t.push_back(0.0), path.x.push_back(r.steps.front().truth.x()),
+      path.y.push_back(r.steps.front().truth.y());
+  for (std::size_t k = 0; k < r.truth_path.size(); ++k) {
+    path.t.push_back(static_cast<double>(k + 1) * p.room.dt);
+    path.x.push_back(r.truth_path[k].x());
+    path.y.push_back(r.truth_path[k].y());
+  }
+  const TimeLag lag = estimate_time_lag(path, t, ex, ey, p.lag_max, p.lag_step);
+  const double updates = static_cast<double>(r.updates);
+  row.values[keys::kScans] = n - 1;
+  row.values[keys::kUpdates] = updates;
+  row.values["rms_estimate_m"] = std::sqrt(sq_est / n);
+  row.values["rms_odometry_m"] = std::sqrt(sq_odo / n);
+  row.values["final_estimate_m"] = (r.steps.back().estimate - r.steps.back().truth).head<2>().norm();
+  row.values["final_odometry_m"] = (r.steps.back().odometry - r.steps.back().truth).head<2>().norm();
+  row.values["max_heading_deg"] = max_heading * 180.0 / kPi;
+  row.values["lag_s"] = lag.lag;
+  row.values["lag_cost_m"] = lag.rms_at_lag;
+  row.values["zero_lag_cost_m"] = lag.rms_at_zero;
+  row.values["along_track_m"] = along / n;
+  row.values["xi_error_m"] = updates > 0 ? xi_error / updates : NAN;
+  row.values["xi_sigma_m"] = updates > 0 ? xi_sigma / updates : NAN;
+  row.series = {{"t", t},          {keys::kTruthX, tx}, {keys::kTruthY, ty}, {"truth_h", th},
+                {keys::kEstX, ex}, {keys::kEstY, ey},   {"est_h", eh},       {"odo_x", ox},
+                {"odo_y", oy},     {"sigma_xy", sxy},   {"path_t", path.t},  {"path_x", path.x},
+                {"path_y", path.y}};
+  if (spec.repetition == 0) record_scan_match(p.room, r, *matcher, spec.seed ^ 0x5CA11ULL, row);  // fig. 5.17
+}
+
+ReportSection room_2d_report(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
+                             const std::vector<const RunRow*>& rows) {
   const RoomParams p = read_room_params(config);
   ReportSection section;
   section.notes =
@@ -306,12 +301,6 @@ ReportSection Room2dModel::report(const ExperimentConfig& config, const std::vec
                              "Position error of the estimate and of dead reckoning against time",
                              render_svg(errors)});
   return section;
-}
-
-}  // namespace
-
-std::unique_ptr<SimulationModel> make_room_2d_model() {
-  return std::make_unique<Room2dModel>();
 }
 
 }  // namespace sextant

@@ -65,6 +65,8 @@ class Eseif final : public Filter {
   /// asked for, from a sparse Cholesky factorisation of Ω. Unknown indices throw.
   Eigen::MatrixXd joint_covariance(const std::vector<int>& landmarks) const override;
   int num_landmarks() const override { return omega_.variables() - 1; }
+  /// Ω and the relocation counts.
+  FilterDiagnostics diagnostics() const override;
 
   const BlockInformationMatrix& information() const { return omega_; }
   const Eigen::VectorXd& information_vector() const { return xi_; }

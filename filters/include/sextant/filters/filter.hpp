@@ -51,6 +51,23 @@ struct FilterSummary {
   }
 };
 
+class BlockInformationMatrix;  // seif.hpp
+
+/// What a filter reports beyond its moments (Filter::diagnostics), so that a caller records it
+/// without knowing the filter's type. The information filters report their sparse information
+/// matrix Ω — its pattern shows SEIF's sparsification (eqs. 4.110–4.114) and ESEIF's
+/// marginalisation and relocation (eseif.hpp) — and ESEIF its relocation counts.
+struct FilterDiagnostics {
+  /// Ω (variable 0 = pose, k = landmark k−1; SEIF, EIF, ESEIF), valid until the filter's next
+  /// step; null for the moment filters and FastSLAM.
+  const BlockInformationMatrix* information = nullptr;
+  /// joint_covariance() is the Markov-blanket covariance (SEIF and the EIF, seif.hpp), not the
+  /// marginal of Ω⁻¹ (information_marginal, eseif.hpp, gives that one).
+  bool approximate_covariance = false;
+  std::size_t relocations = 0;          ///< ESEIF: relocalizations done
+  std::size_t skipped_relocations = 0;  ///< ESEIF: skipped because z_β did not determine the pose
+};
+
 class Filter {
  public:
   virtual ~Filter() = default;
@@ -81,6 +98,8 @@ class Filter {
   /// (the reports print it per method). Default: linearised by Jacobians, no sigma points (EKF,
   /// SEIF, EIF, ESEIF); the sigma-point filters name their rule (sigma_points.hpp).
   virtual std::string approximation() const;
+  /// What the filter reports beyond its moments (FilterDiagnostics). Default: nothing.
+  virtual FilterDiagnostics diagnostics() const;
 
   Eigen::VectorXd pose() const { return mean().head(model().pose_dim()); }
   const FilterSummary& summary() const { return summary_; }

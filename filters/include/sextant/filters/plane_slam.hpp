@@ -16,7 +16,8 @@
 //   PlaneSlam slam(s, to_pose6(first_ground_truth), seed);
 //   for (i …) PlaneSlamStep step = slam.step(scan(i), odometry_pose(i));   // first call: no predict
 //
-// Or, for a whole sequence: run_plane_slam(s, scans, odometry, initial_pose, seed).
+// Or, for a whole sequence: run_plane_slam(s, scans, odometry, initial_pose, seed), with a
+// per-scan callback (what the caller records) and, for hybrid SLAM, a motion source.
 //
 // Hybrid SLAM (E21) drives the prediction with a scan matcher instead of the odometry and shares
 // the extraction with it: extract(scan) runs step 2 and returns the extraction (its cell-plane
@@ -37,6 +38,7 @@
 #include "sextant/features/association.hpp"
 #include "sextant/features/extraction.hpp"
 #include "sextant/filters/filter.hpp"
+#include "sextant/filters/relative_motion.hpp"
 #include "sextant/filters/slam_runner.hpp"
 
 namespace sextant {
@@ -136,11 +138,22 @@ struct PlaneSlamRun {
   std::size_t map_size = 0;
 };
 
+/// Called after every scan with its index, its step and the filter after it.
+using PlaneSlamStepCallback =
+    std::function<void(std::size_t scan, const PlaneSlamStep& step, const Filter& filter)>;
+/// What scan i ≥ 1 predicts with, from its extraction and the filter before the step, given the
+/// odometry's increment (eq. 4.72) and Q: hybrid SLAM's scan matcher (E21).
+using PlaneSlamMotionSource =
+    std::function<MotionIncrement(std::size_t scan, const PlaneExtraction& extraction, const Filter& filter,
+                                  const MotionIncrement& odometry)>;
+
 /// Runs plane SLAM over `count` scans: scan(i) gives scan i in the sensor frame, odometry[i]
-/// its odometry pose (world ← sensor); the filter starts at `initial_pose`.
+/// its odometry pose (world ← sensor); the filter starts at `initial_pose`. Scan i extracts, then
+/// predicts with the odometry increment o(i−1) ⊖ o(i) (eq. 4.72) or `motion`'s, then steps.
 PlaneSlamRun run_plane_slam(const PlaneSlamSettings& settings, std::size_t count,
                             const std::function<PointCloud(std::size_t)>& scan,
                             const std::vector<Eigen::Isometry3d>& odometry, const Pose6& initial_pose,
-                            std::uint64_t seed);
+                            std::uint64_t seed, const PlaneSlamStepCallback& on_step = {},
+                            const PlaneSlamMotionSource& motion = {});
 
 }  // namespace sextant

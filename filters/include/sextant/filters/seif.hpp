@@ -93,6 +93,8 @@ class Seif final : public Filter {
   Eigen::MatrixXd covariance() const override;
   Eigen::MatrixXd joint_covariance(const std::vector<int>& landmarks) const override;
   int num_landmarks() const override { return omega_.variables() - 1; }
+  /// Ω; joint_covariance() is the Markov-blanket covariance (approximate_covariance).
+  FilterDiagnostics diagnostics() const override;
   /// Variables (0 = pose, k = landmark k−1) of the Markov blanket used by joint_covariance(),
   /// starting with the pose and then the landmarks asked for.
   std::vector<int> markov_blanket(const std::vector<int>& landmarks) const;

@@ -1,10 +1,18 @@
 #pragma once
-// A SLAM driver: runs any Filter over a sequence of (control, observed landmarks) steps and
+// The SLAM driver: runs any Filter over a sequence of (control, observed landmarks) steps and
 // returns the estimated trajectory with per-step statuses and times. Associations come with the
 // observations as landmark ids (ground truth, or the features module's semantic association
 // computed with the predicted pose); an id seen for the first time is augmented (eq. 4.55).
+// Per step: the motion update with u (eq. 4.72 for plane SLAM; none for an empty u, e.g. a first
+// scan taken at the initial pose), the measurement update with the known landmarks' observations
+// (eq. 4.64), the augmentation with the new ones (eqs. 4.57–4.58); then the callback, if any, sees
+// the step's record and the filter (what a caller records beyond the record: joint_covariance(),
+// diagnostics()). Plane SLAM with extraction and semantic association: run_plane_slam
+// (plane_slam.hpp), the same steps behind PlaneSlam's front end.
 #include <cstddef>
+#include <functional>
 #include <map>
+#include <string>
 #include <vector>
 
 #include <Eigen/Core>
@@ -19,7 +27,7 @@ struct SlamObservation {
 };
 
 struct SlamStepInput {
-  Eigen::VectorXd u;                          ///< control (odometry increment)
+  Eigen::VectorXd u;                          ///< control (odometry increment); empty: no motion update
   std::vector<SlamObservation> observations;  ///< may be empty
 };
 
@@ -52,10 +60,14 @@ struct SlamRunResult {
   std::map<int, int> landmark_index;  ///< caller id → filter landmark index
 };
 
+/// Called after every step with its index in `steps`, its record and the filter after it.
+using SlamStepCallback =
+    std::function<void(std::size_t step, const SlamStepRecord& record, const Filter& filter)>;
+
 /// Runs `filter` (already initialised) over `steps`. Q: control noise, R: observation noise;
-/// `known` maps caller ids to landmarks already in the filter.
+/// `known` maps caller ids to landmarks already in the filter; `on_step` (optional) after each step.
 SlamRunResult run_slam(Filter& filter, const std::vector<SlamStepInput>& steps, const Eigen::MatrixXd& Q,
                        const Eigen::MatrixXd& R, const SlamRunSettings& settings = {},
-                       std::map<int, int> known = {});
+                       std::map<int, int> known = {}, const SlamStepCallback& on_step = {});
 
 }  // namespace sextant

@@ -41,7 +41,7 @@ Table error_table(const ExperimentConfig& config, const PlaneSlamRows& data, con
   };
   const auto groups = data.at(point);
   if (!groups.empty()) {
-    const PlaneSlamGroup& g = *groups.front();
+    const MethodRows& g = *groups.front();
     t.add_row({Cell::text("odometry"), number_or_missing(median_of(g.values("odometry_max_error_m"))),
                thesis("max_error_m", "odometry"),
                number_or_missing(median_of(g.values("odometry_max_error_scan"))),
@@ -49,10 +49,10 @@ Table error_table(const ExperimentConfig& config, const PlaneSlamRows& data, con
                number_or_missing(median_of(g.values(keys::kOdometryFinalErrorM))),
                number_or_missing(median_of(g.values(keys::kOdometryMeanErrorM)))});
   }
-  for (const PlaneSlamGroup* g : groups) {
-    t.add_row({Cell::text(g->method), number_or_missing(median_of(g->values("max_error_m"))),
-               thesis("max_error_m", g->method), number_or_missing(median_of(g->values("max_error_scan"))),
-               thesis("max_error_scan", g->method), number_or_missing(median_of(g->values("final_error_m"))),
+  for (const MethodRows* g : groups) {
+    t.add_row({Cell::text(g->name), number_or_missing(median_of(g->values("max_error_m"))),
+               thesis("max_error_m", g->name), number_or_missing(median_of(g->values("max_error_scan"))),
+               thesis("max_error_scan", g->name), number_or_missing(median_of(g->values("final_error_m"))),
                number_or_missing(median_of(g->values("mean_error_m"))),
                number_or_missing(median_of(g->values("mean_nees"))),
                number_or_missing(100.0 * median_of(g->values("inconsistent_fraction"))),
@@ -84,9 +84,9 @@ Table failure_table(const PlaneSlamRows& data) {
       .add_number_column("max error m (median)", 2)
       .add_number_column("final error m (median)", 2);
   for (const std::string& point : data.points) {
-    for (const PlaneSlamGroup& group : data.groups) {
+    for (const MethodRows& group : data.groups) {
       if (group.point != point || (group.rows.empty() && group.ended.empty())) continue;
-      const PlaneSlamGroup* g = &group;
+      const MethodRows* g = &group;
       double ended = static_cast<double>(g->ended.size());
       double failed_runs = ended, npd = 0, chol = 0, first = NAN;
       for (const RunRow* r : g->rows) {
@@ -97,7 +97,7 @@ Table failure_table(const PlaneSlamRows& data) {
         const double f = r->value(keys::kFirstFailureScan);
         if (std::isfinite(f) && !(f >= first)) first = f;
       }
-      t.add_row({Cell::text(point), Cell::text(g->method), Cell::number(failed_runs), Cell::number(ended),
+      t.add_row({Cell::text(point), Cell::text(g->name), Cell::number(failed_runs), Cell::number(ended),
                  Cell::number(static_cast<double>(g->rows.size() + g->ended.size())), Cell::number(npd),
                  Cell::number(chol), number_or_missing(first),
                  number_or_missing(median_of(g->values("max_error_m"))),
@@ -115,11 +115,11 @@ ReportFigure nees_figure(const PlaneSlamRows& data, const PlaneSlamParams& param
   plot.log_y = true;
   std::size_t n = 0;
   double bound = NAN;
-  for (const PlaneSlamGroup* g : data.at(point)) {
+  for (const MethodRows* g : data.at(point)) {
     const auto& y = series_or_empty(*g->first(), keys::kNees);
     n = std::max(n, y.size());
     bound = g->first()->value(keys::kNeesBound);
-    plot.add_line(g->method, scan_axis(y.size()), y);
+    plot.add_line(g->name, scan_axis(y.size()), y);
   }
   distinguish_series(plot);  // the methods only: the bound stays a plain line
   if (n > 0 && std::isfinite(bound))
@@ -152,8 +152,8 @@ ReportSection accuracy_report(const ExperimentConfig& config, const PlaneSlamPar
     section.figures.push_back(nees_figure(data, params, point));
   }
   if (data.points.size() > 1) section.tables.push_back(failure_table(data));
-  for (const PlaneSlamGroup* g : data.at(data.points.front()))
-    section.figures.push_back(map_figure(config, params, *g->first(), g->method, "map_" + g->method));
+  for (const MethodRows* g : data.at(data.points.front()))
+    section.figures.push_back(map_figure(config, params, *g->first(), g->name, "map_" + g->name));
   section.claims = declared_claims(config, params, data);
   for (Claim& c : beats_odometry_claims(data, config.seed)) section.claims.push_back(c);
   return section;

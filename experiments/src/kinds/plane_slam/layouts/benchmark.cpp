@@ -36,7 +36,7 @@ Table metrics_table(const ExperimentConfig& config, const PlaneSlamRows& data, c
       .add_compared_column("Wulf σ_R", 3)
       .add_compared_column("Kümmerle σ_T", 3)
       .add_compared_column("Kümmerle σ_R", 3);
-  const auto add = [&](const std::string& name, const PlaneSlamGroup& g, const std::string& p) {
+  const auto add = [&](const std::string& name, const MethodRows& g, const std::string& p) {
     const auto ref = [&](const char* key) { return number_or_missing(reference_value(config, key, name)); };
     const double scans =
         prefix.empty() ? median_of(g.values(keys::kScans)) : double(g.first()->value(keys::kScans));
@@ -50,7 +50,7 @@ Table metrics_table(const ExperimentConfig& config, const PlaneSlamRows& data, c
   };
   const auto groups = data.at(data.points.front());
   if (!groups.empty()) add("odometry", *groups.front(), prefix + "odometry_");
-  for (const PlaneSlamGroup* g : groups) add(g->method, *g, prefix);
+  for (const MethodRows* g : groups) add(g->name, *g, prefix);
   return t;
 }
 
@@ -62,7 +62,7 @@ ReportFigure metric_figure(const PlaneSlamRows& data, const std::string& name, c
   plot.x_label = value.rfind("kummerle", 0) == 0 ? "relation (scan k → k+1)" : "scan";
   plot.y_label = y_label;
   double top = 0.0;
-  for (const PlaneSlamGroup* g : data.at(data.points.front())) {
+  for (const MethodRows* g : data.at(data.points.front())) {
     const auto& y = series_or_empty(*g->first(), name);
     double peak = 0.0;
     std::size_t at = 0;
@@ -70,7 +70,7 @@ ReportFigure metric_figure(const PlaneSlamRows& data, const std::string& name, c
       if (std::isfinite(y[k]) && y[k] > peak) peak = y[k], at = k;
     top = std::max(top, peak);
     // The peak in the legend: a one-relation spike (SEIF's at a loop closure) is a hairline.
-    plot.add_line(g->method + " (σ = " + format_number(g->first()->value(value), 3, "n/a") + ", peak " +
+    plot.add_line(g->name + " (σ = " + format_number(g->first()->value(value), 3, "n/a") + ", peak " +
                       format_number(peak, 2, "n/a") + " at " + std::to_string(at) + ")",
                   scan_axis(y.size()), y);
   }
@@ -94,7 +94,7 @@ ReportFigure metric_figure(const PlaneSlamRows& data, const std::string& name, c
           render_svg(plot)};
 }
 
-Claim spike_claim(const PlaneSlamGroup& g, const PlaneSlamParams& params,
+Claim spike_claim(const MethodRows& g, const PlaneSlamParams& params,
                   const std::vector<std::size_t>& revisits, std::size_t relations) {
   std::size_t spikes = 0, near = 0;
   std::vector<std::size_t> first_spikes;
@@ -113,7 +113,7 @@ Claim spike_claim(const PlaneSlamGroup& g, const PlaneSlamParams& params,
   const double base = relations ? static_cast<double>(covered) / static_cast<double>(relations) : NAN;
   const Interval share = wilson_interval(near, spikes);
   Claim c;
-  c.statement = g.method +
+  c.statement = g.name +
                 ": Kümmerle's relative translation errors spike at the loop closures (thesis: scans ≈ "
                 "70, 200, 350, 460)";
   c.verdict = std::isfinite(base) ? verdict_greater(share, base) : Verdict::not_comparable;
@@ -145,7 +145,7 @@ ReportSection benchmark_report(const ExperimentConfig& config, const PlaneSlamPa
   if (groups.empty()) return section;
   // Loop closures from the ground truth of the longest run.
   const RunRow* longest = groups.front()->first();
-  for (const PlaneSlamGroup* g : groups)
+  for (const MethodRows* g : groups)
     if (series_or_empty(*g->first(), keys::kTruth).size() > series_or_empty(*longest, keys::kTruth).size())
       longest = g->first();
   const std::vector<Eigen::Vector3d> truth = positions(series_or_empty(*longest, keys::kTruth));
@@ -178,7 +178,7 @@ ReportSection benchmark_report(const ExperimentConfig& config, const PlaneSlamPa
                                           "Kümmerle: relative rotation error per relation (figs 6.7–6.10)",
                                           revisits));
   section.claims = declared_claims(config, params, data);
-  for (const PlaneSlamGroup* g : groups) {
+  for (const MethodRows* g : groups) {
     const std::size_t relations = series_or_empty(*g->first(), keys::kKummerleTranslationM).size();
     section.claims.push_back(spike_claim(*g, params, revisits, relations));
   }

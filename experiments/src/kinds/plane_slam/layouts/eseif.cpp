@@ -27,7 +27,7 @@ struct NeesSummary {
   std::size_t blocks = 0;
 };
 
-NeesSummary nees_summary(const PlaneSlamGroup& g, const std::string& name, std::uint64_t seed) {
+NeesSummary nees_summary(const MethodRows& g, const std::string& name, std::uint64_t seed) {
   std::vector<double> sums, counts;
   for (const RunRow* r : g.rows) {
     const auto& v = series_or_empty(*r, name);
@@ -75,12 +75,12 @@ ReportFigure nees_figure(const PlaneSlamRows& data) {
   plot.y_label = "NEES [-]";
   plot.log_y = true;
   std::size_t n = 0;
-  for (const PlaneSlamGroup* g : data.at(data.points.front())) {
+  for (const MethodRows* g : data.at(data.points.front())) {
     const RunRow& r = *g->first();
     const auto& v = series_or_empty(r, keys::kNees);
     n = std::max(n, v.size());
-    plot.add_line(g->method, scan_axis(v.size()), v);
-    if (g->method == "seif" && r.series.count(keys::kNeesMarginal))
+    plot.add_line(g->name, scan_axis(v.size()), v);
+    if (g->name == "seif" && r.series.count(keys::kNeesMarginal))
       plot.add_line("seif (exact marginal of Ω)", scan_axis(v.size()),
                     series_or_empty(r, keys::kNeesMarginal));
   }
@@ -142,17 +142,17 @@ ReportSection eseif_report(const ExperimentConfig& config, const PlaneSlamParams
       .add_number_column("relocations", 0);
   std::map<std::string, NeesSummary> nees, marginal;
   std::map<std::string, TimeGrowth> growth;
-  for (const PlaneSlamGroup* g : data.at(data.points.front())) {
-    nees[g->method] = nees_summary(*g, keys::kNees, ++seed);
-    marginal[g->method] = nees_summary(*g, keys::kNeesMarginal, ++seed);
-    growth[g->method] = time_growth(*g, keys::kStepMs, ++seed);
-    const NeesSummary& n = nees[g->method];
-    t.add_row({Cell::text(g->method), number_or_missing(n.mean.estimate), number_or_missing(n.mean.lo),
-               number_or_missing(n.mean.hi), number_or_missing(marginal[g->method].mean.estimate),
+  for (const MethodRows* g : data.at(data.points.front())) {
+    nees[g->name] = nees_summary(*g, keys::kNees, ++seed);
+    marginal[g->name] = nees_summary(*g, keys::kNeesMarginal, ++seed);
+    growth[g->name] = time_growth(*g, keys::kStepMs, ++seed);
+    const NeesSummary& n = nees[g->name];
+    t.add_row({Cell::text(g->name), number_or_missing(n.mean.estimate), number_or_missing(n.mean.lo),
+               number_or_missing(n.mean.hi), number_or_missing(marginal[g->name].mean.estimate),
                number_or_missing(median_of(g->values("final_error_m"))),
                number_or_missing(median_of(g->values("mean_error_m"))),
-               number_or_missing(growth[g->method].median_ms),
-               number_or_missing(growth[g->method].slope.estimate),
+               number_or_missing(growth[g->name].median_ms),
+               number_or_missing(growth[g->name].slope.estimate),
                number_or_missing(median_of(g->values("max_active_landmarks"))),
                number_or_missing(median_of(g->values("relocations")))});
   }
@@ -198,8 +198,8 @@ ReportSection eseif_report(const ExperimentConfig& config, const PlaneSlamParams
                                   format_number(g.map_hi, 0, "n/a") + " landmarks",
                               ClaimKind::sanity});
   }
-  const PlaneSlamGroup* es = data.find("eseif", data.points.front());
-  const PlaneSlamGroup* se = data.find("seif", data.points.front());
+  const MethodRows* es = data.find("eseif", data.points.front());
+  const MethodRows* se = data.find("seif", data.points.front());
   if (es && se) {
     const Interval d =
         bootstrap_paired_mean_difference(es->values("final_error_m"), se->values("final_error_m"), ++seed);

@@ -24,8 +24,8 @@ namespace {
 
 /// A hybrid method and the odometry-driven method with the same filter.
 struct Pair {
-  const PlaneSlamGroup* odometry = nullptr;
-  const PlaneSlamGroup* hybrid = nullptr;
+  const MethodRows* odometry = nullptr;
+  const MethodRows* hybrid = nullptr;
   std::string filter;
 };
 
@@ -34,7 +34,7 @@ std::vector<Pair> pairs(const ExperimentConfig& config, const PlaneSlamRows& dat
   std::vector<std::string> order;
   for (const MethodConfig& m : config.methods) {
     const PlaneSlamMethod method = read_plane_slam_method(m.node, config.file);
-    const PlaneSlamGroup* g = data.find(method.name, data.points.front());
+    const MethodRows* g = data.find(method.name, data.points.front());
     if (!g || g->rows.empty()) continue;
     if (!by_filter.count(method.filter)) order.push_back(method.filter);
     Pair& p = by_filter[method.filter];
@@ -89,14 +89,14 @@ Interval block_bootstrap(const std::vector<std::vector<double>>& a, const std::v
   return percentile_interval(statistic(total), draws, 0.95, static_cast<std::size_t>(total.n));
 }
 
-std::vector<std::vector<double>> per_repetition(const PlaneSlamGroup& g, const std::string& name) {
+std::vector<std::vector<double>> per_repetition(const MethodRows& g, const std::string& name) {
   std::vector<std::vector<double>> out;
   for (const RunRow* r : g.rows) out.push_back(series_or_empty(*r, name));
   return out;
 }
 
 /// Per scan: extraction + association + filter (predict, update, augment) [ms].
-std::vector<std::vector<double>> rest_ms(const PlaneSlamGroup& g) {
+std::vector<std::vector<double>> rest_ms(const MethodRows& g) {
   std::vector<std::vector<double>> out;
   for (const RunRow* r : g.rows) {
     const auto &e = series_or_empty(*r, keys::kExtractionMs), &a = series_or_empty(*r, keys::kAssociationMs);
@@ -128,7 +128,7 @@ Table accuracy_table(const ExperimentConfig& config, const PlaneSlamRows& data) 
       .add_number_column("Kümmerle σ_T [m]", 3)
       .add_number_column("Kümmerle σ_R [deg]", 3)
       .add_number_column("matcher used [%]", 0);
-  const auto add = [&](const std::string& name, const std::string& motion, const PlaneSlamGroup& g,
+  const auto add = [&](const std::string& name, const std::string& motion, const MethodRows& g,
                        const std::string& p) {
     const auto m = [&](const std::string& v) { return number_or_missing(median_of(g.values(p + v))); };
     std::vector<double> final_rot, mean_rot;
@@ -149,13 +149,13 @@ Table accuracy_table(const ExperimentConfig& config, const PlaneSlamRows& data) 
   };
   const auto groups = data.at(data.points.front());
   if (!groups.empty()) add("odometry (dead reckoning)", "—", *groups.front(), "odometry_");
-  for (const PlaneSlamGroup* g : groups) {
+  for (const MethodRows* g : groups) {
     const PlaneSlamMethod method = [&] {
       for (const MethodConfig& mc : config.methods)
-        if (mc.name == g->method) return read_plane_slam_method(mc.node, config.file);
+        if (mc.name == g->name) return read_plane_slam_method(mc.node, config.file);
       return PlaneSlamMethod{};
     }();
-    add(g->method, method.motion == MotionSource::kFbmlndt ? "fbmlndt" : "odometry", *g, "");
+    add(g->name, method.motion == MotionSource::kFbmlndt ? "fbmlndt" : "odometry", *g, "");
   }
   return t;
 }
@@ -177,12 +177,12 @@ Table cost_table(const PlaneSlamRows& data) {
       .add_number_column("registration", 1)
       .add_number_column("total", 1)
       .add_number_column("extra [%]", 0);
-  for (const PlaneSlamGroup* g : data.at(data.points.front())) {
+  for (const MethodRows* g : data.at(data.points.front())) {
     const auto m = [&](const char* v) { return median_of(g->values(v)); };
     const double e = m("extraction_ms_mean"), a = m("association_ms_mean"), f = m("filter_ms_mean"),
                  r = m("registration_ms_mean");
-    t.add_row({Cell::text(g->method), number_or_missing(e, 1), number_or_missing(a, 2),
-               number_or_missing(f, 2), number_or_missing(r, 1), number_or_missing(e + a + f + r, 1),
+    t.add_row({Cell::text(g->name), number_or_missing(e, 1), number_or_missing(a, 2), number_or_missing(f, 2),
+               number_or_missing(r, 1), number_or_missing(e + a + f + r, 1),
                number_or_missing(100.0 * m("registration_extra"), 0)});
   }
   return t;

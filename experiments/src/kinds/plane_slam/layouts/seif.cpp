@@ -14,7 +14,7 @@
 #include "sextant/eval/verdict.hpp"
 
 namespace sextant {
-TimeGrowth time_growth(const PlaneSlamGroup& g, const std::string& time, std::uint64_t seed) {
+TimeGrowth time_growth(const MethodRows& g, const std::string& time, std::uint64_t seed) {
   std::vector<double> x, y;
   for (const RunRow* r : g.rows) {
     const auto& t = series_or_empty(*r, time);
@@ -45,14 +45,14 @@ ReportFigure time_figure(const PlaneSlamRows& data, const std::string& time, con
   plot.x_label = against_map ? "landmarks in the map" : "scan";
   plot.y_label = what + " [ms]";
   plot.log_y = true;
-  for (const PlaneSlamGroup* g : data.at(data.points.front())) {
+  for (const MethodRows* g : data.at(data.points.front())) {
     const RunRow& r = *g->first();
     std::vector<double> y = series_or_empty(r, time);
     if (!y.empty()) y.front() = NAN;  // scan 0: no motion update; its augmentations are not comparable
     if (against_map)
-      plot.add_scatter(g->method, series_or_empty(r, keys::kMapSize), y);
+      plot.add_scatter(g->name, series_or_empty(r, keys::kMapSize), y);
     else
-      plot.add_line(g->method, scan_axis(y.size()), y);
+      plot.add_line(g->name, scan_axis(y.size()), y);
   }
   distinguish_series(plot);
   return {
@@ -63,7 +63,7 @@ ReportFigure time_figure(const PlaneSlamRows& data, const std::string& time, con
 
 std::vector<ReportFigure> information_figures(const PlaneSlamRows& data) {
   std::vector<ReportFigure> out;
-  for (const PlaneSlamGroup* g : data.at(data.points.front())) {
+  for (const MethodRows* g : data.at(data.points.front())) {
     const RunRow& r = *g->first();
     for (int i = 0;; ++i) {
       const std::string key = "information_" + std::to_string(i);
@@ -85,12 +85,12 @@ std::vector<ReportFigure> information_figures(const PlaneSlamRows& data) {
         block(b, a);
       }
       const SparsityGrid grid = sparsity_grid(dim, dim, entries, 300);
-      const std::string what = g->method == "eif" ? "without sparsification (EIF)" : "of " + g->method;
+      const std::string what = g->name == "eif" ? "without sparsification (EIF)" : "of " + g->name;
       const std::string title = "Information matrix " + what + ": " + std::to_string(landmarks) +
                                 " landmarks (" + std::to_string(dim) + "×" + std::to_string(dim) +
                                 "), after scan " + std::to_string(scan);
       out.push_back(
-          {"information_" + g->method + "_" + std::to_string(landmarks),
+          {"information_" + g->name + "_" + std::to_string(landmarks),
            title + "; " + std::to_string(links.size() / 2) +
                " linked variable pairs (structural non-zero blocks), " +
                format_number(100.0 * static_cast<double>(grid.nonzeros) / double(dim * dim), 1, "n/a") +
@@ -148,16 +148,16 @@ ReportSection seif_report(const ExperimentConfig& config, const PlaneSlamParams&
       .add_compared_column("final error m", 2);
   std::uint64_t seed = config.seed * 7919u;
   std::map<std::string, std::pair<TimeGrowth, TimeGrowth>> growth;
-  for (const PlaneSlamGroup* g : data.at(data.points.front())) {
+  for (const MethodRows* g : data.at(data.points.front())) {
     const TimeGrowth m = time_growth(*g, keys::kMeasurementMs, ++seed),
                      p = time_growth(*g, keys::kMotionMs, ++seed);
-    growth[g->method] = {m, p};
-    t.add_row({Cell::text(g->method), number_or_missing(m.median_ms), number_or_missing(m.slope.estimate),
+    growth[g->name] = {m, p};
+    t.add_row({Cell::text(g->name), number_or_missing(m.median_ms), number_or_missing(m.slope.estimate),
                number_or_missing(p.median_ms), number_or_missing(p.slope.estimate),
                number_or_missing(median_of(g->values(keys::kMapSize))),
-               number_or_missing(reference_value(config, "map_size", g->method)),
+               number_or_missing(reference_value(config, "map_size", g->name)),
                number_or_missing(median_of(g->values("final_error_m"))),
-               number_or_missing(reference_value(config, "final_error_m", g->method))});
+               number_or_missing(reference_value(config, "final_error_m", g->name))});
   }
   section.tables.push_back(t);
   section.figures.push_back(
@@ -170,7 +170,7 @@ ReportSection seif_report(const ExperimentConfig& config, const PlaneSlamParams&
                                          "error_vs_scan", "position error norm [m]",
                                          "Position error norm per scan"));
   for (ReportFigure& f : information_figures(data)) section.figures.push_back(std::move(f));
-  if (const PlaneSlamGroup* seif = data.find("seif", data.points.front()); seif && seif->first())
+  if (const MethodRows* seif = data.find("seif", data.points.front()); seif && seif->first())
     section.figures.push_back(map_figure(config, params, *seif->first(), "seif", "map_seif"));
 
   for (const auto& [method, g] : growth) {

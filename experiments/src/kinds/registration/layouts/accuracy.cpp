@@ -11,6 +11,7 @@
 #include "registration/figures.hpp"
 #include "registration/report.hpp"
 #include "registration/row_keys.hpp"
+#include "sextant/core/settings_reader.hpp"
 #include "sextant/eval/plots.hpp"
 
 namespace sextant {
@@ -261,6 +262,15 @@ ReportSection accuracy_report(const ExperimentConfig& config, const Registration
           claim_beats_guess(find_method(grouped, *name), "odometry", claim_seed(config, k++)));
   }
   return section;
+}
+
+// The check of the layout's `reference:` block (InputError with file, line, key).
+void check_accuracy_reference(const ExperimentConfig& config) {
+  SettingsReader in(config.reference, config.file);
+  const YAML::Node odometry = in.child("odometry");
+  if (odometry.IsDefined() && !odometry.IsNull()) check_accuracy_method(odometry, config.file);
+  check_map_of(in.child("methods"), config.file, "methods", check_accuracy_method);
+  in.finish();
 }
 
 }  // namespace sextant

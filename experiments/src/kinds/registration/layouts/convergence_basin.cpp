@@ -336,4 +336,9 @@ ReportSection basin_report(const ExperimentConfig& config, const RegistrationPar
   return section;
 }
 
+// The check of the layout's `reference:` block (InputError with file, line, key).
+void check_basin_reference(const ExperimentConfig& config) {
+  (void)read_basin_report_settings(config);
+}
+
 }  // namespace sextant

@@ -13,6 +13,8 @@
 #include "registration/deviations.hpp"
 #include "registration/report.hpp"
 #include "registration/row_keys.hpp"
+#include "sextant/core/error.hpp"
+#include "sextant/core/settings_reader.hpp"
 #include "sextant/eval/plots.hpp"
 
 namespace sextant {
@@ -355,6 +357,43 @@ ReportSection init_layer_report(const ExperimentConfig& config, const Registrati
     section.claims.push_back(c);
   }
   return section;
+}
+
+// The check of the layout's `reference:` block (InputError with file, line, key).
+namespace init_layer_reference {
+
+void check_layer_row(const YAML::Node& node, const std::string& file) {
+  if (!node.IsMap())
+    throw InputError(file, at_line(yaml_line(node)),
+                     "key 'table_5_8': each f maps start layer → [fail %, time s, error cm]");
+  for (const auto& entry : node) {
+    try {
+      (void)entry.first.as<int>();
+      const auto v = entry.second.as<std::vector<double>>();
+      if (v.size() != 3) throw YAML::Exception(YAML::Mark::null_mark(), "size");
+    } catch (const YAML::Exception&) {
+      throw InputError(file, at_line(yaml_line(entry.second)),
+                       "key 'table_5_8': expected start layer: [fail %, time s, error cm]");
+    }
+  }
+}
+
+void check_guideline(const YAML::Node& node, const std::string& file) {
+  try {
+    (void)node.as<std::vector<int>>();
+  } catch (const YAML::Exception&) {
+    throw InputError(file, at_line(yaml_line(node)),
+                     "key 'guideline': each f maps to the list of best start layers");
+  }
+}
+
+}  // namespace init_layer_reference
+
+void check_init_layer_reference(const ExperimentConfig& config) {
+  SettingsReader in(config.reference, config.file);
+  check_map_of(in.child("table_5_8"), config.file, "table_5_8", init_layer_reference::check_layer_row);
+  check_map_of(in.child("guideline"), config.file, "guideline", init_layer_reference::check_guideline);
+  in.finish();
 }
 
 }  // namespace sextant

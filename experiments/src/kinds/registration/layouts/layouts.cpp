@@ -7,8 +7,7 @@
 
 namespace sextant {
 
-// Each layout's report (registration/layouts/<layout>.cpp) and reference check
-// (registration/reference_checks.cpp).
+// Each layout's report and reference check, both in its file (registration/layouts/<layout>.cpp).
 ReportSection accuracy_report(const ExperimentConfig&, const RegistrationParams&, const std::vector<RunSpec>&,
                               const std::vector<const RunRow*>&);
 ReportSection basin_report(const ExperimentConfig&, const RegistrationParams&, const std::vector<RunSpec>&,

@@ -13,6 +13,7 @@
 #include "registration/figures.hpp"
 #include "registration/report.hpp"
 #include "registration/row_keys.hpp"
+#include "sextant/core/settings_reader.hpp"
 
 namespace sextant {
 namespace {
@@ -169,6 +170,27 @@ ReportSection sampling_report(const ExperimentConfig& config, const Registration
     if (!m.rows.empty()) section.claims.push_back(claim_beats_guess(&m, "odometry", claim_seed(config, k++)));
   }
   return section;
+}
+
+// The check of the layout's `reference:` block (InputError with file, line, key).
+namespace sampling_reference {
+
+/// table_5_7: sampling → {ndt: method name, mlndt: method name}.
+void check_sampling_row(const YAML::Node& node, const std::string& file) {
+  SettingsReader in(node, file);
+  std::string name;
+  in.read("ndt", name);
+  in.read("mlndt", name);
+  in.finish();
+}
+
+}  // namespace sampling_reference
+
+void check_sampling_reference(const ExperimentConfig& config) {
+  SettingsReader in(config.reference, config.file);
+  check_map_of(in.child("methods"), config.file, "methods", check_accuracy_method);
+  check_map_of(in.child("table_5_7"), config.file, "table_5_7", sampling_reference::check_sampling_row);
+  in.finish();
 }
 
 }  // namespace sextant

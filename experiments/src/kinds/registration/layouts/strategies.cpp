@@ -16,6 +16,8 @@
 #include "registration/figures.hpp"
 #include "registration/report.hpp"
 #include "registration/row_keys.hpp"
+#include "sextant/core/error.hpp"
+#include "sextant/core/settings_reader.hpp"
 #include "sextant/eval/statistics.hpp"
 
 namespace sextant {
@@ -272,6 +274,34 @@ ReportSection strategies_report(const ExperimentConfig& config, const Registrati
       section.claims.push_back(claim_beats_guess(&m, "odometry", claim_seed(config, 100 + k++)));
   }
   return section;
+}
+
+// The check of the layout's `reference:` block (InputError with file, line, key).
+namespace strategies_reference {
+
+/// table_5_9: sampler → [iterations, matched %, time s, success %].
+void check_strategy_row(const YAML::Node& node, const std::string& file) {
+  try {
+    if (node.as<std::vector<double>>().size() == 4) return;
+  } catch (const YAML::Exception&) {
+  }
+  throw InputError(file, at_line(yaml_line(node)),
+                   "key 'table_5_9': expected sampler: [iterations, matched %, time s, success %]");
+}
+
+}  // namespace strategies_reference
+
+void check_strategies_reference(const ExperimentConfig& config) {
+  SettingsReader in(config.reference, config.file);
+  check_map_of(in.child("table_5_9"), config.file, "table_5_9", strategies_reference::check_strategy_row);
+  SettingsReader sampling(in.child("sampling_seconds"), config.file);
+  SettingsReader below(in.child("mean_error_below"), config.file);
+  double x = 0;
+  for (const char* key : {"fbs", "gbs"}) sampling.read(key, x);
+  for (const char* key : {"translation_cm", "rotation_deg"}) below.read(key, x);
+  sampling.finish();
+  below.finish();
+  in.finish();
 }
 
 }  // namespace sextant

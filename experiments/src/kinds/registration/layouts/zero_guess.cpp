@@ -11,6 +11,7 @@
 #include "registration/deviations.hpp"
 #include "registration/report.hpp"
 #include "registration/row_keys.hpp"
+#include "sextant/core/settings_reader.hpp"
 #include "sextant/eval/plots.hpp"
 
 namespace sextant {
@@ -121,6 +122,14 @@ ReportSection zero_guess_report(const ExperimentConfig& config, const Registrati
   }
   section.claims.push_back(c);
   return section;
+}
+
+// The check of the layout's `reference:` block (InputError with file, line, key).
+void check_zero_guess_reference(const ExperimentConfig& config) {
+  SettingsReader in(config.reference, config.file);
+  double x = 0;
+  for (const char* key : {"iterations", "error_cm"}) in.read(key, x);
+  in.finish();
 }
 
 }  // namespace sextant

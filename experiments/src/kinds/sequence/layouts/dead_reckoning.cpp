@@ -129,4 +129,12 @@ ReportSection dead_reckoning_report(const ExperimentConfig& config, const Sequen
   return section;
 }
 
+// The check of the layout's `reference:` block (InputError with file, line, key).
+void check_dead_reckoning_reference(const ExperimentConfig& config) {
+  SettingsReader in(config.reference, config.file);
+  check_numbers(in, {"end_point_error_odometry", "end_point_error_matcher", "ratio_below"});
+  check_band(in, "ratio_band");
+  in.finish();
+}
+
 }  // namespace sextant

@@ -205,4 +205,11 @@ ReportSection kalman_report(const ExperimentConfig& config, const SequenceParams
   return section;
 }
 
+// The check of the layout's `reference:` block (InputError with file, line, key).
+void check_kalman_reference(const ExperimentConfig& config) {
+  SettingsReader in(config.reference, config.file);
+  check_numbers(in, {"alarms", "alarm_rate_below"});
+  in.finish();
+}
+
 }  // namespace sextant

@@ -7,7 +7,7 @@
 
 namespace sextant {
 
-// Each layout's report (sequence/layouts/<layout>.cpp) and reference check (sequence/report.cpp).
+// Each layout's report and reference check, both in its file (sequence/layouts/<layout>.cpp).
 ReportSection dead_reckoning_report(const ExperimentConfig&, const SequenceParams&,
                                     const std::vector<RunSpec>&, const std::vector<const RunRow*>&);
 ReportSection kalman_report(const ExperimentConfig&, const SequenceParams&, const std::vector<RunSpec>&,

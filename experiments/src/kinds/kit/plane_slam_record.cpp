@@ -1,7 +1,6 @@
-#include "kit/plane_slam_driver.hpp"
+#include "kit/plane_slam_record.hpp"
 
 #include <limits>
-#include <map>
 #include <optional>
 #include <stdexcept>
 
@@ -10,10 +9,11 @@
 #include "sextant/filters/plane_slam.hpp"
 #include "sextant/filters/plane_slam_model.hpp"
 #include "sextant/filters/seif.hpp"
+#include "sextant/filters/slam_runner.hpp"
 #include "sextant/synth/odometry.hpp"
 
 namespace sextant {
-namespace {
+namespace plane_slam_record {
 
 /// The odometry poses the filters are driven by (campus or resampled), world ← sensor.
 std::vector<Eigen::Isometry3d> odometry_poses(const synth::Campus& campus, const PlaneSlamParams& params,
@@ -25,6 +25,7 @@ std::vector<Eigen::Isometry3d> odometry_poses(const synth::Campus& campus, const
   return synth::simulate_odometry(truth, campus.settings.odometry, rng);
 }
 
+/// What every scan records of the filter after it; Ω through Filter::diagnostics().
 class Recorder {
  public:
   Recorder(const PlaneSlamParams& params, RecordedRun& run) : params_(params), run_(run) {
@@ -39,16 +40,13 @@ class Recorder {
     } catch (const std::exception&) {
       step.covariance.setConstant(std::numeric_limits<double>::quiet_NaN());
     }
-    const auto* seif = dynamic_cast<const Seif*>(&filter);
-    const auto* eseif = dynamic_cast<const Eseif*>(&filter);
-    const BlockInformationMatrix* info = seif    ? &seif->information()
-                                         : eseif ? &eseif->information()
-                                                 : nullptr;
+    const FilterDiagnostics diagnostics = filter.diagnostics();
+    const BlockInformationMatrix* info = diagnostics.information;
     if (info) step.active = static_cast<double>(info->neighbours(0).size());
     if (params_.marginal_nees) {
       step.has_marginal = true;
       step.marginal = step.covariance;
-      if (seif) {
+      if (info && diagnostics.approximate_covariance) {  // SEIF: the exact marginal (Ω⁻¹)_vv
         const Eigen::MatrixXd M = information_marginal(*info, {0});
         if (M.size() == 36)
           step.marginal = M;
@@ -92,27 +90,16 @@ void final_map(const Filter& filter, RecordedRun& run) {
     run.map.emplace_back(x.segment<4>(landmark_offset(model, i)));
 }
 
-// True planes, true association: the observation model (4.64) from the true pose plus N(0, R).
+// True planes, true association: the observation model (4.64) from the true pose plus N(0, R),
+// driven by run_slam; scan 0 observes at the initial pose without a motion update (empty u).
 void run_true(const CampusScans& data, const PlaneSlamParams& params, const PlaneSlamSettings& s,
               const std::vector<Vector6d>& u, std::size_t scans, Rng& noise, RecordedRun& run) {
   const synth::Campus& c = *data.campus;
   const auto model = std::make_shared<PlaneSlamModel>();
-  auto filter = s.build_filter(model);
-  filter->initialize(to_pose6(c.ground_truth[0]).vector(), s.initial_covariance());
-  const Matrix6d Q = s.process_noise();
-  const Eigen::Matrix4d R = s.observation_noise();
-  std::map<int, int> index;  // true id → filter landmark
-  Recorder recorder(params, run);
+  std::vector<SlamStepInput> steps(scans);
   for (std::size_t k = 0; k < scans; ++k) {
-    RecordedStep step;
-    if (k > 0) {
-      const StepResult r = filter->predict(u[k], Q);
-      step.motion_seconds = r.seconds;
-      step.ok = r.ok();
-    }
+    if (k > 0) steps[k].u = u[k];
     const Vector6d truth = to_pose6(c.ground_truth[k]).vector();
-    std::vector<Eigen::VectorXd> zs, fresh;
-    std::vector<int> associations, fresh_ids;
     for (const synth::LandmarkVisibility& v : data.visible[k]) {
       if (v.points < params.min_points) continue;
       const synth::Landmark& l = c.world->landmarks[static_cast<std::size_t>(v.landmark)];
@@ -121,80 +108,78 @@ void run_true(const CampusScans& data, const PlaneSlamParams& params, const Plan
       z.head<3>() += s.sigma_normal * Eigen::Vector3d(noise.normal(), noise.normal(), noise.normal());
       z.head<3>().normalize();
       z[3] += s.sigma_distance * noise.normal();
-      const auto it = index.find(l.id);
-      if (it == index.end()) {
-        fresh.push_back(z);
-        fresh_ids.push_back(l.id);
-      } else {
-        zs.push_back(z);
-        associations.push_back(it->second);
-      }
+      steps[k].observations.push_back({z, l.id});
     }
-    if (!zs.empty()) {
-      const StepResult r = filter->update(zs, R, associations);
-      step.measurement_seconds += r.seconds;
-      step.ok = step.ok && r.ok();
-      if (r.ok()) step.updated = zs.size();
-    }
-    for (std::size_t i = 0; i < fresh.size(); ++i) {
-      const int before = filter->num_landmarks();
-      const StepResult r = filter->augment(fresh[i], R);
-      step.measurement_seconds += r.seconds;
-      step.ok = step.ok && r.ok();
-      if (filter->num_landmarks() == before + 1) {
-        index[fresh_ids[i]] = before;
-        run.map_truth.push_back(fresh_ids[i]);
-        ++step.augmented;
-      }
-    }
-    recorder.record(*filter, step, k, k + 1 == scans);
   }
+  auto filter = s.build_filter(model);
+  filter->initialize(to_pose6(c.ground_truth[0]).vector(), s.initial_covariance());
+  Recorder recorder(params, run);
+  SlamRunSettings settings;
+  settings.record_pose_covariance = false;  // the recorder reads joint_covariance
+  const SlamRunResult result = run_slam(*filter, steps, s.process_noise(), s.observation_noise(), settings,
+                                        {}, [&](std::size_t k, const SlamStepRecord& r, const Filter& f) {
+                                          RecordedStep step;
+                                          step.motion_seconds = r.predict_seconds;
+                                          step.measurement_seconds = r.update_seconds + r.augment_seconds;
+                                          step.ok = r.ok();
+                                          step.updated = r.update_status == StepStatus::kOk ? r.updated : 0;
+                                          step.augmented = r.augmented;
+                                          recorder.record(f, step, k, k + 1 == scans);
+                                        });
+  run.map_truth.assign(static_cast<std::size_t>(filter->num_landmarks()), -1);
+  for (const auto& [id, index] : result.landmark_index)
+    run.map_truth.at(static_cast<std::size_t>(index)) = id;
   run.summary = filter->summary();
-  if (const auto* eseif = dynamic_cast<const Eseif*>(filter.get())) {
-    run.relocations = eseif->relocations();
-    run.skipped_relocations = eseif->skipped_relocations();
-  }
+  const FilterDiagnostics diagnostics = filter->diagnostics();
+  run.relocations = diagnostics.relocations;
+  run.skipped_relocations = diagnostics.skipped_relocations;
   final_map(*filter, run);
 }
 
-// Extraction, semantic association and the χ² gate (filters/plane_slam.hpp); the prediction from
+// Extraction, semantic association and the χ² gate, driven by run_plane_slam; the prediction from
 // the odometry or, motion: fbmlndt, from FbML-NDT on the same extraction (kit/fbmlndt_motion.hpp).
 void run_extracted(const CampusScans& data, const PlaneSlamParams& params, const PlaneSlamSettings& s,
-                   const std::vector<Vector6d>& u, std::size_t scans, std::uint64_t seed,
+                   const std::vector<Eigen::Isometry3d>& odometry, std::size_t scans, std::uint64_t seed,
                    const PlaneSlamMethod& method, RecordedRun& run) {
   const synth::Campus& c = *data.campus;
-  PlaneSlam slam(s, to_pose6(c.ground_truth[0]), seed);
   std::optional<FbmlndtMotion> hybrid;
   if (method.motion == MotionSource::kFbmlndt)
     hybrid.emplace(method.matcher, params.hybrid, "<" + method.name + ">");
+  HybridMotion last;  // the hybrid motion of the scan being stepped
+  PlaneSlamMotionSource motion;
+  if (hybrid)
+    motion = [&](std::size_t k, const PlaneExtraction& extraction, const Filter& filter,
+                 const MotionIncrement& odometry_motion) {
+      last = hybrid->motion(data.clouds.at(k - 1), data.clouds.at(k), extraction, filter.pose(),
+                            odometry_motion);
+      return last.motion;
+    };
   Recorder recorder(params, run);
-  for (std::size_t k = 0; k < scans; ++k) {
-    const PlaneExtraction& extraction = slam.extract(data.clouds.at(k));
-    HybridMotion motion;
-    motion.motion = {u[k], s.process_noise()};
-    if (hybrid && k > 0)
-      motion = hybrid->motion(data.clouds.at(k - 1), data.clouds.at(k), extraction, slam.filter().pose(),
-                              motion.motion);
-    const PlaneSlamStep r = slam.step(motion.motion.u, motion.motion.Q);
-    RecordedStep step;
-    step.motion_seconds = r.filter.predict_seconds;
-    step.measurement_seconds = r.filter.update_seconds + r.filter.augment_seconds;
-    step.extraction_seconds = r.extraction_seconds;
-    step.association_seconds = r.association_seconds;
-    step.registration_seconds = motion.seconds;
-    if (hybrid && k > 0) step.matched_motion = motion.matched ? 1 : 0;
-    step.updated = r.filter.updated;
-    step.augmented = r.filter.augmented;
-    step.gated = r.gated;
-    step.ok = r.filter.ok();
-    recorder.record(slam.filter(), step, k, k + 1 == scans);
-  }
-  run.summary = slam.filter().summary();
-  final_map(slam.filter(), run);
+  const PlaneSlamRun result = run_plane_slam(
+      s, scans, [&](std::size_t k) { return data.clouds.at(k); }, odometry, to_pose6(c.ground_truth[0]), seed,
+      [&](std::size_t k, const PlaneSlamStep& r, const Filter& filter) {
+        RecordedStep step;
+        step.motion_seconds = r.filter.predict_seconds;
+        step.measurement_seconds = r.filter.update_seconds + r.filter.augment_seconds;
+        step.extraction_seconds = r.extraction_seconds;
+        step.association_seconds = r.association_seconds;
+        if (hybrid && k > 0) {
+          step.registration_seconds = last.seconds;
+          step.matched_motion = last.matched ? 1 : 0;
+        }
+        step.updated = r.filter.updated;
+        step.augmented = r.filter.augmented;
+        step.gated = r.gated;
+        step.ok = r.filter.ok();
+        recorder.record(filter, step, k, k + 1 == scans);
+        if (k + 1 == scans) final_map(filter, run);
+      },
+      motion);
+  run.summary = result.summary;
   run.map_truth.assign(run.map.size(), -1);
 }
 
-}  // namespace
+}  // namespace plane_slam_record
 
 RecordedRun record_plane_slam(const CampusScans& data, const PlaneSlamParams& params,
                               const PlaneSlamSettings& settings, std::size_t scans, std::uint64_t seed,
@@ -203,7 +188,8 @@ RecordedRun record_plane_slam(const CampusScans& data, const PlaneSlamParams& pa
   if (scans < 2 || scans > c.size()) throw std::invalid_argument("record_plane_slam: bad scan count");
   Rng rng(seed);
   Rng odometry_rng = rng.split(), noise = rng.split();
-  const std::vector<Eigen::Isometry3d> odometry = odometry_poses(c, params, scans, odometry_rng);
+  const std::vector<Eigen::Isometry3d> odometry =
+      plane_slam_record::odometry_poses(c, params, scans, odometry_rng);
   // Increments u_k = o(k−1) ⊖ o(k) (eq. 4.72) and the dead reckoning they give from the true start.
   const PlaneSlamModel model;
   RecordedRun run;
@@ -214,9 +200,9 @@ RecordedRun record_plane_slam(const CampusScans& data, const PlaneSlamParams& pa
     run.odometry.push_back(Pose6::from_vector(model.process(run.odometry.back().vector(), u[k])));
   }
   if (params.landmarks == LandmarkSource::kTrue)
-    run_true(data, params, settings, u, scans, noise, run);
+    plane_slam_record::run_true(data, params, settings, u, scans, noise, run);
   else
-    run_extracted(data, params, settings, u, scans, seed, method, run);
+    plane_slam_record::run_extracted(data, params, settings, odometry, scans, seed, method, run);
   return run;
 }
 

@@ -1,5 +1,9 @@
 #pragma once
-// One plane-SLAM run over a scan sequence of the synthetic campus (the `plane_slam` kind):
+// One plane-SLAM run over a scan sequence of the synthetic campus, recorded per scan (the
+// `plane_slam` and `pose_graph` kinds). The SLAM driver is the filters library's: run_slam
+// (filters/slam_runner.hpp) for true landmarks, run_plane_slam (filters/plane_slam.hpp) for
+// extracted ones; this file turns the campus into their input and records through their per-step
+// callbacks (Filter::diagnostics() for the information filters' Ω):
 //   true landmarks — per scan, every true plane with ≥ min_points points on it is observed from
 //     the true pose, z = h(x_true, m) + N(0, R) (eq. 4.64; normal renormalised), and associated
 //     by its true id; an id seen for the first time is augmented (eqs. 4.57–4.58);
