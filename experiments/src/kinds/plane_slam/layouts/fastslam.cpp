@@ -18,11 +18,10 @@ Table time_table(const PlaneSlamRows& data, std::uint64_t seed) {
   t.caption = "Time per scan against the map size (every repetition's scans, scan 0 left out)";
   t.label = "step_time_vs_map";
   t.note =
-      "ms per scan = median of the filter step's time over every scan and repetition; slope = least squares "
-      "of "
-      "the step time against the number of landmarks mapped, with a 95 % bootstrap interval; growth = slope "
-      "· "
-      "(map range) / median time (below 0.5: flat). Times are this machine's, measured in the runs.";
+      "ms per scan = median of the filter step's time over every scan and repetition; slope = least "
+      "squares of the step time against the number of landmarks mapped, with a 95 % bootstrap interval; "
+      "growth = slope · (map range) / median time (below 0.5: flat). Times are this machine's, measured "
+      "in the runs.";
   t.add_column("method")
       .add_number_column("ms per scan (median)", 3)
       .add_number_column("slope ms/landmark", 5)
@@ -31,9 +30,9 @@ Table time_table(const PlaneSlamRows& data, std::uint64_t seed) {
       .add_number_column("growth", 2)
       .add_number_column("landmarks from", 0)
       .add_number_column("landmarks to", 0);
-  for (const PlaneSlamGroup* g : data.at(data.points.front())) {
+  for (const MethodRows* g : data.at(data.points.front())) {
     const TimeGrowth growth = time_growth(*g, keys::kStepMs, ++seed);
-    t.add_row({Cell::text(g->method), number_or_missing(growth.median_ms),
+    t.add_row({Cell::text(g->name), number_or_missing(growth.median_ms),
                number_or_missing(growth.slope.estimate), number_or_missing(growth.slope.lo),
                number_or_missing(growth.slope.hi), number_or_missing(growth.growth.estimate),
                number_or_missing(growth.map_lo), number_or_missing(growth.map_hi)});
