@@ -1,7 +1,9 @@
 #include "sextant/synth/campus.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include <tbb/parallel_for.h>
 
@@ -27,8 +29,29 @@ std::uint64_t mix(std::uint64_t seed, std::uint64_t stream) {
 SimulatedScan Campus::scan(std::size_t i) const {
   if (i >= ground_truth.size())
     throw std::out_of_range("campus scan " + std::to_string(i) + " does not exist");
-  Rng rng(mix(seed, kScans + i));
+  Rng rng(mix(seed, kScans + first_scan + i));
   return simulate_scan(*world, settings.sensor, settings.trajectory.sensor_height, ground_truth[i], rng);
+}
+
+Campus campus_window(const Campus& campus, std::size_t first, std::size_t count) {
+  if (first > campus.size() || count > campus.size() - first)
+    throw std::out_of_range("campus scans " + std::to_string(first) + " + " + std::to_string(count) +
+                            " go past its " + std::to_string(campus.size()) + " scans");
+  const auto slice = [&](const auto& v) {  // every per-scan vector has the campus' size
+    const auto b = static_cast<std::ptrdiff_t>(std::min(first, v.size()));
+    const auto e = static_cast<std::ptrdiff_t>(std::min(first + count, v.size()));
+    return std::decay_t<decltype(v)>(v.begin() + b, v.begin() + e);
+  };
+  Campus window;
+  window.settings = campus.settings;
+  window.seed = campus.seed;
+  window.world = campus.world;
+  window.ground_truth = slice(campus.ground_truth);
+  window.odometry = slice(campus.odometry);
+  window.stamps = slice(campus.stamps);
+  window.gnss = slice(campus.gnss);
+  window.first_scan = campus.first_scan + first;
+  return window;
 }
 
 Campus generate_campus(const CampusSettings& settings, std::uint64_t seed) {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <map>
+#include <stdexcept>
 
 #include "sextant/core/pose.hpp"
 #include "sextant/core/units.hpp"
@@ -129,6 +130,28 @@ TEST(Campus, ScansAreIdenticalWhateverTheOrderAndThreadCount) {
     ASSERT_EQ(s.cloud.size(), all[i].cloud.size());
     for (std::size_t k = 0; k < s.cloud.size(); ++k) ASSERT_EQ(s.cloud[k], all[i].cloud[k]);
   }
+}
+
+TEST(Campus, AWindowIsTheWholeCampusScansFromItsFirst) {
+  const Campus c = generate_campus(test::small_campus(6), 5);
+  const Campus w = campus_window(c, 2, 3);
+  ASSERT_EQ(w.size(), 3u);
+  ASSERT_EQ(w.odometry.size(), 3u);
+  ASSERT_EQ(w.stamps.size(), 3u);
+  EXPECT_EQ(w.first_scan, 2u);
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    EXPECT_TRUE(w.ground_truth[i].isApprox(c.ground_truth[2 + i]));
+    EXPECT_TRUE(w.odometry[i].isApprox(c.odometry[2 + i]));
+    EXPECT_EQ(w.stamps[i], c.stamps[2 + i]);
+    const SimulatedScan a = w.scan(i), b = c.scan(2 + i);  // the same noise, not a new draw
+    ASSERT_EQ(a.cloud.size(), b.cloud.size());
+    for (std::size_t k = 0; k < a.cloud.size(); ++k) ASSERT_EQ(a.cloud[k], b.cloud[k]);
+  }
+  // A window of a window counts from the whole campus.
+  EXPECT_EQ(campus_window(w, 1, 2).first_scan, 3u);
+  EXPECT_TRUE(campus_window(w, 1, 2).ground_truth[0].isApprox(c.ground_truth[3]));
+  EXPECT_THROW(campus_window(c, 4, 3), std::out_of_range);
+  EXPECT_EQ(campus_window(c, 6, 0).size(), 0u);
 }
 
 TEST(Campus, TrajectoryRevisitsEarlyPlacesTurnsSharplyAndFollowsTheSlopes) {

@@ -82,6 +82,7 @@ PlaneSlamParams read_plane_slam_params(const ExperimentConfig& config) {
       {{"campus", OdometrySource::kCampus}, {"resample", OdometrySource::kResample}});
   in.read("report", p.report);  // a name of plane_slam/layouts/layouts.cpp, checked by that kind
   p.scans = read_count(in, "scans", 0);
+  p.first = read_count(in, "first", 0);
   p.min_points = read_count(in, "min_points", p.min_points);
   p.ellipse_every = read_count(in, "ellipse_every", p.ellipse_every);
   p.revisit_gap = read_count(in, "revisit_gap", p.revisit_gap);

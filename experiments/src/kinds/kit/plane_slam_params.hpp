@@ -16,6 +16,7 @@
 //     landmarks: true          # true: the campus' true planes seen from the true pose + N(0, R),
 //                              # true association; extracted: extraction + semantic association
 //     scans: 211               # the first N scans (≤ the campus' scans)
+//     first: 17                # optional: start at this scan instead (the run begins at its true pose)
 //     min_points: 300          # true: a plane is observed when the scan has ≥ this many points on it
 //     odometry: resample       # campus: the dataset's odometry; resample: drawn per run from the
 //                              # run seed with the campus' odometry model (Monte Carlo repetitions)
@@ -63,7 +64,8 @@ struct HybridParams {
 
 struct PlaneSlamParams {
   LandmarkSource landmarks = LandmarkSource::kTrue;
-  std::size_t scans = 0;  ///< 0: every scan of the campus
+  std::size_t scans = 0;  ///< 0: every scan of the campus (from `first`)
+  std::size_t first = 0;  ///< the campus scan the run starts at (scan 0 of every series)
   std::size_t min_points = 300;
   OdometrySource odometry = OdometrySource::kCampus;
   YAML::Node slam;  ///< PlaneSlamSettings keys without `filter` / `filter_settings` (may be null)

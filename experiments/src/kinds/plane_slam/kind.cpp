@@ -230,6 +230,16 @@ void fill_row(const RecordedRun& r, const synth::Campus& campus, const PlaneSlam
   }
 }
 
+/// The campus from `params.first` on (the whole campus when it is 0).
+synth::Campus campus_from(synth::Campus campus, const PlaneSlamParams& params, const std::string& file) {
+  if (params.first == 0) return campus;
+  if (params.first >= campus.size())
+    throw InputError(file, "",
+                     "key 'first': scan " + std::to_string(params.first) + " is past the campus' " +
+                         std::to_string(campus.size()) + " scans");
+  return synth::campus_window(campus, params.first, campus.size() - params.first);
+}
+
 class PlaneSlamSession : public KindSession {
  public:
   PlaneSlamSession(const ExperimentConfig& config, PlaneSlamParams params,
@@ -237,7 +247,7 @@ class PlaneSlamSession : public KindSession {
       : file_(config.file),
         params_(std::move(params)),
         methods_(std::move(methods)),
-        campus_(open_campus(config, "plane_slam")) {
+        campus_(campus_from(open_campus(config, "plane_slam"), params_, config.file)) {
     const std::size_t scans = needed_scans();
     data_.campus = &campus_;
     if (params_.landmarks == LandmarkSource::kTrue)
@@ -297,8 +307,10 @@ class PlaneSlamKind : public RunKind {
     check_plane_slam_sweep(config);
     std::uint64_t seed = 0;
     const synth::CampusSettings campus = campus_settings(config, "plane_slam", &seed);
-    if (params.scans > static_cast<std::size_t>(campus.trajectory.scans))
-      throw InputError(config.file, "", "key 'scans': more than the campus' trajectory.scans");
+    if (params.first + params.scans > static_cast<std::size_t>(campus.trajectory.scans))
+      throw InputError(config.file, "",
+                       params.first ? "key 'first' + key 'scans': more than the campus' trajectory.scans"
+                                    : "key 'scans': more than the campus' trajectory.scans");
     check_plane_slam_claims(config, params);
     layout.check_reference(config);
   }

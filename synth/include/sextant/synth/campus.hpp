@@ -27,6 +27,9 @@ class Campus {
   std::vector<Eigen::Isometry3d> odometry;      ///< world ← sensor, dead-reckoned 2D (z = roll = pitch = 0)
   std::vector<double> stamps;                   ///< [s]
   std::vector<GnssRecord> gnss;
+  /// The route index of scan 0 (campus_window): a scan keeps the sensor noise it has in the whole
+  /// campus.
+  std::size_t first_scan = 0;
 
   std::size_t size() const { return ground_truth.size(); }
   /// Scan i (sensor frame) with per-point provenance. Throws std::out_of_range past the end.
@@ -36,6 +39,11 @@ class Campus {
 /// Generates everything except the scans (those come from Campus::scan). Throws
 /// std::invalid_argument when the settings are not valid.
 Campus generate_campus(const CampusSettings& settings, std::uint64_t seed);
+
+/// Scans first … first + count − 1 of `campus` as a campus of their own (trajectory, odometry, stamps
+/// and GNSS sliced, the same world; scan i is the whole campus' scan first + i, noise included).
+/// Throws std::out_of_range when the window leaves the campus.
+Campus campus_window(const Campus& campus, std::size_t first, std::size_t count);
 
 /// All scans, in parallel (TBB); identical for any thread count.
 std::vector<SimulatedScan> generate_all_scans(const Campus& campus);
