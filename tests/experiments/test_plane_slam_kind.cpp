@@ -239,7 +239,32 @@ void expect_rejected(const std::string& from, const std::string& to, const std::
   }
 }
 
+TEST(PlaneSlamKind, AStretchFromALaterScanStartsThereWithItsOwnMap) {
+  std::string text = kTiny;
+  text.replace(text.find("scans: 8"), 8, "first: 4\n  scans: 8");
+  TempDir tmp;
+  const RunnerSummary s = run_tiny(text, tmp);
+  ASSERT_EQ(s.failed, 0u);
+  // Known answer: the distinct true landmarks with ≥ 40 points in the whole campus' scans 4..11.
+  synth::CampusSettings cs;
+  cs.trajectory.scans = 12;
+  cs.sensor.yaw_steps = 60;
+  cs.sensor.elevation_steps = 60;
+  const synth::Campus campus = synth::generate_campus(cs, 1);
+  std::set<int> seen;
+  for (std::size_t k = 4; k < 12; ++k)
+    for (const auto& v : campus.scan(k).visible)
+      if (v.points >= 40) seen.insert(v.landmark);
+  for (const auto& row : read_rows(s.folder / kRunsJsonl).rows) {
+    EXPECT_EQ(row.series.at("error_m").size(), 8u) << row.method;
+    EXPECT_EQ(row.series.at("odometry_error_m").front(), 0.0);  // starts at scan 4's true pose
+    EXPECT_EQ(row.value("map_size"), static_cast<double>(seen.size())) << row.method;
+  }
+}
+
 TEST(PlaneSlamKind, ConfigErrorsNameTheKey) {
+  expect_rejected("scans: 8", "first: 5\n  scans: 8", "'first'");  // 5 + 8 > the campus' 12
+  expect_rejected("scans: 8", "scans: 13", "'scans'");
   expect_rejected("landmarks: true", "landmarks: maybe", "'landmarks'");
   expect_rejected("min_points: 40", "min_ponts: 40", "min_ponts");
   expect_rejected("filter: ckf}", "filter: kf}", "filter");

@@ -22,6 +22,7 @@
 #include "plane_slam/row_keys.hpp"
 #include "sextant/core/chi_square.hpp"
 #include "sextant/core/error.hpp"
+#include "sextant/core/settings_reader.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/eval/statistics.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
@@ -307,10 +308,11 @@ class PlaneSlamKind : public RunKind {
     check_plane_slam_sweep(config);
     std::uint64_t seed = 0;
     const synth::CampusSettings campus = campus_settings(config, "plane_slam", &seed);
-    if (params.first + params.scans > static_cast<std::size_t>(campus.trajectory.scans))
-      throw InputError(config.file, "",
-                       params.first ? "key 'first' + key 'scans': more than the campus' trajectory.scans"
-                                    : "key 'scans': more than the campus' trajectory.scans");
+    if (params.first + params.scans > static_cast<std::size_t>(campus.trajectory.scans)) {
+      SettingsReader in(config.params, config.file);  // the message names the key's line
+      if (params.first) in.fail("first", "key 'first' + key 'scans': more than the campus' trajectory.scans");
+      in.fail("scans", "key 'scans': more than the campus' trajectory.scans");
+    }
     check_plane_slam_claims(config, params);
     layout.check_reference(config);
   }
