@@ -108,6 +108,20 @@ std::string common_notes(const ExperimentConfig& config, const PlaneSlamParams& 
       format_number(params.nees_probability, 2, "n/a") +
       "); SEIF's pose covariance is its Markov-blanket approximation (conditional, so its NEES is "
       "pessimistic).";
+  std::string own;  // issue 27: methods driven by their own odometry model
+  for (const MethodConfig& m : config.methods) {
+    const PlaneSlamMethod pm = read_plane_slam_method(m.node, config.file);
+    if (pm.odometry)
+      own +=
+          (own.empty() ? "" : ", ") + m.name + " (" + pm.odometry->model +
+          (pm.odometry->model == "student_t" ? ", ν = " + format_number(pm.odometry->student_t_dof, 1, "n/a")
+                                             : "") +
+          ")";
+  }
+  if (!own.empty())
+    s += " Driven instead by their own odometry model, re-drawn for every run from its seed (the odometry "
+         "row of that model is the dead reckoning of the first of them): " +
+         own + ".";
   return s;
 }
 
