@@ -3,6 +3,10 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
 
 #include "kit/filter_parameters.hpp"
 #include "kit/reference_values.hpp"
@@ -149,24 +153,29 @@ std::optional<Table> plane_slam_sigma_point_table(const ExperimentConfig& config
 
 ReportFigure error_figure(const PlaneSlamRows& data, const std::string& point, const std::string& series_name,
                           const std::string& odometry_series, const std::string& id,
-                          const std::string& y_label, const std::string& caption) {
+                          const std::string& y_label, const std::string& caption,
+                          const std::map<std::string, std::string>& own_odometry) {
   XYPlot plot;
   plot.title = caption + (point.empty() ? "" : " (" + point_text(point) + ")");
   plot.x_label = "scan";
   plot.y_label = y_label;
-  bool odometry_drawn = odometry_series.empty();
+  // The dead reckoning once per odometry model (the campus', then each method's own, issue 27).
+  std::set<std::string> drawn;
+  for (const PlaneSlamGroup* g :
+       odometry_series.empty() ? std::vector<const PlaneSlamGroup*>{} : data.at(point)) {
+    const auto it = own_odometry.find(g->method);
+    const std::string model = it == own_odometry.end() ? "" : it->second;
+    if (!drawn.insert(model).second) continue;
+    const auto& o = series_or_empty(*g->first(), odometry_series);
+    plot.series.push_back({model.empty() ? "odometry" : "odometry (" + model + ")", scan_axis(o.size()), o,
+                           PlotSeries::Style::line, model.empty() ? "#888888" : "#bbbbbb"});
+  }
   for (const PlaneSlamGroup* g : data.at(point)) {
-    const RunRow& row = *g->first();
-    if (!odometry_drawn) {
-      const auto& o = series_or_empty(row, odometry_series);
-      plot.series.push_back({"odometry", scan_axis(o.size()), o, PlotSeries::Style::line, "#888888"});
-      odometry_drawn = true;
-    }
-    const auto& y = series_or_empty(row, series_name);
+    const auto& y = series_or_empty(*g->first(), series_name);
     plot.add_line(g->method, scan_axis(y.size()), y);
   }
   // Filters with near-equal errors (UKF and CKF) overlap: each method its own dashes and markers.
-  distinguish_series(plot, odometry_series.empty() || plot.series.empty() ? 0 : 1);
+  distinguish_series(plot, drawn.size());
   return {id + point_stem(point),
           caption + (point.empty() ? "" : ", " + point_text(point)) + " (repetition 1)", render_svg(plot)};
 }

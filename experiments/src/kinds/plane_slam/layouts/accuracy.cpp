@@ -166,14 +166,15 @@ ReportSection accuracy_report(const ExperimentConfig& config, const PlaneSlamPar
   ReportSection section;
   section.notes = common_notes(config, params, data);
   if (auto sigma = plane_slam_sigma_point_table(config)) section.tables.push_back(*sigma);
+  const std::map<std::string, std::string> own = accuracy_layout::own_odometry_models(config);
   for (const std::string& point : data.points) {
     section.tables.push_back(error_table(config, data, point));
     if (data.at(point).empty()) continue;
     section.figures.push_back(error_figure(data, point, keys::kErrorM, keys::kOdometryErrorM, "error_vs_scan",
-                                           "position error norm [m]", "Position error norm per scan"));
+                                           "position error norm [m]", "Position error norm per scan", own));
     section.figures.push_back(error_figure(data, point, keys::kRotationErrorDeg,
                                            keys::kOdometryRotationErrorDeg, "rotation_error_vs_scan",
-                                           "rotation error norm [deg]", "Rotation error norm per scan"));
+                                           "rotation error norm [deg]", "Rotation error norm per scan", own));
     section.figures.push_back(nees_figure(data, params, point));
   }
   if (data.points.size() > 1) section.tables.push_back(failure_table(data));
