@@ -23,6 +23,32 @@ double heavy_tailed(double sigma, double p, double scale, Rng& rng) {
 
 }  // namespace
 
+namespace student_t_noise {
+
+/// Gamma(shape, 1) by Marsaglia & Tsang (2000), §2 (shape ≥ 1) and its §6 boost for shape < 1:
+/// Gamma(a) = Gamma(a + 1) · U^(1/a).
+double gamma_draw(double shape, Rng& rng) {
+  if (shape < 1.0) return gamma_draw(shape + 1.0, rng) * std::pow(1.0 - rng.uniform(), 1.0 / shape);
+  const double d = shape - 1.0 / 3.0, c = 1.0 / std::sqrt(9.0 * d);
+  for (;;) {
+    const double x = rng.normal();
+    const double t = 1.0 + c * x;
+    if (t <= 0.0) continue;
+    const double v = t * t * t;
+    const double u = 1.0 - rng.uniform();  // (0, 1]: the logarithm below stays finite
+    if (u < 1.0 - 0.0331 * x * x * x * x) return d * v;
+    if (std::log(u) < 0.5 * x * x + d * (1.0 - v + std::log(v))) return d * v;
+  }
+}
+
+}  // namespace student_t_noise
+
+double student_t_draw(double dof, Rng& rng) {
+  const double z = rng.normal();
+  const double chi2 = 2.0 * student_t_noise::gamma_draw(0.5 * dof, rng);  // χ²_ν = 2 · Gamma(ν/2)
+  return z / std::sqrt(chi2 / dof);
+}
+
 Increment2D planar_pose(const Eigen::Isometry3d& T) {
   return {T.translation().x(), T.translation().y(), std::atan2(T.linear()(1, 0), T.linear()(0, 0))};
 }
@@ -40,6 +66,12 @@ Increment2D corrupt_increment(const Increment2D& truth, const OdometrySettings& 
     out.forward += rng.normal(0.0, s.gaussian_translation);
     out.lateral += rng.normal(0.0, s.gaussian_translation);
     out.heading += rng.normal(0.0, s.gaussian_heading_deg * kRadPerDeg);
+    return out;
+  }
+  if (s.model == "student_t") {  // zero mean, scale · t_ν per component (issue 27's heavy tails)
+    out.forward += s.student_t_translation * student_t_draw(s.student_t_dof, rng);
+    out.lateral += s.student_t_translation * student_t_draw(s.student_t_dof, rng);
+    out.heading += s.student_t_heading_deg * kRadPerDeg * student_t_draw(s.student_t_dof, rng);
     return out;
   }
   // "thesis": table 5.1, biased and heavy-tailed.

@@ -99,7 +99,8 @@ bool SensorSettings::valid(std::string* why) const {
 
 bool OdometrySettings::valid(std::string* why) const {
   Checker c(why);
-  c.require(model == "thesis" || model == "gaussian", "model must be 'thesis' or 'gaussian'");
+  c.require(model == "thesis" || model == "gaussian" || model == "student_t",
+            "model must be 'thesis', 'gaussian' or 'student_t'");
   c.require(sigma_forward >= 0.0, "sigma_forward must not be negative");
   c.require(sigma_lateral >= 0.0, "sigma_lateral must not be negative");
   c.require(sigma_heading_deg >= 0.0, "sigma_heading_deg must not be negative");
@@ -108,6 +109,11 @@ bool OdometrySettings::valid(std::string* why) const {
   c.require(outlier_scale >= 1.0, "outlier_scale must be at least 1");
   c.require(gaussian_translation >= 0.0, "gaussian_translation must not be negative");
   c.require(gaussian_heading_deg >= 0.0, "gaussian_heading_deg must not be negative");
+  // ν ≤ 1 (Cauchy and heavier) has no mean, so the model could not be "zero mean"; NaN fails too.
+  c.require(std::isfinite(student_t_dof) && student_t_dof > 1.0,
+            "student_t_dof must be a finite number of degrees of freedom above 1 (ν ≤ 1 has no mean)");
+  c.require(student_t_translation >= 0.0, "student_t_translation must not be negative");
+  c.require(student_t_heading_deg >= 0.0, "student_t_heading_deg must not be negative");
   return c.ok();
 }
 

@@ -9,6 +9,7 @@
 #include "sextant/filters/yaml.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/yaml.hpp"
+#include "sextant/synth/yaml.hpp"
 
 namespace sextant {
 namespace {
@@ -129,6 +130,11 @@ PlaneSlamMethod read_plane_slam_method(const YAML::Node& node, const std::string
       read_choice<MotionSource>(in, "motion", MotionSource::kOdometry,
                                 {{"odometry", MotionSource::kOdometry}, {"fbmlndt", MotionSource::kFbmlndt}});
   if (in.has("matcher")) m.matcher = YAML::Clone(in.child("matcher"));
+  if (in.has("odometry")) {
+    YAML::Node campus(YAML::NodeType::Map);
+    campus["odometry"] = YAML::Clone(in.child("odometry"));
+    m.odometry = synth::read_campus_settings(campus, file).odometry;  // checks keys, types and bounds
+  }
   in.finish();
   if (m.matcher && !m.matcher.IsNull() && m.motion != MotionSource::kFbmlndt)
     in.fail("matcher", "key 'matcher': only with motion: fbmlndt");

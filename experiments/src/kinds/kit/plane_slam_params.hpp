@@ -10,6 +10,10 @@
 //                                                      # FbML-NDT relative pose predicts (hybrid SLAM,
 //                                                      # E21; needs landmarks: extracted); matcher: the
 //                                                      # mlndt keys of its registration
+//     - {name: ekf_t, filter: ekf, odometry: {model: student_t, student_t_dof: 3}}
+//                                                      # the method's own odometry model (the
+//                                                      # campus' odometry keys): its odometry is
+//                                                      # drawn per run from it (E23's heavy tails)
 //   sweep:
 //     p0_scale: [1, 1000, 1.0e6]                       # optional: overrides slam.p0_scale
 //   params:
@@ -39,6 +43,7 @@
 //                              # alarm thresholds (as Table 3.3's KF does), or the registration failed;
 //                              # report: hybrid: the cost band of the claim and the bootstrap block
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,6 +51,7 @@
 
 #include "sextant/experiments/experiment_config.hpp"
 #include "sextant/filters/plane_slam.hpp"
+#include "sextant/synth/settings.hpp"
 
 namespace sextant {
 
@@ -94,6 +100,9 @@ struct PlaneSlamMethod {
   std::size_t scans = 0;  ///< 0: params.scans
   MotionSource motion = MotionSource::kOdometry;
   YAML::Node matcher;  ///< motion: fbmlndt: mlndt settings of the registration (may be null)
+  /// `odometry:` the method's own odometry model (the campus' keys, e.g. {model: student_t}): the
+  /// odometry is then drawn from it per run (as odometry: resample), not from the campus' model.
+  std::optional<synth::OdometrySettings> odometry;
 };
 
 /// The one sweep axis the kind understands: the scale of the initial covariance P0.

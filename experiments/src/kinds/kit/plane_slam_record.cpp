@@ -17,12 +17,12 @@ namespace plane_slam_record {
 
 /// The odometry poses the filters are driven by (campus or resampled), world ← sensor.
 std::vector<Eigen::Isometry3d> odometry_poses(const synth::Campus& campus, const PlaneSlamParams& params,
-                                              std::size_t scans, Rng& rng) {
-  if (params.odometry == OdometrySource::kCampus)
+                                              const PlaneSlamMethod& method, std::size_t scans, Rng& rng) {
+  if (params.odometry == OdometrySource::kCampus && !method.odometry)
     return {campus.odometry.begin(), campus.odometry.begin() + static_cast<std::ptrdiff_t>(scans)};
   const std::vector<Eigen::Isometry3d> truth(
       campus.ground_truth.begin(), campus.ground_truth.begin() + static_cast<std::ptrdiff_t>(scans));
-  return synth::simulate_odometry(truth, campus.settings.odometry, rng);
+  return synth::simulate_odometry(truth, method.odometry ? *method.odometry : campus.settings.odometry, rng);
 }
 
 /// What every scan records of the filter after it; Ω through Filter::diagnostics().
@@ -189,7 +189,7 @@ RecordedRun record_plane_slam(const CampusScans& data, const PlaneSlamParams& pa
   Rng rng(seed);
   Rng odometry_rng = rng.split(), noise = rng.split();
   const std::vector<Eigen::Isometry3d> odometry =
-      plane_slam_record::odometry_poses(c, params, scans, odometry_rng);
+      plane_slam_record::odometry_poses(c, params, method, scans, odometry_rng);
   // Increments u_k = o(k−1) ⊖ o(k) (eq. 4.72) and the dead reckoning they give from the true start.
   const PlaneSlamModel model;
   RecordedRun run;

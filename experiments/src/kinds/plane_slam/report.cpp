@@ -3,6 +3,10 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
 
 #include "kit/filter_parameters.hpp"
 #include "kit/reference_values.hpp"
@@ -109,6 +113,20 @@ std::string common_notes(const ExperimentConfig& config, const PlaneSlamParams& 
       format_number(params.nees_probability, 2, "n/a") +
       "); SEIF's pose covariance is its Markov-blanket approximation (conditional, so its NEES is "
       "pessimistic).";
+  std::string own;  // issue 27: methods driven by their own odometry model
+  for (const MethodConfig& m : config.methods) {
+    const PlaneSlamMethod pm = read_plane_slam_method(m.node, config.file);
+    if (pm.odometry)
+      own +=
+          (own.empty() ? "" : ", ") + m.name + " (" + pm.odometry->model +
+          (pm.odometry->model == "student_t" ? ", ν = " + format_number(pm.odometry->student_t_dof, 1, "n/a")
+                                             : "") +
+          ")";
+  }
+  if (!own.empty())
+    s += " Driven instead by their own odometry model, re-drawn for every run from its seed (the odometry "
+         "row of that model is the dead reckoning of the first of them): " +
+         own + ".";
   return s;
 }
 
@@ -136,24 +154,28 @@ std::optional<Table> plane_slam_sigma_point_table(const ExperimentConfig& config
 
 ReportFigure error_figure(const PlaneSlamRows& data, const std::string& point, const std::string& series_name,
                           const std::string& odometry_series, const std::string& id,
-                          const std::string& y_label, const std::string& caption) {
+                          const std::string& y_label, const std::string& caption,
+                          const std::map<std::string, std::string>& own_odometry) {
   XYPlot plot;
   plot.title = caption + (point.empty() ? "" : " (" + point_text(point) + ")");
   plot.x_label = "scan";
   plot.y_label = y_label;
-  bool odometry_drawn = odometry_series.empty();
+  // The dead reckoning once per odometry model (the campus', then each method's own, issue 27).
+  std::set<std::string> drawn;
+  for (const MethodRows* g : odometry_series.empty() ? std::vector<const MethodRows*>{} : data.at(point)) {
+    const auto it = own_odometry.find(g->name);
+    const std::string model = it == own_odometry.end() ? "" : it->second;
+    if (!drawn.insert(model).second) continue;
+    const auto& o = series_or_empty(*g->first(), odometry_series);
+    plot.series.push_back({model.empty() ? "odometry" : "odometry (" + model + ")", scan_axis(o.size()), o,
+                           PlotSeries::Style::line, model.empty() ? "#888888" : "#bbbbbb"});
+  }
   for (const MethodRows* g : data.at(point)) {
-    const RunRow& row = *g->first();
-    if (!odometry_drawn) {
-      const auto& o = series_or_empty(row, odometry_series);
-      plot.series.push_back({"odometry", scan_axis(o.size()), o, PlotSeries::Style::line, "#888888"});
-      odometry_drawn = true;
-    }
-    const auto& y = series_or_empty(row, series_name);
+    const auto& y = series_or_empty(*g->first(), series_name);
     plot.add_line(g->name, scan_axis(y.size()), y);
   }
   // Filters with near-equal errors (UKF and CKF) overlap: each method its own dashes and markers.
-  distinguish_series(plot, odometry_series.empty() || plot.series.empty() ? 0 : 1);
+  distinguish_series(plot, drawn.size());
   return {id + point_stem(point),
           caption + (point.empty() ? "" : ", " + point_text(point)) + " (repetition 1)", render_svg(plot)};
 }

@@ -11,6 +11,7 @@
 // Each layout is one line in the table of plane_slam/layouts/layouts.cpp.
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -63,10 +64,12 @@ std::string common_notes(const ExperimentConfig& config, const PlaneSlamParams& 
 std::optional<double> reference_value(const ExperimentConfig& config, const std::string& key,
                                       const std::string& name);
 
-/// Error norm against the scan index for every method of a point and the odometry (figs 5.27–5.29).
+/// Error norm against the scan index for every method of a point and the odometry (figs 5.27–5.29);
+/// `own_odometry` (method → model) adds the dead reckoning of each method-own odometry model.
 ReportFigure error_figure(const PlaneSlamRows& data, const std::string& point, const std::string& series_name,
                           const std::string& odometry_series, const std::string& id,
-                          const std::string& y_label, const std::string& caption);
+                          const std::string& y_label, const std::string& caption,
+                          const std::map<std::string, std::string>& own_odometry = {});
 /// Top-down map (fig 5.30): true, estimated (with 2σ position ellipses) and odometry trajectories,
 /// and the estimated planes (vertical ones as segments over their true extent when known).
 ReportFigure map_figure(const ExperimentConfig& config, const PlaneSlamParams& params, const RunRow& row,

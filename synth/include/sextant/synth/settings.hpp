@@ -63,9 +63,11 @@ struct SensorSettings {
 
 /// 2D odometry (x, y, heading) error per relative motion between consecutive scans. The
 /// "thesis" model reproduces table 5.1 (bias + heavy tails); "gaussian" the simulated
-/// odometry of figs 5.32–5.34 (zero mean, 20 cm and 1° per relative motion).
+/// odometry of figs 5.32–5.34 (zero mean, 20 cm and 1° per relative motion); "student_t" a
+/// zero-mean heavy-tailed alternative (an extension, issue 27): each component scale · t_ν, with
+/// t_ν Student's t of ν = student_t_dof degrees of freedom (variance ν/(ν−2) · scale² for ν > 2).
 struct OdometrySettings {
-  std::string model = "thesis";        ///< "thesis" or "gaussian"
+  std::string model = "thesis";        ///< "thesis", "gaussian" or "student_t"
   double bias_forward = 0.17;          ///< thesis: mean forward error per step [m]
   double bias_lateral = -0.775;        ///< thesis: mean sideways error per step [m]
   double bias_heading_deg = 0.5;       ///< thesis: mean heading error per step [deg]
@@ -76,6 +78,9 @@ struct OdometrySettings {
   double outlier_scale = 3.5;          ///< thesis: standard-deviation factor of those steps [-]
   double gaussian_translation = 0.20;  ///< gaussian: std of each translation component [m]
   double gaussian_heading_deg = 1.0;   ///< gaussian: std of the heading [deg]
+  double student_t_dof = 3.0;          ///< student_t: degrees of freedom ν > 1 (a mean exists) [-]
+  double student_t_translation = 0.2;  ///< student_t: scale of each translation component [m]
+  double student_t_heading_deg = 1.0;  ///< student_t: scale of the heading [deg]
 
   bool valid(std::string* why) const;
 };

@@ -71,6 +71,9 @@ void visit(OdometrySettings& s, Visitor&& v) {
   v("outlier_scale", s.outlier_scale);
   v("gaussian_translation", s.gaussian_translation);
   v("gaussian_heading_deg", s.gaussian_heading_deg);
+  v("student_t_dof", s.student_t_dof);
+  v("student_t_translation", s.student_t_translation);
+  v("student_t_heading_deg", s.student_t_heading_deg);
 }
 
 template <class Visitor>

@@ -4,14 +4,33 @@
 // (fig 5.30); the sanity checks and the declared claims.
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
+#include <string>
 
+#include "kit/plane_slam_params.hpp"
 #include "kit/row_keys.hpp"
 #include "plane_slam/report.hpp"
 #include "plane_slam/row_keys.hpp"
 #include "sextant/eval/statistics.hpp"
 #include "sextant/eval/verdict.hpp"
+#include "sextant/experiments/experiment_config.hpp"
 
 namespace sextant {
+namespace accuracy_layout {
+
+/// Method → the model of its own odometry (`odometry:` of the method), for the methods that have one.
+std::map<std::string, std::string> own_odometry_models(const ExperimentConfig& config) {
+  std::map<std::string, std::string> out;
+  for (const MethodConfig& m : config.methods) {
+    const PlaneSlamMethod pm = read_plane_slam_method(m.node, config.file);
+    if (pm.odometry) out[m.name] = pm.odometry->model;
+  }
+  return out;
+}
+
+}  // namespace accuracy_layout
+
 namespace {
 
 Table error_table(const ExperimentConfig& config, const PlaneSlamRows& data, const std::string& point) {
@@ -40,14 +59,20 @@ Table error_table(const ExperimentConfig& config, const PlaneSlamRows& data, con
     return thesis_here ? number_or_missing(reference_value(config, key, name)) : Cell::text("n/a");
   };
   const auto groups = data.at(point);
-  if (!groups.empty()) {
-    const MethodRows& g = *groups.front();
-    t.add_row({Cell::text("odometry"), number_or_missing(median_of(g.values("odometry_max_error_m"))),
-               thesis("max_error_m", "odometry"),
-               number_or_missing(median_of(g.values("odometry_max_error_scan"))),
-               thesis("max_error_scan", "odometry"),
-               number_or_missing(median_of(g.values(keys::kOdometryFinalErrorM))),
-               number_or_missing(median_of(g.values(keys::kOdometryMeanErrorM)))});
+  // One odometry row per odometry model: the campus' (or resampled from it), and each model that
+  // methods bring with `odometry:` (issue 27), taken from the first method driven by it.
+  const std::map<std::string, std::string> own = accuracy_layout::own_odometry_models(config);
+  std::set<std::string> shown;
+  for (const MethodRows* g : groups) {
+    const auto it = own.find(g->name);
+    const std::string model = it == own.end() ? "" : it->second;
+    if (!shown.insert(model).second) continue;
+    const std::string name = model.empty() ? "odometry" : "odometry (" + model + ")";
+    t.add_row(
+        {Cell::text(name), number_or_missing(median_of(g->values("odometry_max_error_m"))),
+         thesis("max_error_m", name), number_or_missing(median_of(g->values("odometry_max_error_scan"))),
+         thesis("max_error_scan", name), number_or_missing(median_of(g->values(keys::kOdometryFinalErrorM))),
+         number_or_missing(median_of(g->values(keys::kOdometryMeanErrorM)))});
   }
   for (const MethodRows* g : groups) {
     t.add_row({Cell::text(g->name), number_or_missing(median_of(g->values("max_error_m"))),
@@ -141,14 +166,15 @@ ReportSection accuracy_report(const ExperimentConfig& config, const PlaneSlamPar
   ReportSection section;
   section.notes = common_notes(config, params, data);
   if (auto sigma = plane_slam_sigma_point_table(config)) section.tables.push_back(*sigma);
+  const std::map<std::string, std::string> own = accuracy_layout::own_odometry_models(config);
   for (const std::string& point : data.points) {
     section.tables.push_back(error_table(config, data, point));
     if (data.at(point).empty()) continue;
     section.figures.push_back(error_figure(data, point, keys::kErrorM, keys::kOdometryErrorM, "error_vs_scan",
-                                           "position error norm [m]", "Position error norm per scan"));
+                                           "position error norm [m]", "Position error norm per scan", own));
     section.figures.push_back(error_figure(data, point, keys::kRotationErrorDeg,
                                            keys::kOdometryRotationErrorDeg, "rotation_error_vs_scan",
-                                           "rotation error norm [deg]", "Rotation error norm per scan"));
+                                           "rotation error norm [deg]", "Rotation error norm per scan", own));
     section.figures.push_back(nees_figure(data, params, point));
   }
   if (data.points.size() > 1) section.tables.push_back(failure_table(data));
