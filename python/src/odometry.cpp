@@ -201,10 +201,11 @@ void bind_odometry(py::module_& m) {
       });
   m.def("odometry", &odometry, kOdometryDoc, py::arg("dataset"), py::arg("method") = "mlndt",
         py::arg("preset") = py::none(), py::arg("sampling") = "gbs", py::arg("guess") = py::none(),
-        py::arg("map") = "local_map", py::arg("first") = 0, py::arg("scans") = 0, py::arg("local_map_scans") = 5,
-        py::arg("min_range") = 0.0, py::arg("seed") = 1, py::arg("recover") = true,
-        py::arg("poses") = py::none(), py::arg("odometry_poses") = py::none(), py::arg("times") = py::none(),
-        py::arg("campus_seed") = 1, py::arg("jobs") = 0, py::arg("sampler_settings") = py::none());
+        py::arg("map") = "local_map", py::arg("first") = 0, py::arg("scans") = 0,
+        py::arg("local_map_scans") = 5, py::arg("min_range") = 0.0, py::arg("seed") = 1,
+        py::arg("recover") = true, py::arg("poses") = py::none(), py::arg("odometry_poses") = py::none(),
+        py::arg("times") = py::none(), py::arg("campus_seed") = 1, py::arg("jobs") = 0,
+        py::arg("sampler_settings") = py::none());
 }
 
 }  // namespace sextant::python

@@ -144,21 +144,27 @@ RunnerSummary run_tiny(const std::string& text, const TempDir& tmp) {
   return run_experiment(tmp / "e99_slam_tiny.yaml", o);
 }
 
-TEST(PlaneSlamKind, TrueLandmarkMapHoldsEveryPlaneSeenWithEnoughPoints) {
-  TempDir tmp;
-  const RunnerSummary s = run_tiny(kTiny, tmp);
-  ASSERT_EQ(s.executed, 4u);
-  ASSERT_EQ(s.failed, 0u);
-  // Known answer: the distinct true landmarks with ≥ 40 points in scans 0..7.
+/// The distinct true landmarks with ≥ 40 points in scans [from, to) of kTiny's campus.
+std::set<int> tiny_landmarks_seen(std::size_t from, std::size_t to) {
   synth::CampusSettings cs;
   cs.trajectory.scans = 12;
   cs.sensor.yaw_steps = 60;
   cs.sensor.elevation_steps = 60;
   const synth::Campus campus = synth::generate_campus(cs, 1);
   std::set<int> seen;
-  for (std::size_t k = 0; k < 8; ++k)
+  for (std::size_t k = from; k < to; ++k)
     for (const auto& v : campus.scan(k).visible)
       if (v.points >= 40) seen.insert(v.landmark);
+  return seen;
+}
+
+TEST(PlaneSlamKind, TrueLandmarkMapHoldsEveryPlaneSeenWithEnoughPoints) {
+  TempDir tmp;
+  const RunnerSummary s = run_tiny(kTiny, tmp);
+  ASSERT_EQ(s.executed, 4u);
+  ASSERT_EQ(s.failed, 0u);
+  // Known answer: the distinct true landmarks with ≥ 40 points in scans 0..7.
+  const std::set<int> seen = tiny_landmarks_seen(0, 8);
   ASSERT_FALSE(seen.empty());
   const auto rows = read_rows(s.folder / kRunsJsonl).rows;
   std::map<int, std::vector<double>> odometry_by_rep;
@@ -280,15 +286,7 @@ TEST(PlaneSlamKind, AStretchFromALaterScanStartsThereWithItsOwnMap) {
   const RunnerSummary s = run_tiny(text, tmp);
   ASSERT_EQ(s.failed, 0u);
   // Known answer: the distinct true landmarks with ≥ 40 points in the whole campus' scans 4..11.
-  synth::CampusSettings cs;
-  cs.trajectory.scans = 12;
-  cs.sensor.yaw_steps = 60;
-  cs.sensor.elevation_steps = 60;
-  const synth::Campus campus = synth::generate_campus(cs, 1);
-  std::set<int> seen;
-  for (std::size_t k = 4; k < 12; ++k)
-    for (const auto& v : campus.scan(k).visible)
-      if (v.points >= 40) seen.insert(v.landmark);
+  const std::set<int> seen = tiny_landmarks_seen(4, 12);
   for (const auto& row : read_rows(s.folder / kRunsJsonl).rows) {
     EXPECT_EQ(row.series.at("error_m").size(), 8u) << row.method;
     EXPECT_EQ(row.series.at("odometry_error_m").front(), 0.0);  // starts at scan 4's true pose

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "sextant/posegraph/loop_closing.hpp"
+#include "sextant_test/worst_error.hpp"
 
 namespace sextant {
 namespace {
@@ -61,12 +62,7 @@ ClosureRegistration exact_registration(const PoseList& truth, bool trusted = tru
   };
 }
 
-double worst_error(const PoseList& estimate, const PoseList& truth) {
-  double worst = 0.0;
-  for (std::size_t k = 0; k < truth.size(); ++k)
-    worst = std::max(worst, (estimate[k].translation() - truth[k].translation()).norm());
-  return worst;
-}
+using test::worst_error;
 
 /// The revisits Scan Context would propose: j = 80 + k onto k, every fourth k.
 std::vector<PlaceMatch> true_places() {

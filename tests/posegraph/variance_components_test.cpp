@@ -11,6 +11,7 @@
 #include "sextant/posegraph/loop_closing.hpp"
 #include "sextant/posegraph/relative_pose_factor.hpp"
 #include "sextant/posegraph/variance_components.hpp"
+#include "sextant_test/worst_error.hpp"
 
 namespace sextant {
 namespace {
@@ -160,12 +161,7 @@ ClosureRegistration exact_registration(const PoseList& truth) {
   };
 }
 
-double worst_error(const PoseList& estimate, const PoseList& truth) {
-  double worst = 0.0;
-  for (std::size_t k = 0; k < truth.size(); ++k)
-    worst = std::max(worst, (estimate[k].translation() - truth[k].translation()).norm());
-  return worst;
-}
+using test::worst_error;
 
 TEST(VarianceComponents, ABiasedConfidentChainKeepsItsTrueClosures) {
   // Two laps; every step turned 0.3° more than it was, with the same confident Hessian as the

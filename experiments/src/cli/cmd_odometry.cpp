@@ -331,7 +331,8 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--guess", o->guess,
                   "Initial guess: odometry, constant_velocity, identity (default: odometry when the dataset "
                   "has it, else constant_velocity)");
-  cmd->add_option("--map", o->map, "Register against a local map of the last scans (local_map) or the previous scan (scan)")
+  cmd->add_option("--map", o->map,
+                  "Register against a local map of the last scans (local_map) or the previous scan (scan)")
       ->capture_default_str();
   cmd->add_option("--loop-closure", o->loop_closure,
                   "Close the trajectory's loops in a pose graph, with candidates from: proximity (the "
