@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "exact_registration.hpp"
 #include "sextant/posegraph/loop_closing.hpp"
 #include "sextant_test/worst_error.hpp"
 
@@ -45,22 +46,7 @@ PoseList drifted_chain(const PoseList& truth, double yaw_drift, std::vector<Chai
   return chain;
 }
 
-/// A registration that finds the true relative pose, trusted, with a confident Hessian.
-ClosureRegistration exact_registration(const PoseList& truth, bool trusted = true) {
-  return [truth, trusted](std::size_t i, std::size_t j, const Eigen::Isometry3d&, std::uint64_t) {
-    RegistrationResult r;
-    r.T = relative(truth[i], truth[j]);
-    r.converged = true;
-    r.why = Termination::kConverged;
-    r.H = Matrix6d::Identity() * 1e4;
-    r.score = 1000.0;
-    r.matched_points = r.input_points = 1000;
-    r.quality.assessed = true;
-    r.quality.trust = trusted ? Trust::kOk : Trust::kSuspect;
-    r.quality.reason = trusted ? "" : "made up";
-    return r;
-  };
-}
+using test::exact_registration;
 
 using test::worst_error;
 

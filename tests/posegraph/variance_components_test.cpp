@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "exact_registration.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/posegraph/loop_closing.hpp"
 #include "sextant/posegraph/relative_pose_factor.hpp"
@@ -145,21 +146,7 @@ std::vector<double> median_chi2_closing(const PoseGraph& g, const PoseGraphSetti
   return robust.optimize(settings).closure_weights;
 }
 
-/// A registration that finds the true relative pose, trusted, with a confident Hessian.
-ClosureRegistration exact_registration(const PoseList& truth) {
-  return [truth](std::size_t i, std::size_t j, const Eigen::Isometry3d&, std::uint64_t) {
-    RegistrationResult r;
-    r.T = relative(truth[i], truth[j]);
-    r.converged = true;
-    r.why = Termination::kConverged;
-    r.H = Matrix6d::Identity() * 1e4;
-    r.score = 1000.0;
-    r.matched_points = r.input_points = 1000;
-    r.quality.assessed = true;
-    r.quality.trust = Trust::kOk;
-    return r;
-  };
-}
+using test::exact_registration;
 
 using test::worst_error;
 

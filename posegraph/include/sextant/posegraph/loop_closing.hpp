@@ -13,10 +13,10 @@
 // judged by judge_loop_closure. In rounds, the graph is solved with the closures accepted so far
 // (trusted first without the robust loss, then with it) and the proximity search runs again along
 // the better estimate, until a round finds no new pair. Before each round's solves, the stated
-// information of the odometry and of the closures is calibrated by variance component estimation
-// (variance_components.hpp): the registrations' Hessians (eq. 3.50) are overconfident, and a chain
-// whose covariance does not explain the closures' misclosures pushes true closures into the robust
-// loss' flat tail.
+// information of the odometry (and, when asked, of the closures) is calibrated by variance
+// component estimation (variance_components.hpp): the registrations' Hessians (eq. 3.50) are overconfident,
+// and a chain whose covariance does not explain the closures' misclosures pushes true closures into the
+// robust loss' flat tail.
 #include <cstddef>
 #include <cstdint>
 #include <functional>
