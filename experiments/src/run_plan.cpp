@@ -1,16 +1,19 @@
 #include "sextant/experiments/run_plan.hpp"
 
 #include <cctype>
+#include <stdexcept>
 
 #include "sextant/core/error.hpp"
 #include "sextant/experiments/json.hpp"
+#include "sextant/experiments/run_kind.hpp"
 
 namespace sextant {
-namespace {
 
-std::string label_of(const YAML::Node& value) {
+std::string point_label(const YAML::Node& value) {
   return value.IsScalar() ? value.Scalar() : canonical_json(value);
 }
+
+namespace {
 
 // Mixes the base seed with the sweep point and repetition (not the method), so every method of
 // one point and repetition sees the same random draws: paired comparisons.
@@ -22,7 +25,7 @@ std::uint64_t run_seed(std::uint64_t base, const YAML::Node& point, int repetiti
 
 }  // namespace
 
-std::vector<RunSpec> expand_runs(const ExperimentConfig& config) {
+std::vector<RunSpec> expand_sweep(const ExperimentConfig& config) {
   std::size_t points = 1;
   for (const auto& axis : config.sweep) points *= axis.values.size();
 
@@ -47,7 +50,7 @@ std::vector<RunSpec> expand_runs(const ExperimentConfig& config) {
         for (std::size_t a = 0; a < config.sweep.size(); ++a) {
           const YAML::Node& value = config.sweep[a].values[digit[a]];
           point[config.sweep[a].name] = YAML::Clone(value);
-          run.point[config.sweep[a].name] = label_of(value);
+          run.point[config.sweep[a].name] = point_label(value);
         }
         run.seed = run_seed(config.seed, point, r);
         YAML::Node resolved(YAML::NodeType::Map);
@@ -66,6 +69,24 @@ std::vector<RunSpec> expand_runs(const ExperimentConfig& config) {
     }
   }
   return runs;
+}
+
+std::vector<RunSpec> expand_runs(const ExperimentConfig& config) {
+  std::vector<RunSpec> runs = expand_sweep(config);
+  // An unknown kind is reported as such by whoever asks for it (runner, report); its runs are the sweep.
+  if (!run_kind_registry().contains(config.kind)) return runs;
+  const std::vector<bool> planned = run_kind_registry().create(config.kind)->planned_runs(config, runs);
+  if (planned.size() != runs.size())
+    throw std::logic_error("run kind '" + config.kind + "' shaped a plan of " +
+                           std::to_string(planned.size()) + " flags for " + std::to_string(runs.size()) +
+                           " runs");
+  std::vector<RunSpec> plan;
+  for (std::size_t k = 0; k < runs.size(); ++k) {
+    if (!planned[k]) continue;
+    runs[k].index = plan.size();  // shards split the planned runs evenly (index mod n)
+    plan.push_back(std::move(runs[k]));
+  }
+  return plan;
 }
 
 Shard parse_shard(const std::string& text) {

@@ -87,7 +87,7 @@ std::string array_script(const SlurmOptions& o) {
     << "#SBATCH --cpus-per-task=" << o.cpus_per_task << "\n"
     << "set -euo pipefail\n\n"
     << "k=${SLURM_ARRAY_TASK_ID:?run this script with sbatch}\n"
-    << "# Shard k holds the runs whose index in the expansion is ≡ k−1 (mod " << n
+    << "# Shard k holds the runs whose index in the plan is ≡ k−1 (mod " << n
     << "); each keeps its own seed.\n"
     << "# A re-run skips the runs already in the shard's runs.jsonl (the runner's resume).\n"
     << "exec " << quoted(o.sextant) << " run --no-progress" << (o.quick ? " --quick" : "")

@@ -35,6 +35,17 @@ class RunKind {
   virtual std::string name() const = 0;
   /// Checks methods, params, metrics and reference before anything runs (InputError: file, line, key).
   virtual void validate(const ExperimentConfig& config) const = 0;
+  /// Shapes the plan: one flag per run of `expansion` (expand_sweep, in its order), true = the run
+  /// is planned. Default: every run. For a method whose one run covers several sweep points (it
+  /// loops over them itself), so that the plan holds no run that would do nothing. A kind can only
+  /// leave runs out, never add or alter one: the kept runs have the keys, seeds and rows they have
+  /// unshaped. Called wherever runs are listed (expand_runs), also on configs not yet validated:
+  /// keep it cheap, and throw only what validate() would.
+  virtual std::vector<bool> planned_runs(const ExperimentConfig& config,
+                                         const std::vector<RunSpec>& expansion) const {
+    (void)config;
+    return std::vector<bool>(expansion.size(), true);
+  }
   /// Loads what the runs share. Called once, only when some run has to execute.
   virtual std::unique_ptr<KindSession> prepare(const ExperimentConfig& config,
                                                const PrepareContext& context) const = 0;

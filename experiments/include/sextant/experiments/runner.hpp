@@ -28,7 +28,7 @@ struct RunnerOptions {
 struct RunnerSummary {
   std::string experiment;
   std::filesystem::path folder;  ///< results/<experiment>
-  std::size_t total = 0;         ///< runs in the expansion
+  std::size_t total = 0;         ///< runs in the plan (expand_runs)
   std::size_t in_shard = 0;      ///< runs of this shard
   std::size_t skipped = 0;       ///< already finished
   std::size_t executed = 0;      ///< ran now
@@ -46,7 +46,7 @@ RunnerSummary run_experiment(const std::filesystem::path& config_file, const Run
 struct RunnerPlan {
   std::string experiment;
   std::filesystem::path folder;  ///< results/<experiment>
-  std::size_t total = 0;         ///< runs in the expansion
+  std::size_t total = 0;         ///< runs in the plan (expand_runs)
   std::size_t in_shard = 0;      ///< runs of this shard
   std::size_t finished = 0;      ///< of those, finished successfully
   bool complete() const { return finished == in_shard; }
