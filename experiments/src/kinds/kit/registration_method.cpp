@@ -16,7 +16,7 @@ RegistrationMethod read_registration_method(const YAML::Node& node, const std::s
   m.settings = in.child("settings");
   in.read("sampler", m.sampler);
   m.sampler_settings = in.child("sampler_settings");
-  if (in.has("adaptive_start")) {
+  if (declares_adaptive_start(node)) {
     m.adaptive = true;
     m.adaptive_start = read_adaptive_start(in.child("adaptive_start"), file);
   }

@@ -23,6 +23,12 @@ struct RegistrationMethod {
   int last_layer = 0;  ///< adaptive: the pyramid's last layer (mlndt / fbmlndt `layers`)
 };
 
+/// Does a method's node ask for the adaptive starting layer? Without reading (or checking) the rest:
+/// cheap enough for RunKind::planned_runs. read_registration_method sets `adaptive` exactly then.
+inline bool declares_adaptive_start(const YAML::Node& node) {
+  return node.IsMap() && node["adaptive_start"].IsDefined();
+}
+
 /// Reads one method; checks the matcher and sampler names and their settings by building them.
 RegistrationMethod read_registration_method(const YAML::Node& node, const std::string& file);
 

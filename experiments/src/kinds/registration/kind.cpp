@@ -59,7 +59,9 @@ class RegistrationSession : public KindSession {
     tbb::parallel_for(std::size_t{0}, indices.size(),
                       [&](std::size_t k) { clouds[k] = dataset_->scan(indices[k]); });
     for (std::size_t k = 0; k < indices.size(); ++k) scans_.emplace(indices[k], std::move(clouds[k]));
-    for (const RunSpec& r : expand_runs(config)) {
+    // The whole sweep, not the plan: the adaptive run registers every pair of the sweep with the
+    // seeds of the fixed-layer runs there, and the plan lacks both when every method is adaptive.
+    for (const RunSpec& r : expand_sweep(config)) {
       seeds_.emplace(std::make_pair(r.point, r.repetition), r.seed);
       for (const auto& [axis, label] : r.point) {
         auto& labels = axis_labels_[axis];
@@ -189,18 +191,9 @@ class RegistrationSession : public KindSession {
 
   /// The adaptive starting layer (kit/adaptive_start.hpp) as one run over every pair of the
   /// sweep, in sweep order, at the run's other axis values. Pair k uses the seed of the fixed-layer
-  /// run at (pair k, chosen layer), so it repeats that run exactly. Only the run at the first pair
-  /// and the first start layer executes; the others are marked skipped.
+  /// run at (pair k, chosen layer), so it repeats that run exactly. The plan holds only the run at
+  /// the first pair and the first start layer (RegistrationKind::planned_runs).
   void run_adaptive(const RunSpec& run, const RegistrationMethod& method, RunRow& row) const {
-    const auto first = [&](const char* axis) {
-      const auto it = run.point.find(axis);
-      const auto labels = axis_labels_.find(axis);
-      return it == run.point.end() || labels == axis_labels_.end() || labels->second.front() == it->second;
-    };
-    if (!first("pair") || !first("start_layer")) {
-      row.values["skipped"] = 1.0;
-      return;
-    }
     const AdaptiveStartSettings& rule = method.adaptive_start;
     std::size_t failures = 0, done = 0;
     std::map<std::string, std::vector<double>> series;
@@ -227,7 +220,6 @@ class RegistrationSession : public KindSession {
         series[std::string("adaptive_") + v].push_back(one.value(v));
     }
     for (auto& [name, values] : series) row.series[name] = std::move(values);
-    row.values["skipped"] = 0.0;
     row.values["adaptive_pairs"] = static_cast<double>(done);
     row.values["adaptive_rule_failures"] = static_cast<double>(failures);
   }
@@ -284,14 +276,30 @@ class RegistrationKind : public RunKind {
                                                  read_methods(config));
   }
 
+  /// An adaptive method's run registers every pair itself (RegistrationSession::run_adaptive), so
+  /// its plan holds one run per (other axes' point, repetition): the one at the first pair and the
+  /// first start layer. A run at any other pair or start layer would have nothing to do.
+  std::vector<bool> planned_runs(const ExperimentConfig& config,
+                                 const std::vector<RunSpec>& expansion) const override {
+    std::vector<bool> adaptive;
+    for (const auto& m : config.methods) adaptive.push_back(declares_adaptive_start(m.node));
+    std::map<std::string, std::string> first;  // axis → its first value, as RunSpec::point spells it
+    for (const auto& axis : config.sweep) {
+      if ((axis.name == "pair" || axis.name == "start_layer") && !axis.values.empty())
+        first[axis.name] = point_label(axis.values.front());
+    }
+    std::vector<bool> planned(expansion.size(), true);
+    for (std::size_t k = 0; k < expansion.size(); ++k) {
+      if (!adaptive.at(expansion[k].method_index)) continue;
+      for (const auto& [axis, label] : first) planned[k] = planned[k] && expansion[k].point.at(axis) == label;
+    }
+    return planned;
+  }
+
   ReportSection report(const ExperimentConfig& config, const std::vector<RunSpec>& runs,
                        const std::vector<const RunRow*>& rows) const override {
     const RegistrationParams params = read_registration_params(config);
-    std::vector<const RunRow*> used = rows;  // the adaptive method's skipped runs hold nothing
-    for (auto& r : used) {
-      if (r && r->values.count("skipped") && r->value("skipped") > 0.5) r = nullptr;
-    }
-    return params.report->report(config, params, runs, used);
+    return params.report->report(config, params, runs, rows);
   }
 };
 

@@ -24,8 +24,8 @@
 //     thesis_baseline: ndt_plain  # optional: the thesis-faithful variants, compared the same way
 //     thesis_proposed: mlndt_newton
 //   A method with `adaptive_start: {...}` (kit/adaptive_start.hpp) runs the thesis' adaptive
-//   starting layer over the whole pair sequence in one run (the run at the first pair and first
-//   start_layer); its other runs are skipped (value `skipped` = 1).
+//   starting layer over the whole pair sequence in one run; its plan holds only the runs at the
+//   first pair and first start_layer (RegistrationKind::planned_runs).
 #include <cstddef>
 #include <string>
 #include <vector>
