@@ -9,12 +9,12 @@
 #include <cmath>
 #include <map>
 
-#include "kinds.hpp"
 #include "kit/number_format.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
+#include "sextant/experiments/run_kind.hpp"
 
 namespace sextant {
 namespace {

@@ -7,7 +7,6 @@
 
 #include <tbb/parallel_for.h>
 
-#include "kinds.hpp"
 #include "kit/campus.hpp"
 #include "kit/row_codec.hpp"
 #include "place_recognition/place_recognition.hpp"
@@ -15,6 +14,7 @@
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/eval/loop_detection_metrics.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
+#include "sextant/experiments/run_kind.hpp"
 #include "sextant/matchers/register_pair.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/posegraph/loop_closing.hpp"

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "kinds.hpp"
 #include "plane_features/layouts/layouts.hpp"
+#include "sextant/experiments/run_kind.hpp"
 
 namespace sextant {
 namespace plane_features_kind {

@@ -13,7 +13,6 @@
 #include <tbb/parallel_for.h>
 #include <Eigen/Cholesky>
 
-#include "kinds.hpp"
 #include "kit/campus.hpp"
 #include "kit/plane_slam_record.hpp"
 #include "kit/row_keys.hpp"
@@ -26,6 +25,7 @@
 #include "sextant/core/units.hpp"
 #include "sextant/eval/statistics.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
+#include "sextant/experiments/run_kind.hpp"
 #include "sextant/filters/slam_run_failure.hpp"
 #include "sextant/synth/settings.hpp"
 #include "sextant/synth/yaml.hpp"

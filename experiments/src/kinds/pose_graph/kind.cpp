@@ -5,12 +5,12 @@
 #include <cmath>
 #include <memory>
 
-#include "kinds.hpp"
 #include "kit/campus.hpp"
 #include "pose_graph/params.hpp"
 #include "pose_graph/pipeline.hpp"
 #include "pose_graph/report.hpp"
 #include "sextant/core/error.hpp"
+#include "sextant/experiments/run_kind.hpp"
 #include "sextant/synth/settings.hpp"
 #include "sextant/synth/yaml.hpp"
 

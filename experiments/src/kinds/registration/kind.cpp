@@ -12,7 +12,6 @@
 
 #include <tbb/parallel_for.h>
 
-#include "kinds.hpp"
 #include "kit/adaptive_start.hpp"
 #include "kit/dataset_source.hpp"
 #include "kit/row_keys.hpp"
@@ -25,6 +24,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/experiments/run_kind.hpp"
 #include "sextant/experiments/run_plan.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/yaml.hpp"

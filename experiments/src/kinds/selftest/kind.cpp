@@ -3,8 +3,8 @@
 #include <chrono>
 #include <thread>
 
-#include "kinds.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/experiments/run_kind.hpp"
 
 namespace sextant {
 namespace {

@@ -11,7 +11,6 @@
 
 #include <tbb/parallel_for.h>
 
-#include "kinds.hpp"
 #include "kit/dataset_source.hpp"
 #include "kit/row_codec.hpp"
 #include "kit/row_keys.hpp"
@@ -22,6 +21,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/experiments/run_kind.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/odometry/yaml.hpp"
 #include "sextant/synth/campus.hpp"

@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "kinds.hpp"
 #include "sextant/core/error.hpp"
+#include "sextant/experiments/run_kind.hpp"
 #include "simulation/layouts/layouts.hpp"
 
 namespace sextant {
