@@ -50,13 +50,15 @@
 //                 the representative's EKF covariances (no cross terms).
 // Costs per step (N particles, M landmarks, k observations): predict O(N); update
 // O(N (k³ + k log M)) and resampling O(N) (no map is copied, landmark_map.hpp); augment
-// O(N log M); update_associating adds the associator's cost (planes: O(N k M) centroid tests,
-// plane_particle_association.hpp) and O(N k log M) map writes. The Filter views are not O(log M): mean() is
-// O(N M) (cached until the next step), covariance() O(N M²) and joint_covariance(ids) O(N |ids|²) — a runner
-// timing steps against the map size should not ask for covariance() (run_slam: record_pose_covariance =
-// false). initialize(x0, P0): poses are drawn from N(x0_v, P0_vv); landmarks in x0 start at their conditional
-// Gaussian given each particle's pose, keeping only the diagonal landmark blocks (FastSLAM cannot hold
-// correlations between landmarks of one particle).
+// O(N log M); update_associating adds the associator's cost (planes: O(N k M) centroid
+// distances, plane_particle_association.hpp) and O(N k log M) map writes. The Filter views are
+// not O(log M): mean() is O(N M) (cached until the next step), covariance() O(N M²) and
+// joint_covariance(ids) O(N |ids|²) — a runner timing steps against the map size should not ask
+// for covariance() (run_slam: record_pose_covariance = false).
+//
+// initialize(x0, P0): poses are drawn from N(x0_v, P0_vv); landmarks in x0 start at their
+// conditional Gaussian given each particle's pose, keeping only the diagonal landmark blocks
+// (FastSLAM cannot hold correlations between landmarks of one particle).
 #include <cstddef>
 #include <cstdint>
 #include <memory>

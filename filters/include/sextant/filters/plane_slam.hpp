@@ -78,7 +78,7 @@ struct PlaneSlamSettings {
   double gate_probability = 0.99;      ///< χ² gate of step 4 at this probability; 0 turns it off [-]
   bool merge_semantics = true;         ///< step 6 (off: map semantics stay as first seen)
   bool record_pose_covariance = true;  ///< pose covariance per step (O(n³) for information filters)
-  /// FastSLAM (fastslam2): steps 3–6 per particle against its own landmarks (see below); off: as
+  /// FastSLAM (fastslam2): steps 3–6 per particle against its own landmarks (header comment); off: as
   /// the Gaussian filters, against the weighted-mean map with one association for every particle
   bool particle_association = true;
 
