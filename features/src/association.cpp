@@ -74,24 +74,37 @@ AssociationResult associate_landmarks(const std::vector<PlaneLandmark>& observed
   return associate_landmarks(observed_in_world, map, LandmarkIndex(map, settings.search_radius), settings);
 }
 
+AssociationResult associate_landmarks(const std::vector<PlaneLandmark>& observed_in_world,
+                                      const std::vector<PlaneLandmark>& map, const LandmarkIndex& index,
+                                      const AssociationSettings& settings) {
+  return associate_landmarks(
+      observed_in_world, map.size(), [&](std::size_t m) -> const PlaneLandmark& { return map[m]; },
+      [&](const PlaneLandmark& o, std::vector<std::size_t>* out) {
+        index.query(o.centroid, settings.search_radius, out);
+      },
+      settings);
+}
+
 // §4.2.5: orientation and translation tests first, then closeness; the best candidate of each
 // observation by C_p, conflicts on one map landmark resolved in favour of the smaller C_p.
 AssociationResult associate_landmarks(const std::vector<PlaneLandmark>& observed_in_world,
-                                      const std::vector<PlaneLandmark>& map, const LandmarkIndex& index,
+                                      std::size_t map_size,
+                                      const std::function<const PlaneLandmark&(std::size_t)>& map_at,
+                                      const LandmarkCandidates& candidate_query,
                                       const AssociationSettings& settings) {
   AssociationResult result;
   std::vector<LandmarkMatch> proposals;
   std::vector<std::size_t> candidates;
   for (std::size_t o = 0; o < observed_in_world.size(); ++o) {
-    index.query(observed_in_world[o].centroid, settings.search_radius, &candidates);
+    candidate_query(observed_in_world[o], &candidates);
     LandmarkMatch best;
     best.criteria.closeness = std::numeric_limits<double>::infinity();
     bool found = false;
     for (std::size_t m : candidates) {
-      if (m >= map.size()) continue;
+      if (m >= map_size) continue;
       MergeCriteria c;
       ++result.candidates_tested;
-      if (!merge_test(observed_in_world[o], map[m], settings.thresholds, &c)) continue;
+      if (!merge_test(observed_in_world[o], map_at(m), settings.thresholds, &c)) continue;
       if (c.closeness < best.criteria.closeness) {
         best = LandmarkMatch{o, m, c};
         found = true;
@@ -102,7 +115,7 @@ AssociationResult associate_landmarks(const std::vector<PlaneLandmark>& observed
   std::stable_sort(proposals.begin(), proposals.end(), [](const LandmarkMatch& a, const LandmarkMatch& b) {
     return a.criteria.closeness < b.criteria.closeness;
   });
-  std::vector<bool> map_taken(map.size(), false), observed_matched(observed_in_world.size(), false);
+  std::vector<bool> map_taken(map_size, false), observed_matched(observed_in_world.size(), false);
   for (const auto& p : proposals) {
     if (map_taken[p.map]) continue;
     map_taken[p.map] = true;

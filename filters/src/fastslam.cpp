@@ -136,7 +136,7 @@ StepStatus FastSlam::sample_pose(FastSlamParticle& particle) {
 // Montemerlo et al. 2003, §3). The importance weight does not change.
 StepResult FastSlam::augment(const Eigen::VectorXd& z, const Eigen::MatrixXd& R) {
   detail::StepClock clock;
-  if (!detail::valid_observation(*model_, z, R) || particles_.empty())
+  if (!detail::valid_observation(*model_, z, R) || particles_.empty() || per_particle_)
     return finish(StepStatus::kInvalidInput, clock.seconds());
   StepStatus status = StepStatus::kOk;
   for (FastSlamParticle& particle : particles_) {
@@ -172,6 +172,11 @@ double FastSlam::effective_sample_size() const {
   return sextant::effective_sample_size(log_weights());
 }
 
+int FastSlam::num_landmarks() const {
+  if (per_particle_ && representative_ < particles_.size()) return particles_[representative_].map.size();
+  return landmarks_;
+}
+
 std::size_t FastSlam::best_particle() const {
   const std::vector<double> lw = log_weights();
   return static_cast<std::size_t>(std::max_element(lw.begin(), lw.end()) - lw.begin());
@@ -181,6 +186,14 @@ std::size_t FastSlam::best_particle() const {
 // is copied (landmark_map.hpp), so resampling costs O(N), whatever the map size.
 void FastSlam::resample() {
   if (particles_.empty()) return;
+  const std::size_t best = best_particle();
+  const std::vector<std::size_t> source = resample_sources();
+  // The representative stays the highest-weight particle: its first copy, if it has one.
+  const auto copy = std::find(source.begin(), source.end(), best);
+  representative_ = copy == source.end() ? 0 : static_cast<std::size_t>(copy - source.begin());
+}
+
+std::vector<std::size_t> FastSlam::resample_sources() {
   const std::vector<std::size_t> source = systematic_resample(log_weights(), rng_);
   std::vector<FastSlamParticle> next;
   next.reserve(particles_.size());
@@ -191,6 +204,18 @@ void FastSlam::resample() {
   ++counters_.resamplings;
   counters_.particle_copies += particles_.size();
   mean_cache_.resize(0);
+  return source;
+}
+
+// Normalised in log space (particle_weights.hpp); resampled when N_eff < threshold · N. The
+// representative is the highest-weight particle, or its first copy after resampling.
+void FastSlam::reweight(const std::vector<double>& before) {
+  std::vector<double> lw = log_weights();
+  if (!normalize_log_weights(lw)) lw = before;  // every particle failed: keep the old weights
+  set_log_weights(lw);
+  last_update_n_eff_ = sextant::effective_sample_size(lw);
+  representative_ = best_particle();
+  if (last_update_n_eff_ < s_.resample_threshold * static_cast<double>(particles_.size())) resample();
 }
 
 }  // namespace sextant

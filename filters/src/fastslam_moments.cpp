@@ -8,7 +8,7 @@
 #include "sextant/filters/fastslam.hpp"
 
 namespace sextant {
-namespace {
+namespace fastslam_moments {
 
 /// The particle's [pose; landmarks[0]; …] (all landmarks when `landmarks` is null).
 Eigen::VectorXd particle_state(const SlamModel& model, const FastSlamParticle& particle,
@@ -70,24 +70,56 @@ Eigen::MatrixXd mixture_covariance(const SlamModel& model, const std::vector<Fas
   return C.selfadjointView<Eigen::Lower>();  // rankUpdate filled the lower triangle only
 }
 
-}  // namespace
+/// Per-particle association: [weighted-mean pose; the representative's landmarks] and, with
+/// `covariance`, the pose block of the mixture beside the representative's landmark EKF
+/// covariances (no cross terms: its landmarks are independent given its path).
+Eigen::VectorXd representative_view(const SlamModel& model, const std::vector<FastSlamParticle>& particles,
+                                    const FastSlamParticle& representative, const std::vector<int>& landmarks,
+                                    Eigen::MatrixXd* covariance) {
+  const int p = model.pose_dim(), l = model.landmark_dim();
+  const Eigen::VectorXd pose = weighted_mean(model, particles, {});
+  Eigen::VectorXd x = particle_state(model, representative, landmarks);
+  x.head(p) = pose;
+  if (covariance) {
+    *covariance = Eigen::MatrixXd::Zero(x.size(), x.size());
+    covariance->topLeftCorner(p, p) = mixture_covariance(model, particles, {}, pose);
+    for (std::size_t k = 0; k < landmarks.size(); ++k)
+      covariance->block(p + l * static_cast<Eigen::Index>(k), p + l * static_cast<Eigen::Index>(k), l, l) =
+          representative.map.get(landmarks[k]).covariance;
+  }
+  return x;
+}
+
+}  // namespace fastslam_moments
 
 Eigen::VectorXd FastSlam::mean() const {
+  using namespace fastslam_moments;
   if (particles_.empty()) return Eigen::VectorXd();
-  if (mean_cache_.size() == 0) mean_cache_ = weighted_mean(*model_, particles_, all_landmarks(landmarks_));
+  if (mean_cache_.size() == 0)
+    mean_cache_ = per_particle_ ? representative_view(*model_, particles_, particles_[representative_],
+                                                      all_landmarks(num_landmarks()), nullptr)
+                                : weighted_mean(*model_, particles_, all_landmarks(landmarks_));
   return mean_cache_;
 }
 
 Eigen::MatrixXd FastSlam::covariance() const {
+  using namespace fastslam_moments;
   if (particles_.empty()) return Eigen::MatrixXd();
+  if (per_particle_) return joint_covariance(all_landmarks(num_landmarks()));
   return mixture_covariance(*model_, particles_, all_landmarks(landmarks_), mean());
 }
 
 Eigen::MatrixXd FastSlam::joint_covariance(const std::vector<int>& landmarks) const {
+  using namespace fastslam_moments;
   for (int j : landmarks)
-    if (j < 0 || j >= landmarks_)
+    if (j < 0 || j >= num_landmarks())
       throw std::out_of_range("joint_covariance: no landmark " + std::to_string(j));
   if (particles_.empty()) return Eigen::MatrixXd();
+  if (per_particle_) {
+    Eigen::MatrixXd C;
+    representative_view(*model_, particles_, particles_[representative_], landmarks, &C);
+    return C;
+  }
   return mixture_covariance(*model_, particles_, landmarks, weighted_mean(*model_, particles_, landmarks));
 }
 

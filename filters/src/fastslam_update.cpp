@@ -59,7 +59,9 @@ bool update_landmark(const SlamModel& model, const Eigen::VectorXd& pose, const 
 // In a linear-Gaussian model this proposal is p(s_t | s_{t−1}, z_t, map) and the weight
 // p(z_t | s_{t−1}, map): the exact optimal proposal.
 StepStatus FastSlam::update_particle(FastSlamParticle& particle, const std::vector<Eigen::VectorXd>& zs,
-                                     const Eigen::MatrixXd& R, const std::vector<int>& associations) {
+                                     const Eigen::MatrixXd& R, const std::vector<int>& associations,
+                                     const ParticleAssociator* attach,
+                                     const std::vector<std::size_t>* observation_ids) {
   const int p = model_->pose_dim(), od = model_->observation_dim();
   const Eigen::Index m = static_cast<Eigen::Index>(zs.size()) * od;
   const Eigen::VectorXd& s_hat = particle.pose;
@@ -113,6 +115,9 @@ StepStatus FastSlam::update_particle(FastSlamParticle& particle, const std::vect
     for (Eigen::Index a : observations)
       if (!update_landmark(*model_, s, zs[static_cast<std::size_t>(a)], R, theta))
         return StepStatus::kSingularInnovation;
+    if (attach)  // the caller's data follows the updated EKF (one write per landmark)
+      for (Eigen::Index a : observations)
+        theta.attachment = attach->attach(s, (*observation_ids)[static_cast<std::size_t>(a)], theta);
     particle.map.set(j, std::move(theta), &counters_.map);  // copy-on-write: siblings keep theirs
   }
   return StepStatus::kOk;
@@ -123,7 +128,8 @@ StepStatus FastSlam::update_particle(FastSlamParticle& particle, const std::vect
 StepResult FastSlam::update(const std::vector<Eigen::VectorXd>& zs, const Eigen::MatrixXd& R,
                             const std::vector<int>& associations) {
   detail::StepClock clock;
-  if (particles_.empty() || !detail::valid_observations(*model_, landmarks_, zs, R, associations))
+  if (particles_.empty() || per_particle_ ||
+      !detail::valid_observations(*model_, landmarks_, zs, R, associations))
     return finish(StepStatus::kInvalidInput, clock.seconds());
   if (zs.empty()) return finish(StepStatus::kOk, clock.seconds());
   const std::vector<double> before = log_weights();
@@ -132,11 +138,7 @@ StepResult FastSlam::update(const std::vector<Eigen::VectorXd>& zs, const Eigen:
     const StepStatus s = update_particle(particle, zs, R, associations);
     if (s != StepStatus::kOk && status == StepStatus::kOk) status = s;
   }
-  std::vector<double> lw = log_weights();
-  if (!normalize_log_weights(lw)) lw = before;  // every particle failed: keep the old weights
-  set_log_weights(lw);
-  last_update_n_eff_ = sextant::effective_sample_size(lw);
-  if (last_update_n_eff_ < s_.resample_threshold * static_cast<double>(particles_.size())) resample();
+  reweight(before);
   return finish(status, clock.seconds());
 }
 

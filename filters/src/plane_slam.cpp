@@ -6,6 +6,7 @@
 #include "sextant/core/chi_square.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/features/merging.hpp"
+#include "sextant/filters/fastslam.hpp"
 #include "sextant/filters/innovation_gate.hpp"
 #include "sextant/filters/plane_slam_model.hpp"
 
@@ -145,10 +146,15 @@ PlaneSlamStep PlaneSlam::step(const Vector6d& u, const Matrix6d& Q) {
     rec.predict_seconds = r.seconds;
   }
   started_ = true;
-
-  // 3.–4. Transformation of the extracted planes with the predicted pose, association (§4.2.5).
   out.extraction_seconds = extraction_seconds_;
   out.extracted = observed.size();
+  if (s_.particle_association && dynamic_cast<FastSlam*>(filter_.get())) {
+    particle_step(out);
+    out.seconds = extraction_seconds_ + since(t_step);
+    return out;
+  }
+
+  // 3.–4. Transformation of the extracted planes with the predicted pose, association (§4.2.5).
   auto t0 = Clock::now();
   const std::vector<PlaneLandmark> predicted_world = transform_landmarks(observed, to_isometry(pose()));
   const AssociationResult assoc = associate_landmarks(predicted_world, map_, s_.association);

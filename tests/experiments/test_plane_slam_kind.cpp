@@ -389,7 +389,7 @@ INSTANTIATE_TEST_SUITE_P(
                       QuickCase{"e14_larger_map_simulated_odometry", 4, "errors", 3, 2, true, false},
                       QuickCase{"e16_rspkf_ukf_ckf_3d", 8, "errors", 5, 4, true, true},
                       QuickCase{"e19_benchmark_filters", 5, "benchmark_metrics", 6, 5, true, true},
-                      QuickCase{"e23_fastslam_planes", 30, "errors", 12, 10, true, false, "seif"}),
+                      QuickCase{"e23_fastslam_planes", 45, "errors", 17, 15, true, false, "seif"}),
     [](const ::testing::TestParamInfo<QuickCase>& info) {
       return std::string(info.param.config).substr(0, 3);
     });

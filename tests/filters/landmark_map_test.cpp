@@ -8,7 +8,7 @@ namespace sextant {
 namespace {
 
 LandmarkEkf ekf_of(double value) {
-  return LandmarkEkf{Eigen::VectorXd::Constant(2, value), Eigen::MatrixXd::Identity(2, 2) * value};
+  return LandmarkEkf{Eigen::VectorXd::Constant(2, value), Eigen::MatrixXd::Identity(2, 2) * value, nullptr};
 }
 
 LandmarkMap map_of(int size, MapCounters* counters = nullptr) {

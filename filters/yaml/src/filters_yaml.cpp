@@ -27,6 +27,7 @@ PlaneSlamSettings read_plane_slam_settings(const YAML::Node& node, const std::st
   in.read("p0_scale", s.p0_scale);
   in.read("gate_probability", s.gate_probability);
   in.read("merge_semantics", s.merge_semantics);
+  in.read("particle_association", s.particle_association);
   in.read("record_pose_covariance", s.record_pose_covariance);
   in.finish();
   std::string why;

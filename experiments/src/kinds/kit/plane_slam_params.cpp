@@ -130,6 +130,10 @@ PlaneSlamMethod read_plane_slam_method(const YAML::Node& node, const std::string
       read_choice<MotionSource>(in, "motion", MotionSource::kOdometry,
                                 {{"odometry", MotionSource::kOdometry}, {"fbmlndt", MotionSource::kFbmlndt}});
   if (in.has("matcher")) m.matcher = YAML::Clone(in.child("matcher"));
+  if (in.has("landmarks"))
+    m.landmarks = read_choice<LandmarkSource>(
+        in, "landmarks", LandmarkSource::kTrue,
+        {{"true", LandmarkSource::kTrue}, {"extracted", LandmarkSource::kExtracted}});
   if (in.has("odometry")) {
     YAML::Node campus(YAML::NodeType::Map);
     campus["odometry"] = YAML::Clone(in.child("odometry"));

@@ -10,6 +10,9 @@
 //                                                      # FbML-NDT relative pose predicts (hybrid SLAM,
 //                                                      # E21; needs landmarks: extracted); matcher: the
 //                                                      # mlndt keys of its registration
+//     - {name: fastslam_50_x, filter: fastslam2, landmarks: extracted}
+//                                                      # the method's own landmark source (default:
+//                                                      # params.landmarks): E23's extracted rows
 //     - {name: ekf_t, filter: ekf, odometry: {model: student_t, student_t_dof: 3}}
 //                                                      # the method's own odometry model (the
 //                                                      # campus' odometry keys): its odometry is
@@ -103,7 +106,14 @@ struct PlaneSlamMethod {
   /// `odometry:` the method's own odometry model (the campus' keys, e.g. {model: student_t}): the
   /// odometry is then drawn from it per run (as odometry: resample), not from the campus' model.
   std::optional<synth::OdometrySettings> odometry;
+  /// `landmarks:` the method's own landmark source (true | extracted), else params.landmarks.
+  std::optional<LandmarkSource> landmarks;
 };
+
+/// The landmark source of one method: its own, else the experiment's.
+inline LandmarkSource landmark_source(const PlaneSlamParams& params, const PlaneSlamMethod& method) {
+  return method.landmarks ? *method.landmarks : params.landmarks;
+}
 
 /// The one sweep axis the kind understands: the scale of the initial covariance P0.
 inline constexpr const char* kP0ScaleAxis = "p0_scale";

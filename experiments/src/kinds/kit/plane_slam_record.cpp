@@ -199,7 +199,7 @@ RecordedRun record_plane_slam(const CampusScans& data, const PlaneSlamParams& pa
     u[k] = odometry_increment(to_pose6(odometry[k - 1]), to_pose6(odometry[k]));
     run.odometry.push_back(Pose6::from_vector(model.process(run.odometry.back().vector(), u[k])));
   }
-  if (params.landmarks == LandmarkSource::kTrue)
+  if (landmark_source(params, method) == LandmarkSource::kTrue)
     plane_slam_record::run_true(data, params, settings, u, scans, noise, run);
   else
     plane_slam_record::run_extracted(data, params, settings, odometry, scans, seed, method, run);

@@ -118,7 +118,8 @@ std::vector<double> map_segments(const RecordedRun& r, const synth::Campus& camp
   return out;
 }
 
-void fill_row(const RecordedRun& r, const synth::Campus& campus, const PlaneSlamParams& params, RunRow& row) {
+void fill_row(const RecordedRun& r, const synth::Campus& campus, const PlaneSlamParams& params,
+              LandmarkSource landmarks, RunRow& row) {
   const std::size_t n = r.steps.size();
   const double bound = chi_square_quantile(params.nees_probability, 6.0);
   auto& s = row.series;
@@ -145,7 +146,7 @@ void fill_row(const RecordedRun& r, const synth::Campus& campus, const PlaneSlam
     s[keys::kMeasurementMs].push_back(1e3 * st.measurement_seconds);
     s[keys::kStepMs].push_back(1e3 * (st.motion_seconds + st.measurement_seconds));
     s[keys::kMapSize].push_back(static_cast<double>(st.map_size));
-    if (params.landmarks == LandmarkSource::kExtracted) {
+    if (landmarks == LandmarkSource::kExtracted) {
       s[keys::kExtractionMs].push_back(1e3 * st.extraction_seconds);
       s[keys::kAssociationMs].push_back(1e3 * st.association_seconds);
       s[keys::kRegistrationMs].push_back(1e3 * st.registration_seconds);
@@ -213,7 +214,7 @@ void fill_row(const RecordedRun& r, const synth::Campus& campus, const PlaneSlam
   v["gated"] = static_cast<double>(gated);
   v["motion_ms_mean"] = mean_of(s[keys::kMotionMs]);
   v["measurement_ms_mean"] = mean_of(s[keys::kMeasurementMs]);
-  if (params.landmarks == LandmarkSource::kExtracted) put_step_costs(row);
+  if (landmarks == LandmarkSource::kExtracted) put_step_costs(row);
   put_benchmarks(estimate, truth, "", row);
   put_benchmarks(odometry, truth, "odometry_", row);
   const KummerleResult k = kummerle_metric(estimate, truth);
@@ -251,16 +252,15 @@ class PlaneSlamSession : public KindSession {
         campus_(campus_from(open_campus(config, "plane_slam"), params_, config.file)) {
     const std::size_t scans = needed_scans();
     data_.campus = &campus_;
-    if (params_.landmarks == LandmarkSource::kTrue)
-      data_.visible.resize(scans);
-    else
-      data_.clouds.resize(scans);
+    bool visible = false, clouds = false;  // what the methods' landmark sources need
+    for (const PlaneSlamMethod& m : methods_)
+      (landmark_source(params_, m) == LandmarkSource::kTrue ? visible : clouds) = true;
+    if (visible) data_.visible.resize(scans);
+    if (clouds) data_.clouds.resize(scans);
     tbb::parallel_for(std::size_t{0}, scans, [&](std::size_t k) {
       synth::SimulatedScan scan = campus_.scan(k);
-      if (params_.landmarks == LandmarkSource::kTrue)
-        data_.visible[k] = std::move(scan.visible);
-      else
-        data_.clouds[k] = std::move(scan.cloud);
+      if (visible) data_.visible[k] = std::move(scan.visible);
+      if (clouds) data_.clouds[k] = std::move(scan.cloud);
     });
   }
 
@@ -270,7 +270,8 @@ class PlaneSlamSession : public KindSession {
     const double p0 = it == run.point.end() ? kNaN : std::stod(it->second);
     const PlaneSlamSettings settings = plane_slam_settings(params_, method, p0, file_);
     const std::size_t scans = method.scans ? std::min(method.scans, sequence_scans()) : sequence_scans();
-    fill_row(record_plane_slam(data_, params_, settings, scans, run.seed, method), campus_, params_, row);
+    fill_row(record_plane_slam(data_, params_, settings, scans, run.seed, method), campus_, params_,
+             landmark_source(params_, method), row);
   }
 
  private:
@@ -299,7 +300,7 @@ class PlaneSlamKind : public RunKind {
     const PlaneSlamLayout& layout = plane_slam_layout(config, params);
     for (const PlaneSlamMethod& m : read_methods(config)) {
       (void)plane_slam_settings(params, m, kNaN, config.file);
-      if (m.motion == MotionSource::kFbmlndt && params.landmarks != LandmarkSource::kExtracted)
+      if (m.motion == MotionSource::kFbmlndt && landmark_source(params, m) != LandmarkSource::kExtracted)
         throw InputError(config.file, "",
                          "method '" + m.name +
                              "': motion: fbmlndt shares the plane extraction, it needs "

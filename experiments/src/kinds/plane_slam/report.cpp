@@ -123,6 +123,20 @@ std::string common_notes(const ExperimentConfig& config, const PlaneSlamParams& 
                                              : "") +
           ")";
   }
+  std::string other;  // methods with their own landmark source (E23's extracted rows)
+  for (const MethodConfig& m : config.methods) {
+    const PlaneSlamMethod pm = read_plane_slam_method(m.node, config.file);
+    if (pm.landmarks && *pm.landmarks != params.landmarks) other += (other.empty() ? "" : ", ") + m.name;
+  }
+  if (!other.empty()) {
+    PlaneSlamParams flipped = params;
+    flipped.landmarks =
+        params.landmarks == LandmarkSource::kTrue ? LandmarkSource::kExtracted : LandmarkSource::kTrue;
+    s += " With their own landmarks instead — " + landmark_text(flipped) +
+         "; FastSLAM associates per particle, each particle against its own landmarks at its own pose, and "
+         "reports its highest-weight particle's map: " +
+         other + ".";
+  }
   if (!own.empty())
     s += " Driven instead by their own odometry model, re-drawn for every run from its seed (the odometry "
          "row of that model is the dead reckoning of the first of them): " +

@@ -5,6 +5,7 @@
 // the cost is linear in the number of observed landmarks and their nearby map landmarks.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -52,6 +53,18 @@ AssociationResult associate_landmarks(const std::vector<PlaneLandmark>& observed
                                       const AssociationSettings& settings);
 AssociationResult associate_landmarks(const std::vector<PlaneLandmark>& observed_in_world,
                                       const std::vector<PlaneLandmark>& map, const LandmarkIndex& index,
+                                      const AssociationSettings& settings);
+
+/// The map landmarks near an observed one (within the search radius of its centroid; indices
+/// below the map size, ascending).
+using LandmarkCandidates = std::function<void(const PlaneLandmark& observed, std::vector<std::size_t>* out)>;
+/// The same tests and conflict rule on a map given by its size, an accessor and a candidate
+/// query (FastSLAM's per-particle maps, filters/plane_particle_association.hpp, which are not
+/// vectors of landmarks).
+AssociationResult associate_landmarks(const std::vector<PlaneLandmark>& observed_in_world,
+                                      std::size_t map_size,
+                                      const std::function<const PlaneLandmark&(std::size_t)>& map_at,
+                                      const LandmarkCandidates& candidates,
                                       const AssociationSettings& settings);
 
 }  // namespace sextant

@@ -19,11 +19,19 @@
 
 namespace sextant {
 
+/// What a caller keeps per landmark beside its EKF, per particle (plane SLAM: the plane's semantic
+/// data — centroid, hull, area — in that particle's world, plane_particle_association.hpp).
+/// Immutable and shared like the EKFs: a particle that changes it stores a new one.
+struct LandmarkAttachment {
+  virtual ~LandmarkAttachment() = default;
+};
+
 /// One landmark's EKF in a particle: its mean and covariance in the SlamModel's landmark
-/// parameterisation (planes: (nᵂ, dᵂ), plane_slam_model.hpp).
+/// parameterisation (planes: (nᵂ, dᵂ), plane_slam_model.hpp), and the caller's attachment.
 struct LandmarkEkf {
   Eigen::VectorXd mean;
   Eigen::MatrixXd covariance;
+  std::shared_ptr<const LandmarkAttachment> attachment = nullptr;  ///< null unless a caller set one
 };
 
 /// What map writes cost: new landmark EKFs stored and trie nodes created (path copies).

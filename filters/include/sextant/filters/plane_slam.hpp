@@ -12,6 +12,14 @@
 //      semantic data (centroid, covariance, hull, area) into them (merge_landmark_semantics).
 // The map's semantic landmarks are parallel to the filter's landmarks (same index).
 //
+// FastSLAM (filter fastslam2, particle_association on): steps 3–6 run in every particle against
+// its own landmarks (plane_particle_association.hpp, FastSlam::update_associating): each particle
+// transforms the planes with its own predicted pose, associates them by the same tests and gate,
+// updates, and creates its own new landmarks. What the step reports is the representative
+// particle's (the highest-weight one, FastSlam::representative()): its matched / gated counts,
+// its landmark per observation, and its semantic map as map() — map_size is its map's size;
+// candidates_tested sums over the particles.
+//
 //   PlaneSlamSettings s;                    // or read_plane_slam_settings (filters/yaml.hpp)
 //   PlaneSlam slam(s, to_pose6(first_ground_truth), seed);
 //   for (i …) PlaneSlamStep step = slam.step(scan(i), odometry_pose(i));   // first call: no predict
@@ -70,6 +78,9 @@ struct PlaneSlamSettings {
   double gate_probability = 0.99;      ///< χ² gate of step 4 at this probability; 0 turns it off [-]
   bool merge_semantics = true;         ///< step 6 (off: map semantics stay as first seen)
   bool record_pose_covariance = true;  ///< pose covariance per step (O(n³) for information filters)
+  /// FastSLAM (fastslam2): steps 3–6 per particle against its own landmarks (header comment); off: as
+  /// the Gaussian filters, against the weighted-mean map with one association for every particle
+  bool particle_association = true;
 
   bool valid(std::string* why) const;
   /// The filter on `model`: filter_factory's, else default_filter(filter)'s.
@@ -118,6 +129,8 @@ class PlaneSlam {
 
  private:
   void sync_map_planes();
+  /// Steps 3–6 per particle (FastSLAM, plane_slam_particles.cpp).
+  void particle_step(PlaneSlamStep& out);
 
   PlaneSlamSettings s_;
   double gate_ = 0.0;  ///< χ² quantile of gate_probability (0: no gate)

@@ -1,7 +1,10 @@
 // Layout (E23, FastSLAM 2.0 against the Gaussian filters): the accuracy layout (errors, NEES, maps,
 // claims) and the cost per scan against the map size, per filter and particle count — FastSLAM's
 // update is O(M·log N) per particle (Montemerlo et al. 2003, §4: the tree-shared map), the EKF's
-// O(N²) in the landmarks (thesis eq. 5.12–5.16).
+// O(N²) in the landmarks (thesis eq. 5.12–5.16). Methods with their own landmark source (rows
+// *_x: extracted planes, per-particle association) also get an error figure of their own, since
+// with every row in one figure the palette repeats.
+#include <set>
 #include <string>
 
 #include "plane_slam/report.hpp"
@@ -40,6 +43,21 @@ Table time_table(const PlaneSlamRows& data, std::uint64_t seed) {
   return t;
 }
 
+/// The groups of the methods whose landmark source is not the experiment's (E23's *_x rows).
+PlaneSlamRows own_landmark_rows(const ExperimentConfig& config, const PlaneSlamParams& params,
+                                const PlaneSlamRows& data) {
+  std::set<std::string> names;
+  for (const MethodConfig& m : config.methods)
+    if (landmark_source(params, read_plane_slam_method(m.node, config.file)) != params.landmarks)
+      names.insert(m.name);
+  PlaneSlamRows out;
+  out.points = data.points;
+  out.repetitions = data.repetitions;
+  for (const MethodRows& g : data.groups)
+    if (names.count(g.name)) out.groups.push_back(g);
+  return out;
+}
+
 }  // namespace fastslam_layout
 
 ReportSection fastslam_report(const ExperimentConfig& config, const PlaneSlamParams& params,
@@ -48,6 +66,14 @@ ReportSection fastslam_report(const ExperimentConfig& config, const PlaneSlamPar
   if (data.points.empty() || data.at(data.points.front()).empty()) return section;
   section.tables.push_back(fastslam_layout::time_table(data, config.seed ^ 0x23u));
   section.figures.push_back(time_figure(data, keys::kStepMs, "step_time_vs_map", "Time per scan", true));
+  const PlaneSlamRows own = fastslam_layout::own_landmark_rows(config, params, data);
+  if (!own.groups.empty() && !own.at(own.points.front()).empty())
+    section.figures.push_back(
+        error_figure(own, own.points.front(), keys::kErrorM, keys::kOdometryErrorM,
+                     "error_vs_scan_own_landmarks", "position error norm [m]",
+                     std::string("Position error norm per scan, the methods with ") +
+                         (params.landmarks == LandmarkSource::kTrue ? "extracted planes" : "true planes"),
+                     {}));
   return section;
 }
 
