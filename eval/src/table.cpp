@@ -114,6 +114,9 @@ Table& Table::add_row(std::vector<Cell> cells) {
   return *this;
 }
 
+/// From this magnitude on a number cell is written in scientific notation (3 significant digits).
+constexpr double kScientificFrom = 1e9;
+
 std::string format_cell(const Cell& cell, const TableColumn& column) {
   switch (cell.kind) {
     case Cell::Kind::missing: return "";
@@ -124,6 +127,12 @@ std::string format_cell(const Cell& cell, const TableColumn& column) {
   if (std::isinf(cell.value)) return cell.value > 0 ? "inf" : "-inf";
   std::ostringstream out;
   out.imbue(std::locale::classic());
+  if (std::abs(cell.value) >= kScientificFrom) {  // 19 digits of a degenerate NEES read as noise
+    out.setf(std::ios::scientific);
+    out.precision(2);
+    out << cell.value;
+    return out.str();
+  }
   out.setf(std::ios::fixed);
   out.precision(cell.precision >= 0 ? cell.precision : column.precision);
   out << cell.value;

@@ -78,6 +78,9 @@ TEST(Table, CellFormatting) {
   EXPECT_EQ(format_cell(Cell::number(-0.001), c), "0.00");
   EXPECT_EQ(format_cell(Cell::number(-0.76), c), "-0.76");
   EXPECT_EQ(format_cell(Cell::number(1.23456, 4), c), "1.2346");
+  EXPECT_EQ(format_cell(Cell::number(999999999.0), c), "999999999.00");
+  EXPECT_EQ(format_cell(Cell::number(3185814733472572416.0), c), "3.19e+18");
+  EXPECT_EQ(format_cell(Cell::number(-1.5e12), c), "-1.50e+12");
   EXPECT_EQ(format_cell(Cell::number(std::numeric_limits<double>::quiet_NaN()), c), "nan");
   EXPECT_EQ(format_cell(Cell::missing(), c), "");
   EXPECT_EQ(escape_latex("50% of a_b & c"), "50\\% of a\\_b \\& c");
