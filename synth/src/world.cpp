@@ -46,6 +46,30 @@ struct XyBounds {
   }
 };
 
+struct ZBounds {
+  std::pair<double, double> operator()(const Polygon& p) const {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& v : p.vertices()) {
+      lo = std::min(lo, v.z());
+      hi = std::max(hi, v.z());
+    }
+    return {lo, hi};
+  }
+  std::pair<double, double> operator()(const OrientedBox& b) const {
+    return {b.center.z() - b.half.z(), b.center.z() + b.half.z()};
+  }
+  std::pair<double, double> operator()(const Cylinder& c) const { return {c.z_min, c.z_max}; }
+  std::pair<double, double> operator()(const Ellipsoid& e) const {
+    return {e.center.z() - e.radii.z(), e.center.z() + e.radii.z()};
+  }
+  std::pair<double, double> operator()(const Triangle& t) const {
+    return {std::min({t.a.z(), t.b.z(), t.c.z()}), std::max({t.a.z(), t.b.z(), t.c.z()})};
+  }
+};
+
+// A primitive's heights are kept as floats beside its index; this margin [m] covers their rounding.
+constexpr double kHeightMargin = 1e-3;
+
 }  // namespace
 
 const char* kind_name(ObjectKind kind) {
@@ -66,6 +90,10 @@ const char* kind_name(ObjectKind kind) {
 
 std::pair<Eigen::Vector2d, Eigen::Vector2d> xy_bounds(const Shape& shape) {
   return std::visit(XyBounds{}, shape);
+}
+
+std::pair<double, double> z_bounds(const Shape& shape) {
+  return std::visit(ZBounds{}, shape);
 }
 
 PrimitiveGrid::PrimitiveGrid(const std::vector<Primitive>& primitives, Eigen::Vector2d min,
@@ -92,16 +120,25 @@ PrimitiveGrid::PrimitiveGrid(const std::vector<Primitive>& primitives, Eigen::Ve
   for (std::size_t c = 1; c < counts.size(); ++c) counts[c] += counts[c - 1];
   offsets_ = counts;
   items_.resize(counts.back());
+  item_heights_.resize(counts.back());
   for (std::size_t i = 0; i < primitives.size(); ++i) {
+    const auto [z_lo, z_hi] = z_bounds(primitives[i].shape);
     for (int iy = ranges[i][2]; iy <= ranges[i][3]; ++iy)
-      for (int ix = ranges[i][0]; ix <= ranges[i][1]; ++ix)
-        items_[counts[static_cast<std::size_t>(iy) * nx_ + ix]++] = static_cast<std::uint32_t>(i);
+      for (int ix = ranges[i][0]; ix <= ranges[i][1]; ++ix) {
+        const std::uint32_t slot = counts[static_cast<std::size_t>(iy) * nx_ + ix]++;
+        items_[slot] = static_cast<std::uint32_t>(i);
+        item_heights_[slot] = {static_cast<float>(z_lo), static_cast<float>(z_hi)};
+      }
   }
 }
 
 std::pair<const std::uint32_t*, const std::uint32_t*> PrimitiveGrid::cell_items(int ix, int iy) const {
   const std::size_t c = static_cast<std::size_t>(iy) * nx_ + ix;
   return {items_.data() + offsets_[c], items_.data() + offsets_[c + 1]};
+}
+
+const std::array<float, 2>* PrimitiveGrid::cell_item_heights(int ix, int iy) const {
+  return item_heights_.data() + offsets_[static_cast<std::size_t>(iy) * nx_ + ix];
 }
 
 void World::build_grid(double cell) {
@@ -138,9 +175,25 @@ std::optional<RayHit> World::cast(const Ray& ray, double max_range, std::uint64_
 
   RayHit best;
   best.range = inf;
+  double t_enter = 0.0;  // where the ray enters the current cell
   while (true) {
     const auto [begin, end] = grid_.cell_items(ix, iy);
-    for (const std::uint32_t* it = begin; it != end; ++it) {
+    const std::array<float, 2>* heights = grid_.cell_item_heights(ix, iy);
+    // A hit on a primitive of this cell that lies in another cell is found there (the primitive is
+    // listed in every cell its xy box touches), so only heights the ray has inside this cell can
+    // be hit here. The border cells also hold what lies beyond the grid: no limit there.
+    const bool border = ix == 0 || iy == 0 || ix == grid_.nx() - 1 || iy == grid_.ny() - 1;
+    const double t_leave = border ? inf : std::min(t_max_x, t_max_y);
+    const double t_last = std::min({t_leave, max_range, best.range});
+    const double z_enter = ray.origin.z() + t_enter * ray.direction.z();
+    const double z_last = std::isfinite(t_last)     ? ray.origin.z() + t_last * ray.direction.z()
+                          : ray.direction.z() > 0.0 ? inf
+                          : ray.direction.z() < 0.0 ? -inf
+                                                    : z_enter;
+    const double z_low = std::min(z_enter, z_last) - kHeightMargin;
+    const double z_high = std::max(z_enter, z_last) + kHeightMargin;
+    for (const std::uint32_t* it = begin; it != end; ++it, ++heights) {
+      if ((*heights)[1] < z_low || (*heights)[0] > z_high) continue;  // passes over or under it
       const Primitive& prim = primitives[*it];
       std::optional<double> t;
       if (const auto* e = std::get_if<Ellipsoid>(&prim.shape)) {
@@ -170,6 +223,7 @@ std::optional<RayHit> World::cast(const Ray& ray, double max_range, std::uint64_
     }
     const double t_exit = std::min(t_max_x, t_max_y);
     if (best.range <= t_exit || t_exit > max_range) break;
+    t_enter = t_exit;
     if (t_max_x < t_max_y) {
       ix += step_x;
       t_max_x += t_delta_x;

@@ -1,6 +1,7 @@
 #pragma once
 // The synthetic world: ray-castable primitives in a uniform 2D grid, the ground mesh, and the
 // true planar landmarks (façades, roofs, free-standing walls).
+#include <array>
 #include <cstdint>
 #include <string>
 #include <variant>
@@ -59,7 +60,8 @@ struct RayHit {
 };
 
 /// Uniform 2D grid (x, y) over the world bounds; each cell lists the primitives whose xy
-/// bounding box overlaps it (compressed rows).
+/// bounding box overlaps it (compressed rows), each with its vertical extent, so that a ray can
+/// pass over (or under) a primitive without testing it.
 class PrimitiveGrid {
  public:
   PrimitiveGrid() = default;
@@ -72,6 +74,8 @@ class PrimitiveGrid {
   int ny() const { return ny_; }
   /// Primitive indices of cell (ix, iy): [begin, end) into indices().
   std::pair<const std::uint32_t*, const std::uint32_t*> cell_items(int ix, int iy) const;
+  /// Vertical extent (z_min, z_max) of each entry of cell_items, in the same order.
+  const std::array<float, 2>* cell_item_heights(int ix, int iy) const;
 
  private:
   Eigen::Vector2d min_ = Eigen::Vector2d::Zero();
@@ -79,6 +83,7 @@ class PrimitiveGrid {
   int nx_ = 0, ny_ = 0;
   std::vector<std::uint32_t> offsets_;
   std::vector<std::uint32_t> items_;
+  std::vector<std::array<float, 2>> item_heights_;
 };
 
 class World {
@@ -115,5 +120,7 @@ class World {
 
 /// xy bounding box of a primitive, as (min, max).
 std::pair<Eigen::Vector2d, Eigen::Vector2d> xy_bounds(const Shape& shape);
+/// Vertical extent of a primitive, as (z_min, z_max).
+std::pair<double, double> z_bounds(const Shape& shape);
 
 }  // namespace sextant::synth
