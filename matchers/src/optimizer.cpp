@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -111,7 +112,7 @@ class Loop {
     double lambda = -1.0;  // LM damping, reset per stage (the matrix scale changes with the layer)
     trust_ = 0.0;          // trust-region damping (relative to mean |diag H|), reset per stage
     for (int k = 0; k < budget; ++k) {
-      const ScoreEvaluation at = objective_.evaluate(stage, xi_, Derivatives::kHessian);
+      const ScoreEvaluation at = with_hessian(stage, xi_);
       if (at.matched < settings_.min_matched) return finish(Termination::kTooFewCorrespondences, stage);
       const Eigen::VectorXd g = mask_.vector(at.gradient);
       Eigen::VectorXd step;
@@ -143,8 +144,7 @@ class Loop {
           const Eigen::MatrixXd damped = JtJ + lambda * Eigen::MatrixXd::Identity(JtJ.rows(), JtJ.cols());
           step = -damped.ldlt().solve(0.5 * g);
           if (!step.allFinite()) return finish(Termination::kSolverFailure, stage);
-          const ScoreEvaluation trial =
-              objective_.evaluate(stage, xi_ + mask_.expand(step), Derivatives::kScore);
+          const ScoreEvaluation& trial = with_hessian(stage, xi_ + mask_.expand(step));
           if (trial.matched >= settings_.min_matched && trial.score < at.score) {
             accepted = true;
             score = trial.score;
@@ -173,12 +173,11 @@ class Loop {
   /// ×10 until the score drops (at most kMaxLmTries), then λ ÷ 10 for the next iteration. No
   /// decrease at any damping gives Δ = 0 (a minimum of this stage). False on a non-finite step.
   bool trust_region_step(int stage, const ScoreEvaluation& at, const Eigen::MatrixXd& H,
-                         const Eigen::VectorXd& g, double& lambda, Eigen::VectorXd& step,
-                         double& score) const {
+                         const Eigen::VectorXd& g, double& lambda, Eigen::VectorXd& step, double& score) {
     const double scale = H.diagonal().cwiseAbs().mean();
     for (int attempt = 0; attempt < kMaxLmTries; ++attempt) {
       if (!newton_step(H, g, lambda * scale, step)) return false;
-      const ScoreEvaluation trial = objective_.evaluate(stage, xi_ + mask_.expand(step), Derivatives::kScore);
+      const ScoreEvaluation& trial = with_hessian(stage, xi_ + mask_.expand(step));
       if (trial.matched >= settings_.min_matched && trial.score < at.score) {
         score = trial.score;
         lambda /= 10.0;
@@ -244,6 +243,18 @@ class Loop {
     return finish(out.converged ? Termination::kConverged : Termination::kMaxIterations, stage);
   }
 
+  /// The score with its derivatives at ξ, remembered: a damped step's trial, once accepted, is the
+  /// next iteration's linearisation point (and the final pose's Hessian), so the trial is evaluated
+  /// with its derivatives once instead of its score now and its derivatives again after.
+  const ScoreEvaluation& with_hessian(int stage, const Vector6d& xi) {
+    if (!(last_.stage == stage && last_.xi == xi)) {
+      last_.evaluation = objective_.evaluate(stage, xi, Derivatives::kHessian);
+      last_.stage = stage;
+      last_.xi = xi;
+    }
+    return last_.evaluation;
+  }
+
   void record(int stage, double score, double step_norm, std::size_t matched) {
     ++iterations_;
     IterationTrace row;
@@ -262,7 +273,7 @@ class Loop {
     result_.iterations = iterations_;
     result_.converged = why == Termination::kConverged;
     if (stage >= 0 && xi_.allFinite()) {
-      const ScoreEvaluation at = objective_.evaluate(stage, xi_, Derivatives::kHessian);
+      const ScoreEvaluation at = with_hessian(stage, xi_);
       result_.T = to_transform(xi_);
       result_.H = at.hessian;
       result_.score = at.score;
@@ -284,6 +295,11 @@ class Loop {
   Vector6d xi_ = Vector6d::Zero();
   int iterations_ = 0;
   double trust_ = 0.0;  ///< trust-region damping λ of the current stage
+  struct Evaluated {
+    int stage = -1;
+    Vector6d xi = Vector6d::Constant(std::numeric_limits<double>::quiet_NaN());
+    ScoreEvaluation evaluation;
+  } last_;  ///< the last with_hessian()
   RegistrationResult result_;
 };
 
