@@ -41,6 +41,19 @@ MetricStatus check_inputs(const Settings& settings, const PoseList& estimate, co
   return check_pair(estimate, reference, min_poses);
 }
 
+/// Per axis: the mean of `values` and its standard error (sample SD / √N; 0 for one value).
+void mean_and_standard_error(const std::vector<Eigen::Vector3d>& values, Eigen::Vector3d& mean,
+                             Eigen::Vector3d& standard_error) {
+  const auto n = static_cast<double>(values.size());
+  mean.setZero();
+  for (const Eigen::Vector3d& v : values) mean += v;
+  mean /= n;
+  Eigen::Vector3d squares = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& v : values) squares += (v - mean).cwiseAbs2();
+  standard_error.setZero();
+  if (values.size() > 1) standard_error = (squares / (n - 1.0) / n).cwiseSqrt();
+}
+
 /// E = (ref_i⁻¹ ref_j)⁻¹ (est_i⁻¹ est_j), the relative error used by RPE and KITTI.
 Eigen::Isometry3d relative_error(const PoseList& estimate, const PoseList& reference, std::size_t i,
                                  std::size_t j) {
@@ -234,13 +247,19 @@ RpeResult relative_pose_error(const PoseList& estimate, const PoseList& referenc
     r.status = failure("no pose pairs for this delta");
     return r;
   }
+  std::vector<Eigen::Vector3d> rotation_vectors, translations;
   for (const auto& [i, j] : r.pairs) {
     const Eigen::Isometry3d E = relative_error(estimate, reference, i, j);
     r.translation_errors.push_back(translation_norm(E));
     r.rotation_errors.push_back(rotation_angle(E));
+    const Eigen::AngleAxisd rotation(E.rotation());
+    rotation_vectors.push_back(rotation.angle() * rotation.axis());
+    translations.push_back(E.translation());
   }
   r.translation = summarize(r.translation_errors);
   r.rotation = summarize(r.rotation_errors);
+  mean_and_standard_error(rotation_vectors, r.mean_rotation_vector, r.rotation_vector_standard_error);
+  mean_and_standard_error(translations, r.mean_translation, r.translation_standard_error);
   return r;
 }
 

@@ -174,6 +174,38 @@ TEST(Rpe, ConstantStepErrorGivesConstantRelativeError) {
   EXPECT_FALSE(relative_pose_error(est, PoseList{}, s).status.ok);
 }
 
+// Every step pitched up by the same 0.1° is a bias many standard errors from 0; steps pitched up and
+// down by 0.1° in turn have the same unsigned RPE but no bias.
+TEST(Rpe, SignedMeanSeparatesABiasFromNoise) {
+  const double pitch = 0.1 * std::acos(-1.0) / 180.0;
+  for (const bool alternating : {false, true}) {
+    PoseList ref, est;
+    Eigen::Isometry3d r = Eigen::Isometry3d::Identity(), e = r;
+    for (int i = 0; i < 21; ++i) {
+      ref.push_back(r);
+      est.push_back(e);
+      const double sign = alternating && i % 2 == 1 ? -1.0 : 1.0;
+      r = r * at(1.0, 0.0);
+      e = e * at(1.0, 0.0) * Eigen::AngleAxisd(sign * pitch, Eigen::Vector3d::UnitY());
+    }
+    const RpeResult rpe = relative_pose_error(est, ref);
+    ASSERT_TRUE(rpe.status.ok);
+    ASSERT_EQ(rpe.pairs.size(), 20u);
+    EXPECT_NEAR(rpe.rotation.mean, pitch, 1e-12);  // the unsigned RPE cannot tell the two apart
+    EXPECT_NEAR(rpe.mean_rotation_vector.x(), 0.0, 1e-12);
+    EXPECT_NEAR(rpe.mean_rotation_vector.z(), 0.0, 1e-12);
+    EXPECT_NEAR(rpe.mean_translation.norm(), 0.0, 1e-12);
+    if (alternating) {
+      EXPECT_NEAR(rpe.mean_rotation_vector.y(), 0.0, 1e-12);
+      // SD of ±p over 20 pairs is p·√(20/19); its standard error that over √20.
+      EXPECT_NEAR(rpe.rotation_vector_standard_error.y(), pitch / std::sqrt(19.0), 1e-12);
+    } else {
+      EXPECT_NEAR(rpe.mean_rotation_vector.y(), pitch, 1e-12);
+      EXPECT_NEAR(rpe.rotation_vector_standard_error.y(), 0.0, 1e-12);
+    }
+  }
+}
+
 TEST(KittiDrift, ConstantScaleError) {
   // A straight 999 m line with 1 m spacing; the estimate is 2 % too long. The devkit's last frame
   // has dist > first + L, i.e. L + 1 steps later, so each segment's error is 0.02·(L + 1) / L.

@@ -73,6 +73,20 @@ Json stats_json(const SampleStats& s, double scale) {
           {"count", s.count}};
 }
 
+/// "x 0.002 ± 0.004, y 0.085 ± 0.006, z …" (scaled).
+std::string bias_text(const Eigen::Vector3d& mean, const Eigen::Vector3d& standard_error, double scale,
+                      int digits, const std::string& unit) {
+  std::string out;
+  for (int a = 0; a < 3; ++a)
+    out += std::string(a ? ", " : "") + "xyz"[a] + " " + fixed(mean(a) * scale, digits) + " ± " +
+           fixed(standard_error(a) * scale, digits) + unit;
+  return out;
+}
+
+Json vector_json(const Eigen::Vector3d& v, double scale) {
+  return Json::array({json_value(v.x() * scale), json_value(v.y() * scale), json_value(v.z() * scale)});
+}
+
 /// Top view of both trajectories, and the ATE's translation error along the reference's path.
 void write_plots(const fs::path& dir, const AssociatedPoses& pairs, const TrajectoryEvaluation& e) {
   TrajectoryPlot top;
@@ -138,6 +152,11 @@ int run_eval(const EvalOptions& o) {
                     {"ate_deg", stats_json(e.ate.rotation, deg)},
                     {"rpe_m", stats_json(e.rpe.translation, 1.0)},
                     {"rpe_deg", stats_json(e.rpe.rotation, deg)},
+                    {"rpe_bias",
+                     {{"rotation_deg", vector_json(e.rpe.mean_rotation_vector, deg)},
+                      {"rotation_deg_standard_error", vector_json(e.rpe.rotation_vector_standard_error, deg)},
+                      {"translation_m", vector_json(e.rpe.mean_translation, 1.0)},
+                      {"translation_m_standard_error", vector_json(e.rpe.translation_standard_error, 1.0)}}},
                     {"rpe_delta", json_value(o.delta)},
                     {"rpe_delta_unit", o.delta_unit},
                     {"wulf_position_m", json_value(e.wulf.position_rms)},
@@ -181,7 +200,12 @@ int run_eval(const EvalOptions& o) {
             << fixed(e.wulf.orientation_rms * deg, 3)
             << "°; Kümmerle (eq. 6.6, consecutive poses): translation "
             << fixed(e.kummerle.translation_rms, 3) << " m, rotation "
-            << fixed(e.kummerle.rotation_rms * deg, 3) << "°\n";
+            << fixed(e.kummerle.rotation_rms * deg, 3) << "°\n"
+            << "RPE bias per " << per
+            << " (signed mean ± standard error, in the first pose's frame): rotation "
+            << bias_text(e.rpe.mean_rotation_vector, e.rpe.rotation_vector_standard_error, deg, 4, "°")
+            << "; translation "
+            << bias_text(e.rpe.mean_translation, e.rpe.translation_standard_error, 1.0, 4, " m") << "\n";
   if (verbosity() == Verbosity::kVerbose) {
     std::cout << "\n| KITTI segment [m] | segments | drift [%] | [°/100 m] |\n|---|---|---|---|\n";
     for (const KittiSegmentDrift& d : e.drift.per_length)

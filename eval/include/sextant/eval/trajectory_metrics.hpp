@@ -114,6 +114,14 @@ struct RpeResult {
   SampleStats rotation;     ///< angle(E_ij) [rad]
   std::vector<double> translation_errors;
   std::vector<double> rotation_errors;
+  /// Signed mean of the pairs' errors E_ij in pose i's frame, with its standard error (SD / √N):
+  /// E_ij's rotation vector [rad] and translation [m]. A bias every step shares (each one pitched
+  /// up by the same small angle) lies many standard errors from 0, where the unsigned RPE above
+  /// cannot tell it from noise; it is what a drift is made of.
+  Eigen::Vector3d mean_rotation_vector = Eigen::Vector3d::Zero();
+  Eigen::Vector3d rotation_vector_standard_error = Eigen::Vector3d::Zero();
+  Eigen::Vector3d mean_translation = Eigen::Vector3d::Zero();
+  Eigen::Vector3d translation_standard_error = Eigen::Vector3d::Zero();
 };
 
 /// Pair indices as evo selects them (frames: (0,d), (d,2d), … or every (i, i+d); meters: path
