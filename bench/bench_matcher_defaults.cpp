@@ -53,9 +53,10 @@ int main(int argc, char** argv) {
           for (const auto& [label, sampling] : samplings) {
             std::string settings = "{solver: " + solver + ", layers: " + std::to_string(layers) +
                                    ", start_layer: " + std::to_string(start_layer);
-            if (truncated > 0)
-              settings +=
-                  ", max_distance: 16, unmatched_penalty: 16, truncated_layers: " + std::to_string(truncated);
+            // The library's defaults truncate: "off" has to say so.
+            settings += truncated > 0 ? ", max_distance: 16, unmatched_penalty: 16, truncated_layers: " +
+                                            std::to_string(truncated)
+                                      : std::string(", max_distance: .inf");
             settings += "}";
             const auto matcher = make_matcher("mlndt", YAML::Load(settings), "bench");
             const auto sampler = make_sampler(sampling, label == "gbs 0.5 m × 10"

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# The real-sequence half of the table behind the ML-NDT defaults (docs/matcher_defaults.md): `sextant
+# odometry` over the campus and both trustworthy MulRan stretches with the defaults and with one setting
+# changed at a time. Prints, per setting and sequence, the KITTI drift, the ATE, the untrusted steps and
+# the steps more than 1 m or 5° off the reference that say they are trusted (the issue's bar: none).
+#
+#   bench/sequence_settings.sh [build/experiments/sextant] [path/to/mulran_riverside02] [output folder]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+sextant=${1:-build/experiments/sextant}
+mulran=${2:-../shared/data/mulran_riverside02}
+out=${3:-$(mktemp -d)}
+mkdir -p "$out"
+[ -x "$sextant" ] || { echo "bench/sequence_settings.sh: no sextant at $sextant (build first)" >&2; exit 1; }
+[ -d "$mulran" ] || { echo "bench/sequence_settings.sh: no MulRan folder at $mulran" >&2; exit 1; }
+
+# label | the --config file's body (empty: the defaults)
+settings=(
+  "defaults|"
+  "truncation in the last 2 layers|matcher: {truncated_layers: 2}"
+  "5 layers|matcher: {layers: 5}"
+  "start layer 1|matcher: {start_layer: 1}"
+  "GBS 1 m cells, 10 points each|sampler: {max_per_cell: 10}"
+  "GBS 0.5 m cells|sampler: {cell_size: 0.5}"
+  "GBS 0.5 m cells, 10 points each|sampler: {cell_size: 0.5, max_per_cell: 10}"
+  "bounding box (bounds_quantile: 0)|matcher: {bounds_quantile: 0}"
+  "no precision stage|matcher: {precision_min_cell: 0}"
+)
+
+row() {  # row <label> <dir>
+  awk -F, -v label="$1" -v metrics="$(cat "$2/metrics.json")" '
+    NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
+    { if ($col["trust"] != "ok") ++untrusted
+      else if ($col["error_m"] != "" && ($col["error_m"] > 1.0 || $col["error_deg"] > 5.0)) ++wrong }
+    END {
+      estimate = metrics; sub(/.*"estimate": \{/, "", estimate); sub(/\}.*/, "", estimate)
+      drift = estimate; sub(/.*"drift_percent": /, "", drift); sub(/[,}].*/, "", drift)
+      ate = estimate; sub(/.*"ate_m": /, "", ate); sub(/[,}].*/, "", ate)
+      printf " %.2f %% / %.3f m / %d / %d |", drift, ate, untrusted, wrong }' "$2/steps.csv"
+}
+
+echo "| setting | campus: drift / ATE / untrusted / trusted but wrong | MulRan 0–107 | MulRan 116–165 |"
+echo "|---|---|---|---|"
+k=0
+for entry in "${settings[@]}"; do
+  label=${entry%%|*} body=${entry#*|}
+  k=$((k + 1))
+  config="$out/setting$k.yaml"
+  printf '%s\n' "$body" >"$config"
+  printf "| %s |" "$label"
+  for sequence in "campus|campus" "mulran0|$mulran --first 0 --scans 108" "mulran116|$mulran --first 116 --scans 50"; do
+    dir="$out/setting$k-${sequence%%|*}"
+    # shellcheck disable=SC2086  # the sequence is a folder and its options
+    if "$sextant" odometry ${sequence#*|} --config "$config" --out "$dir" --no-progress >"$dir.log" 2>&1; then
+      row "$label" "$dir"
+    else
+      printf " failed: see %s.log |" "$dir"
+    fi
+  done
+  echo
+done
+echo "(outputs in $out)"
