@@ -248,5 +248,32 @@ TEST(OdometryCli, QuietAndVerbose) {
         << verbose.output;
 }
 
+// The trust thresholds were measured with the defaults: a run outside them says so and names what
+// differs; a run with the defaults (or the same settings spelled out) does not.
+TEST(OdometryCli, SaysWhenTheTrustChecksRunOutsideTheirCalibration) {
+  TempDir tmp;
+  const std::string note = "the trust checks' thresholds were measured with the default settings";
+  const CliRun plain = run_cli("odometry campus --scans 3 --no-progress --out " + (tmp / "a").string());
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  EXPECT_EQ(plain.output.find(note), std::string::npos) << plain.output;
+  const auto with_config = [&](const std::string& name, const std::string& yaml) {
+    std::ofstream(tmp / (name + ".yaml")) << yaml;
+    return run_cli("odometry campus --scans 3 --no-progress --config " + (tmp / (name + ".yaml")).string() +
+                   " --out " + (tmp / name).string());
+  };
+  const CliRun spelled = with_config("spelled", "matcher: {layers: 4}\nsampler: {cell_size: 1}\n");
+  ASSERT_EQ(spelled.exit_code, 0) << spelled.output;
+  EXPECT_EQ(spelled.output.find(note), std::string::npos) << spelled.output;
+  const CliRun finer = with_config("finer", "matcher: {layers: 5}\nsampler: {cell_size: 0.5}\n");
+  ASSERT_EQ(finer.exit_code, 0) << finer.output;
+  EXPECT_NE(finer.output.find(note), std::string::npos) << finer.output;
+  EXPECT_NE(finer.output.find("matcher.layers 5"), std::string::npos) << finer.output;
+  EXPECT_NE(finer.output.find("sampler.cell_size 0.5"), std::string::npos) << finer.output;
+  const CliRun icp =
+      run_cli("odometry campus --scans 3 --no-progress --method icp_p2l --out " + (tmp / "icp").string());
+  ASSERT_EQ(icp.exit_code, 0) << icp.output;
+  EXPECT_NE(icp.output.find("(method icp_p2l)"), std::string::npos) << icp.output;
+}
+
 }  // namespace
 }  // namespace sextant

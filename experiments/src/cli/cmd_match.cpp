@@ -201,7 +201,7 @@ void print_trace(const RegistrationResult& r) {
 }
 
 void print_text(const MatchOptions& o, const PairMatch& m, const std::string& search,
-                const std::optional<PoseError>& error) {
+                const std::optional<PoseError>& error, const std::string& trust_note) {
   const RegistrationResult& r = m.result;
   if (verbosity() == Verbosity::kQuiet) {  // the transform alone, and why it is not trusted
     std::cout << std::setprecision(9);
@@ -231,8 +231,9 @@ void print_text(const MatchOptions& o, const PairMatch& m, const std::string& se
             << (r.quality.reason.empty() ? "" : " (" + r.quality.reason + ")") << "; overlap "
             << r.quality.overlap << ", weakest/strongest constraint " << r.quality.constraint_ratio
             << ", fit " << r.quality.fit_ratio << " x predicted\n"
-            << std::setprecision(4) << "time:        " << r.seconds << " s registration, "
-            << m.reference_seconds << " s reference model, " << m.sampling_seconds << " s sampling\n";
+            << (trust_note.empty() ? "" : "note:        " + trust_note + "\n") << std::setprecision(4)
+            << "time:        " << r.seconds << " s registration, " << m.reference_seconds
+            << " s reference model, " << m.sampling_seconds << " s sampling\n";
   if (error) std::cout << "error:       " << error->cm << " cm, " << error->deg << " deg (against --gt)\n";
   if (verbosity() == Verbosity::kVerbose) print_trace(r);
 }
@@ -280,7 +281,9 @@ int run_match(MatchOptions o) {
   if (o.json) {
     print_json(o, m, search, error);
   } else {
-    print_text(o, m, search, error);
+    print_text(o, m, search, error,
+               uncalibrated_trust_note(
+                   settings_off_the_defaults(o, resolved_settings(o, config, "matcher settings"))));
   }
   return m.result.quality.trusted() ? 0 : kExitUntrusted;  // not converged is not trusted either
 }

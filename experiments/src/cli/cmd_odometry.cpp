@@ -195,8 +195,11 @@ int run_odometry_command(const OdometryOptions& o) {
               << (s.map == OdometryMap::local_map ? " of " + std::to_string(s.local_map_scans) + " scans"
                                                   : "")
               << "\n";
-  if (!quiet)
+  if (!quiet) {
     for (const std::string& note : meta.notes) std::cout << "note:     " << note << "\n";
+    const std::string trust_note = uncalibrated_trust_note(settings_off_the_defaults(o, resolved));
+    if (!trust_note.empty()) std::cout << "note:     " << trust_note << "\n";
+  }
   std::cout << std::flush;
 
   const auto t0 = std::chrono::steady_clock::now();

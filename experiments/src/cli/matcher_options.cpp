@@ -17,6 +17,24 @@ bool ndt_family(const std::string& method) {
   return method == "mlndt" || method == "fbmlndt";
 }
 
+/// Appends "prefix.key value" for every scalar of `given` that `defaults` lacks or holds differently,
+/// and "prefix.key" for every key of `defaults` that `given` lacks.
+void differing_keys(const YAML::Node& given, const YAML::Node& defaults, const std::string& prefix,
+                    std::vector<std::string>& out) {
+  if (given.IsMap() && defaults.IsMap()) {
+    for (const auto& entry : given) {
+      const std::string key = entry.first.as<std::string>();
+      differing_keys(entry.second, defaults[key], prefix + "." + key, out);
+    }
+    for (const auto& entry : defaults)
+      if (!given[entry.first.as<std::string>()].IsDefined())
+        out.push_back(prefix + "." + entry.first.as<std::string>());
+    return;
+  }
+  if (!defaults.IsDefined() || YAML::Dump(given) != YAML::Dump(defaults))
+    out.push_back(prefix + " " + YAML::Dump(given));
+}
+
 }  // namespace
 
 MatcherConfig read_matcher_config(const MatcherOptions& o) {
@@ -68,6 +86,26 @@ YAML::Node resolved_settings(const MatcherOptions& o, const MatcherConfig& confi
     out["sampler"] = YAML::Clone(recording.resolved());
   }
   return out;
+}
+
+std::vector<std::string> settings_off_the_defaults(const MatcherOptions& o, const YAML::Node& resolved) {
+  const MatcherOptions plain;
+  if (o.method != plain.method) return {"method " + o.method};
+  const YAML::Node defaults = resolved_settings(plain, read_matcher_config(plain), "the defaults");
+  std::vector<std::string> out;
+  if (o.sampling != plain.sampling) out.push_back("sampling " + o.sampling);
+  differing_keys(resolved["matcher"], defaults["matcher"], "matcher", out);
+  if (o.sampling == plain.sampling) differing_keys(resolved["sampler"], defaults["sampler"], "sampler", out);
+  return out;
+}
+
+std::string uncalibrated_trust_note(const std::vector<std::string>& differences) {
+  if (differences.empty()) return "";
+  std::string list;
+  for (const std::string& d : differences) list += (list.empty() ? "" : ", ") + d;
+  return "the trust checks' thresholds were measured with the default settings; this run differs (" + list +
+         "), and outside the defaults some settings let wrong registrations pass as trusted "
+         "(docs/matcher_defaults.md, \"The choice\")";
 }
 
 std::string describe_matcher(const MatcherOptions& o) {
