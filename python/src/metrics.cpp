@@ -100,6 +100,17 @@ py::dict rpe(const py::object& reference, const py::object& estimate, double del
     p(static_cast<py::ssize_t>(k), 1) = static_cast<long long>(r.pairs[k].second);
   }
   d["pairs"] = pairs;
+  // The signed mean of E_ij per axis and its standard error (a bias every step shares).
+  const auto vec3 = [](const Eigen::Vector3d& v) {
+    py::array_t<double> a(3);
+    auto m = a.mutable_unchecked<1>();
+    for (int i = 0; i < 3; ++i) m(i) = v(i);
+    return a;
+  };
+  d["mean_rotation_vector"] = vec3(r.mean_rotation_vector);
+  d["rotation_vector_standard_error"] = vec3(r.rotation_vector_standard_error);
+  d["mean_translation"] = vec3(r.mean_translation);
+  d["translation_standard_error"] = vec3(r.translation_standard_error);
   return d;
 }
 
@@ -190,14 +201,18 @@ void bind_metrics(py::module_& m) {
       "statistics (count, mean, std, min, max, rms, median), translation_errors (per pose) and "
       "the alignment applied (rotation 3×3, translation 3, scale).",
       py::arg("reference"), py::arg("estimate"), py::arg("alignment") = "se3");
-  metrics.def("rpe", &rpe,
-              "Relative pose error (evo's evo_rpe): pairs (i, j) `delta` apart in 'frames' (default 1: "
-              "consecutive poses) or 'meters' along the reference; consecutive non-overlapping pairs, or a "
-              "pair from every pose with all_pairs=True (meters: accepted when |path − delta| ≤ tolerance). "
-              "E_ij = (ref_i⁻¹ ref_j)⁻¹ (est_i⁻¹ est_j); returns translation_rms (m), rotation_rms (rad), "
-              "statistics, per-pair errors and the pairs (K×2).",
-              py::arg("reference"), py::arg("estimate"), py::arg("delta") = 1.0, py::arg("unit") = "frames",
-              py::arg("all_pairs") = false, py::arg("tolerance") = 0.1);
+  metrics.def(
+      "rpe", &rpe,
+      "Relative pose error (evo's evo_rpe): pairs (i, j) `delta` apart in 'frames' (default 1: "
+      "consecutive poses) or 'meters' along the reference; consecutive non-overlapping pairs, or a "
+      "pair from every pose with all_pairs=True (meters: accepted when |path − delta| ≤ tolerance). "
+      "E_ij = (ref_i⁻¹ ref_j)⁻¹ (est_i⁻¹ est_j); returns translation_rms (m), rotation_rms (rad), "
+      "statistics, per-pair errors, the pairs (K×2), and per axis the signed mean of E_ij in pose "
+      "i's frame with its standard error: mean_rotation_vector (rad), rotation_vector_standard_error, "
+      "mean_translation (m), translation_standard_error (a bias every step shares lies many "
+      "standard errors from 0).",
+      py::arg("reference"), py::arg("estimate"), py::arg("delta") = 1.0, py::arg("unit") = "frames",
+      py::arg("all_pairs") = false, py::arg("tolerance") = 0.1);
   metrics.def(
       "kitti_drift", &kitti,
       "KITTI odometry devkit drift: for every `step`-th first frame and each length L, the first frame "

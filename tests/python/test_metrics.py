@@ -12,6 +12,24 @@ def straight_path(count, step=1.0, yaw_deg=0.0):
     return np.array([sextant.pose_to_matrix(step * k, 0, 0, 0, 0, yaw_deg, degrees=True) for k in range(count)])
 
 
+def test_rpe_signed_mean_tells_a_shared_bias_from_noise():
+    pitch = np.radians(0.1)
+    reference = straight_path(21)
+    for alternating in (False, True):
+        estimate = [np.eye(4)]
+        for k in range(20):
+            sign = -1.0 if alternating and k % 2 else 1.0
+            step = sextant.pose_to_matrix(1.0, 0, 0, 0, sign * pitch, 0)
+            estimate.append(estimate[-1] @ step)
+        rpe = metrics.rpe(reference, np.array(estimate))
+        assert rpe["rotation"]["mean"] == pytest.approx(pitch, abs=1e-12)  # the same unsigned error
+        expected = 0.0 if alternating else pitch
+        np.testing.assert_allclose(rpe["mean_rotation_vector"], [0.0, expected, 0.0], atol=1e-12)
+        assert rpe["rotation_vector_standard_error"][1] == pytest.approx(
+            pitch / np.sqrt(19) if alternating else 0.0, abs=1e-12)
+        np.testing.assert_allclose(rpe["mean_translation"], 0.0, atol=1e-12)
+
+
 def winding_path(count):
     """A path that turns and climbs, so that positions fix a rigid alignment."""
     return np.array([sextant.pose_to_matrix(3 * np.cos(k / 5), 2 * np.sin(k / 4), 0.1 * k, 0.02 * k, -0.01 * k,
