@@ -2,9 +2,10 @@
 # The real-sequence benchmark (issue 22): `sextant odometry` with no options over the built-in
 # campus and the two trustworthy stretches of the shared MulRan Riverside02 excerpt (0–107 and
 # 116–165; its reference is wrong in between, see ../shared/data/README.md), then the same scans
-# with PCL's GICP (`--method pcl_gicp --map scan --no-recover`: a plain GICP loop) as the baseline row. Prints one
-# table: ATE, RPE, KITTI drift, time per scan (wall: the whole run over its steps; registration: the
-# registrations' own seconds over the steps, which the parallel scan-to-scan path overlaps on
+# with PCL's GICP (`--method pcl_gicp --map scan --no-recover`: a plain GICP loop) as the baseline
+# row. Prints one table: ATE, RPE, KITTI drift, the signed mean pitch error per step with its
+# standard error (`sextant eval`), time per scan (wall: the whole run over its steps; registration:
+# the registrations' own seconds over the steps, which the parallel scan-to-scan path overlaps on
 # several cores) and the trust counts (untrusted steps, recovered steps).
 #
 #   bench/sequences.sh [build/experiments/sextant] [path/to/mulran_riverside02] [output folder]
@@ -33,24 +34,30 @@ run() {  # run <id> <label> <method> <dataset> [odometry options...]
   local dir="$out/$id-$method"
   "$sextant" odometry "$dataset" --method "$method" --out "$dir" --no-progress "$@" >"$dir.log" 2>&1 ||
     { echo "| $label | $method | failed: see $dir.log |"; return; }
-  local m="$dir/metrics.json" steps registration
+  local m="$dir/metrics.json" steps registration pitch
   steps=$(($(top "$m" scans) - 1))
   # The registrations' own seconds (steps.csv: registration, reference model, sampling; recoveries
   # included), without loading or generating the scans and building the local map.
   registration=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "seconds") c = i; next }
                          { s += $c } END { printf "%.6f", s }' "$dir/steps.csv")
+  # The RPE's signed mean pitch per step and its standard error (`sextant eval`): a drift made of one
+  # bias every step shares.
+  pitch=$("$sextant" eval "$dir/groundtruth.tum" "$dir/trajectory.tum" --json |
+          sed -E 's/.*"rotation_deg": \[[^,]*, ([^,]*),.*"rotation_deg_standard_error": \[[^,]*, ([^,]*),.*/\1 \2/')
   awk -v label="$label" -v method="$method" -v steps="$steps" -v secs="$(top "$m" seconds)" \
-      -v registration="$registration" \
+      -v registration="$registration" -v pitch="$pitch" \
       -v ate="$(field "$m" estimate ate_m)" -v rpe="$(field "$m" estimate rpe_m)" \
       -v rpedeg="$(field "$m" estimate rpe_deg)" -v drift="$(field "$m" estimate drift_percent)" \
       -v untrusted="$(top "$m" untrusted)" -v recovered="$(top "$m" recovered)" \
       -v nc="$(top "$m" not_converged)" 'BEGIN {
-        printf "| %s | %s | %.3f | %.3f / %.2f | %.2f | %.1f | %.1f | %d | %d | %d |\n", label, method, ate,
-               rpe, rpedeg, drift, 1000 * secs / steps, 1000 * registration / steps, nc, untrusted, recovered }'
+        split(pitch, p, " ")
+        printf "| %s | %s | %.3f | %.3f / %.2f | %.2f | %.3f ± %.3f | %.1f | %.1f | %d | %d | %d |\n", label, method,
+               ate, rpe, rpedeg, drift, p[1], p[2], 1000 * secs / steps, 1000 * registration / steps, nc, untrusted,
+               recovered }'
 }
 
-echo "| sequence | method | ATE [m] | RPE per step [m / °] | KITTI drift [%] | ms per scan | registration ms per scan | not converged | untrusted | recovered |"
-echo "|---|---|---|---|---|---|---|---|---|---|"
+echo "| sequence | method | ATE [m] | RPE per step [m / °] | KITTI drift [%] | pitch bias per step [°] | ms per scan | registration ms per scan | not converged | untrusted | recovered |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|"
 # The baseline is the peer as a plain GICP loop runs it: scan to scan, no recovery (its trust is
 # still counted).
 for method in mlndt pcl_gicp; do
