@@ -7,12 +7,8 @@
 #   bench/sequence_settings.sh [build/experiments/sextant] [path/to/mulran_riverside02] [output folder]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-sextant=${1:-build/experiments/sextant}
-mulran=${2:-../shared/data/mulran_riverside02}
-out=${3:-$(mktemp -d)}
-mkdir -p "$out"
-[ -x "$sextant" ] || { echo "bench/sequence_settings.sh: no sextant at $sextant (build first)" >&2; exit 1; }
-[ -d "$mulran" ] || { echo "bench/sequence_settings.sh: no MulRan folder at $mulran" >&2; exit 1; }
+# shellcheck source=bench/sequence_arguments.sh
+source bench/sequence_arguments.sh "$@"
 
 # label | the --config file's body (empty: the defaults)
 settings=(

@@ -13,12 +13,8 @@
 # Timings are single runs on whatever the machine is doing: run it on a quiet machine.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-sextant=${1:-build/experiments/sextant}
-mulran=${2:-../shared/data/mulran_riverside02}
-out=${3:-$(mktemp -d)}
-mkdir -p "$out"
-[ -x "$sextant" ] || { echo "bench/sequences.sh: no sextant at $sextant (build first)" >&2; exit 1; }
-[ -d "$mulran" ] || { echo "bench/sequences.sh: no MulRan folder at $mulran" >&2; exit 1; }
+# shellcheck source=bench/sequence_arguments.sh
+source bench/sequence_arguments.sh "$@"
 
 # json_field FILE KEY_PATH: a number from metrics.json (one line, known layout).
 field() {  # field <metrics.json> <section> <key>
