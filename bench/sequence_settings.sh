@@ -7,8 +7,8 @@
 #   bench/sequence_settings.sh [build/experiments/sextant] [path/to/mulran_riverside02] [output folder]
 set -euo pipefail
 cd "$(dirname "$0")/.."
-# shellcheck source=bench/sequence_arguments.sh
-source bench/sequence_arguments.sh "$@"
+# shellcheck source=bench/sequence_common.sh
+source bench/sequence_common.sh "$@"
 
 # label | the --config file's body (empty: the defaults)
 settings=(
@@ -23,16 +23,13 @@ settings=(
   "no precision stage|matcher: {precision_min_cell: 0}"
 )
 
-row() {  # row <label> <dir>
-  awk -F, -v label="$1" -v metrics="$(cat "$2/metrics.json")" '
+row() {  # row <dir>
+  awk -F, -v drift="$(field "$1/metrics.json" estimate drift_percent)" \
+      -v ate="$(field "$1/metrics.json" estimate ate_m)" '
     NR == 1 { for (i = 1; i <= NF; ++i) col[$i] = i; next }
     { if ($col["trust"] != "ok") ++untrusted
       else if ($col["error_m"] != "" && ($col["error_m"] > 1.0 || $col["error_deg"] > 5.0)) ++wrong }
-    END {
-      estimate = metrics; sub(/.*"estimate": \{/, "", estimate); sub(/\}.*/, "", estimate)
-      drift = estimate; sub(/.*"drift_percent": /, "", drift); sub(/[,}].*/, "", drift)
-      ate = estimate; sub(/.*"ate_m": /, "", ate); sub(/[,}].*/, "", ate)
-      printf " %.2f %% / %.3f m / %d / %d |", drift, ate, untrusted, wrong }' "$2/steps.csv"
+    END { printf " %.2f %% / %.3f m / %d / %d |", drift, ate, untrusted, wrong }' "$1/steps.csv"
 }
 
 echo "| setting | campus: drift / ATE / untrusted / trusted but wrong | MulRan 0–107 | MulRan 116–165 |"
@@ -48,7 +45,7 @@ for entry in "${settings[@]}"; do
     dir="$out/setting$k-${sequence%%|*}"
     # shellcheck disable=SC2086  # the sequence is a folder and its options
     if "$sextant" odometry ${sequence#*|} --config "$config" --out "$dir" --no-progress >"$dir.log" 2>&1; then
-      row "$label" "$dir"
+      row "$dir"
     else
       printf " failed: see %s.log |" "$dir"
     fi

@@ -13,16 +13,8 @@
 # Timings are single runs on whatever the machine is doing: run it on a quiet machine.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-# shellcheck source=bench/sequence_arguments.sh
-source bench/sequence_arguments.sh "$@"
-
-# json_field FILE KEY_PATH: a number from metrics.json (one line, known layout).
-field() {  # field <metrics.json> <section> <key>
-  sed -E "s/.*\"$2\": \{[^}]*\"$3\": ([-0-9.eE+]+|null).*/\1/" "$1"
-}
-top() {  # top <metrics.json> <key>
-  sed -E "s/.*\"$2\": ([-0-9.eE+]+|null).*/\1/" "$1"
-}
+# shellcheck source=bench/sequence_common.sh
+source bench/sequence_common.sh "$@"
 
 run() {  # run <id> <label> <method> <dataset> [odometry options...]
   local id=$1 label=$2 method=$3 dataset=$4

@@ -101,12 +101,7 @@ py::dict rpe(const py::object& reference, const py::object& estimate, double del
   }
   d["pairs"] = pairs;
   // The signed mean of E_ij per axis and its standard error (a bias every step shares).
-  const auto vec3 = [](const Eigen::Vector3d& v) {
-    py::array_t<double> a(3);
-    auto m = a.mutable_unchecked<1>();
-    for (int i = 0; i < 3; ++i) m(i) = v(i);
-    return a;
-  };
+  const auto vec3 = [](const Eigen::Vector3d& v) { return vector_array({v.x(), v.y(), v.z()}); };
   d["mean_rotation_vector"] = vec3(r.mean_rotation_vector);
   d["rotation_vector_standard_error"] = vec3(r.rotation_vector_standard_error);
   d["mean_translation"] = vec3(r.mean_translation);

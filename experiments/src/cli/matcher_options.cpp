@@ -93,9 +93,11 @@ std::vector<std::string> settings_off_the_defaults(const MatcherOptions& o, cons
   if (o.method != plain.method) return {"method " + o.method};
   const YAML::Node defaults = resolved_settings(plain, read_matcher_config(plain), "the defaults");
   std::vector<std::string> out;
-  if (o.sampling != plain.sampling) out.push_back("sampling " + o.sampling);
   differing_keys(resolved["matcher"], defaults["matcher"], "matcher", out);
-  if (o.sampling == plain.sampling) differing_keys(resolved["sampler"], defaults["sampler"], "sampler", out);
+  if (o.sampling != plain.sampling)
+    out.push_back("sampling " + o.sampling);  // another sampler: its settings compare with nothing
+  else
+    differing_keys(resolved["sampler"], defaults["sampler"], "sampler", out);
   return out;
 }
 
