@@ -12,23 +12,25 @@
 namespace sextant::mlndt_detail {
 
 /// Grids first..end of `grids` as stages; the terms of grids from `first_truncated` on are
-/// truncated at τ = max_distance; stage k is labelled label_offset + first + k + 1 in traces.
+/// truncated at τ = max_distance; stage k is labelled label_offset + first + k + 1 in traces. Every
+/// evaluation runs on `threads` (the registration's, MlndtMatcher's).
 class LayerObjective final : public StagedObjective {
  public:
   LayerObjective(const std::vector<NdtGrid>& grids, int first, int first_truncated, int label_offset,
-                 const MlndtSettings& settings, const PointCloud& input)
+                 const MlndtSettings& settings, const PointCloud& input, const ScoreThreads& threads)
       : layers_(grids),
         first_(first),
         label_offset_(label_offset),
         penalty_(settings.unmatched_penalty),
         max_distance_(settings.max_distance),
         first_truncated_(first_truncated),
-        threads_(settings.threads),
+        threads_(threads),
         input_(input) {}
   /// The pyramid of `settings` from its start layer.
-  LayerObjective(const std::vector<NdtGrid>& layers, const MlndtSettings& settings, const PointCloud& input)
+  LayerObjective(const std::vector<NdtGrid>& layers, const MlndtSettings& settings, const PointCloud& input,
+                 const ScoreThreads& threads)
       : LayerObjective(layers, settings.start_layer - 1, settings.pyramid.layers - settings.truncated_layers,
-                       0, settings, input) {}
+                       0, settings, input, threads) {}
   int stages() const override { return static_cast<int>(layers_.size()) - first_; }
   int stage_label(int stage) const override { return label_offset_ + first_ + stage + 1; }
   ScoreEvaluation evaluate(int stage, const Vector6d& xi, Derivatives d) const override {
@@ -62,8 +64,8 @@ class LayerObjective final : public StagedObjective {
   int label_offset_;
   double penalty_;
   double max_distance_;
-  int first_truncated_;   ///< index of the first grid with truncated terms
-  ScoreThreads threads_;  ///< one TBB arena for all evaluations of the registration
+  int first_truncated_;  ///< index of the first grid with truncated terms
+  const ScoreThreads& threads_;
   const PointCloud& input_;
 };
 
@@ -71,19 +73,25 @@ class LayerObjective final : public StagedObjective {
 /// (3.11) over overlapping grids of one edge, shifted against each other by half a cell (Biber and
 /// Straßer's overlapping grids, reduced to the diagonal shift): no cell boundary of one grid is one
 /// of the other, so a point that crosses a boundary changes only half of its terms. Derivatives sum
-/// with the scores (eqs. 3.17, 3.18); matched and rejected are means over the grids. Ceres'
-/// residuals are per grid: with solver ceres the stage refines on the first (aligned) grid only.
+/// with the scores (eqs. 3.17, 3.18); matched and rejected are means over the grids. The grids are
+/// evaluated side by side on `threads` and summed in grid order (the same sums for any thread count).
+/// Ceres' residuals are per grid: with solver ceres the stage refines on the first (aligned) grid only.
 class OverlappingGridsObjective final : public StagedObjective {
  public:
   OverlappingGridsObjective(const std::vector<NdtGrid>& grids, int label, const MlndtSettings& settings,
-                            const PointCloud& input)
-      : each_(grids, 0, 0, 0, settings, input), grids_(static_cast<int>(grids.size())), label_(label) {}
+                            const PointCloud& input, const ScoreThreads& threads)
+      : each_(grids, 0, 0, 0, settings, input, threads),
+        grids_(static_cast<int>(grids.size())),
+        label_(label),
+        threads_(threads) {}
   int stages() const override { return 1; }
   int stage_label(int /*stage*/) const override { return label_; }
   ScoreEvaluation evaluate(int /*stage*/, const Vector6d& xi, Derivatives d) const override {
+    std::vector<ScoreEvaluation> each(static_cast<std::size_t>(grids_));
+    threads_.for_each(each.size(),
+                      [&](std::size_t g) { each[g] = each_.evaluate(static_cast<int>(g), xi, d); });
     ScoreEvaluation sum;
-    for (int g = 0; g < grids_; ++g) {
-      const ScoreEvaluation e = each_.evaluate(g, xi, d);
+    for (const ScoreEvaluation& e : each) {
       sum.score += e.score;
       sum.gradient += e.gradient;
       sum.hessian += e.hessian;
@@ -108,6 +116,7 @@ class OverlappingGridsObjective final : public StagedObjective {
   LayerObjective each_;  ///< grid g is its stage g, every one truncated
   int grids_;
   int label_;
+  const ScoreThreads& threads_;
 };
 
 }  // namespace sextant::mlndt_detail

@@ -92,7 +92,8 @@ std::size_t wide_basin_layer(const std::vector<NdtGrid>& layers, double min_edge
 
 std::vector<Eigen::Isometry3d> wide_basin_starts(const std::vector<NdtGrid>& layers, const PointCloud& input,
                                                  const Eigen::Isometry3d& initial,
-                                                 const WideBasinSettings& settings) {
+                                                 const WideBasinSettings& settings,
+                                                 const ScoreThreads& threads) {
   std::vector<Eigen::Isometry3d> starts{initial};
   if (layers.empty() || input.empty()) return starts;
   const NdtGrid& grid = layers[wide_basin_layer(layers, 2.0 * settings.translation_step)];
@@ -114,17 +115,18 @@ std::vector<Eigen::Isometry3d> wide_basin_starts(const std::vector<NdtGrid>& lay
     const double yaw = k * settings.yaw_step_deg;
     if (yaw <= -180.0 + 1e-9 && yaws * settings.yaw_step_deg >= 180.0 - 1e-9) continue;  // = +180°
     for (int i = -side; i <= side; ++i)
-      for (int j = -side; j <= side; ++j) {
-        Hypothesis h{0.0, k, i, j};
-        h.score = truncated_score(grid, first_sample, pose_of(h), settings.max_distance);
-        all.push_back(h);
-      }
+      for (int j = -side; j <= side; ++j) all.push_back(Hypothesis{0.0, k, i, j});
   }
-  sort_best_first(all);
+  const auto score_all = [&](const PointCloud& points) {
+    threads.for_each(all.size(), [&](std::size_t h) {
+      all[h].score = truncated_score(grid, points, pose_of(all[h]), settings.max_distance);
+    });
+    sort_best_first(all);
+  };
+  score_all(first_sample);
   if (prescreen) {
     all.resize(std::min(all.size(), static_cast<std::size_t>(settings.prescreen_keep)));
-    for (Hypothesis& h : all) h.score = truncated_score(grid, sample, pose_of(h), settings.max_distance);
-    sort_best_first(all);
+    score_all(sample);
   }
   // Keep hypotheses more than one grid step (in yaw or x or y) from every kept one.
   std::vector<Hypothesis> kept;

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <memory>
 
 #include "layer_objective.hpp"
 
@@ -44,14 +45,35 @@ bool MlndtSettings::valid(std::string* why) const {
   return problem == nullptr;
 }
 
-MlndtMatcher::MlndtMatcher(MlndtSettings settings) : settings_(std::move(settings)) {}
+MlndtMatcher::MlndtMatcher(MlndtSettings settings)
+    : settings_(std::move(settings)), threads_(std::make_unique<ScoreThreads>(settings_.threads)) {}
 
 void MlndtMatcher::set_reference(const PointCloud& reference) {
-  layers_ = build_layer_pyramid(reference, settings_.pyramid);  // splitting and generative processes
+  // Splitting and generative processes. The precision grids lie over layer n's box, which only needs
+  // the reference's robust box: the pyramid and the first pair of precision grids are built side by side.
+  const LayerPyramidSettings& pyramid = settings_.pyramid;
+  const Bounds box = robust_bounds(reference, pyramid.bounds_quantile);
+  const LayerGeometry last = layer_geometry(box, pyramid.division, pyramid.layers);
+  const PrecisionFrame frame{box.min.cast<double>(), last.cell_edge, last.dims};
+  const std::vector<double> edges = precision_edges(last.cell_edge, settings_.precision);
+  std::vector<NdtGrid> pair(2);
+  const auto build_pair = [&](std::size_t task, double edge) {
+    pair[task] = precision_grid(reference, frame, edge, task == 0 ? 0.0 : 0.5, pyramid.cells);
+  };
+  threads_->for_each(edges.empty() ? 1 : 3, [&](std::size_t task) {
+    if (task == 0)
+      layers_ = build_layer_pyramid(reference, pyramid, box);
+    else
+      build_pair(task - 1, edges.front());
+  });
   precision_.clear();
-  if (!layers_.empty())
-    precision_ =
-        build_precision_layers(reference, layers_.back(), settings_.precision, settings_.pyramid.cells);
+  for (std::size_t e = 0; e < edges.size() && !layers_.empty(); ++e) {
+    if (e > 0) threads_->for_each(2, [&](std::size_t task) { build_pair(task, edges[e]); });
+    if (precision_pair_usable(pair[0], pair[1], layers_.back(), settings_.precision)) {
+      precision_ = std::move(pair);
+      break;
+    }
+  }
   reference_points_ = reference.size();
 }
 
@@ -60,38 +82,47 @@ RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Iso
     return not_started(
         layers_.empty() ? Termination::kEmptyInput : empty_model_reason(reference_points_, layers_.back()),
         input.size(), initial);
-  const LayerObjective objective(layers_, settings_, input);
+  const LayerObjective objective(layers_, settings_, input, *threads_);
+  const auto start = std::chrono::steady_clock::now();
+  const auto since_start = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
   if (!settings_.wide_basin.enabled) {
     if (!settings_.refine_first || settings_.start_layer == settings_.pyramid.layers)
       return refine(input, optimize(objective, initial, settings_.optimizer));
     MlndtSettings last_layer = settings_;
     last_layer.start_layer = settings_.pyramid.layers;
-    RegistrationResult refined =
-        optimize(LayerObjective(layers_, last_layer, input), initial, settings_.optimizer);
-    RegistrationResult full = optimize(objective, initial, settings_.optimizer);
+    const LayerObjective last_only(layers_, last_layer, input, *threads_);
+    // The last layer alone and the pyramid from the start layer, side by side.
+    RegistrationResult refined, full;
+    threads_->for_each(2, [&](std::size_t run) {
+      (run == 0 ? refined : full) = optimize(run == 0 ? last_only : objective, initial, settings_.optimizer);
+    });
     // Same input, same last layer: the final scores compare directly (as the wide basin's do).
-    const double seconds = refined.seconds + full.seconds;
     const bool refined_usable =
         refined.why == Termination::kConverged || refined.why == Termination::kMaxIterations;
     RegistrationResult best =
         refined_usable && refined.score < full.score ? std::move(refined) : std::move(full);
-    best.seconds = seconds;
+    best.seconds = since_start();
     return refine(input, std::move(best));
   }
   // Wide basin: refine the initial guess and the best coarse-layer hypotheses; keep the lowest
-  // final score (same input, same last layer, so the scores compare directly).
-  const auto start = std::chrono::steady_clock::now();
+  // final score (same input, same last layer, so the scores compare directly), the first of equals.
+  const std::vector<Eigen::Isometry3d> starts =
+      wide_basin_starts(layers_, input, initial, settings_.wide_basin, *threads_);
+  std::vector<RegistrationResult> runs(starts.size());
+  threads_->for_each(starts.size(),
+                     [&](std::size_t k) { runs[k] = optimize(objective, starts[k], settings_.optimizer); });
   RegistrationResult best;
   bool have = false;
-  for (const Eigen::Isometry3d& from : wide_basin_starts(layers_, input, initial, settings_.wide_basin)) {
-    RegistrationResult r = optimize(objective, from, settings_.optimizer);
+  for (RegistrationResult& r : runs) {
     const bool usable = r.why == Termination::kConverged || r.why == Termination::kMaxIterations;
     if (!have || (usable && r.score < best.score)) {
       best = std::move(r);
       have = usable;
     }
   }
-  best.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  best.seconds = since_start();
   return refine(input, std::move(best));
 }
 

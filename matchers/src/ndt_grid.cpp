@@ -324,7 +324,11 @@ Bounds robust_bounds(const PointCloud& cloud, double quantile) {
 }
 
 std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const LayerPyramidSettings& settings) {
-  const Bounds bounds = robust_bounds(reference, settings.bounds_quantile);
+  return build_layer_pyramid(reference, settings, robust_bounds(reference, settings.bounds_quantile));
+}
+
+std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const LayerPyramidSettings& settings,
+                                         const Bounds& bounds) {
   const Eigen::Vector3d origin = bounds.min.cast<double>();
   const auto n = static_cast<std::size_t>(std::max(settings.layers, 0));
   std::vector<LayerGeometry> g;

@@ -21,43 +21,26 @@ bool PrecisionSettings::valid(std::string* why) const {
   return problem == nullptr;
 }
 
-namespace {
+std::vector<double> precision_edges(double last_edge, const PrecisionSettings& settings) {
+  if (!settings.enabled() || !(last_edge > 0.0)) return {};
+  const double finer = std::min(last_edge, std::max(0.5 * last_edge, settings.min_cell));
+  if (finer < last_edge) return {finer, last_edge};
+  return {last_edge};
+}
 
-/// The grid of edge `edge` over the last layer's box, its origin moved by `shift`·edge along every axis.
-NdtGrid precision_grid(const PointCloud& reference, const NdtGrid& last_layer, double edge, double shift,
+NdtGrid precision_grid(const PointCloud& reference, const PrecisionFrame& frame, double edge, double shift,
                        const CellStatsSettings& cells) {
   Eigen::Vector3i dims;
   for (int a = 0; a < 3; ++a)  // one cell more: the shifted grid starts half a cell before the box
-    dims(a) = static_cast<int>(std::ceil(last_layer.dims()(a) * last_layer.cell_edge() / edge - 1e-9)) + 1;
-  return NdtGrid::build(reference, last_layer.origin() - Eigen::Vector3d::Constant(shift * edge), edge, dims,
-                        cells);
+    dims(a) = static_cast<int>(std::ceil(frame.last_dims(a) * frame.last_edge / edge - 1e-9)) + 1;
+  return NdtGrid::build(reference, frame.origin - Eigen::Vector3d::Constant(shift * edge), edge, dims, cells);
 }
 
-}  // namespace
-
-std::vector<NdtGrid> build_precision_layers(const PointCloud& reference, const NdtGrid& last_layer,
-                                            const PrecisionSettings& settings,
-                                            const CellStatsSettings& cells) {
-  std::vector<NdtGrid> grids;
-  if (!settings.enabled() || last_layer.empty() || last_layer.modelled_points() == 0) return grids;
-  const double last = last_layer.cell_edge();
+bool precision_pair_usable(const NdtGrid& aligned, const NdtGrid& shifted, const NdtGrid& last_layer,
+                           const PrecisionSettings& settings) {
   const double modelled = static_cast<double>(last_layer.modelled_points());
-  const auto models_enough = [&](const NdtGrid& g) {
-    return !g.empty() && static_cast<double>(g.modelled_points()) >= settings.min_coverage * modelled;
-  };
-  // Layer n + 1's edge, never below the metric floor; the last layer's own edge when that floor is
-  // above it or when the finer cells model too little of the reference.
-  const double finer = std::min(last, std::max(0.5 * last, settings.min_cell));
-  for (const double edge : {finer, last}) {
-    NdtGrid aligned = precision_grid(reference, last_layer, edge, 0.0, cells);
-    if (!models_enough(aligned)) continue;
-    NdtGrid shifted = precision_grid(reference, last_layer, edge, 0.5, cells);
-    if (shifted.empty()) continue;
-    grids.push_back(std::move(aligned));
-    grids.push_back(std::move(shifted));
-    break;
-  }
-  return grids;
+  return !aligned.empty() && !shifted.empty() && modelled > 0.0 &&
+         static_cast<double>(aligned.modelled_points()) >= settings.min_coverage * modelled;
 }
 
 RegistrationResult MlndtMatcher::refine(const PointCloud& input, RegistrationResult coarse) const {
@@ -65,15 +48,15 @@ RegistrationResult MlndtMatcher::refine(const PointCloud& input, RegistrationRes
   if (precision_.empty() || !usable) return coarse;
   const int n = settings_.pyramid.layers;
   // Both grids' truncated scores summed (eq. 3.11 over each); the trace labels the stage n + 1.
-  const mlndt_detail::OverlappingGridsObjective fine(precision_, n + 1, settings_, input);
+  const mlndt_detail::OverlappingGridsObjective fine(precision_, n + 1, settings_, input, *threads_);
   RegistrationResult r = optimize(fine, coarse.T, settings_.optimizer);
   coarse.seconds += r.seconds;
   if (r.why != Termination::kConverged) return coarse;  // the pyramid's pose stands
   // Overlap and fit stay those of the last layer, at the refined pose: the trust checks
   // (registration_quality.hpp) were measured there. The Hessian is the finest grid's, whose
   // minimum the pose is (R = H⁻¹, eq. 3.50).
-  const mlndt_detail::LayerObjective last(layers_, n - 1, n - settings_.truncated_layers, 0, settings_,
-                                          input);
+  const mlndt_detail::LayerObjective last(layers_, n - 1, n - settings_.truncated_layers, 0, settings_, input,
+                                          *threads_);
   const ScoreEvaluation at = last.evaluate(0, to_pose6(r.T).vector(), Derivatives::kScore);
   coarse.T = r.T;
   coarse.H = r.H;

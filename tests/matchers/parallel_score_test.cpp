@@ -224,6 +224,36 @@ TEST(ParallelScore, MlndtRegistrationIsBitIdenticalForOneAndFourThreads) {
     for (int j = 0; j < 6; ++j) EXPECT_EQ(results[0].H(i, j), results[1].H(i, j)) << i << "," << j;
 }
 
+// The parts that run side by side when a registration has threads — the pyramid beside the precision
+// grids, the wide basin's hypotheses and its starts, refine_first's two runs and the precision
+// stage's two grids — give the same model and the same bits as one thread, from a guess the wide
+// basin has to correct (0.8 m and 8° off).
+TEST(ParallelScore, WideBasinRegistrationIsBitIdenticalForOneAndTwoThreads) {
+  const VelodynePair& p = velodyne();
+  const Eigen::Isometry3d guess = p.truth * to_isometry(Pose6{0.8, -0.5, 0.0, 0.0, 0.0, 0.14});
+  std::vector<RegistrationResult> results;
+  std::vector<std::vector<std::size_t>> modelled;
+  for (const int threads : {1, 2}) {
+    MlndtSettings settings;
+    settings.wide_basin.enabled = true;
+    settings.threads = threads;
+    MlndtMatcher matcher(settings);
+    matcher.set_reference(p.ref);
+    modelled.emplace_back();
+    for (const NdtGrid& g : matcher.layers()) modelled.back().push_back(g.modelled_points());
+    for (const NdtGrid& g : matcher.precision_layers()) modelled.back().push_back(g.modelled_points());
+    results.push_back(matcher.align(p.in, guess));
+  }
+  ASSERT_EQ(modelled[0].size(), 4u + 2u) << "four layers and the precision stage's two grids";
+  EXPECT_EQ(modelled[0], modelled[1]);
+  ASSERT_TRUE(results[0].converged) << results[0].summary();
+  EXPECT_LT((results[0].T.translation() - p.truth.translation()).norm(), 0.1) << "the wide basin recovers";
+  expect_identical(results[0].T, results[1].T, "wide basin");
+  EXPECT_EQ(results[0].iterations, results[1].iterations);
+  EXPECT_EQ(results[0].score, results[1].score);
+  EXPECT_EQ(results[0].matched_points, results[1].matched_points);
+}
+
 // The whole registration with `threads: 0` (all TBB allows) under a process-wide TBB limit of one
 // and of two threads (tbb::global_control), with the library's default preset: the same bits.
 TEST(ParallelScore, MlndtRegistrationIsBitIdenticalUnderTbbLimitsOneAndTwo) {

@@ -18,16 +18,18 @@ bool ndt_family(const std::string& method) {
 }
 
 /// Appends "prefix.key value" for every scalar of `given` that `defaults` lacks or holds differently,
-/// and "prefix.key" for every key of `defaults` that `given` lacks.
+/// and "prefix.key" for every key of `defaults` that `given` lacks. `threads` never changes a result
+/// (mlndt_matcher.hpp): it is not compared.
 void differing_keys(const YAML::Node& given, const YAML::Node& defaults, const std::string& prefix,
                     std::vector<std::string>& out) {
   if (given.IsMap() && defaults.IsMap()) {
     for (const auto& entry : given) {
       const std::string key = entry.first.as<std::string>();
+      if (key == "threads") continue;
       differing_keys(entry.second, defaults[key], prefix + "." + key, out);
     }
     for (const auto& entry : defaults)
-      if (!given[entry.first.as<std::string>()].IsDefined())
+      if (entry.first.as<std::string>() != "threads" && !given[entry.first.as<std::string>()].IsDefined())
         out.push_back(prefix + "." + entry.first.as<std::string>());
     return;
   }

@@ -22,6 +22,7 @@
 
 #include "sextant/core/point_cloud.hpp"
 #include "sextant/matchers/ndt_grid.hpp"
+#include "sextant/matchers/ndt_score.hpp"
 
 namespace sextant {
 
@@ -48,9 +49,11 @@ struct WideBasinSettings {
 std::size_t wide_basin_layer(const std::vector<NdtGrid>& layers, double min_edge);
 
 /// Starting poses for the refinement, best first: the initial guess, then up to `candidates`
-/// mutually distinct hypotheses in order of score.
+/// mutually distinct hypotheses in order of score. The hypotheses are scored side by side on
+/// `threads` (the same starts for any thread count).
 std::vector<Eigen::Isometry3d> wide_basin_starts(const std::vector<NdtGrid>& layers, const PointCloud& input,
                                                  const Eigen::Isometry3d& initial,
-                                                 const WideBasinSettings& settings);
+                                                 const WideBasinSettings& settings,
+                                                 const ScoreThreads& threads = ScoreThreads());
 
 }  // namespace sextant

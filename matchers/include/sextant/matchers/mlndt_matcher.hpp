@@ -15,6 +15,7 @@
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/mlndt_global_init.hpp"
 #include "sextant/matchers/ndt_grid.hpp"
+#include "sextant/matchers/ndt_score.hpp"
 #include "sextant/matchers/optimizer.hpp"
 #include "sextant/matchers/precision_stage.hpp"
 
@@ -34,10 +35,12 @@ struct MlndtSettings {
   /// The truncation applies in the finest `truncated_layers` layers only: coarse layers keep
   /// the plain sum, whose long tails give ML-NDT its capture range [count, 0..n]
   int truncated_layers = 1;
-  /// Threads of each score evaluation (newton and lm; a Ceres solve stays single-threaded):
-  /// 1 runs on the calling thread, 0 uses all hardware threads. The score is summed in fixed
-  /// blocks added in a fixed order (ndt_score.hpp), so the registration is bit-identical for
-  /// every value [count, ≥ 0]
+  /// Threads of one registration: the reference model's grids (the pyramid beside the precision
+  /// grids), refine_first's two runs, the wide basin's hypotheses and starts, and each score
+  /// evaluation (newton and lm; a Ceres solve stays single-threaded). 1 runs on the calling thread,
+  /// 0 uses all the threads TBB allows (`sextant --jobs`). The parallel parts compute what the
+  /// serial ones do and choose in the same order, and scores are summed in fixed blocks added in a
+  /// fixed order (ndt_score.hpp), so the registration is bit-identical for every value [count, ≥ 0]
   int threads = 1;
   OptimizerSettings optimizer;  ///< solver (LM), iterations per layer (3), cap (50), ε, DOF mask
   /// Off by default: hypotheses over yaw × x/y scored at a coarse layer, the best refined
@@ -75,6 +78,7 @@ class MlndtMatcher final : public Matcher {
   RegistrationResult refine(const PointCloud& input, RegistrationResult coarse) const;
 
   MlndtSettings settings_;
+  std::unique_ptr<ScoreThreads> threads_;  ///< settings_.threads, for every registration of this matcher
   std::vector<NdtGrid> layers_;
   std::vector<NdtGrid> precision_;
   std::size_t reference_points_ = 0;

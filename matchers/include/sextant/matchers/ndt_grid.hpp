@@ -88,7 +88,7 @@ class NdtGrid {
 
  private:
   friend std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference,
-                                                  const LayerPyramidSettings& settings);
+                                                  const LayerPyramidSettings& settings, const Bounds& box);
   /// Geometry and an empty index; false (an empty grid) for a bad geometry or too many cells.
   bool init(const Eigen::Vector3d& origin, double cell_edge, const Eigen::Vector3i& dims,
             std::size_t max_cells);
@@ -157,5 +157,8 @@ Termination empty_model_reason(std::size_t reference_points, const NdtGrid& grid
 /// and every coarser layer sums its 2 × 2 × 2 children, with edges exactly 2^(n−i) × layer n's
 /// (layer_geometry's to rounding). Otherwise every layer is split from the points.
 std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const LayerPyramidSettings& settings);
+/// The same over `box`, robust_bounds(reference, settings.bounds_quantile) computed by the caller.
+std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const LayerPyramidSettings& settings,
+                                         const Bounds& box);
 
 }  // namespace sextant

@@ -27,6 +27,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "sextant/core/point_cloud.hpp"
 #include "sextant/matchers/ndt_grid.hpp"
 
@@ -46,11 +48,27 @@ struct PrecisionSettings {
   bool valid(std::string* why) const;
 };
 
-/// The precision stage's two grids for `reference`: aligned with `last_layer`'s origin, then shifted
-/// by half a cell along every axis, both over the last layer's box (plus one cell). Empty when the
-/// stage is off, the last layer is empty, or no grid can be built (NdtGrid::build's cell cap).
-std::vector<NdtGrid> build_precision_layers(const PointCloud& reference, const NdtGrid& last_layer,
-                                            const PrecisionSettings& settings,
-                                            const CellStatsSettings& cells);
+/// Where the precision grids lie: layer n's origin, edge and cells (build_layer_pyramid's last layer).
+struct PrecisionFrame {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  double last_edge = 0.0;
+  Eigen::Vector3i last_dims = Eigen::Vector3i::Zero();
+};
+
+/// The edges to try, finest first: layer n + 1's (half the last layer's) but never below
+/// `min_cell`, then the last layer's own; just the last layer's when the floor is above half of it;
+/// none when the stage is off.
+std::vector<double> precision_edges(double last_edge, const PrecisionSettings& settings);
+
+/// One precision grid of edge `edge` over the frame's box plus one cell, its origin moved by
+/// `shift`·edge along every axis (0: aligned, 0.5: the shifted copy).
+NdtGrid precision_grid(const PointCloud& reference, const PrecisionFrame& frame, double edge, double shift,
+                       const CellStatsSettings& cells);
+
+/// Whether an (aligned, shifted) pair of one edge serves (MlndtMatcher::set_reference takes the first
+/// edge whose pair does, and builds the first pair beside the pyramid): both hold Gaussians, and the aligned
+/// one's model at least `min_coverage` of the reference points the last layer's Gaussians model.
+bool precision_pair_usable(const NdtGrid& aligned, const NdtGrid& shifted, const NdtGrid& last_layer,
+                           const PrecisionSettings& settings);
 
 }  // namespace sextant
