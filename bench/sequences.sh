@@ -16,12 +16,12 @@ cd "$(dirname "$0")/.."
 # shellcheck source=bench/sequence_common.sh
 source bench/sequence_common.sh "$@"
 
-run() {  # run <id> <label> <method> <dataset> [odometry options...]
-  local id=$1 label=$2 method=$3 dataset=$4
-  shift 4
-  local dir="$out/$id-$method"
+run() {  # run <id> <label> <row> <method> <dataset> [odometry options...]
+  local id=$1 label=$2 row=$3 method=$4 dataset=$5
+  shift 5
+  local dir="$out/$id-${row// /_}"
   "$sextant" odometry "$dataset" --method "$method" --out "$dir" --no-progress "$@" >"$dir.log" 2>&1 ||
-    { echo "| $label | $method | failed: see $dir.log |"; return; }
+    { echo "| $label | $row | failed: see $dir.log |"; return; }
   local m="$dir/metrics.json" steps registration pitch
   steps=$(($(top "$m" scans) - 1))
   # The registrations' own seconds (steps.csv: registration, reference model, sampling; recoveries
@@ -32,7 +32,7 @@ run() {  # run <id> <label> <method> <dataset> [odometry options...]
   # bias every step shares.
   pitch=$("$sextant" eval "$dir/groundtruth.tum" "$dir/trajectory.tum" --json |
           sed -E 's/.*"rotation_deg": \[[^,]*, ([^,]*),.*"rotation_deg_standard_error": \[[^,]*, ([^,]*),.*/\1 \2/')
-  awk -v label="$label" -v method="$method" -v steps="$steps" -v secs="$(top "$m" seconds)" \
+  awk -v label="$label" -v method="$row" -v steps="$steps" -v secs="$(top "$m" seconds)" \
       -v registration="$registration" -v pitch="$pitch" \
       -v ate="$(field "$m" estimate ate_m)" -v rpe="$(field "$m" estimate rpe_m)" \
       -v rpedeg="$(field "$m" estimate rpe_deg)" -v drift="$(field "$m" estimate drift_percent)" \
@@ -46,13 +46,16 @@ run() {  # run <id> <label> <method> <dataset> [odometry options...]
 
 echo "| sequence | method | ATE [m] | RPE per step [m / °] | KITTI drift [%] | pitch bias per step [°] | ms per scan | registration ms per scan | not converged | untrusted | recovered |"
 echo "|---|---|---|---|---|---|---|---|---|---|---|"
+# ML-NDT with every core (the default) and on one thread (`-j 1`: the same trajectory, bit for bit).
 # The baseline is the peer as a plain GICP loop runs it: scan to scan, no recovery (its trust is
 # still counted).
-for method in mlndt pcl_gicp; do
+for row in mlndt "mlndt -j 1" pcl_gicp; do
+  method=${row%% *}
   extra=()
-  [ "$method" = mlndt ] || extra=(--no-recover --map scan)
-  run campus "campus (468 scans, odometry guess)" "$method" campus "${extra[@]}"
-  run mulran0 "MulRan 0–107" "$method" "$mulran" --first 0 --scans 108 "${extra[@]}"
-  run mulran116 "MulRan 116–165" "$method" "$mulran" --first 116 --scans 50 "${extra[@]}"
+  [ "$row" = "mlndt -j 1" ] && extra=(-j 1)
+  [ "$method" = pcl_gicp ] && extra=(--no-recover --map scan)
+  run campus "campus (468 scans, odometry guess)" "$row" "$method" campus "${extra[@]}"
+  run mulran0 "MulRan 0–107" "$row" "$method" "$mulran" --first 0 --scans 108 "${extra[@]}"
+  run mulran116 "MulRan 116–165" "$row" "$method" "$mulran" --first 116 --scans 50 "${extra[@]}"
 done
 echo "(outputs in $out)"

@@ -134,6 +134,22 @@ TEST(MatchCliDefaults, PresetsAreSelectable) {
   EXPECT_NE(thesis.output.find("mlndt (preset thesis)"), std::string::npos) << thesis.output;
 }
 
+// --jobs 1 runs the registration on one thread: the same transform, to the last printed digit, as
+// the default (every core), with the wide basin's parallel starts.
+TEST(MatchCliDefaults, OneThreadGivesTheSameResult) {
+  const CliRun all = run_cli("match " + kPair + " --json");
+  const CliRun one = run_cli("match " + kPair + " --json -j 1");
+  ASSERT_EQ(all.exit_code, 0) << all.output;
+  ASSERT_EQ(one.exit_code, 0) << one.output;
+  for (int row = 0; row < 3; ++row)
+    for (int col = 0; col < 4; ++col)
+      EXPECT_EQ(transform_element(last_json(all), row, col), transform_element(last_json(one), row, col))
+          << row << "," << col;
+  EXPECT_EQ(json_number(last_json(all), "iterations"), json_number(last_json(one), "iterations"));
+  EXPECT_LT(json_number(last_json(all), "error_cm"), 5.0) << all.output;
+  EXPECT_EQ(run_cli("match " + kPair + " -j -1").exit_code, 2);
+}
+
 TEST(MatchCliErrors, BadInputIsAnErrorWithExitCode1) {
   for (const std::string& arguments :
        {kPair + " --method no_such_matcher", kPair + " --init 1,2,3",

@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include <tbb/global_control.h>
+
 #include "commands.hpp"
 #include "matcher_options.hpp"
 #include "sextant/core/error.hpp"
@@ -41,6 +43,7 @@ struct MatchOptions : MatcherOptions {
   std::string gt, out;
   std::string view;  ///< an HTML page with both clouds before and after, in 3D
   std::uint64_t seed = 1;
+  int jobs = 0;  ///< the registration's threads (0: all cores); the result is the same for any count
   bool json = false;
   bool no_wide_basin = false;
   bool print_config = false;
@@ -247,6 +250,9 @@ int run_match(MatchOptions o) {
     std::cout << YAML::Dump(resolved_settings(o, first, "matcher settings")) << "\n";
     return 0;
   }
+  std::optional<tbb::global_control> threads;
+  if (o.jobs > 0)
+    threads.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(o.jobs));
   const PointCloud reference = read_cloud(o.reference);
   const Eigen::Isometry3d initial = o.init.empty() ? Eigen::Isometry3d::Identity() : parse_init(o.init);
   std::optional<Eigen::Isometry3d> truth;
@@ -316,6 +322,9 @@ void add_match_command(CLI::App& app, int& exit_code) {
                   "Write a self-contained HTML page showing both clouds before and after the registration in "
                   "3D (rotate, zoom, toggle)");
   cmd->add_option("--seed", o->seed, "Seed of the sampler's random choices")->capture_default_str();
+  cmd->add_option("--jobs,-j", o->jobs,
+                  "Threads of the registration (0 = all; the result is the same for any)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--print-config", o->print_config,
                 "Print every matcher and sampler setting the registration would use (the defaults included) "
                 "as YAML, and exit");
