@@ -12,22 +12,37 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
+SampledInput sample_input(const Sampler& sampler, const PointCloud& input, Rng& rng) {
+  const auto start = std::chrono::steady_clock::now();
+  const SampleResult sample = sample_points(sampler, input, rng);
+  SampledInput out;
+  out.points = input.subset(sample.indices);
+  out.kept_fraction = sample.kept_fraction;
+  out.seconds = seconds_since(start);
+  return out;
+}
+
+PairMatch align_sample(Matcher& matcher, const SampledInput& sample, const Eigen::Isometry3d& initial,
+                       const QualitySettings& quality) {
+  PairMatch out;
+  out.kept_fraction = sample.kept_fraction;
+  out.result = matcher.align(sample.points, initial);
+  // A matcher that samples again (FbML-NDT) says how many points it matched from; the others, the sample.
+  if (out.result.input_points == 0) out.result.input_points = sample.points.size();
+  out.result.quality = assess_registration(out.result, sample.points, quality);
+  return out;
+}
+
 PairMatch match_pair(Matcher& matcher, const Sampler& sampler, const PointCloud& reference,
                      const PointCloud& input, const Eigen::Isometry3d& initial, Rng& rng,
                      const QualitySettings& quality) {
-  PairMatch out;
-  auto start = std::chrono::steady_clock::now();
-  const SampleResult sample = sample_points(sampler, input, rng);
-  const PointCloud sampled = input.subset(sample.indices);
-  out.kept_fraction = sample.kept_fraction;
-  out.sampling_seconds = seconds_since(start);
-  start = std::chrono::steady_clock::now();
+  const SampledInput sample = sample_input(sampler, input, rng);
+  const auto start = std::chrono::steady_clock::now();
   matcher.set_reference(reference);
-  out.reference_seconds = seconds_since(start);
-  out.result = matcher.align(sampled, initial);
-  // A matcher that samples again (FbML-NDT) says how many points it matched from; the others, the sample.
-  if (out.result.input_points == 0) out.result.input_points = sampled.size();
-  out.result.quality = assess_registration(out.result, sampled, quality);
+  const double reference_seconds = seconds_since(start);
+  PairMatch out = align_sample(matcher, sample, initial, quality);
+  out.reference_seconds = reference_seconds;
+  out.sampling_seconds = sample.seconds;
   return out;
 }
 

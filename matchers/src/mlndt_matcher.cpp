@@ -56,33 +56,69 @@ void MlndtMatcher::set_reference(const PointCloud& reference) {
   const LayerGeometry last = layer_geometry(box, pyramid.division, pyramid.layers);
   const PrecisionFrame frame{box.min.cast<double>(), last.cell_edge, last.dims};
   const std::vector<double> edges = precision_edges(last.cell_edge, settings_.precision);
+  auto model = std::make_shared<MlndtModel>();
   std::vector<NdtGrid> pair(2);
   const auto build_pair = [&](std::size_t task, double edge) {
     pair[task] = precision_grid(reference, frame, edge, task == 0 ? 0.0 : 0.5, pyramid.cells);
   };
   threads_->for_each(edges.empty() ? 1 : 3, [&](std::size_t task) {
     if (task == 0)
-      layers_ = build_layer_pyramid(reference, pyramid, box);
+      model->layers = build_layer_pyramid(reference, pyramid, box);
     else
       build_pair(task - 1, edges.front());
   });
-  precision_.clear();
-  for (std::size_t e = 0; e < edges.size() && !layers_.empty(); ++e) {
+  for (std::size_t e = 0; e < edges.size() && !model->layers.empty(); ++e) {
     if (e > 0) threads_->for_each(2, [&](std::size_t task) { build_pair(task, edges[e]); });
-    if (precision_pair_usable(pair[0], pair[1], layers_.back(), settings_.precision)) {
-      precision_ = std::move(pair);
+    if (precision_pair_usable(pair[0], pair[1], model->layers.back(), settings_.precision)) {
+      model->precision = std::move(pair);
       break;
     }
   }
-  reference_points_ = reference.size();
+  model->reference_points = reference.size();
+  model_ = std::move(model);
+}
+
+namespace {
+
+/// Whether two settings build the same model from one reference (set_reference's inputs).
+bool same_model(const MlndtSettings& a, const MlndtSettings& b) {
+  const LayerPyramidSettings &p = a.pyramid, &q = b.pyramid;
+  return p.division == q.division && p.layers == q.layers && p.bounds_quantile == q.bounds_quantile &&
+         p.cells.min_points == q.cells.min_points && p.cells.max_eigen_ratio == q.cells.max_eigen_ratio &&
+         p.cells.min_spread == q.cells.min_spread &&
+         p.cells.min_relative_spread == q.cells.min_relative_spread &&
+         a.precision.min_cell == b.precision.min_cell && a.precision.min_coverage == b.precision.min_coverage;
+}
+
+const std::vector<NdtGrid>& no_grids() {
+  static const std::vector<NdtGrid> none;
+  return none;
+}
+
+}  // namespace
+
+bool MlndtMatcher::share_reference(const Matcher& built) {
+  const auto* other = dynamic_cast<const MlndtMatcher*>(&built);
+  if (other == nullptr || !other->model_ || !same_model(settings_, other->settings_)) return false;
+  model_ = other->model_;
+  return true;
+}
+
+const std::vector<NdtGrid>& MlndtMatcher::layers() const {
+  return model_ ? model_->layers : no_grids();
+}
+
+const std::vector<NdtGrid>& MlndtMatcher::precision_layers() const {
+  return model_ ? model_->precision : no_grids();
 }
 
 RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Isometry3d& initial) {
-  if (layers_.empty() || layers_.back().empty())
-    return not_started(
-        layers_.empty() ? Termination::kEmptyInput : empty_model_reason(reference_points_, layers_.back()),
-        input.size(), initial);
-  const LayerObjective objective(layers_, settings_, input, *threads_);
+  const std::vector<NdtGrid>& layers = this->layers();
+  if (layers.empty() || layers.back().empty())
+    return not_started(layers.empty() ? Termination::kEmptyInput
+                                      : empty_model_reason(model_->reference_points, layers.back()),
+                       input.size(), initial);
+  const LayerObjective objective(layers, settings_, input, *threads_);
   const auto start = std::chrono::steady_clock::now();
   const auto since_start = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -92,7 +128,7 @@ RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Iso
       return refine(input, optimize(objective, initial, settings_.optimizer));
     MlndtSettings last_layer = settings_;
     last_layer.start_layer = settings_.pyramid.layers;
-    const LayerObjective last_only(layers_, last_layer, input, *threads_);
+    const LayerObjective last_only(layers, last_layer, input, *threads_);
     // The last layer alone and the pyramid from the start layer, side by side.
     RegistrationResult refined, full;
     threads_->for_each(2, [&](std::size_t run) {
@@ -109,7 +145,7 @@ RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Iso
   // Wide basin: refine the initial guess and the best coarse-layer hypotheses; keep the lowest
   // final score (same input, same last layer, so the scores compare directly), the first of equals.
   const std::vector<Eigen::Isometry3d> starts =
-      wide_basin_starts(layers_, input, initial, settings_.wide_basin, *threads_);
+      wide_basin_starts(layers, input, initial, settings_.wide_basin, *threads_);
   std::vector<RegistrationResult> runs(starts.size());
   threads_->for_each(starts.size(),
                      [&](std::size_t k) { runs[k] = optimize(objective, starts[k], settings_.optimizer); });

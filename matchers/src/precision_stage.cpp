@@ -45,18 +45,19 @@ bool precision_pair_usable(const NdtGrid& aligned, const NdtGrid& shifted, const
 
 RegistrationResult MlndtMatcher::refine(const PointCloud& input, RegistrationResult coarse) const {
   const bool usable = coarse.why == Termination::kConverged || coarse.why == Termination::kMaxIterations;
-  if (precision_.empty() || !usable) return coarse;
+  const std::vector<NdtGrid>& precision = precision_layers();
+  if (precision.empty() || !usable) return coarse;
   const int n = settings_.pyramid.layers;
   // Both grids' truncated scores summed (eq. 3.11 over each); the trace labels the stage n + 1.
-  const mlndt_detail::OverlappingGridsObjective fine(precision_, n + 1, settings_, input, *threads_);
+  const mlndt_detail::OverlappingGridsObjective fine(precision, n + 1, settings_, input, *threads_);
   RegistrationResult r = optimize(fine, coarse.T, settings_.optimizer);
   coarse.seconds += r.seconds;
   if (r.why != Termination::kConverged) return coarse;  // the pyramid's pose stands
   // Overlap and fit stay those of the last layer, at the refined pose: the trust checks
   // (registration_quality.hpp) were measured there. The Hessian is the finest grid's, whose
   // minimum the pose is (R = H⁻¹, eq. 3.50).
-  const mlndt_detail::LayerObjective last(layers_, n - 1, n - settings_.truncated_layers, 0, settings_, input,
-                                          *threads_);
+  const mlndt_detail::LayerObjective last(layers(), n - 1, n - settings_.truncated_layers, 0, settings_,
+                                          input, *threads_);
   const ScoreEvaluation at = last.evaluate(0, to_pose6(r.T).vector(), Derivatives::kScore);
   coarse.T = r.T;
   coarse.H = r.H;

@@ -2,6 +2,7 @@
 // registers scan i (sampled) against scan i − 1 or the local map in scan i − 1's frame, from the
 // guess mode's start, and chains the result: pose_i = pose_{i−1} · relative_i.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <deque>
 #include <memory>
@@ -86,6 +87,7 @@ struct Worker {
   bool wide_basin = false;
   std::unique_ptr<Sampler> sampler;
   const OdometrySettings& settings;
+  const PointCloud* matcher_reference = nullptr;  ///< what `matcher` was last given (its model's source)
 
   explicit Worker(const OdometrySettings& s)
       : matcher(s.registration.matcher.make()), sampler(s.registration.sampler()), settings(s) {
@@ -97,9 +99,10 @@ struct Worker {
 
   /// The first registration from `guess`, assessed on its own (absolute checks).
   OdometryStep first_try(const PointCloud& reference, const PointCloud& input, const Eigen::Isometry3d& guess,
-                         std::uint64_t seed) const {
+                         std::uint64_t seed) {
     Rng rng(seed);
     const PairMatch m = match_pair(*matcher, *sampler, reference, input, guess, rng, settings.quality);
+    matcher_reference = &reference;
     OdometryStep step = to_step(m, reference, guess);
     step.first_trust = step.quality.trust;
     return step;
@@ -112,7 +115,7 @@ struct Worker {
   /// (registration_quality.hpp), since a step may rightly overlap less than its neighbours (a corner, an open
   /// space; measured on the campus: right poses 0.70 where the median is 0.87).
   void recover(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
-               const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed) const {
+               const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed) {
     if (step.trusted() || !recovery || starts.empty()) return;  // recovery: null when it is off
     double seconds = step.seconds;
     // The registrations whose only flaw is their fit: converged, enough overlap, every direction
@@ -124,10 +127,23 @@ struct Worker {
         suspects.push_back(candidate);
     };
     consider(step, step.first_trust);
-    for (const Eigen::Isometry3d& start : starts) {
-      if (!wide_basin && start.isApprox(step.guess, 1e-12)) continue;  // tried already
-      Rng rng(seed);                                                   // the same sample
-      const PairMatch w = match_pair(*recovery, *sampler, reference, input, start, rng, settings.quality);
+    std::vector<Eigen::Isometry3d> tries;
+    for (const Eigen::Isometry3d& start : starts)
+      if (wide_basin || !start.isApprox(step.guess, 1e-12)) tries.push_back(start);  // else tried already
+    // One sample for every start (the first try's: the same seed) and one reference model: the first
+    // try's when the recovery matcher builds the same one.
+    SampledInput sample;
+    if (!tries.empty()) {
+      Rng rng(seed);
+      sample = sample_input(*sampler, input, rng);
+      const auto model_start = std::chrono::steady_clock::now();
+      if (&reference != matcher_reference || !recovery->share_reference(*matcher))
+        recovery->set_reference(reference);
+      seconds += sample.seconds +
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - model_start).count();
+    }
+    for (const Eigen::Isometry3d& start : tries) {
+      const PairMatch w = align_sample(*recovery, sample, start, settings.quality);
       OdometryStep again = to_step(w, reference, step.guess);
       seconds += again.seconds;
       if (again.trusted()) {
@@ -231,7 +247,7 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
     });
     tbb::parallel_for(begin, end, [&](std::size_t k) {
       const PointCloud& reference = k == begin ? previous : chunk[k - 1 - begin];
-      const Worker worker(s);
+      Worker worker(s);
       steps[k - 1] =
           worker.first_try(reference, chunk[k - begin], relative(odometry[k - 1], odometry[k]), seeds[k]);
       counter.tick();
@@ -247,7 +263,7 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
     tbb::parallel_for(std::size_t{0}, untrusted.size(), [&](std::size_t u) {
       const std::size_t k = untrusted[u];
       const PointCloud& reference = k == begin ? previous : chunk[k - 1 - begin];
-      const Worker worker(s);
+      Worker worker(s);
       worker.recover(steps[k - 1], reference, chunk[k - begin], {steps[k - 1].guess}, seeds[k]);
     });
     previous = std::move(chunk.back());
@@ -272,7 +288,7 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
                                            std::size_t first, std::size_t count,
                                            const std::vector<Eigen::Isometry3d>& odometry,
                                            const std::vector<std::uint64_t>& seeds, StepCounter& counter) {
-  const Worker worker(s);
+  Worker worker(s);
   SequenceTrust trust;
   Eigen::Isometry3d last_trusted = Eigen::Isometry3d::Identity();  // the last trusted relative motion
   std::vector<OdometryStep> steps;

@@ -26,4 +26,17 @@ PairMatch match_pair(Matcher& matcher, const Sampler& sampler, const PointCloud&
                      const PointCloud& input, const Eigen::Isometry3d& initial, Rng& rng,
                      const QualitySettings& quality = {});
 
+/// match_pair's parts, for several registrations of one pair (odometry's recovery): the sample, ...
+struct SampledInput {
+  PointCloud points;
+  double kept_fraction = 0.0;  ///< sampled / all input points
+  double seconds = 0.0;        ///< time to sample
+};
+SampledInput sample_input(const Sampler& sampler, const PointCloud& input, Rng& rng);
+
+/// ... and its alignment against the reference model `matcher` holds, assessed (reference_seconds and
+/// sampling_seconds 0: the caller counts what it did once).
+PairMatch align_sample(Matcher& matcher, const SampledInput& sample, const Eigen::Isometry3d& initial,
+                       const QualitySettings& quality = {});
+
 }  // namespace sextant

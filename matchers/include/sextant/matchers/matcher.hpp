@@ -25,6 +25,10 @@ class Matcher {
   virtual std::string name() const = 0;
   /// Builds the reference model (cell grids, layer pyramid, k-d tree). Call before align().
   virtual void set_reference(const PointCloud& reference) = 0;
+  /// Instead of set_reference: takes the reference model `built` holds, when this matcher would build
+  /// the same one from the same reference (the caller's promise: `built` was last given the reference
+  /// this matcher is to use). False, and nothing changed, when it cannot; then call set_reference.
+  virtual bool share_reference(const Matcher& /*built*/) { return false; }
   /// Aligns `input` to the reference from `initial`; never throws for bad data (status in result).
   virtual RegistrationResult align(const PointCloud& input, const Eigen::Isometry3d& initial) = 0;
 };

@@ -60,16 +60,27 @@ struct MlndtSettings {
   bool valid(std::string* why) const;
 };
 
+/// The reference model of set_reference: the layer pyramid and the precision stage's grids.
+struct MlndtModel {
+  std::vector<NdtGrid> layers;
+  std::vector<NdtGrid> precision;  ///< coarse to fine; empty: no stage
+  std::size_t reference_points = 0;
+};
+
 class MlndtMatcher final : public Matcher {
  public:
   explicit MlndtMatcher(MlndtSettings settings = {});
   std::string name() const override { return "mlndt"; }
   void set_reference(const PointCloud& reference) override;
+  /// Takes `built`'s model when it is an MlndtMatcher whose settings build the same one (pyramid,
+  /// cells and precision stage; the optimiser and the wide basin may differ): odometry's wide-basin
+  /// recovery registers against the model its first try built.
+  bool share_reference(const Matcher& built) override;
   RegistrationResult align(const PointCloud& input, const Eigen::Isometry3d& initial) override;
 
-  const std::vector<NdtGrid>& layers() const { return layers_; }
+  const std::vector<NdtGrid>& layers() const;
   /// The precision stage's grids for the current reference, coarse to fine (empty: no stage).
-  const std::vector<NdtGrid>& precision_layers() const { return precision_; }
+  const std::vector<NdtGrid>& precision_layers() const;
   const MlndtSettings& settings() const { return settings_; }
 
  private:
@@ -78,10 +89,8 @@ class MlndtMatcher final : public Matcher {
   RegistrationResult refine(const PointCloud& input, RegistrationResult coarse) const;
 
   MlndtSettings settings_;
-  std::unique_ptr<ScoreThreads> threads_;  ///< settings_.threads, for every registration of this matcher
-  std::vector<NdtGrid> layers_;
-  std::vector<NdtGrid> precision_;
-  std::size_t reference_points_ = 0;
+  std::unique_ptr<ScoreThreads> threads_;    ///< settings_.threads, for every registration of this matcher
+  std::shared_ptr<const MlndtModel> model_;  ///< null before set_reference
 };
 
 }  // namespace sextant
