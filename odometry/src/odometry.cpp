@@ -2,7 +2,6 @@
 // registers scan i (sampled) against scan i − 1 or the local map in scan i − 1's frame, from the
 // guess mode's start, and chains the result: pose_i = pose_{i−1} · relative_i.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <deque>
 #include <memory>
@@ -14,21 +13,18 @@
 
 #include "sextant/core/error.hpp"
 #include "sextant/core/rng.hpp"
-#include "sextant/matchers/match_pair.hpp"
 #include "sextant/odometry/local_map.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/odometry/sequence_trust.hpp"
-#include "sextant/odometry/suspect_choice.hpp"
+#include "step_worker.hpp"
 
 namespace sextant {
 namespace {
 
+using odometry_detail::StepWorker;
+
 /// Scans loaded and registered together on the parallel path (bounds the memory held).
 constexpr std::size_t kChunk = 16;
-
-/// Fits within this factor of each other count as equal when no registration is trusted: the
-/// sequence check's own tolerance (SequenceTrustSettings::fit_factor) [ratio].
-constexpr double kSuspectFitBand = SequenceTrustSettings{}.fit_factor;
 
 std::string dataset_label(const Dataset& dataset) {
   const DatasetMetadata& m = dataset.metadata();
@@ -78,129 +74,6 @@ Eigen::Isometry3d start_pose(const Dataset& dataset, const OdometrySettings& s, 
   return Eigen::Isometry3d::Identity();
 }
 
-/// The matcher and sampler of one worker, and the wide-basin matcher it recovers with.
-struct Worker {
-  std::unique_ptr<Matcher> matcher;
-  /// What recovers an untrusted step: the matcher with its wide basin (mlndt, fbmlndt), else the
-  /// matcher itself from the other starts; null when recovery is off.
-  std::unique_ptr<Matcher> recovery;
-  bool wide_basin = false;
-  std::unique_ptr<Sampler> sampler;
-  const OdometrySettings& settings;
-  const PointCloud* matcher_reference = nullptr;  ///< what `matcher` was last given (its model's source)
-
-  explicit Worker(const OdometrySettings& s)
-      : matcher(s.registration.matcher.make()), sampler(s.registration.sampler()), settings(s) {
-    if (!s.recover) return;
-    const MatcherFactory& wide = s.registration.matcher.make_wide;
-    wide_basin = static_cast<bool>(wide);
-    recovery = wide ? wide() : s.registration.matcher.make();
-  }
-
-  /// The first registration from `guess`, assessed on its own (absolute checks).
-  OdometryStep first_try(const PointCloud& reference, const PointCloud& input, const Eigen::Isometry3d& guess,
-                         std::uint64_t seed) {
-    Rng rng(seed);
-    const PairMatch m = match_pair(*matcher, *sampler, reference, input, guess, rng, settings.quality);
-    matcher_reference = &reference;
-    OdometryStep step = to_step(m, reference, guess);
-    step.first_trust = step.quality.trust;
-    return step;
-  }
-
-  /// An untrusted step: the wide basin from each of `starts` (the guess first) until a registration
-  /// is trusted; when none is, the step chains one of the registrations whose only flaw is their fit
-  /// (suspect_choice.hpp), else `starts.back()` (the last trusted motion), and stays untrusted. The sequence
-  /// check only triggers this search: the wide basin's answer is judged on its own
-  /// (registration_quality.hpp), since a step may rightly overlap less than its neighbours (a corner, an open
-  /// space; measured on the campus: right poses 0.70 where the median is 0.87).
-  void recover(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
-               const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed) {
-    if (step.trusted() || !recovery || starts.empty()) return;  // recovery: null when it is off
-    double seconds = step.seconds;
-    // The registrations whose only flaw is their fit: converged, enough overlap, every direction
-    // constrained. The first registration counts as it was judged on its own (a sequence check may
-    // have flagged an absolutely sound one).
-    std::vector<OdometryStep> suspects;
-    const auto consider = [&](const OdometryStep& candidate, Trust absolute) {
-      if (candidate.converged && (absolute == Trust::kSuspect || absolute == Trust::kOk))
-        suspects.push_back(candidate);
-    };
-    consider(step, step.first_trust);
-    std::vector<Eigen::Isometry3d> tries;
-    for (const Eigen::Isometry3d& start : starts)
-      if (wide_basin || !start.isApprox(step.guess, 1e-12)) tries.push_back(start);  // else tried already
-    // One sample for every start (the first try's: the same seed) and one reference model: the first
-    // try's when the recovery matcher builds the same one.
-    SampledInput sample;
-    if (!tries.empty()) {
-      Rng rng(seed);
-      sample = sample_input(*sampler, input, rng);
-      const auto model_start = std::chrono::steady_clock::now();
-      if (&reference != matcher_reference || !recovery->share_reference(*matcher))
-        recovery->set_reference(reference);
-      seconds += sample.seconds +
-                 std::chrono::duration<double>(std::chrono::steady_clock::now() - model_start).count();
-    }
-    for (const Eigen::Isometry3d& start : tries) {
-      const PairMatch w = align_sample(*recovery, sample, start, settings.quality);
-      OdometryStep again = to_step(w, reference, step.guess);
-      seconds += again.seconds;
-      if (again.trusted()) {
-        again.first_trust = step.first_trust;
-        again.recovery = wide_basin ? "wide_basin" : "restart";
-        again.seconds = seconds;
-        step = std::move(again);
-        return;
-      }
-      consider(again, again.quality.trust);
-    }
-    if (!suspects.empty()) {
-      // Nothing trusted, but registrations whose only flaw is their fit: evidence from the scans,
-      // where the prior (the guess, the last trusted motion) has none. The scans choose a band of
-      // fits, the prior chooses inside it (suspect_choice.hpp). The step stays untrusted.
-      std::vector<SuspectCandidate> candidates;
-      for (const OdometryStep& s : suspects) candidates.push_back({s.relative, s.quality.fit_ratio});
-      const std::size_t chosen = choose_suspect(candidates, input, step.guess, kSuspectFitBand);
-      const Trust first = step.first_trust;
-      step = std::move(suspects[chosen]);
-      step.first_trust = first;
-      step.quality.trust = Trust::kSuspect;
-      step.recovery = "least_suspect";
-    } else {
-      step.recovery = starts.back().isApprox(step.guess, 1e-12) ? "guess" : "last_motion";
-      step.relative = starts.back();
-    }
-    step.seconds = seconds;
-  }
-
- private:
-  OdometryStep to_step(const PairMatch& m, const PointCloud& reference,
-                       const Eigen::Isometry3d& guess) const {
-    OdometryStep step;
-    step.relative = m.result.T;
-    step.guess = guess;
-    step.hessian = m.result.H;
-    step.converged = m.result.converged;
-    step.iterations = m.result.iterations;
-    step.score = m.result.score;
-    step.matched_points = m.result.matched_points;
-    step.reference_points = reference.size();
-    step.seconds = m.result.seconds + m.reference_seconds + m.sampling_seconds;
-    step.status = to_string(m.result.why);
-    step.fallback = m.result.fallback;
-    step.quality = m.result.quality;
-    if (!step.relative.matrix().allFinite()) {  // never chain NaN: keep the guess, say so
-      step.relative = guess;
-      step.converged = false;
-      step.status += " (non-finite result replaced by the guess)";
-      step.quality.trust = Trust::kNotConverged;
-      step.quality.reason = "non-finite result";
-    }
-    return step;
-  }
-};
-
 /// Where the recovery of step k starts its wide-basin searches: the guess, then (constant velocity)
 /// no motion (a vehicle that stopped between keyframes) and the last trusted motion unscaled, which is
 /// also the motion chained when nothing is trusted (the guess for the odometry guess). Consecutive
@@ -247,7 +120,7 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
     });
     tbb::parallel_for(begin, end, [&](std::size_t k) {
       const PointCloud& reference = k == begin ? previous : chunk[k - 1 - begin];
-      Worker worker(s);
+      StepWorker worker(s);
       steps[k - 1] =
           worker.first_try(reference, chunk[k - begin], relative(odometry[k - 1], odometry[k]), seeds[k]);
       counter.tick();
@@ -263,7 +136,7 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
     tbb::parallel_for(std::size_t{0}, untrusted.size(), [&](std::size_t u) {
       const std::size_t k = untrusted[u];
       const PointCloud& reference = k == begin ? previous : chunk[k - 1 - begin];
-      Worker worker(s);
+      StepWorker worker(s);
       worker.recover(steps[k - 1], reference, chunk[k - begin], {steps[k - 1].guess}, seeds[k]);
     });
     previous = std::move(chunk.back());
@@ -288,7 +161,7 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
                                            std::size_t first, std::size_t count,
                                            const std::vector<Eigen::Isometry3d>& odometry,
                                            const std::vector<std::uint64_t>& seeds, StepCounter& counter) {
-  Worker worker(s);
+  StepWorker worker(s);
   SequenceTrust trust;
   Eigen::Isometry3d last_trusted = Eigen::Isometry3d::Identity();  // the last trusted relative motion
   std::vector<OdometryStep> steps;

@@ -1,0 +1,123 @@
+// One odometry step's registrations (step_worker.hpp).
+#include "step_worker.hpp"
+
+#include <chrono>
+#include <utility>
+
+#include "sextant/core/rng.hpp"
+#include "sextant/odometry/sequence_trust.hpp"
+#include "sextant/odometry/suspect_choice.hpp"
+
+namespace sextant::odometry_detail {
+namespace {
+
+/// Fits within this factor of each other count as equal when no registration is trusted: the
+/// sequence check's own tolerance (SequenceTrustSettings::fit_factor) [ratio].
+constexpr double kSuspectFitBand = SequenceTrustSettings{}.fit_factor;
+
+}  // namespace
+
+StepWorker::StepWorker(const OdometrySettings& s)
+    : matcher_(s.registration.matcher.make()), sampler_(s.registration.sampler()), settings_(s) {
+  if (!s.recover) return;
+  const MatcherFactory& wide = s.registration.matcher.make_wide;
+  wide_basin_ = static_cast<bool>(wide);
+  recovery_ = wide ? wide() : s.registration.matcher.make();
+}
+
+OdometryStep StepWorker::first_try(const PointCloud& reference, const PointCloud& input,
+                                   const Eigen::Isometry3d& guess, std::uint64_t seed) {
+  Rng rng(seed);
+  const PairMatch m = match_pair(*matcher_, *sampler_, reference, input, guess, rng, settings_.quality);
+  matcher_reference_ = &reference;
+  OdometryStep step = to_step(m, reference, guess);
+  step.first_trust = step.quality.trust;
+  return step;
+}
+
+void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
+                         const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed) {
+  if (step.trusted() || !recovery_ || starts.empty()) return;  // recovery_: null when it is off
+  double seconds = step.seconds;
+  // The registrations whose only flaw is their fit: converged, enough overlap, every direction
+  // constrained. The first registration counts as it was judged on its own (a sequence check may
+  // have flagged an absolutely sound one).
+  std::vector<OdometryStep> suspects;
+  const auto consider = [&](const OdometryStep& candidate, Trust absolute) {
+    if (candidate.converged && (absolute == Trust::kSuspect || absolute == Trust::kOk))
+      suspects.push_back(candidate);
+  };
+  consider(step, step.first_trust);
+  std::vector<Eigen::Isometry3d> tries;
+  for (const Eigen::Isometry3d& start : starts)
+    if (wide_basin_ || !start.isApprox(step.guess, 1e-12)) tries.push_back(start);  // else tried already
+  // One sample for every start (the first try's: the same seed) and one reference model: the first
+  // try's when the recovery matcher builds the same one.
+  SampledInput sample;
+  if (!tries.empty()) {
+    Rng rng(seed);
+    sample = sample_input(*sampler_, input, rng);
+    const auto model_start = std::chrono::steady_clock::now();
+    if (&reference != matcher_reference_ || !recovery_->share_reference(*matcher_))
+      recovery_->set_reference(reference);
+    seconds += sample.seconds +
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - model_start).count();
+  }
+  for (const Eigen::Isometry3d& start : tries) {
+    const PairMatch w = align_sample(*recovery_, sample, start, settings_.quality);
+    OdometryStep again = to_step(w, reference, step.guess);
+    seconds += again.seconds;
+    if (again.trusted()) {
+      again.first_trust = step.first_trust;
+      again.recovery = wide_basin_ ? "wide_basin" : "restart";
+      again.seconds = seconds;
+      step = std::move(again);
+      return;
+    }
+    consider(again, again.quality.trust);
+  }
+  if (!suspects.empty()) {
+    // Nothing trusted, but registrations whose only flaw is their fit: evidence from the scans,
+    // where the prior (the guess, the last trusted motion) has none. The scans choose a band of
+    // fits, the prior chooses inside it (suspect_choice.hpp). The step stays untrusted.
+    std::vector<SuspectCandidate> candidates;
+    for (const OdometryStep& s : suspects) candidates.push_back({s.relative, s.quality.fit_ratio});
+    const std::size_t chosen = choose_suspect(candidates, input, step.guess, kSuspectFitBand);
+    const Trust first = step.first_trust;
+    step = std::move(suspects[chosen]);
+    step.first_trust = first;
+    step.quality.trust = Trust::kSuspect;
+    step.recovery = "least_suspect";
+  } else {
+    step.recovery = starts.back().isApprox(step.guess, 1e-12) ? "guess" : "last_motion";
+    step.relative = starts.back();
+  }
+  step.seconds = seconds;
+}
+
+OdometryStep StepWorker::to_step(const PairMatch& m, const PointCloud& reference,
+                                 const Eigen::Isometry3d& guess) const {
+  OdometryStep step;
+  step.relative = m.result.T;
+  step.guess = guess;
+  step.hessian = m.result.H;
+  step.converged = m.result.converged;
+  step.iterations = m.result.iterations;
+  step.score = m.result.score;
+  step.matched_points = m.result.matched_points;
+  step.reference_points = reference.size();
+  step.seconds = m.result.seconds + m.reference_seconds + m.sampling_seconds;
+  step.status = to_string(m.result.why);
+  step.fallback = m.result.fallback;
+  step.quality = m.result.quality;
+  if (!step.relative.matrix().allFinite()) {  // never chain NaN: keep the guess, say so
+    step.relative = guess;
+    step.converged = false;
+    step.status += " (non-finite result replaced by the guess)";
+    step.quality.trust = Trust::kNotConverged;
+    step.quality.reason = "non-finite result";
+  }
+  return step;
+}
+
+}  // namespace sextant::odometry_detail
