@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Eigenvalues>
 
@@ -136,6 +137,24 @@ TEST(NdtGrid, EmptyAndDegenerateInputGiveEmptyGrids) {
     EXPECT_TRUE(grid.covariance(static_cast<int>(g)).allFinite());
   EXPECT_TRUE(NdtGrid::build_over_bounds(collinear, -1.0).empty());
   EXPECT_TRUE(NdtGrid::build(collinear, Eigen::Vector3d::Zero(), 1e-4, {100000, 100000, 100000}).too_large());
+}
+
+// Cell indices are 32-bit: a grid of 2³¹ cells or more is refused even when the caller allows more.
+TEST(NdtGrid, NeverIndexesMoreCellsThan32BitsHold) {
+  PointCloud cloud;
+  for (int i = 0; i < 50; ++i) cloud.push_back({0.1f * i, 0.05f * (i % 7), 0.02f * (i % 5)});
+  const std::size_t unlimited = std::numeric_limits<std::size_t>::max();
+  EXPECT_TRUE(
+      NdtGrid::build(cloud, Eigen::Vector3d::Zero(), 1e-3, {2048, 1024, 1024}, {}, unlimited).too_large());
+  const NdtGrid below = NdtGrid::build(cloud, Eigen::Vector3d::Zero(), 0.5, {20, 2, 2}, {}, unlimited);
+  ASSERT_FALSE(below.too_large());
+  ASSERT_GT(below.gaussian_count(), 3u);
+  for (int g = 0; g < static_cast<int>(below.gaussian_count()); ++g) {  // a cell's mean lies in it
+    const float* m = below.gaussian(g).mean;
+    const Eigen::Vector3i cell(static_cast<int>(m[0] / 0.5f), static_cast<int>(m[1] / 0.5f),
+                               static_cast<int>(m[2] / 0.5f));
+    EXPECT_EQ(below.cell_of(g), cell) << "Gaussian " << g;
+  }
 }
 
 }  // namespace

@@ -45,7 +45,7 @@ class NdtGrid {
   NdtGrid() = default;
 
   /// Cubic cells of edge `cell_edge` [m]; `dims` cells per axis starting at `origin`.
-  /// Reference points outside the box are ignored. A grid of more than `max_cells` cells is
+  /// Reference points outside the box are ignored. A grid of more than `max_cells` cells (or 2³¹ − 1) is
   /// refused (empty grid, too_large() true) rather than exhausting memory.
   static NdtGrid build(const PointCloud& reference, const Eigen::Vector3d& origin, double cell_edge,
                        const Eigen::Vector3i& dims, const CellStatsSettings& settings = {},
