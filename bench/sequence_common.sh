@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # Shared by the real-sequence benchmarks (sequences.sh, sequence_settings.sh): their arguments,
 # checked — [sextant binary] [MulRan folder] [output folder] — and the reading of metrics.json.
 # Sourced from the repository's root with "$@".
