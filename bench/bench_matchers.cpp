@@ -12,6 +12,8 @@
 #include <cmath>
 #include <limits>
 
+#include "mahalanobis_kernel.hpp"
+#include "sextant/core/pose.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/ndt_score.hpp"
@@ -99,6 +101,37 @@ void BM_MahalanobisKernel(benchmark::State& state) {
 BENCHMARK(BM_MahalanobisKernel)
     ->Arg(static_cast<int>(Derivatives::kScore))
     ->Arg(static_cast<int>(Derivatives::kHessian))
+    ->Unit(benchmark::kMicrosecond);
+
+// The kernel alone (one block over the whole input, white-box) on each instruction set it is built
+// for: Args derivatives, instruction set (0 plain x86-64, 1 AVX2; the same bits, see
+// KernelInstructionSet.*). A set the CPU lacks is skipped.
+void BM_MahalanobisBlock(benchmark::State& state) {
+  using score_detail::KernelInstructionSet;
+  const KernelFixture& f = kernel_fixture();
+  const auto mode = static_cast<Derivatives>(state.range(0));
+  const auto isa = static_cast<KernelInstructionSet>(state.range(1));
+  if (!score_detail::kernel_instruction_set_available(isa)) {
+    state.SkipWithError("the CPU lacks this instruction set");
+    return;
+  }
+  const Eigen::Isometry3d T = to_isometry(Pose6::from_vector(f.xi));
+  const Eigen::Matrix3d R = T.linear();
+  const Eigen::Vector3d t = T.translation();
+  const Eigen::Vector3f* begin = f.input.points().data();
+  for (auto _ : state) {
+    score_detail::Sums s;
+    score_detail::mahalanobis_block(f.grid, begin, begin + f.input.size(), R, t,
+                                    std::numeric_limits<double>::infinity(), mode, s, isa);
+    benchmark::DoNotOptimize(s.S(2, 2));
+  }
+  report_per_point(state, f.input.size());
+}
+BENCHMARK(BM_MahalanobisBlock)
+    ->Args({static_cast<int>(Derivatives::kScore), 0})
+    ->Args({static_cast<int>(Derivatives::kScore), 1})
+    ->Args({static_cast<int>(Derivatives::kHessian), 0})
+    ->Args({static_cast<int>(Derivatives::kHessian), 1})
     ->Unit(benchmark::kMicrosecond);
 
 // The same score + gradient + Hessian evaluation with the blocked accumulation on Arg threads

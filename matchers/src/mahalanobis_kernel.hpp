@@ -9,13 +9,23 @@
 
 namespace sextant::score_detail {
 
+/// The instruction sets the kernel is compiled for (x86-64: both; elsewhere only the baseline).
+/// They give the same bits; the choice is speed only.
+enum class KernelInstructionSet { kBaseline, kAvx2 };
+/// True when this build has `isa` and the CPU runs it.
+bool kernel_instruction_set_available(KernelInstructionSet isa);
+/// The fastest available one (what mahalanobis_block uses unless told otherwise).
+KernelInstructionSet best_kernel_instruction_set();
+
 /// Adds the terms of the points [begin, end) mapped by u = R·x, x + t, to `s` (unweighted: the
 /// factor 2 of eqs. 3.14–3.15 is applied by the caller). Points beyond `max_q` are counted in
-/// `s.rejected` and add nothing. The matched points are processed two at a time, one per SIMD
-/// lane, with each lane summed separately and the two lanes added at the end of the block: a
-/// fixed order for a given block, independent of the thread count.
+/// `s.rejected` and add nothing. The matched points are processed four at a time, one per SIMD
+/// lane, with each lane summed separately and the lanes added in order at the end of the block: a
+/// fixed order for a given block, independent of the thread count and of `isa` (an unavailable one
+/// falls back to the baseline).
 void mahalanobis_block(const NdtGrid& grid, const Eigen::Vector3f* begin, const Eigen::Vector3f* end,
                        const Eigen::Matrix3d& R, const Eigen::Vector3d& t, double max_q,
-                       Derivatives derivatives, Sums& s);
+                       Derivatives derivatives, Sums& s,
+                       KernelInstructionSet isa = best_kernel_instruction_set());
 
 }  // namespace sextant::score_detail
