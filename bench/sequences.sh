@@ -6,9 +6,10 @@
 # row. Prints one table: ATE, RPE, KITTI drift, the signed mean pitch error per step with its
 # standard error (`sextant eval`), for MulRan the KITTI drift against the reference's own
 # lidar-inertial odometry as well (`lio_odometry_poses.txt`, FAST-LIO2 before its pose graph: how
-# far the reference's two versions lie apart bounds what the reference can judge), time per scan (wall: the whole run over its steps; registration:
-# the registrations' own seconds over the steps, which the parallel scan-to-scan path overlaps on
-# several cores) and the trust counts (untrusted steps, recovered steps).
+# far the reference's two versions lie apart bounds what the reference can judge), time per scan
+# (wall: the whole run over its steps; registration: the registrations' own seconds over the steps,
+# which the parallel scan-to-scan path overlaps on several cores) and the trust counts (untrusted
+# steps, recovered steps). Two last rows score that odometry against the reference.
 #
 #   bench/sequences.sh [build/experiments/sextant] [path/to/mulran_riverside02] [output folder]
 #
@@ -51,11 +52,14 @@ run() {  # run <id> <label> <row> <method> <dataset> <second reference (KITTI) o
 
 echo "| sequence | method | ATE [m] | RPE per step [m / °] | KITTI drift [%] | drift against the reference's lidar-inertial odometry [%] | pitch bias per step [°] | ms per scan | registration ms per scan | not converged | untrusted | recovered |"
 echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
-# The reference's lidar-inertial odometry over each stretch (KITTI rows first..first+n−1), and how far
-# it lies from the reference itself (reference_row, below).
-lio0="$out/lio_odometry_0-107.txt" lio116="$out/lio_odometry_116-165.txt"
-sed -n 1,108p "$mulran/lio_odometry_poses.txt" >"$lio0"
-sed -n 117,166p "$mulran/lio_odometry_poses.txt" >"$lio116"
+# A MulRan stretch's rows of the reference and of its lidar-inertial odometry (KITTI files).
+stretch() {  # stretch <first scan> <scans>: writes $out/{reference,lio_odometry}_<first>.txt
+  local rows="$(($1 + 1)),$(($1 + $2))p"
+  sed -n "$rows" "$mulran/poses.txt" >"$out/reference_$1.txt"
+  sed -n "$rows" "$mulran/lio_odometry_poses.txt" >"$out/lio_odometry_$1.txt"
+}
+stretch 0 108
+stretch 116 50
 # ML-NDT with every core (the default) and on one thread (`-j 1`: the same trajectory, bit for bit).
 # The baseline is the peer as a plain GICP loop runs it: scan to scan, no recovery (its trust is
 # still counted).
@@ -65,17 +69,18 @@ for row in mlndt "mlndt -j 1" pcl_gicp; do
   [ "$row" = "mlndt -j 1" ] && extra=(-j 1)
   [ "$method" = pcl_gicp ] && extra=(--no-recover --map scan)
   run campus "campus (468 scans, odometry guess)" "$row" "$method" campus - "${extra[@]}"
-  run mulran0 "MulRan 0–107" "$row" "$method" "$mulran" "$lio0" --first 0 --scans 108 "${extra[@]}"
-  run mulran116 "MulRan 116–165" "$row" "$method" "$mulran" "$lio116" --first 116 --scans 50 "${extra[@]}"
+  run mulran0 "MulRan 0–107" "$row" "$method" "$mulran" "$out/lio_odometry_0.txt" --first 0 --scans 108 \
+      "${extra[@]}"
+  run mulran116 "MulRan 116–165" "$row" "$method" "$mulran" "$out/lio_odometry_116.txt" --first 116 --scans 50 \
+      "${extra[@]}"
 done
 # The reference's two versions against each other: its lidar-inertial odometry scored against the
 # reference like an estimate (no timing, no trust: it is not a Sextant run).
-reference_row() {  # reference_row <label> <first KITTI row> <last KITTI row> <its lidar-inertial odometry>
-  sed -n "$2,$3p" "$mulran/poses.txt" >"$out/reference_$2-$3.txt"
-  "$sextant" eval "$out/reference_$2-$3.txt" "$4" --format kitti --json |
+reference_row() {  # reference_row <label> <first scan of the stretch>
+  "$sextant" eval "$out/reference_$2.txt" "$out/lio_odometry_$2.txt" --format kitti --json |
     sed -E 's/.*"summary": \{[^}]*"ate_m": ([^,]*),[^}]*"rpe_m": ([^,]*), "rpe_deg": ([^,]*),[^}]*"drift_percent": ([^,]*),.*"rotation_deg": \[[^,]*, ([^,]*),.*"rotation_deg_standard_error": \[[^,]*, ([^,]*),.*/\1 \2 \3 \4 \5 \6/' |
     awk -v label="$1" '{ printf "| %s | the reference'"'"'s lidar-inertial odometry | %.3f | %.3f / %.2f | %.2f | – | %.3f ± %.3f | – | – | – | – | – |\n", label, $1, $2, $3, $4, $5, $6 }'
 }
-reference_row "MulRan 0–107" 1 108 "$lio0"
-reference_row "MulRan 116–165" 117 166 "$lio116"
+reference_row "MulRan 0–107" 0
+reference_row "MulRan 116–165" 116
 echo "(outputs in $out)"
