@@ -4,7 +4,11 @@
 #include <chrono>
 #include <utility>
 
+#include <fmt/format.h>
+
+#include "sextant/core/pose.hpp"
 #include "sextant/core/rng.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/odometry/sequence_trust.hpp"
 #include "sextant/odometry/suspect_choice.hpp"
 
@@ -14,6 +18,15 @@ namespace {
 /// Fits within this factor of each other count as equal when no registration is trusted: the
 /// sequence check's own tolerance (SequenceTrustSettings::fit_factor) [ratio].
 constexpr double kSuspectFitBand = SequenceTrustSettings{}.fit_factor;
+
+/// Two registrations of one step farther apart than this cannot both be right: at least one is off
+/// by half of it, the size of step error the trust status exists to catch (issue 22: 1 m, 5°).
+constexpr double kDisagreeMetres = 1.0, kDisagreeDegrees = 5.0;
+
+bool disagree(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
+  const Eigen::Isometry3d d = relative(a, b);
+  return translation_norm(d) > kDisagreeMetres || rotation_angle(d) * kDegPerRad > kDisagreeDegrees;
+}
 
 }  // namespace
 
@@ -48,6 +61,12 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
       suspects.push_back(candidate);
   };
   consider(step, step.first_trust);
+  // A first registration that passed its own checks and was flagged by the sequence check alone is
+  // still a candidate: a trusted recovery far from it is a second answer, not a correction, and
+  // with two answers the scans cannot tell which is right (MulRan keyframes 2 apart: the wide
+  // basin slid 11 m along the road from a right first try, both trusted).
+  const bool sound_first = step.converged && step.first_trust == Trust::kOk;
+  bool ambiguous = false;
   std::vector<Eigen::Isometry3d> tries;
   for (const Eigen::Isometry3d& start : starts)
     if (wide_basin_ || !start.isApprox(step.guess, 1e-12)) tries.push_back(start);  // else tried already
@@ -67,6 +86,11 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
     const PairMatch w = align_sample(*recovery_, sample, start, settings_.quality);
     OdometryStep again = to_step(w, reference, step.guess);
     seconds += again.seconds;
+    if (again.trusted() && sound_first && disagree(again.relative, step.relative)) {
+      ambiguous = true;
+      consider(again, again.quality.trust);
+      continue;
+    }
     if (again.trusted()) {
       again.first_trust = step.first_trust;
       again.recovery = wide_basin_ ? "wide_basin" : "restart";
@@ -88,6 +112,11 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
     step.first_trust = first;
     step.quality.trust = Trust::kSuspect;
     step.recovery = "least_suspect";
+    if (ambiguous)
+      step.quality.reason = fmt::format(
+          "ambiguous: a trusted recovery lies more than {} m or {}° from the first registration, which "
+          "passed its own checks",
+          kDisagreeMetres, kDisagreeDegrees);
   } else {
     step.recovery = starts.back().isApprox(step.guess, 1e-12) ? "guess" : "last_motion";
     step.relative = starts.back();

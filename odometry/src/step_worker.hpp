@@ -27,7 +27,9 @@ class StepWorker {
   /// (suspect_choice.hpp), else `starts.back()` (the last trusted motion), and stays untrusted. The sequence
   /// check only triggers this search: the wide basin's answer is judged on its own
   /// (registration_quality.hpp), since a step may rightly overlap less than its neighbours (a corner, an open
-  /// space; measured on the campus: right poses 0.70 where the median is 0.87).
+  /// space; measured on the campus: right poses 0.70 where the median is 0.87). A first registration
+  /// that passed its own checks stays a candidate: a trusted recovery more than 1 m or 5° from it is a
+  /// second answer, and the step is then chained as the least suspect and says it is ambiguous.
   void recover(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
                const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed);
 
