@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "layer_objective.hpp"
+#include "sextant/matchers/registration_quality.hpp"
 
 namespace sextant {
 
@@ -90,6 +91,14 @@ bool same_model(const MlndtSettings& a, const MlndtSettings& b) {
          a.precision.min_cell == b.precision.min_cell && a.precision.min_coverage == b.precision.min_coverage;
 }
 
+/// Keeps `other`, a solution not chosen, in `best.alternatives` when it converged (without its trace).
+void add_alternative(RegistrationResult& best, RegistrationResult other) {
+  if (!other.converged) return;
+  other.trace.clear();
+  other.alternatives.clear();
+  best.alternatives.push_back(std::move(other));
+}
+
 const std::vector<NdtGrid>& no_grids() {
   static const std::vector<NdtGrid> none;
   return none;
@@ -118,47 +127,58 @@ RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Iso
     return not_started(layers.empty() ? Termination::kEmptyInput
                                       : empty_model_reason(model_->reference_points, layers.back()),
                        input.size(), initial);
-  const LayerObjective objective(layers, settings_, input, *threads_);
   const auto start = std::chrono::steady_clock::now();
-  const auto since_start = [&] {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
-  if (!settings_.wide_basin.enabled) {
-    if (!settings_.refine_first || settings_.start_layer == settings_.pyramid.layers)
-      return refine(input, optimize(objective, initial, settings_.optimizer));
-    MlndtSettings last_layer = settings_;
-    last_layer.start_layer = settings_.pyramid.layers;
-    const LayerObjective last_only(layers, last_layer, input, *threads_);
-    // The last layer alone and the pyramid from the start layer, side by side.
-    RegistrationResult refined, full;
-    threads_->for_each(2, [&](std::size_t run) {
-      (run == 0 ? refined : full) = optimize(run == 0 ? last_only : objective, initial, settings_.optimizer);
-    });
-    // Same input, same last layer: the final scores compare directly (as the wide basin's do).
-    const bool refined_usable =
-        refined.why == Termination::kConverged || refined.why == Termination::kMaxIterations;
-    RegistrationResult best =
-        refined_usable && refined.score < full.score ? std::move(refined) : std::move(full);
-    best.seconds = since_start();
-    return refine(input, std::move(best));
+  // The runs, each an objective from a start: the pyramid from the start layer at the guess; with
+  // refine_first the last layer alone there too (§5.1.1.3: a good guess starts at the last layer);
+  // with the wide basin its hypotheses, each from the layer they were scored at: a hypothesis lies
+  // within half a grid step of its pose, and the coarser layers would only pull it back towards the
+  // guess (on sparse keyframes their cells hold single lidar rings, which coincide at zero motion).
+  const LayerObjective pyramid(layers, settings_, input, *threads_);
+  MlndtSettings last_layer = settings_, from_scoring = settings_;
+  last_layer.start_layer = settings_.pyramid.layers;
+  from_scoring.start_layer =
+      std::max(settings_.start_layer,
+               static_cast<int>(wide_basin_layer(layers, 2.0 * settings_.wide_basin.translation_step)) + 1);
+  const LayerObjective last_only(layers, last_layer, input, *threads_);
+  const LayerObjective hypothesis(layers, from_scoring, input, *threads_);
+  std::vector<std::pair<const LayerObjective*, Eigen::Isometry3d>> runs{{&pyramid, initial}};
+  if (settings_.refine_first && settings_.start_layer < settings_.pyramid.layers)
+    runs.emplace_back(&last_only, initial);
+  if (settings_.wide_basin.enabled) {
+    const std::vector<Eigen::Isometry3d> starts =
+        wide_basin_starts(layers, input, initial, settings_.wide_basin, *threads_);
+    for (std::size_t k = 1; k < starts.size(); ++k)
+      runs.emplace_back(&hypothesis, starts[k]);  // 0: the guess
   }
-  // Wide basin: refine the initial guess and the best coarse-layer hypotheses; keep the lowest
-  // final score (same input, same last layer, so the scores compare directly), the first of equals.
-  const std::vector<Eigen::Isometry3d> starts =
-      wide_basin_starts(layers, input, initial, settings_.wide_basin, *threads_);
-  std::vector<RegistrationResult> runs(starts.size());
-  threads_->for_each(starts.size(),
-                     [&](std::size_t k) { runs[k] = optimize(objective, starts[k], settings_.optimizer); });
-  RegistrationResult best;
+  std::vector<RegistrationResult> results(runs.size());
+  threads_->for_each(runs.size(), [&](std::size_t k) {
+    results[k] = optimize(*runs[k].first, runs[k].second, settings_.optimizer);
+  });
+  // A run that passes the trust checks (registration_quality.hpp, default thresholds) wins over one
+  // that does not; among equals the lowest final score (same input, same last layer: the scores
+  // compare directly), the first of equals. The score alone let the coarse layers' pose win from the
+  // reference pose of sparse keyframes (MulRan 164→165: 8 m back to zero motion, fit 1.41, where the
+  // unmatched penalty rewards a pose whose lidar rings coincide with the reference's) over the last
+  // layer's, which stayed and passes. The others stay as alternatives (ambiguity).
+  const QualitySettings checks;
+  std::vector<bool> passes(results.size());
+  for (std::size_t k = 0; k < results.size(); ++k)
+    passes[k] = assess_registration(results[k], input, checks).trusted();
+  std::size_t chosen = 0;
   bool have = false;
-  for (RegistrationResult& r : runs) {
+  for (std::size_t k = 0; k < results.size(); ++k) {
+    const RegistrationResult& r = results[k];
     const bool usable = r.why == Termination::kConverged || r.why == Termination::kMaxIterations;
-    if (!have || (usable && r.score < best.score)) {
-      best = std::move(r);
+    const bool better = passes[k] != passes[chosen] ? passes[k] : r.score < results[chosen].score;
+    if (!have || (usable && better)) {
+      chosen = k;
       have = usable;
     }
   }
-  best.seconds = since_start();
+  RegistrationResult best = std::move(results[chosen]);
+  for (std::size_t k = 0; k < results.size(); ++k)
+    if (k != chosen) add_alternative(best, std::move(results[k]));
+  best.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return refine(input, std::move(best));
 }
 

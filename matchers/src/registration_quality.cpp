@@ -9,6 +9,9 @@
 
 #include <fmt/format.h>
 
+#include "sextant/core/pose.hpp"
+#include "sextant/core/units.hpp"
+
 namespace sextant {
 
 std::string to_string(Trust trust) {
@@ -30,6 +33,10 @@ bool QualitySettings::valid(std::string* why) const {
     problem = "min_constraint_ratio must lie in [0, 1)";
   else if (!(max_fit_ratio > 0.0))
     problem = "max_fit_ratio must be positive (.inf: no fit check)";
+  else if (!(ambiguity_metres > 0.0) || !(ambiguity_degrees > 0.0))
+    problem = "ambiguity_metres and ambiguity_degrees must be positive (.inf: no ambiguity check)";
+  else if (!(ambiguity_fit_band >= 1.0))
+    problem = "ambiguity_fit_band must be at least 1";
   if (problem && why) *why = problem;
   return problem == nullptr;
 }
@@ -69,8 +76,17 @@ double constraint_ratio(const Matrix6d& H, double range) {
   return std::max(0.0, l.minCoeff()) / strongest;  // an indefinite H: 0
 }
 
-RegistrationQuality assess_registration(const RegistrationResult& result, const PointCloud& input,
-                                        const QualitySettings& settings) {
+bool far_apart(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, const QualitySettings& settings) {
+  const Eigen::Isometry3d d = relative(a, b);
+  return translation_norm(d) > settings.ambiguity_metres ||
+         rotation_angle(d) * kDegPerRad > settings.ambiguity_degrees;
+}
+
+namespace {
+
+/// The checks on `result` alone (its alternatives left out).
+RegistrationQuality assess_alone(const RegistrationResult& result, const PointCloud& input,
+                                 const QualitySettings& settings) {
   RegistrationQuality q;
   q.assessed = true;
   q.overlap = result.input_points == 0
@@ -96,6 +112,28 @@ RegistrationQuality assess_registration(const RegistrationResult& result, const 
                            q.fit_ratio, settings.max_fit_ratio);
   } else {
     q.trust = Trust::kOk;
+  }
+  return q;
+}
+
+}  // namespace
+
+RegistrationQuality assess_registration(const RegistrationResult& result, const PointCloud& input,
+                                        const QualitySettings& settings) {
+  RegistrationQuality q = assess_alone(result, input, settings);
+  if (!q.trusted()) return q;
+  for (const RegistrationResult& other : result.alternatives) {
+    if (!far_apart(result.T, other.T, settings)) continue;
+    const RegistrationQuality alone = assess_alone(other, input, settings);
+    if (!alone.trusted() || alone.fit_ratio > settings.ambiguity_fit_band * q.fit_ratio) continue;
+    const Eigen::Isometry3d d = relative(result.T, other.T);
+    q.trust = Trust::kSuspect;
+    q.ambiguous = true;
+    q.reason = fmt::format(
+        "ambiguous: another solution {:.2f} m and {:.1f}° away passes the same checks (fit {:.2f}, overlap "
+        "{:.2f})",
+        translation_norm(d), rotation_angle(d) * kDegPerRad, alone.fit_ratio, alone.overlap);
+    break;
   }
   return q;
 }

@@ -86,6 +86,42 @@ TEST(RegistrationQuality, EachCheckDecidesItsOwnCase) {
   EXPECT_DOUBLE_EQ(poor.fit_ratio, 1.5);
 }
 
+// Another solution that passes the checks, fits about as well and lies more than 1 m or 5° away makes
+// the result ambiguous (suspect); a near one, a failing one or a clearly worse fitting one does not.
+TEST(RegistrationQuality, AFarAlternativeThatPassesMakesTheResultAmbiguous) {
+  const PointCloud input = ring_of_points(10.0);
+  const Matrix6d full = Matrix6d::Identity() * 100.0;
+  const RegistrationResult result = converged_result(90, 100, full);
+  const auto with = [&](const Eigen::Isometry3d& at, double mean_matched, std::size_t matched) {
+    RegistrationResult r = result;
+    RegistrationResult other = converged_result(matched, 100, full);
+    other.T = at;
+    other.mean_matched_score = mean_matched;
+    r.alternatives.push_back(other);
+    return assess_registration(r, input);
+  };
+  const Eigen::Isometry3d metres_away = Eigen::Isometry3d(Eigen::Translation3d(1.2, 0.0, 0.0));
+  const RegistrationQuality far = with(metres_away, 3.2, 85);
+  EXPECT_EQ(far.trust, Trust::kSuspect);
+  EXPECT_TRUE(far.ambiguous);
+  EXPECT_NE(far.reason.find("ambiguous: another solution 1.20 m"), std::string::npos) << far.reason;
+  EXPECT_DOUBLE_EQ(far.fit_ratio, 1.0) << "the result's own numbers stay";
+  const Eigen::Isometry3d turned(Eigen::AngleAxisd(6.0 * M_PI / 180.0, Eigen::Vector3d::UnitZ()));
+  EXPECT_TRUE(with(turned, 3.0, 90).ambiguous) << "6° away";
+
+  const Eigen::Isometry3d near = Eigen::Isometry3d(Eigen::Translation3d(0.8, 0.0, 0.0));
+  EXPECT_EQ(with(near, 3.0, 90).trust, Trust::kOk) << "0.8 m: the same answer";
+  EXPECT_EQ(with(metres_away, 3.0, 30).trust, Trust::kOk) << "the alternative has too little overlap";
+  EXPECT_EQ(with(metres_away, 3.4, 90).trust, Trust::kOk) << "fits 1.13 × worse: told apart";
+  RegistrationResult failing = result;
+  failing.mean_matched_score = 4.5;  // the result itself is suspect for its fit: no ambiguity to add
+  failing.alternatives.push_back(converged_result(90, 100, full));
+  failing.alternatives.back().T = metres_away;
+  const RegistrationQuality own = assess_registration(failing, input);
+  EXPECT_EQ(own.trust, Trust::kSuspect);
+  EXPECT_FALSE(own.ambiguous);
+}
+
 TEST(RegistrationQuality, ConstraintRatioScalesRotationsToMetres) {
   // H = diag(1, 1, 1, L², L², L²): every direction equally constrained in metres at range L.
   Matrix6d H = Matrix6d::Identity();

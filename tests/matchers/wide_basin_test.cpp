@@ -100,7 +100,11 @@ TEST(WideBasin, RecoversACampusPairDisplaced12MetresAnd60Degrees) {
   const Outcome o = register_both(campus.scan(150).cloud, input, D * T,
                                   "solver: lm, layers: 6, max_distance: 16, unmatched_penalty: 16");
   EXPECT_TRUE(o.plain_m > 0.5 || o.plain_rad > 5 * kRadPerDeg) << "plain ML-NDT was expected to fail";
-  EXPECT_LT(o.wide_m, 0.05);
+  // 7.2 cm: the hypotheses are refined from the layer they were scored at (layer 3 of 6), where two
+  // neighbouring ones end 16 cm apart on this quarter of a synthetic scan; from layer 2 they met
+  // within 2 cm. The start at the scoring layer is what keeps real keyframes from sliding back to
+  // zero motion (RealSequence.MulranPairsFromTheIdentityAreRightOrSaySo).
+  EXPECT_LT(o.wide_m, 0.1);
   EXPECT_LT(o.wide_rad, 0.3 * kRadPerDeg);
 }
 

@@ -9,7 +9,10 @@
 // step off in x and y, ≤ half a yaw step in rotation) still puts most points in their own cell or
 // a neighbour (measured in bench_wide_basin: one translation step gave a too narrow score peak). The
 // `candidates` best hypotheses that differ by more than one grid step (plus the initial guess) are
-// refined by the full ML-NDT registration; the lowest final score wins.
+// refined by ML-NDT: the guess as an ordinary registration, each hypothesis from the layer it was
+// scored at (it is resolved to that layer's cells; the coarser ones pulled real keyframes back to
+// zero motion). The run chosen is MlndtMatcher::align's: one that passes the trust checks, else the
+// lowest final score; the others are the result's alternatives (registration_quality.hpp).
 //
 // YAML (key `wide_basin:` of mlndt and fbmlndt; absent = off, the thesis' registration):
 //   wide_basin: {yaw_step_deg: 10, yaw_range_deg: 180, translation_step: 2,

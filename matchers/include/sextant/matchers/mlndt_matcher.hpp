@@ -47,11 +47,14 @@ struct MlndtSettings {
   WideBasinSettings wide_basin;
   /// A guess is kept when it is good (§5.1.1.3: "if the odometry data provides a good initial
   /// estimation … the algorithm should be started with the … last layer"): besides the pyramid from
-  /// start_layer, the last layer alone runs from the initial pose, and the lower final score wins
-  /// (same input, same last layer). A right guess is not pulled away by the coarse layers (MulRan
-  /// from the reference pose: 20 cm with s = 2 alone, 4.7 cm from the last layer), a wrong one is not
-  /// kept for its local fit (the campus' biased odometry: 0.7 m off from the last layer alone, with a
-  /// fit and overlap that pass the trust checks). Off in the `thesis` preset.
+  /// start_layer, the last layer alone runs from the initial pose. A run that passes the trust checks
+  /// (registration_quality.hpp) wins over one that does not, else the lower final score (same input,
+  /// same last layer); the other stays as the result's alternative. A right guess is not pulled away
+  /// by the coarse layers (MulRan from the reference pose: 20 cm with s = 2 alone, 4.7 cm from the
+  /// last layer; backwards, 164 into 165, the coarse layers' run slid 8 m to zero motion with the
+  /// lower score and fails the fit check), a wrong one is not kept for its local fit (the campus'
+  /// biased odometry: 0.7 m off from the last layer alone, with a fit and overlap that pass the trust
+  /// checks, as the pyramid's right pose does, with the lower score). Off in the `thesis` preset.
   bool refine_first = true;
   /// Finer grids after the pyramid's pose, from that pose only (precision_stage.hpp); off
   /// (min_cell 0) in the `thesis` preset

@@ -20,7 +20,13 @@
 //           not_converged — the optimiser did not converge (result.why says why)
 //           degenerate  — weakest / strongest constraint below min_constraint_ratio
 //           low_overlap — overlap below min_overlap
-//           suspect     — the fit is worse than max_fit_ratio × the prediction
+//           suspect     — the fit is worse than max_fit_ratio × the prediction, or the result is
+//                         ambiguous: another solution the matcher reached (result.alternatives)
+//                         passes the same checks, fits about as well (ambiguity_fit_band) and lies
+//                         more than ambiguity_metres or ambiguity_degrees away. Two poses that far apart
+//                         cannot both be right, and the checks cannot tell which is (MulRan keyframes 159→160
+//                         from the identity: the wide basin's starts end 7 cm and 8 m from the truth, both
+//                         pass).
 #include <string>
 
 #include "sextant/core/point_cloud.hpp"
@@ -41,6 +47,15 @@ struct QualitySettings {
   /// registration is suspect: right poses fit 0.86–1.26 × on the campus and MulRan, poses that slid
   /// or stuck 1.42–1.72 × [ratio]
   double max_fit_ratio = 1.3;
+  /// Two solutions that pass the checks and lie farther apart than this make a result ambiguous: at
+  /// least one of them is off by half of it, the size of error the trust status exists to catch
+  /// (issue 22: no step 1 m or 5° off is trusted) [m, °]
+  double ambiguity_metres = 1.0;
+  double ambiguity_degrees = 5.0;
+  /// ... and that fits within this factor of the result: an alternative whose matched points fit
+  /// clearly worse is told apart by the scans (on MulRan right steps fit 1.01–1.03 with passing
+  /// alternatives 8 m away at 1.23–1.27) [ratio ≥ 1]
+  double ambiguity_fit_band = 1.1;
   bool valid(std::string* why) const;
 };
 
@@ -56,8 +71,12 @@ double rms_range(const PointCloud& cloud);
 
 /// The assessment of `result`, a registration of `input` (the points that were matched, already
 /// sampled), from its overlap, Hessian and fit (result.mean_matched_score against
-/// result.predicted_matched_score; no fit check when the matcher predicts nothing).
+/// result.predicted_matched_score; no fit check when the matcher predicts nothing), and, when those
+/// pass, from its alternatives.
 RegistrationQuality assess_registration(const RegistrationResult& result, const PointCloud& input,
                                         const QualitySettings& settings = {});
+
+/// Whether `a` and `b` lie farther apart than the settings' ambiguity tolerance (either part).
+bool far_apart(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, const QualitySettings& settings);
 
 }  // namespace sextant

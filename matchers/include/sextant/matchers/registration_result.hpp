@@ -49,6 +49,9 @@ struct RegistrationQuality {
   double fit_ratio = 0.0;         ///< mean matched score / its prediction (0: no prediction)
   Trust trust = Trust::kNotConverged;
   std::string reason;  ///< empty when ok, else one line that says why not
+  /// Suspect only because another solution passes the same checks far away (the result alone
+  /// passes them)
+  bool ambiguous = false;
   bool trusted() const { return assessed && trust == Trust::kOk; }
 };
 
@@ -72,6 +75,10 @@ struct RegistrationResult {
   /// Empty, or what the matcher fell back to and why (e.g. FbML-NDT on a degenerate feature sample:
   /// "feature sample degenerate (normals span fewer than three directions (0.0004)): added 5120 GBS points").
   std::string fallback;
+  /// Other solutions the matcher reached and did not choose: the wide basin's other refined starts,
+  /// refine_first's other run (each without trace or alternatives of its own). assess_registration
+  /// calls the result ambiguous (suspect) when one of them passes the same checks far from it.
+  std::vector<RegistrationResult> alternatives;
 
   /// One line: "converged after 12 iterations (converged), score …, 1234 matched, 0.012 s[; fallback: …]".
   std::string summary() const;
