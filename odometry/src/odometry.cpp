@@ -164,6 +164,7 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
   StepWorker worker(s);
   SequenceTrust trust;
   Eigen::Isometry3d last_trusted = Eigen::Isometry3d::Identity();  // the last trusted relative motion
+  bool any_trusted = false;
   std::vector<OdometryStep> steps;
   std::deque<PointCloud> window;               // the last scans, oldest first
   std::deque<Eigen::Isometry3d> window_poses;  // their chained poses (frame of the sequence's first scan)
@@ -178,8 +179,18 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
     if (k + 1 < count) prefetch.run([&] { next = load_sequence_scan(dataset, first + k + 1, s.min_range); });
     Eigen::Isometry3d guess = Eigen::Isometry3d::Identity();
     if (s.guess == OdometryGuess::odometry) guess = relative(odometry[k - 1], odometry[k]);
-    if (s.guess == OdometryGuess::constant_velocity)
+    // Constant velocity, unless every registration is to be chained as it comes (--no-recover): no
+    // motion is known before the first trusted step (the first registration then searches), and
+    // where velocity × Δt lies far from the last motion per scan (the vehicle accelerated, or the
+    // keyframes follow distance, not time) both are priors.
+    std::vector<Eigen::Isometry3d> other_priors;
+    bool search = false;
+    if (s.guess == OdometryGuess::constant_velocity) {
       guess = scale_motion(last_trusted, time_ratio(dataset, first + k));
+      search = s.recover && !any_trusted;
+      if (s.recover && any_trusted && far_apart(guess, last_trusted, s.quality))
+        other_priors.push_back(last_trusted);
+    }
     const Eigen::Isometry3d& previous_pose = window_poses.back();
     if (s.map == OdometryMap::local_map && window.size() > 1) {
       std::vector<const PointCloud*> clouds;
@@ -189,16 +200,19 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
         poses.push_back(relative(previous_pose, window_poses[j]));
       }
       const PointCloud map = merge_local_map(clouds, poses, s.local_map_max_points, s.local_map_voxel);
-      steps.push_back(worker.first_try(map, input, guess, seeds[k]));
+      steps.push_back(worker.first_try(map, input, guess, seeds[k], other_priors, search));
       trust.check(steps.back().quality);
       worker.recover(steps.back(), map, input, recovery_starts(s, guess, last_trusted), seeds[k]);
     } else {
-      steps.push_back(worker.first_try(window.back(), input, guess, seeds[k]));
+      steps.push_back(worker.first_try(window.back(), input, guess, seeds[k], other_priors, search));
       trust.check(steps.back().quality);
       worker.recover(steps.back(), window.back(), input, recovery_starts(s, guess, last_trusted), seeds[k]);
     }
     trust.record(steps.back().quality);
-    if (steps.back().trusted()) last_trusted = steps.back().relative;
+    if (steps.back().trusted()) {
+      last_trusted = steps.back().relative;
+      any_trusted = true;
+    }
     // An untrusted step places its scan by a registration we do not believe: the older scans of the
     // window are then placed against it by that same doubtful motion, so the map starts again from
     // this scan alone (a wrong step would otherwise fit the map it made and pass the trust checks).

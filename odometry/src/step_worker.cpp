@@ -1,14 +1,14 @@
 // One odometry step's registrations (step_worker.hpp).
 #include "step_worker.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <utility>
 
 #include <fmt/format.h>
 
-#include "sextant/core/pose.hpp"
 #include "sextant/core/rng.hpp"
-#include "sextant/core/units.hpp"
+#include "sextant/matchers/registration_quality.hpp"
 #include "sextant/odometry/sequence_trust.hpp"
 #include "sextant/odometry/suspect_choice.hpp"
 
@@ -18,15 +18,6 @@ namespace {
 /// Fits within this factor of each other count as equal when no registration is trusted: the
 /// sequence check's own tolerance (SequenceTrustSettings::fit_factor) [ratio].
 constexpr double kSuspectFitBand = SequenceTrustSettings{}.fit_factor;
-
-/// Two registrations of one step farther apart than this cannot both be right: at least one is off
-/// by half of it, the size of step error the trust status exists to catch (issue 22: 1 m, 5°).
-constexpr double kDisagreeMetres = 1.0, kDisagreeDegrees = 5.0;
-
-bool disagree(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
-  const Eigen::Isometry3d d = relative(a, b);
-  return translation_norm(d) > kDisagreeMetres || rotation_angle(d) * kDegPerRad > kDisagreeDegrees;
-}
 
 }  // namespace
 
@@ -39,10 +30,36 @@ StepWorker::StepWorker(const OdometrySettings& s)
 }
 
 OdometryStep StepWorker::first_try(const PointCloud& reference, const PointCloud& input,
-                                   const Eigen::Isometry3d& guess, std::uint64_t seed) {
+                                   const Eigen::Isometry3d& guess, std::uint64_t seed,
+                                   const std::vector<Eigen::Isometry3d>& other_priors, bool search) {
   Rng rng(seed);
-  const PairMatch m = match_pair(*matcher_, *sampler_, reference, input, guess, rng, settings_.quality);
-  matcher_reference_ = &reference;
+  const SampledInput sample = sample_input(*sampler_, input, rng);
+  Matcher& matcher = search && recovery_ ? *recovery_ : *matcher_;
+  const auto model_start = std::chrono::steady_clock::now();
+  matcher.set_reference(reference);
+  const double reference_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - model_start).count();
+  matcher_reference_ = &matcher == matcher_.get() ? &reference : nullptr;
+  recovery_reference_ = &matcher == recovery_.get() ? &reference : nullptr;
+  searched_ = &matcher == recovery_.get() && wide_basin_;
+  PairMatch m = align_sample(matcher, sample, guess, settings_.quality);
+  m.reference_seconds = reference_seconds;
+  m.sampling_seconds = sample.seconds;
+  // Every prior the sequence offers is a start; their solutions are the result's alternatives, and
+  // two that pass the checks far apart make it ambiguous (registration_quality.hpp).
+  for (const Eigen::Isometry3d& prior : other_priors) {
+    PairMatch other = align_sample(matcher, sample, prior, settings_.quality);
+    m.result.seconds += other.result.seconds;
+    for (RegistrationResult& alternative : other.result.alternatives)
+      m.result.alternatives.push_back(std::move(alternative));
+    other.result.alternatives.clear();
+    other.result.trace.clear();
+    m.result.alternatives.push_back(std::move(other.result));
+  }
+  if (!other_priors.empty())
+    m.result.quality = assess_registration(m.result, sample.points, settings_.quality);
+  answers_.clear();
+  remember(m, sample.points);
   OdometryStep step = to_step(m, reference, guess);
   step.first_trust = step.quality.trust;
   return step;
@@ -61,15 +78,23 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
       suspects.push_back(candidate);
   };
   consider(step, step.first_trust);
-  // A first registration that passed its own checks and was flagged by the sequence check alone is
-  // still a candidate: a trusted recovery far from it is a second answer, not a correction, and
-  // with two answers the scans cannot tell which is right (MulRan keyframes 2 apart: the wide
-  // basin slid 11 m along the road from a right first try, both trusted).
-  const bool sound_first = step.converged && step.first_trust == Trust::kOk;
+  // Every answer of this step so far (answers_: the first registration and its alternatives): a
+  // trusted recovery far from one of them corrects it only when it fits clearly better (beyond the
+  // ambiguity band); about as good, it is a second answer, and with two the scans cannot tell which
+  // is right (MulRan keyframes 2 apart: the wide basin slid 11 m along the road from a right first
+  // try, both trusted).
+  const QualitySettings& quality = settings_.quality;
+  const auto second_answer = [&](const OdometryStep& again) {
+    return std::any_of(answers_.begin(), answers_.end(), [&](const Answer& a) {
+      return far_apart(again.relative, a.relative, quality) &&
+             again.quality.fit_ratio * quality.ambiguity_fit_band >= a.fit_ratio;
+    });
+  };
   bool ambiguous = false;
   std::vector<Eigen::Isometry3d> tries;
   for (const Eigen::Isometry3d& start : starts)
-    if (wide_basin_ || !start.isApprox(step.guess, 1e-12)) tries.push_back(start);  // else tried already
+    if ((wide_basin_ && !searched_) || !start.isApprox(step.guess, 1e-12))  // else tried already
+      tries.push_back(start);
   // One sample for every start (the first try's: the same seed) and one reference model: the first
   // try's when the recovery matcher builds the same one.
   SampledInput sample;
@@ -77,8 +102,10 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
     Rng rng(seed);
     sample = sample_input(*sampler_, input, rng);
     const auto model_start = std::chrono::steady_clock::now();
-    if (&reference != matcher_reference_ || !recovery_->share_reference(*matcher_))
+    if (&reference != recovery_reference_ &&
+        (&reference != matcher_reference_ || !recovery_->share_reference(*matcher_)))
       recovery_->set_reference(reference);
+    recovery_reference_ = &reference;
     seconds += sample.seconds +
                std::chrono::duration<double>(std::chrono::steady_clock::now() - model_start).count();
   }
@@ -86,7 +113,9 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
     const PairMatch w = align_sample(*recovery_, sample, start, settings_.quality);
     OdometryStep again = to_step(w, reference, step.guess);
     seconds += again.seconds;
-    if (again.trusted() && sound_first && disagree(again.relative, step.relative)) {
+    const bool disputed = again.trusted() && second_answer(again);
+    remember(w, sample.points);
+    if (disputed) {
       ambiguous = true;
       consider(again, again.quality.trust);
       continue;
@@ -114,14 +143,25 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
     step.recovery = "least_suspect";
     if (ambiguous)
       step.quality.reason = fmt::format(
-          "ambiguous: a trusted recovery lies more than {} m or {}° from the first registration, which "
-          "passed its own checks",
-          kDisagreeMetres, kDisagreeDegrees);
+          "ambiguous: a trusted recovery lies more than {} m or {}° from another answer of this step and "
+          "fits about as well",
+          quality.ambiguity_metres, quality.ambiguity_degrees);
   } else {
     step.recovery = starts.back().isApprox(step.guess, 1e-12) ? "guess" : "last_motion";
     step.relative = starts.back();
   }
   step.seconds = seconds;
+}
+
+void StepWorker::remember(const PairMatch& m, const PointCloud& sample) {
+  const RegistrationResult& r = m.result;
+  const Trust trust = r.quality.trust;
+  if (r.converged && (trust == Trust::kOk || trust == Trust::kSuspect))  // at most its fit is poor
+    answers_.push_back({r.T, r.quality.fit_ratio});
+  for (const RegistrationResult& other : r.alternatives) {
+    const RegistrationQuality q = assess_registration(other, sample, settings_.quality);
+    if (q.trusted()) answers_.push_back({other.T, q.fit_ratio});
+  }
 }
 
 OdometryStep StepWorker::to_step(const PairMatch& m, const PointCloud& reference,

@@ -18,32 +18,52 @@ class StepWorker {
  public:
   explicit StepWorker(const OdometrySettings& s);
 
-  /// The first registration from `guess`, assessed on its own (absolute checks).
+  /// The first registration from `guess`, assessed on its own (absolute checks). `other_priors`:
+  /// further starts the sequence offers (constant velocity: the last motion unscaled, where velocity ×
+  /// Δt lies far from it), registered too and kept as the result's alternatives, so that two priors
+  /// leading to two trusted poses far apart make the step ambiguous. `search`: there is no prior
+  /// (no motion known yet), and the first registration is the wide basin's, as `sextant match`'s
+  /// without --init.
   OdometryStep first_try(const PointCloud& reference, const PointCloud& input, const Eigen::Isometry3d& guess,
-                         std::uint64_t seed);
+                         std::uint64_t seed, const std::vector<Eigen::Isometry3d>& other_priors = {},
+                         bool search = false);
 
   /// An untrusted step: the wide basin from each of `starts` (the guess first) until a registration
   /// is trusted; when none is, the step chains one of the registrations whose only flaw is their fit
   /// (suspect_choice.hpp), else `starts.back()` (the last trusted motion), and stays untrusted. The sequence
   /// check only triggers this search: the wide basin's answer is judged on its own
   /// (registration_quality.hpp), since a step may rightly overlap less than its neighbours (a corner, an open
-  /// space; measured on the campus: right poses 0.70 where the median is 0.87). A first registration
-  /// that passed its own checks stays a candidate: a trusted recovery more than 1 m or 5° from it is a
-  /// second answer, and the step is then chained as the least suspect and says it is ambiguous.
+  /// space; measured on the campus: right poses 0.70 where the median is 0.87). Every registration of
+  /// the step is an answer (the first, its alternatives, each recovery): a trusted recovery far from an
+  /// answer (QualitySettings' ambiguity tolerance) that does not fit clearly better than it is a second
+  /// answer, and when nothing else is trusted the step is chained as the least suspect and says it is
+  /// ambiguous.
   void recover(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
                const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed);
 
  private:
   OdometryStep to_step(const PairMatch& m, const PointCloud& reference, const Eigen::Isometry3d& guess) const;
+  /// Keeps the answers of `m`, a registration of `sample`: its pose when it converged and at most its
+  /// fit is poor, and its alternatives that pass the trust checks.
+  void remember(const PairMatch& m, const PointCloud& sample);
+
+  /// A pose one registration of this step reached, with its fit ratio.
+  struct Answer {
+    Eigen::Isometry3d relative;
+    double fit_ratio = 0.0;
+  };
 
   std::unique_ptr<Matcher> matcher_;
   /// What recovers an untrusted step: the matcher with its wide basin (mlndt, fbmlndt), else the
   /// matcher itself from the other starts; null when recovery is off.
   std::unique_ptr<Matcher> recovery_;
   bool wide_basin_ = false;
+  bool searched_ = false;        ///< this step's first registration was the wide basin's
+  std::vector<Answer> answers_;  ///< this step's answers so far (first_try, recover)
   std::unique_ptr<Sampler> sampler_;
   const OdometrySettings& settings_;
-  const PointCloud* matcher_reference_ = nullptr;  ///< what `matcher_` was last given (its model's source)
+  const PointCloud* matcher_reference_ = nullptr;   ///< what `matcher_` was last given (its model's source)
+  const PointCloud* recovery_reference_ = nullptr;  ///< what `recovery_` was last given, this step
 };
 
 }  // namespace sextant::odometry_detail
