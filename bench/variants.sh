@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Right or say so on harder versions of the MulRan stretches (issue 22): the same real keyframes read
+# every second or third one (steps 2–30 m, a car starting from rest), with and without their times,
+# and backwards (the older keyframe registered into the newer one's frame). Each variant is a folder
+# dataset of links to the shared keyframes with the matching rows of poses.txt (and times.txt), run
+# with `sextant odometry` and no options. Prints, per variant, the steps more than 1 m or 5° off the
+# reference, how many of them say trusted (the number that must be 0), the untrusted steps, the KITTI
+# drift and the time per scan.
+#
+#   bench/variants.sh [build/experiments/sextant] [path/to/mulran_riverside02] [output folder]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+# shellcheck source=bench/sequence_common.sh
+source bench/sequence_common.sh "$@"
+
+variant() {  # variant <name> <with times: yes|no> <keyframe numbers...>
+  local name=$1 times=$2 n=0 i
+  shift 2
+  local dir="$out/$name"
+  rm -rf "$dir" "$dir.out"
+  mkdir -p "$dir/scans"
+  : >"$dir/poses.txt"
+  for i in "$@"; do
+    ln -sf "$(cd "$mulran/scans" && pwd)/$(printf %06d "$i").pcd" "$dir/scans/$(printf %06d "$n").pcd"
+    sed -n "$((i + 1))p" "$mulran/poses.txt" >>"$dir/poses.txt"
+    [ "$times" = yes ] && sed -n "$((i + 1))p" "$mulran/times.txt" >>"$dir/times.txt"
+    n=$((n + 1))
+  done
+  "$sextant" odometry "$dir" --out "$dir.out" --no-progress >"$dir.log" 2>&1 ||
+    { echo "| $name | failed: see $dir.log |"; return; }
+  local m="$dir.out/metrics.json"
+  awk -F, -v name="$name" -v drift="$(field "$m" estimate drift_percent)" -v secs="$(top "$m" seconds)" '
+    NR == 1 { for (c = 1; c <= NF; ++c) col[$c] = c; next }
+    { ++steps; wrong = $col["error_m"] > 1 || $col["error_deg"] > 5
+      bad += wrong; trusted_bad += wrong && $col["trust"] == "ok"; untrusted += $col["trust"] != "ok" }
+    END { printf "| %s | %d | %d | **%d** | %d | %.2f | %.1f |\n", name, steps, bad, trusted_bad, untrusted,
+                 drift, 1000 * secs / steps }' "$dir.out/steps.csv"
+}
+
+echo "| variant | steps | steps > 1 m or 5° off | of them trusted | untrusted | KITTI drift [%] | ms per scan |"
+echo "|---|---|---|---|---|---|---|"
+variant "0–107, every 2nd" yes $(seq 0 2 107)
+variant "0–107, every 3rd" yes $(seq 0 3 107)
+variant "0–107, every 2nd, no times" no $(seq 0 2 107)
+variant "0–107 backwards" no $(seq 107 -1 0)
+variant "116–165, every 2nd" yes $(seq 116 2 165)
+variant "116–165 backwards" no $(seq 165 -1 116)
+echo "(outputs in $out)"
