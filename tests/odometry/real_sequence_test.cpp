@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -42,6 +43,35 @@ std::size_t trusted_steps_expecting_them_right(const Dataset& dataset, const Odo
                         << " m off and says trusted";
   }
   return trusted;
+}
+
+/// The MulRan keyframes `keyframes`, in that order, as a folder dataset in `folder`: links to the
+/// shared scans, their rows of poses.txt and, `with_times`, of times.txt.
+std::unique_ptr<Dataset> mulran_excerpt(const std::filesystem::path& folder,
+                                        const std::vector<std::size_t>& keyframes, bool with_times) {
+  const auto lines_of = [](const std::filesystem::path& file) {
+    std::ifstream in(file);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+  };
+  const auto six_digits = [](std::size_t k) {
+    return std::string(6 - std::to_string(k).size(), '0') + std::to_string(k);
+  };
+  const std::vector<std::string> all_poses = lines_of(kMulran / "poses.txt"),
+                                 all_times = lines_of(kMulran / "times.txt");
+  std::filesystem::create_directories(folder / "scans");
+  std::string poses, times;
+  for (std::size_t n = 0; n < keyframes.size(); ++n) {
+    const std::size_t i = keyframes[n];
+    std::filesystem::create_symlink(kMulran / "scans" / (six_digits(i) + ".pcd"),
+                                    folder / "scans" / (six_digits(n) + ".pcd"));
+    poses += all_poses.at(i) + "\n";
+    times += all_times.at(i) + "\n";
+  }
+  test::write_text(folder / "poses.txt", poses);
+  if (with_times) test::write_text(folder / "times.txt", times);
+  return open_dataset(folder);
 }
 
 TEST(RealSequence, MulranStretchIsRightOrSaysSo) {
@@ -112,31 +142,8 @@ TEST(RealSequence, MulranLocalMapIsRightOrSaysSo) {
 TEST(RealSequence, MulranEveryOtherKeyframeIsRightOrSaysSo) {
   if (!std::filesystem::is_directory(kMulran)) GTEST_SKIP() << "no " << kMulran;
   test::TempDir tmp;
-  std::filesystem::create_directories(tmp / "scans");
-  const auto lines_of = [](const std::filesystem::path& file) {
-    std::ifstream in(file);
-    std::vector<std::string> lines;
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
-    return lines;
-  };
-  const std::vector<std::string> all_poses = lines_of(kMulran / "poses.txt"),
-                                 all_times = lines_of(kMulran / "times.txt");
-  ASSERT_EQ(all_poses.size(), 166u);
-  ASSERT_EQ(all_times.size(), 166u);
-  std::string poses, times;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i <= 6; i += 2, ++n) {
-    const auto six_digits = [](std::size_t k) {
-      return std::string(6 - std::to_string(k).size(), '0') + std::to_string(k);
-    };
-    std::filesystem::create_symlink(kMulran / "scans" / (six_digits(i) + ".pcd"),
-                                    tmp / "scans" / (six_digits(n) + ".pcd"));
-    poses += all_poses[i] + "\n";
-    times += all_times[i] + "\n";
-  }
-  test::write_text(tmp / "poses.txt", poses);
-  test::write_text(tmp / "times.txt", times);
-  const auto dataset = open_dataset(tmp.path());
+  const std::size_t n = 4;
+  const auto dataset = mulran_excerpt(tmp.path(), {0, 2, 4, 6}, true);
   ASSERT_EQ(dataset->size(), n);
   ASSERT_TRUE(dataset->stamp(0).has_value());
   OdometrySettings s;
@@ -163,23 +170,11 @@ TEST(RealSequence, MulranEveryOtherKeyframeIsRightOrSaysSo) {
 TEST(RealSequence, MulranBackwardsIsRightOrSaysSo) {
   if (!std::filesystem::is_directory(kMulran)) GTEST_SKIP() << "no " << kMulran;
   test::TempDir tmp;
-  std::filesystem::create_directories(tmp / "scans");
-  std::ifstream in(kMulran / "poses.txt");
-  std::vector<std::string> all_poses;
-  for (std::string line; std::getline(in, line);) all_poses.push_back(line);
-  ASSERT_EQ(all_poses.size(), 166u);
-  const auto six_digits = [](std::size_t k) {
-    return std::string(6 - std::to_string(k).size(), '0') + std::to_string(k);
-  };
-  std::string poses;
-  std::size_t n = 0;
-  for (std::size_t i = 165; i >= 154; --i, ++n) {
-    std::filesystem::create_symlink(kMulran / "scans" / (six_digits(i) + ".pcd"),
-                                    tmp / "scans" / (six_digits(n) + ".pcd"));
-    poses += all_poses[i] + "\n";
-  }
-  test::write_text(tmp / "poses.txt", poses);
-  const auto dataset = open_dataset(tmp.path());
+  std::vector<std::size_t> keyframes;
+  for (std::size_t i = 165; i >= 154; --i) keyframes.push_back(i);
+  const std::size_t n = keyframes.size();
+  const auto dataset = mulran_excerpt(tmp.path(), keyframes, false);
+  ASSERT_FALSE(dataset->stamp(0).has_value());
   OdometrySettings s;
   s.guess = OdometryGuess::constant_velocity;
   const OdometryResult r = run_odometry(*dataset, s, 0, n);

@@ -336,8 +336,8 @@ void add_match_command(CLI::App& app, int& exit_code) {
                 "Without --init: register from the identity only (default: the wide basin searches "
                 "yaw and x/y around it); with --init: no wide-basin retry of an untrusted result");
   cmd->footer(
-      "Exit status: 0 the result is trusted; 3 it is not (not converged, low overlap, degenerate or a "
-      "poor fit; the reason is printed); 1 bad input; 2 a usage error.");
+      "Exit status: 0 the result is trusted; 3 it is not (not converged, low overlap, degenerate, a "
+      "poor fit or ambiguous; the reason is printed); 1 bad input; 2 a usage error.");
   cmd->callback([&exit_code, o] { exit_code = guarded([o] { return run_match(*o); }); });
 }
 
