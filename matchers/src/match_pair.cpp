@@ -33,10 +33,8 @@ PairMatch align_sample(Matcher& matcher, const SampledInput& sample, const Eigen
   return out;
 }
 
-PairMatch match_pair(Matcher& matcher, const Sampler& sampler, const PointCloud& reference,
-                     const PointCloud& input, const Eigen::Isometry3d& initial, Rng& rng,
-                     const QualitySettings& quality) {
-  const SampledInput sample = sample_input(sampler, input, rng);
+PairMatch match_sample(Matcher& matcher, const SampledInput& sample, const PointCloud& reference,
+                       const Eigen::Isometry3d& initial, const QualitySettings& quality) {
   const auto start = std::chrono::steady_clock::now();
   matcher.set_reference(reference);
   const double reference_seconds = seconds_since(start);
@@ -44,6 +42,12 @@ PairMatch match_pair(Matcher& matcher, const Sampler& sampler, const PointCloud&
   out.reference_seconds = reference_seconds;
   out.sampling_seconds = sample.seconds;
   return out;
+}
+
+PairMatch match_pair(Matcher& matcher, const Sampler& sampler, const PointCloud& reference,
+                     const PointCloud& input, const Eigen::Isometry3d& initial, Rng& rng,
+                     const QualitySettings& quality) {
+  return match_sample(matcher, sample_input(sampler, input, rng), reference, initial, quality);
 }
 
 }  // namespace sextant

@@ -35,16 +35,10 @@ OdometryStep StepWorker::first_try(const PointCloud& reference, const PointCloud
   Rng rng(seed);
   const SampledInput sample = sample_input(*sampler_, input, rng);
   Matcher& matcher = search && recovery_ ? *recovery_ : *matcher_;
-  const auto model_start = std::chrono::steady_clock::now();
-  matcher.set_reference(reference);
-  const double reference_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - model_start).count();
+  PairMatch m = match_sample(matcher, sample, reference, guess, settings_.quality);
   matcher_reference_ = &matcher == matcher_.get() ? &reference : nullptr;
   recovery_reference_ = &matcher == recovery_.get() ? &reference : nullptr;
   searched_ = &matcher == recovery_.get() && wide_basin_;
-  PairMatch m = align_sample(matcher, sample, guess, settings_.quality);
-  m.reference_seconds = reference_seconds;
-  m.sampling_seconds = sample.seconds;
   // Every prior the sequence offers is a start; their solutions are the result's alternatives, and
   // two that pass the checks far apart make it ambiguous (registration_quality.hpp).
   for (const Eigen::Isometry3d& prior : other_priors) {

@@ -34,6 +34,10 @@ struct SampledInput {
 };
 SampledInput sample_input(const Sampler& sampler, const PointCloud& input, Rng& rng);
 
+/// ... the reference model built from `reference` and the sample aligned against it from `initial`,
+/// assessed (match_pair's second half: the sample stays the caller's, for more starts) ...
+PairMatch match_sample(Matcher& matcher, const SampledInput& sample, const PointCloud& reference,
+                       const Eigen::Isometry3d& initial, const QualitySettings& quality = {});
 /// ... and its alignment against the reference model `matcher` holds, assessed (reference_seconds and
 /// sampling_seconds 0: the caller counts what it did once).
 PairMatch align_sample(Matcher& matcher, const SampledInput& sample, const Eigen::Isometry3d& initial,
