@@ -24,13 +24,13 @@ function(sextant_add_module name)
   install(DIRECTORY include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 endfunction()
 
-# sextant_add_test(<name> SOURCES ... DEPS ...): one GoogleTest executable per module.
-function(sextant_add_test name)
-  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
-  add_executable(${name} ${ARG_SOURCES})
-  target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main sextant_options)
-  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/tests/common)
-  target_compile_definitions(${name} PRIVATE
+# sextant_test_settings(<target>): what every test executable compiles with. The test executables
+# share one precompiled header (tests/common/test_pch.hpp, built by sextant_test_pch in
+# tests/CMakeLists.txt), so their flags must be identical: they all come from here.
+function(sextant_test_settings target)
+  target_link_libraries(${target} PRIVATE GTest::gtest sextant_options)
+  target_include_directories(${target} PRIVATE ${PROJECT_SOURCE_DIR}/tests/common)
+  target_compile_definitions(${target} PRIVATE
     SEXTANT_DATA_DIR="${PROJECT_SOURCE_DIR}/data"
     SEXTANT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   # The test files themselves build at a lower level than the libraries they exercise, which keep
@@ -39,9 +39,22 @@ function(sextant_add_test name)
   # GCC 12 reports -Wmaybe-uninitialized inside Eigen's own copy constructors (false positives,
   # e.g. tests/filters/eseif_test.cpp's model matrices), so test files at -O1 go without that one.
   if(SEXTANT_SANITIZE)
-    target_compile_options(${name} PRIVATE -O0)
+    target_compile_options(${target} PRIVATE -O0)
   else()
-    target_compile_options(${name} PRIVATE $<$<CONFIG:Release>:-O1 -Wno-maybe-uninitialized>)
+    target_compile_options(${target} PRIVATE $<$<CONFIG:Release>:-O1 -Wno-maybe-uninitialized>)
+  endif()
+  # A precompiled header that no longer matches the flags is an error, not a silent full parse.
+  target_compile_options(${target} PRIVATE -Winvalid-pch)
+endfunction()
+
+# sextant_add_test(<name> SOURCES ... DEPS ...): one GoogleTest executable per module.
+function(sextant_add_test name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest_main)
+  sextant_test_settings(${name})
+  if(SEXTANT_TEST_PCH)
+    target_precompile_headers(${name} REUSE_FROM sextant_test_pch)
   endif()
   gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 300)
 endfunction()
