@@ -1,7 +1,8 @@
 // Matcher kernels (issue 4, "Performance"): one Mahalanobis score + gradient + Hessian
 // evaluation over 20,000 points on a layer with 10⁴–10⁵ cells (target ≤ 30 ns per point on one
 // core), the same for the Gaussian (P2D-NDT) score, the layer-pyramid build per 100k reference
-// points, the GBS sampler, and one whole ML-NDT registration; the Mahalanobis evaluation also
+// points, ML-NDT's whole reference model (pyramid and precision grids), the GBS sampler, and one
+// whole ML-NDT registration; the Mahalanobis evaluation also
 // over 1 and 2 TBB threads (BM_MahalanobisKernelThreads, wall-clock ns per point). Issue 14's
 // targets, one thread: kernel (BM_MahalanobisKernel/2) ≤ 15 ns per point, the 6-layer pyramid
 // (BM_LayerPyramidBuild/100000/6) ≤ 20 ns per reference point. On the shared machine take medians:
@@ -178,6 +179,22 @@ void BM_LayerPyramidBuild(benchmark::State& state) {
   state.counters["gaussians"] = static_cast<double>(gaussians);
 }
 BENCHMARK(BM_LayerPyramidBuild)->Args({100000, 4})->Args({100000, 6})->Unit(benchmark::kMillisecond);
+
+// ML-NDT's whole reference model (MlndtMatcher::set_reference, default settings: the pyramid and
+// the precision stage's two grids) per 100k reference points; Arg: threads (wall-clock time).
+void BM_MlndtReferenceModel(benchmark::State& state) {
+  const PointCloud reference = scene(100000, 3);
+  MlndtSettings settings;
+  settings.threads = static_cast<int>(state.range(0));
+  MlndtMatcher matcher(settings);
+  for (auto _ : state) {
+    matcher.set_reference(reference);
+    benchmark::DoNotOptimize(matcher.precision_layers().size());
+  }
+  report_per_point(state, reference.size());
+  state.counters["precision_grids"] = static_cast<double>(matcher.precision_layers().size());
+}
+BENCHMARK(BM_MlndtReferenceModel)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 
 void BM_GridSampler(benchmark::State& state) {
   const PointCloud input = scene(static_cast<std::size_t>(state.range(0)), 4);

@@ -51,7 +51,9 @@ MlndtMatcher::MlndtMatcher(MlndtSettings settings)
 
 void MlndtMatcher::set_reference(const PointCloud& reference) {
   // Splitting and generative processes. The precision grids lie over layer n's box, which only needs
-  // the reference's robust box: the pyramid and the first pair of precision grids are built side by side.
+  // the reference's robust box: the pyramid and the first pair of precision grids are built side by
+  // side. Where the first pair's edge is layer n + 1's and the layers nest, the aligned grid is
+  // layer n + 1 of the pyramid's own split (build_layer_pyramid), and only the shifted one is apart.
   const LayerPyramidSettings& pyramid = settings_.pyramid;
   const Bounds box = robust_bounds(reference, pyramid.bounds_quantile);
   const LayerGeometry last = layer_geometry(box, pyramid.division, pyramid.layers);
@@ -62,12 +64,14 @@ void MlndtMatcher::set_reference(const PointCloud& reference) {
   const auto build_pair = [&](std::size_t task, double edge) {
     pair[task] = precision_grid(reference, frame, edge, task == 0 ? 0.0 : 0.5, pyramid.cells);
   };
-  threads_->for_each(edges.empty() ? 1 : 3, [&](std::size_t task) {
+  const bool nested = !edges.empty() && edges.front() == 0.5 * last.cell_edge && pyramid_nests(box, pyramid);
+  threads_->for_each(edges.empty() ? 1 : (nested ? 2 : 3), [&](std::size_t task) {
     if (task == 0)
-      model->layers = build_layer_pyramid(reference, pyramid, box);
+      model->layers = build_layer_pyramid(reference, pyramid, box, nested ? &pair[0] : nullptr);
     else
-      build_pair(task - 1, edges.front());
+      build_pair(nested ? 1 : task - 1, edges.front());
   });
+  if (nested && pair[0].cell_count() == 0) build_pair(0, edges.front());  // layer n + 1 too large
   for (std::size_t e = 0; e < edges.size() && !model->layers.empty(); ++e) {
     if (e > 0) threads_->for_each(2, [&](std::size_t task) { build_pair(task, edges[e]); });
     if (precision_pair_usable(pair[0], pair[1], model->layers.back(), settings_.precision)) {

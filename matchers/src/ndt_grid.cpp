@@ -334,19 +334,42 @@ std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const Laye
   return build_layer_pyramid(reference, settings, robust_bounds(reference, settings.bounds_quantile));
 }
 
-std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const LayerPyramidSettings& settings,
-                                         const Bounds& bounds) {
-  const Eigen::Vector3d origin = bounds.min.cast<double>();
-  const auto n = static_cast<std::size_t>(std::max(settings.layers, 0));
+namespace {
+
+std::vector<LayerGeometry> pyramid_geometry(const Bounds& bounds, const LayerPyramidSettings& settings) {
   std::vector<LayerGeometry> g;
   for (int i = 1; i <= settings.layers; ++i) g.push_back(layer_geometry(bounds, settings.division, i));
+  return g;
+}
+
+}  // namespace
+
+bool pyramid_nests(const Bounds& box, const LayerPyramidSettings& settings) {
+  return settings.layers >= 1 && layers_nest(pyramid_geometry(box, settings), settings.division);
+}
+
+std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const LayerPyramidSettings& settings,
+                                         const Bounds& bounds, NdtGrid* finer) {
+  const Eigen::Vector3d origin = bounds.min.cast<double>();
+  const auto n = static_cast<std::size_t>(std::max(settings.layers, 0));
+  const std::vector<LayerGeometry> g = pyramid_geometry(bounds, settings);
   std::vector<NdtGrid> layers(n);
-  // Nested layers: one pass over the points for the finest layer, each coarser layer from its
-  // children's sums, with edge 2^(n−i) times the finest one (the geometry's edge up to rounding)
-  // so that a point's cell there is exactly the parent of its finest cell.
-  if (n > 1 && layers_nest(g, settings.division) &&
+  if (finer) *finer = NdtGrid();
+  // Nested layers: one pass over the points for the finest grid (layer n, or layer n + 1 when the
+  // caller wants it too), each coarser layer from its children's sums, with edge 2^(n−i) times
+  // layer n's (the geometry's edge up to rounding) so that a point's cell there is exactly the
+  // parent of its finest cell.
+  if (n >= 1 && (n > 1 || finer) && layers_nest(g, settings.division) &&
       layers[n - 1].init(origin, g[n - 1].cell_edge, g[n - 1].dims, kMaxCells)) {
-    std::vector<CellSums> sums = layers[n - 1].split(reference);
+    std::vector<CellSums> sums;
+    if (finer && finer->init(origin, 0.5 * g[n - 1].cell_edge, 2 * g[n - 1].dims, kMaxCells)) {
+      const std::vector<CellSums> children = finer->split(reference);
+      sums = layers[n - 1].merge_children(children);
+      finer->generate(children, settings.cells);
+    } else {
+      if (finer) *finer = NdtGrid();  // too many cells for layer n + 1: the caller builds its own
+      sums = layers[n - 1].split(reference);
+    }
     double edge = g[n - 1].cell_edge;
     for (std::size_t i = n - 1; i-- > 0;) {
       edge *= 2.0;

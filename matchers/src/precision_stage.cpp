@@ -31,8 +31,8 @@ std::vector<double> precision_edges(double last_edge, const PrecisionSettings& s
 NdtGrid precision_grid(const PointCloud& reference, const PrecisionFrame& frame, double edge, double shift,
                        const CellStatsSettings& cells) {
   Eigen::Vector3i dims;
-  for (int a = 0; a < 3; ++a)  // one cell more: the shifted grid starts half a cell before the box
-    dims(a) = static_cast<int>(std::ceil(frame.last_dims(a) * frame.last_edge / edge - 1e-9)) + 1;
+  for (int a = 0; a < 3; ++a)  // one cell more when shifted: that grid starts before the box
+    dims(a) = static_cast<int>(std::ceil(frame.last_dims(a) * frame.last_edge / edge - 1e-9)) + (shift > 0.0);
   return NdtGrid::build(reference, frame.origin - Eigen::Vector3d::Constant(shift * edge), edge, dims, cells);
 }
 

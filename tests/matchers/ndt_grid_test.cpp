@@ -96,6 +96,23 @@ TEST(NdtGrid, PyramidLayerSizesGrowByQ) {
   }
 }
 
+/// The same cells and Gaussians, up to the rounding of the summation order; returns how many.
+std::size_t expect_same_gaussians(const NdtGrid& nested, const NdtGrid& direct, int layer) {
+  EXPECT_NEAR(nested.cell_edge(), direct.cell_edge(), 1e-12 * direct.cell_edge()) << layer;
+  EXPECT_EQ(nested.dims(), direct.dims()) << layer;
+  EXPECT_EQ(nested.gaussian_count(), direct.gaussian_count()) << layer;
+  if (nested.gaussian_count() != direct.gaussian_count()) return 0;
+  for (int k = 0; k < static_cast<int>(direct.gaussian_count()); ++k) {
+    EXPECT_EQ(nested.cell_of(k), direct.cell_of(k)) << layer << " " << k;
+    const CellGaussian &n = nested.gaussian(k), &d = direct.gaussian(k);
+    for (int m = 0; m < 3; ++m) EXPECT_NEAR(n.mean[m], d.mean[m], 1e-5f * (1.0f + std::abs(d.mean[m])));
+    float scale = 0.0f;
+    for (const float v : d.inv_cov) scale = std::max(scale, std::abs(v));
+    for (int m = 0; m < 6; ++m) EXPECT_NEAR(n.inv_cov[m], d.inv_cov[m], 1e-4f * scale) << layer << " " << k;
+  }
+  return direct.gaussian_count();
+}
+
 // With q = 8 the pyramid builds its finest layer from the points and every coarser layer from
 // its children's sums: the same cells and Gaussians as building each layer from the points, up
 // to the rounding of the summation order.
@@ -110,22 +127,43 @@ TEST(NdtGrid, NestedPyramidMatchesLayerByLayerBuild) {
   std::size_t compared = 0;
   for (int i = 1; i <= 5; ++i) {
     const LayerGeometry g = layer_geometry(b, 8, i);
-    const NdtGrid direct = NdtGrid::build(cloud, b.min.cast<double>(), g.cell_edge, g.dims);
-    const NdtGrid& nested = layers[static_cast<std::size_t>(i - 1)];
-    EXPECT_NEAR(nested.cell_edge(), g.cell_edge, 1e-12 * g.cell_edge) << i;
-    EXPECT_EQ(nested.dims(), g.dims) << i;
-    ASSERT_EQ(nested.gaussian_count(), direct.gaussian_count()) << i;
-    for (int k = 0; k < static_cast<int>(direct.gaussian_count()); ++k) {
-      ASSERT_EQ(nested.cell_of(k), direct.cell_of(k)) << i << " " << k;
-      const CellGaussian &n = nested.gaussian(k), &d = direct.gaussian(k);
-      for (int m = 0; m < 3; ++m) EXPECT_NEAR(n.mean[m], d.mean[m], 1e-5f * (1.0f + std::abs(d.mean[m])));
-      float scale = 0.0f;
-      for (const float v : d.inv_cov) scale = std::max(scale, std::abs(v));
-      for (int m = 0; m < 6; ++m) EXPECT_NEAR(n.inv_cov[m], d.inv_cov[m], 1e-4f * scale) << i << " " << k;
-      ++compared;
-    }
+    EXPECT_EQ(layers[static_cast<std::size_t>(i - 1)].dims(), g.dims) << i;
+    compared += expect_same_gaussians(layers[static_cast<std::size_t>(i - 1)],
+                                      NdtGrid::build(cloud, b.min.cast<double>(), g.cell_edge, g.dims), i);
   }
   EXPECT_GT(compared, 100u);
+}
+
+// With `finer`, the one split is into layer n + 1 (ML-NDT's aligned precision grid): that grid is
+// exactly the one built from the points on its own, and the pyramid above it is unchanged.
+TEST(NdtGrid, PyramidWithItsFinerLayerMatchesDirectBuilds) {
+  Rng rng(3);
+  const PointCloud cloud = test::yard(rng, 2);
+  LayerPyramidSettings settings;
+  settings.layers = 4;
+  const Bounds b = cloud.bounds();
+  ASSERT_TRUE(pyramid_nests(b, settings));
+  NdtGrid finer;
+  const auto layers = build_layer_pyramid(cloud, settings, b, &finer);
+  ASSERT_EQ(layers.size(), 4u);
+  const LayerGeometry last = layer_geometry(b, 8, 4);
+  const NdtGrid direct = NdtGrid::build(cloud, b.min.cast<double>(), 0.5 * last.cell_edge, 2 * last.dims);
+  ASSERT_GT(direct.gaussian_count(), 100u);
+  ASSERT_EQ(finer.gaussian_count(), direct.gaussian_count());
+  EXPECT_EQ(finer.modelled_points(), direct.modelled_points());
+  for (int k = 0; k < static_cast<int>(direct.gaussian_count()); ++k) {  // the same sums: equal
+    ASSERT_EQ(finer.cell_of(k), direct.cell_of(k)) << k;
+    for (int m = 0; m < 3; ++m) EXPECT_EQ(finer.gaussian(k).mean[m], direct.gaussian(k).mean[m]) << k;
+    for (int m = 0; m < 6; ++m) EXPECT_EQ(finer.gaussian(k).inv_cov[m], direct.gaussian(k).inv_cov[m]) << k;
+  }
+  const auto alone = build_layer_pyramid(cloud, settings, b);
+  for (int i = 0; i < 4; ++i)
+    expect_same_gaussians(layers[static_cast<std::size_t>(i)], alone[static_cast<std::size_t>(i)], i + 1);
+  // Layers that do not nest (q = 4: edges shrink by 4^(1/3)) leave `finer` to the caller.
+  settings.division = 4;
+  EXPECT_FALSE(pyramid_nests(b, settings));
+  build_layer_pyramid(cloud, settings, b, &finer);
+  EXPECT_EQ(finer.cell_count(), 0u);
 }
 
 TEST(NdtGrid, EmptyAndDegenerateInputGiveEmptyGrids) {

@@ -60,8 +60,10 @@ struct PrecisionFrame {
 /// none when the stage is off.
 std::vector<double> precision_edges(double last_edge, const PrecisionSettings& settings);
 
-/// One precision grid of edge `edge` over the frame's box plus one cell, its origin moved by
-/// `shift`·edge along every axis (0: aligned, 0.5: the shifted copy).
+/// One precision grid of edge `edge` over the frame's box, its origin moved by `shift`·edge along
+/// every axis (0: aligned, 0.5: the shifted copy, one cell more per axis to cover the box). The aligned
+/// grid of half the last layer's edge is layer n + 1 itself, which build_layer_pyramid gives from the
+/// pyramid's own split when the layers nest (MlndtMatcher::set_reference).
 NdtGrid precision_grid(const PointCloud& reference, const PrecisionFrame& frame, double edge, double shift,
                        const CellStatsSettings& cells);
 
