@@ -109,9 +109,10 @@ bool group_redundancies(const PoseGraph& g, double* odometry_redundancy, double*
   }
   const Eigen::LDLT<Eigen::MatrixXd> Sigma_w(Q_o + Q_c);
   if (Sigma_w.info() != Eigen::Success) return fail("the misclosures' covariance cannot be factored");
-  // r_g = tr(Σ_w⁻¹ Q_g) with the weights as they stand (the factors are in Q_g already).
-  *odometry_redundancy = Sigma_w.solve(Q_o).trace();
+  // r_g = tr(Σ_w⁻¹ Q_g) with the weights as they stand (the factors are in Q_g already). The two sum
+  // to tr(Σ_w⁻¹ (Q_o + Q_c)) = tr(I) = m, the number of condition equations: one solve, not two.
   *closure_redundancy = Sigma_w.solve(Q_c).trace();
+  *odometry_redundancy = static_cast<double>(m) - *closure_redundancy;
   if (!std::isfinite(*odometry_redundancy) || !std::isfinite(*closure_redundancy))
     return fail("the redundancies are not finite");
   return true;
