@@ -1,6 +1,7 @@
 #include "sextant/eval/alignment_roll.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Eigenvalues>
 
@@ -26,8 +27,12 @@ Similarity3 resolve_roll_about_trajectory(const Similarity3& alignment, const Po
     residual += (reference[i].translation() - alignment.apply(estimate[i].translation())).squaredNorm();
   }
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> principal(spread / double(n));
-  const double second_spread = std::sqrt(std::max(0.0, principal.eigenvalues()(1)));  // ascending order
-  if (!(second_spread < 3.0 * std::sqrt(residual / double(n)))) return alignment;
+  const Eigen::Vector3d& variances = principal.eigenvalues();                   // ascending
+  const double across = std::sqrt(std::max(0.0, variances(0) + variances(1)));  // RMS distance from a [m]
+  const double unexplained = std::sqrt(residual / double(n));                   // RMS residual [m]
+  // The roll the positions leave free [rad]; on one line (across = 0) any roll fits.
+  const double position_roll = across > 0.0 ? unexplained / across : std::numeric_limits<double>::infinity();
+  if (!(position_roll > kRollTolerance)) return alignment;
   const Eigen::Vector3d axis = principal.eigenvectors().col(2);
   double sin_sum = 0.0, cos_sum = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -37,7 +42,11 @@ Similarity3 resolve_roll_about_trajectory(const Similarity3& alignment, const Po
     sin_sum += std::sin(twist);
     cos_sum += std::cos(twist);
   }
-  if (sin_sum == 0.0 && cos_sum == 0.0) return alignment;
+  // The twists' circular standard deviation √(−2 ln R̄) [rad]: how closely the orientations fix it.
+  const double length = std::hypot(sin_sum, cos_sum) / double(n);
+  if (!(length > 0.0)) return alignment;
+  const double orientation_roll = std::sqrt(std::max(0.0, -2.0 * std::log(std::min(1.0, length))));
+  if (!(orientation_roll < position_roll)) return alignment;
   Similarity3 out = alignment;
   out.rotation =
       Eigen::AngleAxisd(std::atan2(sin_sum, cos_sum), axis).toRotationMatrix() * alignment.rotation;

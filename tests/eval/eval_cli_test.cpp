@@ -79,6 +79,7 @@ TEST(EvalCli, KnownOffsetJsonPlotsAndUnmatchedStamps) {
   EXPECT_NE(json.output.find("\"unmatched_estimate\": 1"), std::string::npos) << json.output;
   EXPECT_NE(json.output.find("\"ate_m\": {\"rms\": "), std::string::npos) << json.output;
   EXPECT_NE(json.output.find("\"kind\": \"se3\""), std::string::npos) << json.output;
+  EXPECT_NE(json.output.find("\"roll_from_orientations\": false"), std::string::npos) << json.output;
   const test::CliRun quiet = run_cli("-q eval " + files);
   EXPECT_EQ(quiet.output,
             "ATE 0.000 m / 0.00°, RPE 0.000 m / 0.00° per scan, drift n/a (path shorter than 100 m)\n");
@@ -89,6 +90,32 @@ TEST(EvalCli, KnownOffsetJsonPlotsAndUnmatchedStamps) {
   EXPECT_EQ(tight.exit_code, 1) << tight.output;
   EXPECT_NE(tight.output.find("no estimate pose has a reference pose within"), std::string::npos)
       << tight.output;
+}
+
+// On a straight line the positions leave the rotation about it free: the output says the
+// orientations set it (alignment_roll.hpp), in text and JSON.
+TEST(EvalCli, SaysWhenTheRollAboutAStraightPathComesFromTheOrientations) {
+  test::TempDir tmp;
+  Trajectory ref, est;
+  for (int i = 0; i < 20; ++i) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.translation() = Eigen::Vector3d(2.0 * i, 0.0, 0.0);
+    ref.push_back({double(i), T});
+    T.translation().z() += 0.02 * (i % 3);  // a little vertical error; the orientations are exact
+    est.push_back({double(i), T});
+  }
+  write_tum_trajectory(tmp / "ref.tum", ref);
+  write_tum_trajectory(tmp / "est.tum", est);
+  const std::string files = (tmp / "ref.tum").string() + " " + (tmp / "est.tum").string();
+  const test::CliRun text = run_cli("eval " + files);
+  ASSERT_EQ(text.exit_code, 0) << text.output;
+  EXPECT_NE(
+      text.output.find("leave the rotation about it free by more than 1°, so it comes from the orientations"),
+      std::string::npos)
+      << text.output;
+  EXPECT_NE(text.output.find("/ 0.00°"), std::string::npos) << text.output;
+  const test::CliRun json = run_cli("eval " + files + " --json");
+  EXPECT_NE(json.output.find("\"roll_from_orientations\": true"), std::string::npos) << json.output;
 }
 
 TEST(EvalCli, BadInputIsAClearError) {

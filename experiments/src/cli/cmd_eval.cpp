@@ -14,6 +14,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/trajectory_io.hpp"
 #include "sextant/core/units.hpp"
+#include "sextant/eval/alignment_roll.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/trajectory_evaluation.hpp"
 #include "sextant/experiments/json.hpp"
@@ -146,7 +147,8 @@ int run_eval(const EvalOptions& o) {
                     {"alignment",
                      {{"kind", o.align},
                       {"scale", json_value(e.ate.alignment.scale)},
-                      {"translation_m", json_value(e.ate.alignment.translation.norm())}}},
+                      {"translation_m", json_value(e.ate.alignment.translation.norm())},
+                      {"roll_from_orientations", e.ate.roll_from_orientations}}},
                     {"summary", accuracy_json(a)},
                     {"ate_m", stats_json(e.ate.translation, 1.0)},
                     {"ate_deg", stats_json(e.ate.rotation, deg)},
@@ -188,7 +190,8 @@ int run_eval(const EvalOptions& o) {
     if (settings.alignment == Alignment::sim3) std::cout << ", scale " << fixed(e.ate.alignment.scale, 4);
     std::cout << ")";
     if (e.ate.roll_from_orientations)
-      std::cout << "; the positions lie near one line, so the rotation about it comes from the orientations";
+      std::cout << "; the positions lie near one line and leave the rotation about it free by more than "
+                << kRollTolerance * kDegPerRad << "°, so it comes from the orientations";
   }
   std::cout << "\n" << accuracy_line(a, per) << "\n\n";
   std::cout << "| metric | RMS | mean | median | max | N |\n|---|---|---|---|---|---|\n"

@@ -1,19 +1,28 @@
 #pragma once
 // A nearly straight trajectory leaves the alignment's rotation about its direction free: Umeyama's
-// fit (umeyama.hpp) of positions that lie close to one line is the same for any rotation about
-// that line, so noise picks one (on MulRan Riverside 0–107, 129 m × 1.6 m × 0.5 m of spread, it
-// turned the estimate 90–126° about the road and reported that as the ATE's rotation error).
+// fit (umeyama.hpp) of positions that lie close to one line barely changes with a rotation about
+// that line, so the positions' errors pick one. On MulRan Riverside 0–107 (129 m × 1.6 m × 0.5 m of
+// spread) it turned the estimate 90–126° about the road; on keyframes 10–30 (51 m × 0.29 m) it
+// turned a right estimate 23° to fit a vertical bow of its pitch drift onto the road's sideways one.
 //
-// The rotation about the line is observable from the positions when their spread across the line
-// exceeds what the alignment leaves unexplained. When the second principal spread σ₂ of the
-// reference positions is below 3 × the RMS position residual, the roll about the principal axis a
-// is taken from the orientations instead: the circular mean, over the poses, of the twist about a
-// of R_ref,i · (R · R_est,i)ᵀ (swing–twist decomposition). A rotation about a moves points on the
-// line through the centroid along no direction, so the position fit is unchanged.
+// A roll θ about the principal axis a of the reference positions moves them by θ·d (RMS), d the RMS
+// distance of the positions from a; the fit cannot tell apart rolls whose displacement stays within
+// the RMS position residual r, so the positions fix the roll to about r / d. When that exceeds
+// kRollTolerance, and the orientations fix it better (their twists about a scatter less than r / d),
+// the roll about a is taken from the orientations instead: the circular mean, over the poses, of
+// the twist about a of R_ref,i · (R · R_est,i)ᵀ (swing–twist decomposition). A rotation about a
+// moves points on the line through the centroid along no direction, so the position fit is
+// unchanged. Where the positions fix the roll to within kRollTolerance, the alignment is Umeyama's,
+// as in every other tool.
+#include "sextant/core/units.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
 #include "sextant/eval/umeyama.hpp"
 
 namespace sextant {
+
+/// The roll about the trajectory the positions may leave free before the orientations are asked
+/// [rad]: 1°, above the rotation errors an ATE usually reports (0.1–1°).
+inline constexpr double kRollTolerance = 1.0 * kRadPerDeg;
 
 /// `alignment` (positions of `estimate` onto `reference`) with the rotation about the reference's
 /// principal direction resolved from the orientations when the positions leave it free; `resolved`
