@@ -19,7 +19,7 @@ namespace {
 
 /// What sextant.match() returns (attributes only; see the docstrings in bind_match).
 struct MatchResult {
-  py::array_t<double> T, H, covariance;
+  py::array_t<double> T, H, covariance, centre;
   py::tuple pose;
   bool converged = false, trusted = false;
   std::string termination, trust, trust_reason, search, method, preset, sampling, fallback;
@@ -35,6 +35,7 @@ MatchResult to_python(const MatchOutcome& o, const MatchRequest& request) {
   out.T = transform_array(r.T);
   out.H = matrix6_array(r.H);
   out.covariance = matrix6_array(registration_covariance(r.H));
+  out.centre = vector_array({o.centre.x(), o.centre.y(), o.centre.z()});
   const Pose6 p = to_pose6(r.T);
   out.pose = py::make_tuple(p.x, p.y, p.z, p.alpha, p.beta, p.gamma);
   out.converged = r.converged;
@@ -149,6 +150,10 @@ void bind_match(py::module_& m) {
                     "of Mahalanobis terms, dimensionless, so H is in 1/m², 1/(m·rad), 1/rad²); ICP: the "
                     "Gauss–Newton information JᵀJ of a small increment applied on the left of T; PCL's "
                     "peers: the negated Hessian of PCL's NDT score, or zeros (no Hessian).")
+      .def_readonly("centre", &MatchResult::centre,
+                    "the point registered about [m], in the clouds' coordinates: (0, 0, 0), their origin, "
+                    "unless the clouds lie far from it (georeferenced), when it is the middle of the "
+                    "reference's box; H and the covariance are about it, T is in the clouds' coordinates")
       .def_readonly("covariance", &MatchResult::covariance,
                     "6×6 R = H⁻¹ (the thesis' eq. 3.50), same parameter order as H, in m², m·rad, rad²; all "
                     "NaN when H is not positive definite (a degenerate scene, or a matcher without H). Not a "

@@ -45,6 +45,7 @@ MatchOutcome run_match_request(const PointCloud& reference, const PointCloud& in
   out.match = std::move(registered.match);
   out.searched = registered.searched;
   out.search = registered.search;
+  out.centre = registered.centre;
   if (registered.searched_without_guess) out.search += " (no init; wide_basin=False: off)";
   return out;
 }

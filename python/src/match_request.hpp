@@ -32,6 +32,7 @@ struct MatchOutcome {
   std::string preset;     ///< the preset applied ("" for matchers without presets)
   bool searched = false;  ///< the result came from the wide basin
   std::string search;     ///< how, in the CLI's words ("wide basin", "from the guess", …)
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();  ///< the point registered about (register_pair.hpp)
 };
 
 /// The matcher settings `sextant match` and `sextant odometry` build from --method, --preset and

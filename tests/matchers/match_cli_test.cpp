@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 
+#include "sextant/core/io/cloud_io.hpp"
 #include "sextant/core/io/uos.hpp"
 #include "sextant_test/cli_run.hpp"
 
@@ -236,6 +237,36 @@ TEST(MatchCliConventions, JsonHasHessianCovarianceAndMatchedFraction) {
   EXPECT_EQ(page.find("<script src=\"http"), std::string::npos);
   const CliRun verbose = run_cli("match " + kPair + kNearGuess + " -v");
   EXPECT_NE(verbose.output.find("iterations:  layer"), std::string::npos) << verbose.output;
+}
+
+// Clouds far from their coordinates' origin (register_pair.hpp): the pair moved 300 m is registered
+// about the middle of the reference and says so; moved to UTM-like coordinates, the reader warns that
+// float points lose what the file held below 0.5 m.
+TEST(MatchCliConventions, CloudsFarFromTheirOriginAreRegisteredAboutTheReference) {
+  const std::string dir = std::string(SEXTANT_DATA_DIR) + "/velodyne_pair/";
+  const auto moved = [&](const Eigen::Vector3d& offset, const std::string& tag) {
+    const Eigen::Isometry3d away(Eigen::Translation3d{offset});
+    std::string files;
+    for (const char* name : {"fast_gicp_251370668", "fast_gicp_251371071"}) {
+      const std::string path = ::testing::TempDir() + name + tag + ".xyz";
+      sextant::write_cloud(path, sextant::read_cloud(dir + name + ".pcd").transformed(away));
+      files += " " + path;
+    }
+    return files;
+  };
+  const std::string near = moved({0, 300, 0}, "_300m");
+  const CliRun text = run_cli("match" + near);
+  ASSERT_EQ(text.exit_code, 0) << text.output;
+  EXPECT_NE(text.output.find("centre:      -2."), std::string::npos) << text.output;
+  const CliRun json = run_cli("match" + near + " --json");
+  ASSERT_EQ(json.exit_code, 0) << json.output;
+  EXPECT_NE(json.output.find("\"centre_m\": [-2."), std::string::npos) << json.output;
+  const CliRun home = run_cli("match " + kPair + " --json");
+  EXPECT_NE(home.output.find("\"centre_m\": [0.0, 0.0, 0.0]"), std::string::npos) << home.output;
+
+  const CliRun utm = run_cli("match" + moved({512345.678, 5401234.567, 312.5}, "_utm") + " --json");
+  EXPECT_NE(utm.output.find("where Sextant's float points are 500.000 mm apart"), std::string::npos)
+      << utm.output;
 }
 
 }  // namespace

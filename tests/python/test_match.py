@@ -117,6 +117,20 @@ def test_arrays_of_either_dtype_and_paths_give_the_same_result(pair):
         np.testing.assert_array_equal(other.T, by_path.T)
 
 
+def test_clouds_far_from_their_origin_are_registered_about_the_reference(pair):
+    reference, moving, truth = pair
+    home = sextant.match(reference, moving)
+    np.testing.assert_array_equal(home.centre, [0, 0, 0])
+    offset = np.array([0.0, 300.0, 0.0])
+    away = np.eye(4)
+    away[:3, 3] = offset
+    far = sextant.match(sextant.read_cloud(reference) + offset, sextant.read_cloud(moving) + offset)
+    assert far.trusted, far.trust_reason
+    assert 0 < np.linalg.norm(far.centre - offset) < 60  # the middle of the reference's box
+    metres, degrees = pose_error(truth, np.linalg.inv(away) @ far.T @ away)
+    assert metres < 0.05 and degrees < 0.7
+
+
 def test_the_library_layout_is_read_in_place_and_others_are_copied(pair):
     reference, _, _ = pair
     points = sextant.read_cloud(reference)

@@ -3,6 +3,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
 
 #include "formats.hpp"
 #include "sextant/core/error.hpp"
@@ -86,11 +90,32 @@ std::vector<CloudFormat> cloud_formats() {
   return out;
 }
 
+namespace {
+
+/// Points are floats: 8 km from the origin their spacing reaches 1 mm, 5,000 km away (UTM
+/// northings) 0.5 m. Beyond 1 mm the reader says what the file's coordinates lost.
+void warn_if_far_from_origin(const PointCloud& cloud, ScanLoadReport& report) {
+  constexpr float kMillimetreSpacing = 8192.0f;  // 2¹³ m: float spacing 2¹³ · 2⁻²³ m ≈ 0.98 mm
+  float farthest = 0.0f;
+  for (const Eigen::Vector3f& p : cloud.points()) farthest = std::max(farthest, p.cwiseAbs().maxCoeff());
+  if (!(farthest >= kMillimetreSpacing)) return;
+  const double spacing = std::nextafter(farthest, std::numeric_limits<float>::infinity()) - farthest;
+  std::ostringstream text;
+  text << "coordinates reach " << std::fixed << std::setprecision(0) << farthest
+       << " m from the origin, where Sextant's float points are " << std::setprecision(3) << 1000.0 * spacing
+       << " mm apart: finer positions are lost on reading; move the clouds near their origin (subtract a "
+          "common offset) first";
+  report.warnings.push_back(text.str());
+}
+
+}  // namespace
+
 PointCloud read_cloud(const std::filesystem::path& file, ScanLoadReport* report) {
   const Entry& e = entry_for(file);
   detail::require_regular_file(file);
   ScanLoadReport local;
   PointCloud cloud = read_by_kind(e.kind, file, &local);
+  warn_if_far_from_origin(cloud, local);
   if (report) *report = local;
   if (cloud.empty()) {
     std::error_code ec;

@@ -144,8 +144,12 @@ std::string fs_name(const std::string& path) {
   return std::filesystem::path(path).filename().string();
 }
 
-PoseError pose_error(const Eigen::Isometry3d& truth, const Eigen::Isometry3d& estimate) {
-  const Eigen::Isometry3d E = inverse(truth) * estimate;
+/// The error about `centre` (the registration's, register_pair.hpp): about a point kilometres away
+/// a thousandth of a degree would read as metres.
+PoseError pose_error(const Eigen::Isometry3d& truth, const Eigen::Isometry3d& estimate,
+                     const Eigen::Vector3d& centre) {
+  const Eigen::Isometry3d at(Eigen::Translation3d{centre});
+  const Eigen::Isometry3d E = inverse(at) * inverse(truth) * estimate * at;
   return {100.0 * translation_norm(E), kDegPerRad * rotation_angle(E)};
 }
 
@@ -160,38 +164,42 @@ Json json_matrix(const Matrix& M) {
   return rows;
 }
 
-void print_json(const MatchOptions& o, const PairMatch& m, const std::string& search,
+void print_json(const MatchOptions& o, const PairRegistration& registered, const std::string& search,
                 const std::optional<PoseError>& error) {
+  const PairMatch& m = registered.match;
   const RegistrationResult& r = m.result;
   const auto text_or_null = [](const std::string& text) { return text.empty() ? Json() : Json(text); };
-  const Json j = {{"method", o.method},
-                  {"sampling", o.sampling},
-                  {"transform", json_matrix(r.T.matrix())},
-                  {"parameters", {"x_m", "y_m", "z_m", "alpha_rad", "beta_rad", "gamma_rad"}},
-                  {"hessian", json_matrix(r.H)},
-                  {"covariance", json_matrix(registration_covariance(r.H))},
-                  {"matched_fraction", json_value(r.input_points ? static_cast<double>(r.matched_points) /
-                                                                       static_cast<double>(r.input_points)
-                                                                 : kNaN)},
-                  {"out", text_or_null(o.out)},
-                  {"view", text_or_null(o.view)},
-                  {"converged", r.converged},
-                  {"termination", to_string(r.why)},
-                  {"iterations", r.iterations},
-                  {"seconds", json_value(r.seconds)},
-                  {"reference_seconds", json_value(m.reference_seconds)},
-                  {"score", json_value(r.score)},
-                  {"matched_points", r.matched_points},
-                  {"input_points", r.input_points},
-                  {"kept_fraction", json_value(m.kept_fraction)},
-                  {"trust", to_string(r.quality.trust)},
-                  {"trust_reason", r.quality.reason},
-                  {"overlap", json_value(r.quality.overlap)},
-                  {"constraint_ratio", json_value(r.quality.constraint_ratio)},
-                  {"fit_ratio", json_value(r.quality.fit_ratio)},
-                  {"search", search},
-                  {"error_cm", error ? json_value(error->cm) : Json()},
-                  {"error_deg", error ? json_value(error->deg) : Json()}};
+  const Json j = {
+      {"method", o.method},
+      {"sampling", o.sampling},
+      {"transform", json_matrix(r.T.matrix())},
+      {"parameters", {"x_m", "y_m", "z_m", "alpha_rad", "beta_rad", "gamma_rad"}},
+      {"centre_m", Json::array({json_value(registered.centre.x()), json_value(registered.centre.y()),
+                                json_value(registered.centre.z())})},
+      {"hessian", json_matrix(r.H)},
+      {"covariance", json_matrix(registration_covariance(r.H))},
+      {"matched_fraction",
+       json_value(r.input_points ? static_cast<double>(r.matched_points) / static_cast<double>(r.input_points)
+                                 : kNaN)},
+      {"out", text_or_null(o.out)},
+      {"view", text_or_null(o.view)},
+      {"converged", r.converged},
+      {"termination", to_string(r.why)},
+      {"iterations", r.iterations},
+      {"seconds", json_value(r.seconds)},
+      {"reference_seconds", json_value(m.reference_seconds)},
+      {"score", json_value(r.score)},
+      {"matched_points", r.matched_points},
+      {"input_points", r.input_points},
+      {"kept_fraction", json_value(m.kept_fraction)},
+      {"trust", to_string(r.quality.trust)},
+      {"trust_reason", r.quality.reason},
+      {"overlap", json_value(r.quality.overlap)},
+      {"constraint_ratio", json_value(r.quality.constraint_ratio)},
+      {"fit_ratio", json_value(r.quality.fit_ratio)},
+      {"search", search},
+      {"error_cm", error ? json_value(error->cm) : Json()},
+      {"error_deg", error ? json_value(error->deg) : Json()}};
   std::cout << json_line(j) << "\n";
 }
 
@@ -203,8 +211,16 @@ void print_trace(const RegistrationResult& r) {
               << t.step_norm << "  " << t.matched_points << "\n";
 }
 
-void print_text(const MatchOptions& o, const PairMatch& m, const std::string& search,
+/// "x, y, z" with millimetres.
+std::string centre_text(const Eigen::Vector3d& c) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(3) << c.x() << ", " << c.y() << ", " << c.z();
+  return out.str();
+}
+
+void print_text(const MatchOptions& o, const PairRegistration& registered, const std::string& search,
                 const std::optional<PoseError>& error, const std::string& trust_note) {
+  const PairMatch& m = registered.match;
   const RegistrationResult& r = m.result;
   if (verbosity() == Verbosity::kQuiet) {  // the transform alone, and why it is not trusted
     std::cout << std::setprecision(9);
@@ -230,6 +246,12 @@ void print_text(const MatchOptions& o, const PairMatch& m, const std::string& se
             << " deg\n"
             << "result:      " << r.summary() << "\n"
             << "search:      " << search << "\n"
+            << (registered.centre.isZero()
+                    ? ""
+                    : "centre:      " + centre_text(registered.centre) +
+                          " m, the middle of the reference's box: its coordinates lie far "
+                          "from their origin, so the registration turned about this point "
+                          "(the Hessian, covariance and --gt error are about it)\n")
             << std::setprecision(3) << "trust:       " << to_string(r.quality.trust)
             << (r.quality.reason.empty() ? "" : " (" + r.quality.reason + ")") << "; overlap "
             << r.quality.overlap << ", weakest/strongest constraint " << r.quality.constraint_ratio
@@ -253,11 +275,16 @@ int run_match(MatchOptions o) {
   std::optional<tbb::global_control> threads;
   if (o.jobs > 0)
     threads.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(o.jobs));
-  const PointCloud reference = read_cloud(o.reference);
+  ScanLoadReport reference_report, input_report;
+  const PointCloud reference = read_cloud(o.reference, &reference_report);
   const Eigen::Isometry3d initial = o.init.empty() ? Eigen::Isometry3d::Identity() : parse_init(o.init);
   std::optional<Eigen::Isometry3d> truth;
   if (!o.gt.empty()) truth = read_ground_truth(o.gt);
-  const PointCloud input = read_cloud(o.input);
+  const PointCloud input = read_cloud(o.input, &input_report);
+  for (const auto& [file, report] :
+       {std::pair{&o.reference, &reference_report}, std::pair{&o.input, &input_report}})
+    for (const std::string& warning : report->warnings)
+      std::cerr << "warning: " << *file << ": " << warning << "\n";
   PairRegistrationRequest request;
   request.matcher =
       matcher_choice(o.method, config.matcher, o.config.empty() ? "matcher settings (--solver)" : o.config);
@@ -271,7 +298,7 @@ int run_match(MatchOptions o) {
   std::string search = registered.search;
   if (registered.searched_without_guess) search += " (no --init; --no-wide-basin: off)";
   std::optional<PoseError> error;
-  if (truth) error = pose_error(*truth, m.result.T);
+  if (truth) error = pose_error(*truth, m.result.T, registered.centre);
   if (!o.out.empty()) {
     write_cloud(o.out, input.transformed(m.result.T));
     if (!o.json && verbosity() != Verbosity::kQuiet)
@@ -285,9 +312,9 @@ int run_match(MatchOptions o) {
       std::cout << "wrote:       " << o.view << " (3D view: before and after; open it in a browser)\n";
   }
   if (o.json) {
-    print_json(o, m, search, error);
+    print_json(o, registered, search, error);
   } else {
-    print_text(o, m, search, error,
+    print_text(o, registered, search, error,
                uncalibrated_trust_note(
                    settings_off_the_defaults(o, resolved_settings(o, config, "matcher settings"))));
   }
