@@ -96,8 +96,8 @@ namespace {
 /// northings) 0.5 m. Beyond 1 mm the reader says what the file's coordinates lost.
 void warn_if_far_from_origin(const PointCloud& cloud, ScanLoadReport& report) {
   constexpr float kMillimetreSpacing = 8192.0f;  // 2¹³ m: float spacing 2¹³ · 2⁻²³ m ≈ 0.98 mm
-  float farthest = 0.0f;
-  for (const Eigen::Vector3f& p : cloud.points()) farthest = std::max(farthest, p.cwiseAbs().maxCoeff());
+  const Bounds box = cloud.bounds();
+  const float farthest = std::max(box.min.cwiseAbs().maxCoeff(), box.max.cwiseAbs().maxCoeff());
   if (!(farthest >= kMillimetreSpacing)) return;
   const double spacing = std::nextafter(farthest, std::numeric_limits<float>::infinity()) - farthest;
   std::ostringstream text;
