@@ -56,6 +56,7 @@ OdometryStep StepWorker::first_try(const PointCloud& reference, const PointCloud
   remember(m, sample.points);
   OdometryStep step = to_step(m, reference, guess);
   step.first_trust = step.quality.trust;
+  step.first_relative = step.relative;
   return step;
 }
 
@@ -116,6 +117,7 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
     }
     if (again.trusted()) {
       again.first_trust = step.first_trust;
+      again.first_relative = step.first_relative;
       again.recovery = wide_basin_ ? "wide_basin" : "restart";
       again.seconds = seconds;
       step = std::move(again);
@@ -131,8 +133,10 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
     for (const OdometryStep& s : suspects) candidates.push_back({s.relative, s.quality.fit_ratio});
     const std::size_t chosen = choose_suspect(candidates, input, step.guess, kSuspectFitBand);
     const Trust first = step.first_trust;
+    const Eigen::Isometry3d first_relative = step.first_relative;
     step = std::move(suspects[chosen]);
     step.first_trust = first;
+    step.first_relative = first_relative;
     step.quality.trust = Trust::kSuspect;
     step.recovery = "least_suspect";
     if (ambiguous)

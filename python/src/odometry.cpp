@@ -183,7 +183,9 @@ void bind_odometry(py::module_& m) {
                     "pose; roll/pitch/yaw are alpha/beta/gamma), guess_x_m, guess_y_m, guess_yaw_deg, "
                     "converged, iterations, score, matched_points, reference_points, seconds, error_m, "
                     "error_deg (against the ground truth; NaN without), status, trust, first_trust, "
-                    "recovery, overlap, constraint_ratio, fit_ratio, trust_reason, fallback")
+                    "recovery, overlap, constraint_ratio, fit_ratio, trust_reason, fallback, then the first "
+                    "registration's own pose and error before any recovery replaced it: first_x_m … "
+                    "first_yaw_deg, first_error_m, first_error_deg")
       .def_readonly(
           "dataset", &OdometryRun::dataset,
           "the dataset's metadata: name, format, path, scans, has_odometry, has_ground_truth, notes")

@@ -51,9 +51,10 @@ using Step = const OdometryStep&;
 py::dict steps_table(const OdometryResult& result, std::size_t first,
                      const std::optional<std::vector<Eigen::Isometry3d>>& truth) {
   // E = (truth_i⁻¹ truth_{i+1})⁻¹ · relative_i, as steps.csv's error columns.
-  const auto error = [&](std::size_t i, Step s) {
-    return relative(relative((*truth)[i], (*truth)[i + 1]), s.relative);
+  const auto error_of = [&](std::size_t i, const Eigen::Isometry3d& motion) {
+    return relative(relative((*truth)[i], (*truth)[i + 1]), motion);
   };
+  const auto error = [&](std::size_t i, Step s) { return error_of(i, s.relative); };
   const double nan = std::numeric_limits<double>::quiet_NaN();
   Columns c(result.steps);
   c.add<long long>("step", [](std::size_t i, Step) { return static_cast<long long>(i); });
@@ -90,6 +91,22 @@ py::dict steps_table(const OdometryResult& result, std::size_t first,
   c.add<double>("fit_ratio", [](std::size_t, Step s) { return s.quality.fit_ratio; });
   c.text("trust_reason", [](Step s) { return s.quality.reason; });
   c.text("fallback", [](Step s) { return s.fallback; });
+  // The first registration's own pose and error, before any recovery replaced it.
+  c.add<double>("first_x_m", [](std::size_t, Step s) { return to_pose6(s.first_relative).x; });
+  c.add<double>("first_y_m", [](std::size_t, Step s) { return to_pose6(s.first_relative).y; });
+  c.add<double>("first_z_m", [](std::size_t, Step s) { return to_pose6(s.first_relative).z; });
+  c.add<double>("first_roll_deg",
+                [](std::size_t, Step s) { return to_pose6(s.first_relative).alpha * kDegPerRad; });
+  c.add<double>("first_pitch_deg",
+                [](std::size_t, Step s) { return to_pose6(s.first_relative).beta * kDegPerRad; });
+  c.add<double>("first_yaw_deg",
+                [](std::size_t, Step s) { return to_pose6(s.first_relative).gamma * kDegPerRad; });
+  c.add<double>("first_error_m", [&](std::size_t i, Step s) {
+    return truth ? translation_norm(error_of(i, s.first_relative)) : nan;
+  });
+  c.add<double>("first_error_deg", [&](std::size_t i, Step s) {
+    return truth ? rotation_angle(error_of(i, s.first_relative)) * kDegPerRad : nan;
+  });
   return c.table();
 }
 

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -47,6 +48,27 @@ double json_number(const std::string& json, const std::string& key, const std::s
   return end == start ? NAN : v;
 }
 
+/// steps.csv as rows of named fields (the header's names).
+std::vector<std::map<std::string, std::string>> read_steps_csv(const fs::path& file) {
+  std::ifstream in(file);
+  std::vector<std::string> names;
+  std::vector<std::map<std::string, std::string>> rows;
+  for (std::string line; std::getline(in, line);) {
+    std::vector<std::string> fields;
+    std::stringstream cells(line);
+    for (std::string cell; std::getline(cells, cell, ',');) fields.push_back(cell);
+    if (!line.empty() && line.back() == ',') fields.emplace_back();
+    if (names.empty()) {
+      names = fields;
+      continue;
+    }
+    EXPECT_EQ(fields.size(), names.size()) << line;
+    auto& row = rows.emplace_back();
+    for (std::size_t i = 0; i < names.size() && i < fields.size(); ++i) row[names[i]] = fields[i];
+  }
+  return rows;
+}
+
 /// Checks the written files: TUM and KITTI trajectories with `poses` poses that agree with each
 /// other (KITTI in the same frame unless `kitti_frame` is given), steps.csv with one line per
 /// registration, metrics.json and provenance.json. Returns the TUM trajectory.
@@ -60,6 +82,13 @@ Trajectory expect_outputs(const fs::path& out, std::size_t poses) {
   std::size_t lines = 0;
   for (std::string line; std::getline(steps, line);) ++lines;
   EXPECT_EQ(lines, poses);  // header + poses − 1 registrations
+  // Without a recovery the first registration is the one chained: its own pose columns agree.
+  for (const auto& step : read_steps_csv(out / "steps.csv")) {
+    if (!step.at("recovery").empty()) continue;
+    for (const char* field :
+         {"x_m", "y_m", "z_m", "roll_deg", "pitch_deg", "yaw_deg", "error_m", "error_deg"})
+      EXPECT_EQ(step.at(std::string("first_") + field), step.at(field)) << field;
+  }
   const std::string provenance = read_text(out / "provenance.json");
   for (const char* key : {"\"git\"", "\"seed\"", "\"method\"", "\"guess\"", "\"libraries\""})
     EXPECT_NE(provenance.find(key), std::string::npos) << key;
@@ -98,6 +127,16 @@ TEST(OdometryCli, SharedUosScans) {
   const std::string metrics = read_text(tmp / "out" / "metrics.json");
   EXPECT_LT(json_number(metrics, "ate_m", "estimate"), 0.1) << metrics;  // against the .frames (slam6D)
   EXPECT_LT(json_number(metrics, "rpe_m", "estimate"), 0.1) << metrics;
+  // Step 001 → 002 is low_overlap, so the dataset's odometry is chained; steps.csv keeps what the
+  // scans said too (the registration, right to 3 cm).
+  const auto steps = read_steps_csv(tmp / "out" / "steps.csv");
+  ASSERT_EQ(steps.size(), 2u);
+  const auto& step = steps[1];
+  EXPECT_EQ(step.at("first_trust"), "low_overlap");
+  EXPECT_EQ(step.at("recovery"), "guess");
+  EXPECT_EQ(step.at("x_m"), step.at("guess_x_m")) << "the guess is chained";
+  EXPECT_NE(step.at("first_x_m"), step.at("x_m"));
+  EXPECT_LT(std::stod(step.at("first_error_m")), 0.1);
 }
 
 /// A KITTI odometry sequence folder from scans of a campus driven with ~1 m between scans (a

@@ -78,7 +78,9 @@ void write_steps_csv(const std::filesystem::path& file, std::size_t first, const
   std::ostringstream out;
   out << "step,from_scan,to_scan,x_m,y_m,z_m,roll_deg,pitch_deg,yaw_deg,guess_x_m,guess_y_m,guess_yaw_deg,"
          "converged,iterations,score,matched_points,reference_points,seconds,error_m,error_deg,status,"
-         "trust,first_trust,recovery,overlap,constraint_ratio,fit_ratio,trust_reason,fallback\n";
+         "trust,first_trust,recovery,overlap,constraint_ratio,fit_ratio,trust_reason,fallback,first_x_m,"
+         "first_y_m,"
+         "first_z_m,first_roll_deg,first_pitch_deg,first_yaw_deg,first_error_m,first_error_deg\n";
   out << std::setprecision(9);
   for (std::size_t i = 0; i < result.steps.size(); ++i) {
     const OdometryStep& s = result.steps[i];
@@ -88,16 +90,21 @@ void write_steps_csv(const std::filesystem::path& file, std::size_t first, const
         << p.alpha * kDegPerRad << "," << p.beta * kDegPerRad << "," << p.gamma * kDegPerRad << "," << g.x
         << "," << g.y << "," << g.gamma * kDegPerRad << "," << (s.converged ? 1 : 0) << "," << s.iterations
         << "," << s.score << "," << s.matched_points << "," << s.reference_points << "," << s.seconds << ",";
-    if (truth) {
-      const Eigen::Isometry3d E = relative(relative((*truth)[i], (*truth)[i + 1]), s.relative);
+    const auto write_error = [&](const Eigen::Isometry3d& motion) {
+      if (!truth) return void(out << ",");
+      const Eigen::Isometry3d E = relative(relative((*truth)[i], (*truth)[i + 1]), motion);
       out << translation_norm(E) << "," << rotation_angle(E) * kDegPerRad;
-    } else {
-      out << ",";
-    }
+    };
+    write_error(s.relative);
     out << "," << s.status << "," << to_string(s.quality.trust) << "," << to_string(s.first_trust) << ","
         << s.recovery << "," << s.quality.overlap << "," << s.quality.constraint_ratio << ","
-        << s.quality.fit_ratio << "," << csv_free_text(s.quality.reason) << "," << csv_free_text(s.fallback)
-        << "\n";
+        << s.quality.fit_ratio << "," << csv_free_text(s.quality.reason) << "," << csv_free_text(s.fallback);
+    // The first registration's own pose (what the scans said before any recovery replaced it).
+    const Pose6 f = to_pose6(s.first_relative);
+    out << "," << f.x << "," << f.y << "," << f.z << "," << f.alpha * kDegPerRad << "," << f.beta * kDegPerRad
+        << "," << f.gamma * kDegPerRad << ",";
+    write_error(s.first_relative);
+    out << "\n";
   }
   write_file_atomically(file, out.str());
 }

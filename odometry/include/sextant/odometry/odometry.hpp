@@ -113,6 +113,10 @@ struct OdometryStep {
   /// is chained and the step stays untrusted).
   std::string recovery;
   Trust first_trust = Trust::kOk;  ///< the first registration's trust, before any recovery
+  /// The first registration's own result, before any recovery: `relative` unless a recovery replaced
+  /// it (a wide-basin answer, the least suspect one, the guess or the last trusted motion), which
+  /// would otherwise lose what the scans said
+  Eigen::Isometry3d first_relative = Eigen::Isometry3d::Identity();
   bool trusted() const { return quality.trusted(); }
 };
 
