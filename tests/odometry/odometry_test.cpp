@@ -1,7 +1,9 @@
 // run_odometry on a small synthetic campus (known ground truth): every guess and map mode stays
 // close to the truth, the parallel and sequential paths agree exactly, errors are clear; the voxel
 // filter of the local map with a known answer.
+#include <array>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -9,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "sextant/core/error.hpp"
+#include "sextant/core/rng.hpp"
 #include "sextant/odometry/local_map.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/odometry/yaml.hpp"
@@ -183,6 +186,37 @@ TEST(LocalMap, VoxelDownsampleKeepsOneCentroidPerVoxel) {
   ASSERT_EQ(m.size(), 8u);
   EXPECT_NEAR(m[4].x(), 10.1f, 1e-5);
   EXPECT_EQ(merge_local_map({&c, &c}, {Eigen::Isometry3d::Identity(), shift}, 7, 0.5).size(), 6u);
+}
+
+// Many voxels (the table grows several times), on both sides of every axis and on voxel borders:
+// the centroids of a plain ordered map of floor(p / edge), in the order of each voxel's first point.
+TEST(LocalMap, VoxelDownsampleMatchesAPlainCentroidPerVoxel) {
+  Rng rng(5);
+  PointCloud c;
+  for (int i = 0; i < 20000; ++i) {
+    Eigen::Vector3f p(static_cast<float>(rng.uniform(-30, 30)), static_cast<float>(rng.uniform(-30, 30)),
+                      static_cast<float>(rng.uniform(-3, 3)));
+    if (i % 7 == 0) p = (p * 5.0f).array().round() / 5.0f;  // exactly on a 0.2 m border
+    c.push_back(p);
+    if (i % 3 == 0) c.push_back(p + Eigen::Vector3f(0.01f, 0.01f, 0.01f));  // a second point nearby
+  }
+  const double edge = 0.2;
+  std::map<std::array<long, 3>, std::size_t> voxel_of;  // voxel → index of its centroid
+  std::vector<Eigen::Vector3d> sums;
+  std::vector<double> counts;
+  for (const Eigen::Vector3f& p : c.points()) {
+    std::array<long, 3> v{};
+    for (int a = 0; a < 3; ++a) v[a] = static_cast<long>(std::floor(static_cast<double>(p[a]) / edge));
+    const auto [it, fresh] = voxel_of.emplace(v, sums.size());
+    if (fresh) sums.emplace_back(Eigen::Vector3d::Zero()), counts.push_back(0.0);
+    sums[it->second] += p.cast<double>();
+    counts[it->second] += 1.0;
+  }
+  const PointCloud d = voxel_downsample(c, edge);
+  ASSERT_EQ(d.size(), sums.size());
+  ASSERT_GT(d.size(), 10000u);
+  for (std::size_t i = 0; i < sums.size(); ++i)
+    ASSERT_TRUE(d[i].isApprox((sums[i] / counts[i]).cast<float>(), 1e-6f)) << i;
 }
 
 }  // namespace
