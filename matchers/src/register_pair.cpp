@@ -40,35 +40,19 @@ PairRegistration register_about_origin(const PointCloud& reference, const PointC
   return out;
 }
 
-/// `cloud` with every point moved by −`centre`.
-PointCloud about(const PointCloud& cloud, const Eigen::Vector3d& centre) {
-  return cloud.transformed(Eigen::Isometry3d(Eigen::Translation3d(-centre)));
-}
-
 }  // namespace
-
-Eigen::Vector3d registration_centre(const PointCloud& reference) {
-  if (reference.empty()) return Eigen::Vector3d::Zero();
-  const Bounds box = reference.bounds();
-  const Eigen::Vector3d low = box.min.cast<double>(), high = box.max.cast<double>();
-  const Eigen::Vector3d outside =
-      low.cwiseMax(Eigen::Vector3d::Zero()) - high.cwiseMin(Eigen::Vector3d::Zero());
-  if (!(outside.norm() > 0.5 * (high - low).norm())) return Eigen::Vector3d::Zero();
-  return 0.5 * (low + high);
-}
 
 PairRegistration register_pair(const PointCloud& reference, const PointCloud& input,
                                const PairRegistrationRequest& request) {
-  const Eigen::Vector3d centre = registration_centre(reference);
-  if (centre.isZero()) return register_about_origin(reference, input, request);
-  const Eigen::Isometry3d to_file(Eigen::Translation3d{centre}), to_local = to_file.inverse();
+  const CentredFrame frame(registration_centre(reference));
+  if (!frame.moved()) return register_about_origin(reference, input, request);
   PairRegistrationRequest local = request;
-  if (request.init) local.init = to_local * *request.init * to_file;
-  PairRegistration out = register_about_origin(about(reference, centre), about(input, centre), local);
-  out.centre = centre;
+  if (request.init) local.init = frame.local(*request.init);
+  PairRegistration out = register_about_origin(frame.cloud(reference), frame.cloud(input), local);
+  out.centre = frame.centre();
   RegistrationResult& r = out.match.result;
-  r.T = to_file * r.T * to_local;
-  for (RegistrationResult& alternative : r.alternatives) alternative.T = to_file * alternative.T * to_local;
+  r.T = frame.coordinates(r.T);
+  for (RegistrationResult& alternative : r.alternatives) alternative.T = frame.coordinates(alternative.T);
   return out;
 }
 

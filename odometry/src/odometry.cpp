@@ -16,11 +16,13 @@
 #include "sextant/odometry/local_map.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/odometry/sequence_trust.hpp"
+#include "step_frame.hpp"
 #include "step_worker.hpp"
 
 namespace sextant {
 namespace {
 
+using odometry_detail::StepFrame;
 using odometry_detail::StepWorker;
 
 /// Scans loaded and registered together on the parallel path (bounds the memory held).
@@ -118,11 +120,14 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
     tbb::parallel_for(begin, end, [&](std::size_t k) {
       chunk[k - begin] = load_sequence_scan(dataset, first + k, s.min_range);
     });
+    // Each step in its frame until its recovery is done (step_frame.hpp).
+    std::vector<std::unique_ptr<StepFrame>> frames(end - begin);
     tbb::parallel_for(begin, end, [&](std::size_t k) {
-      const PointCloud& reference = k == begin ? previous : chunk[k - 1 - begin];
+      auto& frame = frames[k - begin];
+      frame = std::make_unique<StepFrame>(k == begin ? previous : chunk[k - 1 - begin], chunk[k - begin]);
       StepWorker worker(s);
-      steps[k - 1] =
-          worker.first_try(reference, chunk[k - begin], relative(odometry[k - 1], odometry[k]), seeds[k]);
+      steps[k - 1] = worker.first_try(frame->reference(), frame->input(),
+                                      frame->local(relative(odometry[k - 1], odometry[k])), seeds[k]);
       counter.tick();
     });
     // The sequence check in sequence order, then the recovery of what is not trusted (independent
@@ -135,13 +140,30 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
     }
     tbb::parallel_for(std::size_t{0}, untrusted.size(), [&](std::size_t u) {
       const std::size_t k = untrusted[u];
-      const PointCloud& reference = k == begin ? previous : chunk[k - 1 - begin];
+      const StepFrame& frame = *frames[k - begin];
       StepWorker worker(s);
-      worker.recover(steps[k - 1], reference, chunk[k - begin], {steps[k - 1].guess}, seeds[k]);
+      worker.recover(steps[k - 1], frame.reference(), frame.input(), {steps[k - 1].guess}, seeds[k]);
     });
+    for (std::size_t k = begin; k < end; ++k) frames[k - begin]->to_coordinates(steps[k - 1]);
     previous = std::move(chunk.back());
   }
   return steps;
+}
+
+/// One step of the sequential path in its frame (step_frame.hpp): the first try from `guess` (and
+/// the other priors), the sequence check, the recovery from `starts`; the step comes back in the scans'
+/// coordinates.
+OdometryStep register_step(StepWorker& worker, const SequenceTrust& trust, const PointCloud& reference,
+                           const PointCloud& input, const Eigen::Isometry3d& guess,
+                           const std::vector<Eigen::Isometry3d>& other_priors, bool search,
+                           const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed) {
+  const StepFrame frame(reference, input);
+  OdometryStep step = worker.first_try(frame.reference(), frame.input(), frame.local(guess), seed,
+                                       frame.local(other_priors), search);
+  trust.check(step.quality);
+  worker.recover(step, frame.reference(), frame.input(), frame.local(starts), seed);
+  frame.to_coordinates(step);
+  return step;
 }
 
 /// Waits for a prefetch on every way out, so that an exception never destroys a running task_group.
@@ -200,13 +222,11 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
         poses.push_back(relative(previous_pose, window_poses[j]));
       }
       const PointCloud map = merge_local_map(clouds, poses, s.local_map_max_points, s.local_map_voxel);
-      steps.push_back(worker.first_try(map, input, guess, seeds[k], other_priors, search));
-      trust.check(steps.back().quality);
-      worker.recover(steps.back(), map, input, recovery_starts(s, guess, last_trusted), seeds[k]);
+      steps.push_back(register_step(worker, trust, map, input, guess, other_priors, search,
+                                    recovery_starts(s, guess, last_trusted), seeds[k]));
     } else {
-      steps.push_back(worker.first_try(window.back(), input, guess, seeds[k], other_priors, search));
-      trust.check(steps.back().quality);
-      worker.recover(steps.back(), window.back(), input, recovery_starts(s, guess, last_trusted), seeds[k]);
+      steps.push_back(register_step(worker, trust, window.back(), input, guess, other_priors, search,
+                                    recovery_starts(s, guess, last_trusted), seeds[k]));
     }
     trust.record(steps.back().quality);
     if (steps.back().trusted()) {

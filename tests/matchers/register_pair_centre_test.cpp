@@ -39,6 +39,10 @@ TEST(RegistrationCentre, IsTheOriginWhereASensorCouldStand) {
   // All around the sensor, and only in front of it (the origin 1 m from the box): the origin.
   EXPECT_TRUE(registration_centre(box_cloud({-40, -30, -2}, {50, 35, 8})).isZero());
   EXPECT_TRUE(registration_centre(box_cloud({1, -30, -2}, {60, 30, 5})).isZero());
+  // A 300 m map 130 m from the origin (MulRan keyframes in their map frame, moved 300 m): no sensor
+  // stands there; with half the diagonal as the margin it counted as one.
+  EXPECT_TRUE(
+      registration_centre(box_cloud({130, -100, -10}, {430, 100, 20})).isApprox(Eigen::Vector3d(280, 0, 5)));
   // 300 m away from a 40 m box: its middle.
   const Eigen::Vector3d centre = registration_centre(box_cloud({-20, 280, -2}, {20, 320, 6}));
   EXPECT_TRUE(centre.isApprox(Eigen::Vector3d(0, 300, 2))) << centre.transpose();
@@ -67,6 +71,35 @@ TEST(RegisterPair, CloudsFarFromTheirOriginRegisterAboutTheReference) {
       EXPECT_LT(rotation_angle(relative(truth, home)), 0.7 * M_PI / 180.0) << offset.transpose();
     }
   }
+}
+
+// A score quadratic in the centred frame's pose, S(ξ) = ½ (ξ_local(ξ) − ξ₀)ᵀ A (ξ_local(ξ) − ξ₀): its
+// Hessian over ξ at the minimum, by central differences, is hessian_in_coordinates(A).
+TEST(CentredFrame, HessianInCoordinatesIsTheLocalOneThroughTheChainRule) {
+  const CentredFrame frame(Eigen::Vector3d(300, -120, 8));
+  Vector6d xi0;
+  xi0 << 0.4, -0.2, 0.05, 0.01, -0.02, 0.3;  // the local pose at the minimum
+  Matrix6d B = Matrix6d::Identity();
+  B.topRightCorner<3, 3>() << 0.3, 0.1, 0, -0.2, 0.4, 0.1, 0, 0.2, 0.5;
+  const Matrix6d A = B * B.transpose() + Matrix6d::Identity();  // positive definite, coupled
+  const auto score = [&](const Vector6d& xi) {
+    const Vector6d local = to_pose6(frame.local(to_isometry(Pose6::from_vector(xi)))).vector() - xi0;
+    return 0.5 * local.dot(A * local);
+  };
+  const Vector6d at = to_pose6(frame.coordinates(to_isometry(Pose6::from_vector(xi0)))).vector();
+  ASSERT_LT(score(at), 1e-12);
+  const double h = 1e-4;
+  Matrix6d numeric;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) {
+      Vector6d pp = at, pm = at, mp = at, mm = at;
+      pp(i) += h, pp(j) += h, pm(i) += h, pm(j) -= h, mp(i) -= h, mp(j) += h, mm(i) -= h, mm(j) -= h;
+      numeric(i, j) = (score(pp) - score(pm) - score(mp) + score(mm)) / (4 * h * h);
+    }
+  const Matrix6d analytic = frame.hessian_in_coordinates(A, to_isometry(Pose6::from_vector(at)));
+  EXPECT_LT((analytic - numeric).norm(), 1e-4 * numeric.norm()) << analytic << "\n\n" << numeric;
+  EXPECT_GT((analytic - A).norm(), 10.0) << "a rotation moves the translation by 300 m lever arms";
+  EXPECT_TRUE(CentredFrame().hessian_in_coordinates(A, Eigen::Isometry3d::Identity()).isApprox(A));
 }
 
 }  // namespace

@@ -8,12 +8,9 @@
 //     it is trusted;
 //   - settings that hold their own `wide_basin:` map always search with it.
 // Matchers without a wide basin (ICP, the PCL peers) register once, from the guess or the identity.
-// A registration turns the input about the origin of its coordinates, the sensor in a scan's own
-// frame. Clouds far from that origin (georeferenced, or exported in a map frame) would turn about a
-// point hundreds of metres or kilometres away, where a thousandth of a degree moves them by
-// centimetres: 300 m away the Velodyne pair ends 2.6 m off (degenerate), 5,400 km away 67 km off.
-// Such a pair is registered in a frame centred at the reference (registration_centre), and the
-// result is brought back to the clouds' coordinates.
+// Clouds far from the origin of their coordinates are registered about the middle of the reference
+// (registration_centre.hpp), and the result is brought back to the clouds' coordinates: 5,400 km
+// away the Velodyne pair ended 67 km off before.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -23,6 +20,7 @@
 #include "sextant/core/point_cloud.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/matcher_choice.hpp"
+#include "sextant/matchers/registration_centre.hpp"
 
 namespace sextant {
 
@@ -47,11 +45,6 @@ struct PairRegistration {
   /// the pose about this point.
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();
 };
-
-/// Where a pair with this reference is registered about: the origin of the coordinates when a
-/// sensor could stand there (it lies no farther from the reference's bounding box than half the
-/// box's diagonal), else the centre of the box.
-Eigen::Vector3d registration_centre(const PointCloud& reference);
 
 /// Registers `input` against `reference` (see above). Never throws for bad data; whatever the
 /// request's factories throw for bad settings (the YAML ones: InputErrors naming their file) passes.
