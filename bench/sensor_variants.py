@@ -1,0 +1,122 @@
+#!/usr/bin/env python3
+"""Right or say so with sensors and frames the shared data does not have (issue 22).
+
+The MulRan keyframes 0-107 made into the scans of other set-ups, each a folder dataset with times,
+run with `sextant odometry` and no options:
+  - 32 rings / 16 rings: every 2nd / 4th of the OS1-64's rings (elevation bands of 0.52 degrees),
+    as a sparser spinning lidar would see the same drive;
+  - 120 degrees ahead: only the points within 60 degrees of the direction of travel (-x here), as a
+    forward-looking lidar;
+  - map frame, 300 m: every keyframe moved by the reference's pose into its map and 300 m further,
+    as scans exported in a map frame or georeferenced come.
+A step's error is taken where its scan's sensor stands (in the map frame a relative pose is an
+identity whose translation 300 m away would read a thousandth of a degree as centimetres). Prints
+one row per variant: steps, steps more than 1 m or 5 degrees off the reference, how many of them
+say trusted (the number that must be 0), untrusted steps and the time per scan.
+
+  bench/sensor_variants.py [build/experiments/sextant] [path/to/mulran_riverside02] [output folder]
+      [build/python]
+"""
+import json
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+sextant_cli = sys.argv[1] if len(sys.argv) > 1 else "build/experiments/sextant"
+mulran = sys.argv[2] if len(sys.argv) > 2 else "../shared/data/mulran_riverside02"
+out = sys.argv[3] if len(sys.argv) > 3 else "sensor_variants"
+sys.path.insert(0, sys.argv[4] if len(sys.argv) > 4 else "build/python")
+import sextant  # noqa: E402  (the module built beside the CLI)
+
+FIRST, LAST = 0, 107
+RING_SPACING_DEG = 0.52  # the OS1-64's beams: 33.2 degrees over 64 rings
+
+
+def matrix(row):
+    T = np.eye(4)
+    T[:3, :] = np.asarray(row, dtype=float).reshape(3, 4)
+    return T
+
+
+def euler(alpha, beta, gamma):
+    """R = Rx(alpha) Ry(beta) Rz(gamma), eq. (3.8)."""
+    ca, sa, cb, sb, cg, sg = (math.cos(alpha), math.sin(alpha), math.cos(beta), math.sin(beta),
+                              math.cos(gamma), math.sin(gamma))
+    rx = np.array([[1, 0, 0], [0, ca, -sa], [0, sa, ca]])
+    ry = np.array([[cb, 0, sb], [0, 1, 0], [-sb, 0, cb]])
+    rz = np.array([[cg, -sg, 0], [sg, cg, 0], [0, 0, 1]])
+    return rx @ ry @ rz
+
+
+def keep_rings(every):
+    def keep(p):
+        elevation = np.degrees(np.arctan2(p[:, 2], np.hypot(p[:, 0], p[:, 1])))
+        return np.floor((elevation + 30.0) / RING_SPACING_DEG + 0.5).astype(int) % every == 0
+    return keep
+
+
+def ahead(p):
+    azimuth = np.degrees(np.arctan2(p[:, 1], p[:, 0]))
+    return np.abs(np.abs(azimuth) - 180.0) < 60.0
+
+
+def variant(name, keep=None, offset=None):
+    """Writes the folder, runs the odometry, returns the table row."""
+    poses = np.loadtxt(os.path.join(mulran, "poses.txt"))
+    times = np.loadtxt(os.path.join(mulran, "times.txt"))
+    folder = os.path.join(out, name.replace(" ", "_").replace(",", ""))
+    os.makedirs(os.path.join(folder, "scans"), exist_ok=True)
+    sensors = []  # where each scan's sensor stands in the folder's frame
+    with open(os.path.join(folder, "poses.txt"), "w") as f, open(os.path.join(folder, "times.txt"), "w") as t:
+        for n, k in enumerate(range(FIRST, LAST + 1)):
+            p = np.asarray(sextant.read_cloud(os.path.join(mulran, "scans", f"{k:06d}.pcd")))[:, :3]
+            if keep is not None:
+                p = p[keep(p)]
+            sensor = np.eye(4)
+            if offset is not None:
+                sensor = matrix(poses[k])
+                sensor[0, 3] += offset
+                p = p @ sensor[:3, :3].T + sensor[:3, 3]
+            sensors.append(sensor)
+            sextant.write_cloud(os.path.join(folder, "scans", f"{n:06d}.pcd"), p.astype(np.float32))
+            world = matrix(poses[k]) if offset is None else np.eye(4)  # world <- scan coordinates
+            f.write(" ".join(f"{v:.9g}" for v in world[:3, :].ravel()) + "\n")
+            t.write(f"{times[k]:.9f}\n")
+    result = folder + ".out"
+    subprocess.run([sextant_cli, "odometry", folder, "--out", result, "--no-progress"], check=True,
+                   stdout=subprocess.DEVNULL)
+    truth = [matrix(poses[k]) for k in range(FIRST, LAST + 1)]
+    wrong = trusted_wrong = untrusted = 0
+    steps = np.genfromtxt(os.path.join(result, "steps.csv"), delimiter=",", names=True, dtype=None,
+                          encoding="utf-8")
+    for s in steps:
+        estimate = np.eye(4)
+        estimate[:3, :3] = euler(*np.radians([s["roll_deg"], s["pitch_deg"], s["yaw_deg"]]))
+        estimate[:3, 3] = [s["x_m"], s["y_m"], s["z_m"]]
+        i, j = int(s["from_scan"]), int(s["to_scan"])
+        if offset is not None:  # the same motion in the frame of the sensors
+            estimate = np.linalg.inv(sensors[i]) @ estimate @ sensors[j]
+        error = np.linalg.inv(np.linalg.inv(truth[i]) @ truth[j]) @ estimate
+        angle = math.degrees(math.acos(max(-1.0, min(1.0, (np.trace(error[:3, :3]) - 1) / 2))))
+        off = np.linalg.norm(error[:3, 3]) > 1.0 or angle > 5.0
+        wrong += off
+        trusted_wrong += off and s["trust"] == "ok"
+        untrusted += s["trust"] != "ok"
+    seconds = json.load(open(os.path.join(result, "metrics.json")))["seconds"]
+    points = len(sextant.read_cloud(os.path.join(folder, "scans", "000000.pcd")))
+    return (f"| {name} | {points} | {len(steps)} | {wrong} | **{trusted_wrong}** | {untrusted} | "
+            f"{1000 * seconds / len(steps):.1f} |")
+
+
+print("| MulRan 0–107 as | points (first scan) | steps | steps > 1 m or 5° off | of them trusted | untrusted "
+      "| ms per scan |")
+print("|---|---|---|---|---|---|---|")
+print(variant("the OS1-64 (as recorded)"))
+print(variant("32 rings", keep_rings(2)))
+print(variant("16 rings", keep_rings(4)))
+print(variant("120° ahead", ahead))
+print(variant("map frame, 300 m", offset=300.0))
+print(f"(outputs in {out})")
