@@ -3,7 +3,7 @@
 // coordinates: the sensor, in a scan's own frame. Clouds far from that origin (georeferenced, or
 // exported in a map frame) would turn about a point hundreds of metres or kilometres away, where a
 // thousandth of a degree moves them by centimetres: 300 m away the Velodyne pair ends 2.6 m off
-// (degenerate), and every step of MulRan keyframes moved 300 m says degenerate. Such clouds are
+// (degenerate), and every odometry step over MulRan keyframes moved 300 m said degenerate. Such clouds are
 // registered in a frame centred at the reference, and the transforms are brought back:
 //
 //   const CentredFrame frame(registration_centre(reference));
