@@ -15,7 +15,8 @@ std::uint64_t voxel_key(const Eigen::Vector3f& p, double inverse_edge) {
   constexpr std::uint64_t kMask = (std::uint64_t{1} << 21) - 1;
   std::uint64_t key = 0;
   for (int a = 0; a < 3; ++a) {
-    const double scaled = static_cast<double>(p[a]) * inverse_edge;
+    // Clamped so that the conversion is defined for any finite coordinate (the 21 bits wrap anyway).
+    const double scaled = std::clamp(static_cast<double>(p[a]) * inverse_edge, -1e15, 1e15);
     auto index = static_cast<std::int64_t>(scaled);
     if (static_cast<double>(index) > scaled) --index;  // floor, without a libm call per coordinate
     key = (key << 21) | (static_cast<std::uint64_t>(index + kOffset) & kMask);
