@@ -51,10 +51,9 @@ using Step = const OdometryStep&;
 py::dict steps_table(const OdometryResult& result, std::size_t first,
                      const std::optional<std::vector<Eigen::Isometry3d>>& truth) {
   // E = (truth_i⁻¹ truth_{i+1})⁻¹ · relative_i, as steps.csv's error columns.
-  const auto error_of = [&](std::size_t i, const Eigen::Isometry3d& motion) {
+  const auto error = [&](std::size_t i, const Eigen::Isometry3d& motion) {
     return relative(relative((*truth)[i], (*truth)[i + 1]), motion);
   };
-  const auto error = [&](std::size_t i, Step s) { return error_of(i, s.relative); };
   const double nan = std::numeric_limits<double>::quiet_NaN();
   Columns c(result.steps);
   c.add<long long>("step", [](std::size_t i, Step) { return static_cast<long long>(i); });
@@ -78,9 +77,9 @@ py::dict steps_table(const OdometryResult& result, std::size_t first,
                    [](std::size_t, Step s) { return static_cast<long long>(s.reference_points); });
   c.add<double>("seconds", [](std::size_t, Step s) { return s.seconds; });
   c.add<double>("error_m",
-                [&](std::size_t i, Step s) { return truth ? translation_norm(error(i, s)) : nan; });
+                [&](std::size_t i, Step s) { return truth ? translation_norm(error(i, s.relative)) : nan; });
   c.add<double>("error_deg", [&](std::size_t i, Step s) {
-    return truth ? rotation_angle(error(i, s)) * kDegPerRad : nan;
+    return truth ? rotation_angle(error(i, s.relative)) * kDegPerRad : nan;
   });
   c.text("status", [](Step s) { return s.status; });
   c.text("trust", [](Step s) { return to_string(s.quality.trust); });
@@ -102,10 +101,10 @@ py::dict steps_table(const OdometryResult& result, std::size_t first,
   c.add<double>("first_yaw_deg",
                 [](std::size_t, Step s) { return to_pose6(s.first_relative).gamma * kDegPerRad; });
   c.add<double>("first_error_m", [&](std::size_t i, Step s) {
-    return truth ? translation_norm(error_of(i, s.first_relative)) : nan;
+    return truth ? translation_norm(error(i, s.first_relative)) : nan;
   });
   c.add<double>("first_error_deg", [&](std::size_t i, Step s) {
-    return truth ? rotation_angle(error_of(i, s.first_relative)) * kDegPerRad : nan;
+    return truth ? rotation_angle(error(i, s.first_relative)) * kDegPerRad : nan;
   });
   return c.table();
 }

@@ -78,9 +78,9 @@ void write_steps_csv(const std::filesystem::path& file, std::size_t first, const
   std::ostringstream out;
   out << "step,from_scan,to_scan,x_m,y_m,z_m,roll_deg,pitch_deg,yaw_deg,guess_x_m,guess_y_m,guess_yaw_deg,"
          "converged,iterations,score,matched_points,reference_points,seconds,error_m,error_deg,status,"
-         "trust,first_trust,recovery,overlap,constraint_ratio,fit_ratio,trust_reason,fallback,first_x_m,"
-         "first_y_m,"
-         "first_z_m,first_roll_deg,first_pitch_deg,first_yaw_deg,first_error_m,first_error_deg\n";
+         "trust,first_trust,recovery,overlap,constraint_ratio,fit_ratio,trust_reason,fallback,"
+         "first_x_m,first_y_m,first_z_m,first_roll_deg,first_pitch_deg,first_yaw_deg,first_error_m,"
+         "first_error_deg\n";
   out << std::setprecision(9);
   for (std::size_t i = 0; i < result.steps.size(); ++i) {
     const OdometryStep& s = result.steps[i];
