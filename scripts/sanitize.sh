@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer (SEXTANT_SANITIZE=ON),
-# in its own build folder (build-asan/, RelWithDebInfo at -O1 -g1, no benchmarks). Installs what is missing
+# The test suite under AddressSanitizer + UndefinedBehaviorSanitizer (SEXTANT_SANITIZE=ON: UBSan in
+# the libraries and the CLI, not in the test files themselves; CompilerOptions.cmake), in its own
+# build folder (build-asan/, RelWithDebInfo at -O1 -g1, no benchmarks). Installs what is missing
 # through scripts/setup.sh's package list first. CI (.ci/run) runs it after scripts/test.sh.
 # Usage: scripts/sanitize.sh [extra cmake -D options...]
 set -euo pipefail
