@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include <Eigen/Eigenvalues>
@@ -26,6 +27,14 @@ struct CellSums {
 }  // namespace ndt_detail
 
 namespace {
+
+// A cell count from its real-valued ceiling: at least 1, saturated at INT_MAX (init() refuses such
+// a grid) and defined for NaN (a cloud with non-finite bounds), which a plain cast to int is not.
+int saturated_cell_count(double n) {
+  if (!(n >= 1.0)) return 1;
+  if (n >= static_cast<double>(std::numeric_limits<int>::max())) return std::numeric_limits<int>::max();
+  return static_cast<int>(n);
+}
 
 using ndt_detail::CellSums;
 
@@ -216,7 +225,7 @@ NdtGrid NdtGrid::build_over_bounds(const PointCloud& reference, double cell_edge
   const Bounds b = reference.bounds();
   Eigen::Vector3i dims;
   for (int a = 0; a < 3; ++a)
-    dims(a) = std::max(1, static_cast<int>(std::ceil(static_cast<double>(b.extent()(a)) / cell_edge)));
+    dims(a) = saturated_cell_count(std::ceil(static_cast<double>(b.extent()(a)) / cell_edge));
   if (!(cell_edge > 0.0) || !std::isfinite(cell_edge)) dims.setZero();
   return build(reference, b.min.cast<double>(), cell_edge, dims, settings);
 }
@@ -258,7 +267,7 @@ LayerGeometry layer_geometry(const Bounds& bounds, int q, int layer) {
   const double cells = std::pow(static_cast<double>(q), layer);
   geometry.cell_edge = std::pow(volume / cells, 1.0 / used_axes);  // k = (V / qⁱ)^(1/3)
   for (int a = 0; a < 3; ++a)
-    geometry.dims(a) = std::max(1, static_cast<int>(std::ceil(extent(a) / geometry.cell_edge - 1e-9)));
+    geometry.dims(a) = saturated_cell_count(std::ceil(extent(a) / geometry.cell_edge - 1e-9));
   return geometry;
 }
 
