@@ -134,10 +134,10 @@ bool CampusSettings::valid(std::string* why) const {
     return ok;
   };
   if (why) why->clear();
-  const bool ok = check("world", world.valid(&reason)) & check("trajectory", trajectory.valid(&reason)) &
-                  check("sensor", sensor.valid(&reason)) & check("odometry", odometry.valid(&reason)) &
-                  check("gnss", gnss.valid(&reason));
-  return ok;
+  // The first invalid part names the reason; the rest are not checked.
+  return check("world", world.valid(&reason)) && check("trajectory", trajectory.valid(&reason)) &&
+         check("sensor", sensor.valid(&reason)) && check("odometry", odometry.valid(&reason)) &&
+         check("gnss", gnss.valid(&reason));
 }
 
 std::string campus_settings_yaml(const CampusSettings& settings, std::uint64_t seed) {

@@ -107,8 +107,9 @@ RegistrationParams read_registration_params(const ExperimentConfig& config) {
                                                               {"thesis_proposed", &p.thesis_proposed}};
   for (const auto& [key, name] : named) {
     if (name->empty()) continue;
+    const std::string& wanted = *name;  // C++17 lambdas cannot capture a structured binding
     const bool known = std::any_of(config.methods.begin(), config.methods.end(),
-                                   [&](const MethodConfig& m) { return m.name == *name; });
+                                   [&](const MethodConfig& m) { return m.name == wanted; });
     if (!known) in.fail(key, "key '" + std::string(key) + "': no method named '" + *name + "'");
   }
   return p;
