@@ -29,7 +29,7 @@ endfunction()
 # tests/CMakeLists.txt), so their flags must be identical: they all come from here.
 function(sextant_test_settings target)
   target_link_libraries(${target} PRIVATE GTest::gtest sextant_options)
-  set_target_properties(${target} PROPERTIES SEXTANT_TEST_CODE ON)  # no UBSan here (CompilerOptions.cmake)
+  set_target_properties(${target} PROPERTIES SEXTANT_NO_UBSAN ON)  # see CompilerOptions.cmake
   target_include_directories(${target} PRIVATE ${PROJECT_SOURCE_DIR}/tests/common)
   target_compile_definitions(${target} PRIVATE
     SEXTANT_DATA_DIR="${PROJECT_SOURCE_DIR}/data"

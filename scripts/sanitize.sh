@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The test suite under AddressSanitizer + UndefinedBehaviorSanitizer (SEXTANT_SANITIZE=ON: UBSan in
-# the libraries and the CLI, not in the test files themselves; CompilerOptions.cmake), in its own
+# the algorithm libraries and the CLI, not in the test files or the experiments library;
+# CompilerOptions.cmake says why), in its own
 # build folder (build-asan/, RelWithDebInfo at -O1 -g1, no benchmarks). Installs what is missing
 # through scripts/setup.sh's package list first. CI (.ci/run) runs it after scripts/test.sh.
 # Usage: scripts/sanitize.sh [extra cmake -D options...]
