@@ -68,7 +68,10 @@ RangeBearingRun simulate_range_bearing(const RangeBearingWorld& world, const Ran
     pose = model.process(pose, u_true);  // eq. (5.7)
 
     SlamStepInput step;
-    step.u = Eigen::Vector2d(s.speed + s.sigma_speed * rng.normal(), steer + s.sigma_steer * rng.normal());
+    // Drawn last argument first: the order GCC gave these once-unsequenced draws (same data as before).
+    const double steer_noise = rng.normal();
+    const double speed_noise = rng.normal();
+    step.u = Eigen::Vector2d(s.speed + s.sigma_speed * speed_noise, steer + s.sigma_steer * steer_noise);
     if (k % observe_period == 0) {
       for (std::size_t i = 0; i < world.landmarks.size(); ++i) {
         Eigen::VectorXd z = model.observe(pose, world.landmarks[i]);  // eq. (5.8)

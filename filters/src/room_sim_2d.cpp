@@ -168,8 +168,11 @@ RoomSim2dRun run_room_sim_2d(const RoomSim2dSettings& s, Matcher& matcher, Rng& 
     const double max_change = s.max_steer_rate * s.dt;
     steer += std::clamp(wanted - steer, -max_change, max_change);
     truth = vehicle.process(truth, Eigen::Vector2d(s.speed, steer));  // eqs. (3.37)–(3.39)
-    const Eigen::Vector2d u(s.speed + s.bias_speed + s.sigma_speed * rng.normal(),
-                            steer + s.bias_steer + s.sigma_steer * rng.normal());
+    // Drawn last argument first: the order GCC gave these once-unsequenced draws (same data as before).
+    const double steer_noise = rng.normal();
+    const double speed_noise = rng.normal();
+    const Eigen::Vector2d u(s.speed + s.bias_speed + s.sigma_speed * speed_noise,
+                            steer + s.bias_steer + s.sigma_steer * steer_noise);
     odometry = vehicle.process(odometry, u);
     ekf.predict(u, Q);  // eqs. (3.48)–(3.49)
     ++run.controls;

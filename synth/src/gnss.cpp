@@ -16,9 +16,11 @@ std::vector<GnssRecord> simulate_gnss(const std::vector<Eigen::Isometry3d>& grou
     const Eigen::Isometry3d& T = ground_truth[i];
     GnssRecord r;
     r.stamp = i < stamps.size() ? stamps[i] : static_cast<double>(i);
-    const Eigen::Vector3d p = T.translation() + Eigen::Vector3d(rng.normal(0.0, s.sigma_horizontal),
-                                                                rng.normal(0.0, s.sigma_horizontal),
-                                                                rng.normal(0.0, s.sigma_vertical));
+    // Drawn last argument first: the order GCC gave these once-unsequenced draws (same data as before).
+    const double up = rng.normal(0.0, s.sigma_vertical);
+    const double north = rng.normal(0.0, s.sigma_horizontal);
+    const double east = rng.normal(0.0, s.sigma_horizontal);
+    const Eigen::Vector3d p = T.translation() + Eigen::Vector3d(east, north, up);
     enu.Reverse(p.x(), p.y(), p.z(), r.latitude, r.longitude, r.altitude);
     const Eigen::Matrix3d& R = T.linear();  // ZYX angles
     r.yaw = std::atan2(R(1, 0), R(0, 0)) + rng.normal(0.0, s.sigma_attitude_deg * kRadPerDeg);

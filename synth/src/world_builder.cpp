@@ -33,6 +33,14 @@ class Builder {
   }
 
  private:
+  // Uniform draws in [lo, hi) per axis, the last axis drawn first: the order GCC gave the
+  // unsequenced constructor arguments these replace, so the campus stays what it was.
+  Eigen::Vector3d reversed_draws(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+    Eigen::Vector3d v;
+    for (int a = 2; a >= 0; --a) v(a) = rng_.uniform(lo(a), hi(a));
+    return v;
+  }
+
   // ---- ground -------------------------------------------------------------------------------
   void build_ground() {
     const double phase1 = rng_.uniform(0, 2 * kPi), phase2 = rng_.uniform(0, 2 * kPi),
@@ -143,8 +151,9 @@ class Builder {
     add(Cylinder{p, rng_.uniform(0.12, 0.3), g - 0.2, g + trunk + 0.5}, ObjectKind::kTrunk);
     const int blobs = 3 + static_cast<int>(rng_.index(4));
     for (int b = 0; b < blobs; ++b) {
-      const Eigen::Vector3d c(p.x() + rng_.uniform(-1.2, 1.2), p.y() + rng_.uniform(-1.2, 1.2),
-                              g + trunk + rng_.uniform(0.6, 2.2));
+      const Eigen::Vector3d c =
+          reversed_draws(Eigen::Vector3d(-1.2, -1.2, 0.6), Eigen::Vector3d(1.2, 1.2, 2.2)) +
+          Eigen::Vector3d(p.x(), p.y(), g + trunk);
       add(Ellipsoid{c, {rng_.uniform(1.0, 2.0), rng_.uniform(1.0, 2.0), rng_.uniform(0.8, 1.3)}},
           ObjectKind::kFoliage);
     }
@@ -152,7 +161,7 @@ class Builder {
 
   void add_bush(const Eigen::Vector2d& p) {
     const double g = ground(p.x(), p.y());
-    const Eigen::Vector3d r(rng_.uniform(0.6, 1.6), rng_.uniform(0.6, 1.6), rng_.uniform(0.5, 1.0));
+    const Eigen::Vector3d r = reversed_draws(Eigen::Vector3d(0.6, 0.6, 0.5), Eigen::Vector3d(1.6, 1.6, 1.0));
     add(Ellipsoid{{p.x(), p.y(), g + 0.6 * r.z()}, r}, ObjectKind::kFoliage);
   }
 
@@ -324,8 +333,9 @@ class Builder {
     const double length = std::min(rng_.uniform(8.0, 20.0), (along_x ? lot.width() : lot.height()) - 2.0);
     const double thick = 0.3, height = rng_.uniform(1.8, 3.5);
     const double yaw = (along_x ? 0.0 : 0.5 * kPi) + rng_.uniform(-0.1, 0.1);
-    const Eigen::Vector2d centre(rng_.uniform(lot.x0 + 0.4 * lot.width(), lot.x1 - 0.4 * lot.width()),
-                                 rng_.uniform(lot.y0 + 0.4 * lot.height(), lot.y1 - 0.4 * lot.height()));
+    const double centre_y = rng_.uniform(lot.y0 + 0.4 * lot.height(), lot.y1 - 0.4 * lot.height());
+    const double centre_x = rng_.uniform(lot.x0 + 0.4 * lot.width(), lot.x1 - 0.4 * lot.width());
+    const Eigen::Vector2d centre(centre_x, centre_y);  // y drawn first, as in reversed_draws
     LocalFrame frame;
     frame.yaw = yaw;
     frame.origin = centre - Eigen::Rotation2Dd(yaw) * Eigen::Vector2d(0.5 * length, 0.5 * thick);

@@ -105,7 +105,9 @@ void run_true(const CampusScans& data, const PlaneSlamParams& params, const Plan
       const synth::Landmark& l = c.world->landmarks[static_cast<std::size_t>(v.landmark)];
       const Eigen::Vector4d m(l.normal.x(), l.normal.y(), l.normal.z(), l.d);
       Eigen::VectorXd z = model->observe(truth, m);
-      z.head<3>() += s.sigma_normal * Eigen::Vector3d(noise.normal(), noise.normal(), noise.normal());
+      // Drawn last argument first: the order GCC gave these once-unsequenced draws (same data as before).
+      const double nz = noise.normal(), ny = noise.normal(), nx = noise.normal();
+      z.head<3>() += s.sigma_normal * Eigen::Vector3d(nx, ny, nz);
       z.head<3>().normalize();
       z[3] += s.sigma_distance * noise.normal();
       steps[k].observations.push_back({z, l.id});
