@@ -25,7 +25,7 @@ class Builder {
     world_.max = {2 * L + s_.border, 2 * W + s_.border};
     world_.foliage_porosity = s_.foliage_porosity;
     world_.foliage_penetration = s_.foliage_penetration;
-    build_ground();
+    build_ground(s_, rng_, world_);
     build_roadside();
     for (const Rect& lot : lots()) fill_lot(lot);
     world_.build_grid(s_.grid_cell);
@@ -39,36 +39,6 @@ class Builder {
     Eigen::Vector3d v;
     for (int a = 2; a >= 0; --a) v(a) = rng_.uniform(lo(a), hi(a));
     return v;
-  }
-
-  // ---- ground -------------------------------------------------------------------------------
-  void build_ground() {
-    const double phase1 = rng_.uniform(0, 2 * kPi), phase2 = rng_.uniform(0, 2 * kPi),
-                 phase3 = rng_.uniform(0, 2 * kPi), tilt_dir = rng_.uniform(0, 2 * kPi);
-    const double k = 2 * kPi / s_.ground_wavelength;
-    const auto height = [&](double x, double y) {
-      return s_.ground_tilt * (std::cos(tilt_dir) * x + std::sin(tilt_dir) * y) +
-             s_.ground_amplitude * std::sin(k * x + phase1) * std::cos(1.3 * k * y + phase2) +
-             0.3 * s_.ground_amplitude * std::sin(2.1 * k * (x + 0.7 * y) + phase3);
-    };
-    world_.ground_cell = s_.ground_cell;
-    world_.ground_nx = static_cast<int>(std::ceil((world_.max.x() - world_.min.x()) / s_.ground_cell)) + 1;
-    world_.ground_ny = static_cast<int>(std::ceil((world_.max.y() - world_.min.y()) / s_.ground_cell)) + 1;
-    const auto vertex = [&](int i, int j) {
-      const double x = world_.min.x() + i * s_.ground_cell, y = world_.min.y() + j * s_.ground_cell;
-      return Eigen::Vector3d(x, y, world_.ground_heights[static_cast<std::size_t>(j) * world_.ground_nx + i]);
-    };
-    for (int j = 0; j < world_.ground_ny; ++j)
-      for (int i = 0; i < world_.ground_nx; ++i)
-        world_.ground_heights.push_back(
-            height(world_.min.x() + i * s_.ground_cell, world_.min.y() + j * s_.ground_cell));
-    for (int j = 0; j + 1 < world_.ground_ny; ++j) {
-      for (int i = 0; i + 1 < world_.ground_nx; ++i) {
-        // Split along (0,0)–(1,1), matching World::ground_height.
-        add(Triangle{vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1)}, ObjectKind::kGround);
-        add(Triangle{vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1)}, ObjectKind::kGround);
-      }
-    }
   }
 
   double ground(double x, double y) const { return world_.ground_height(x, y); }

@@ -1,8 +1,13 @@
 #pragma once
-// Small helpers of the world builder: its layout constants, lot rectangles, a building's local frame.
+// Small helpers of the world builder: its layout constants, lot rectangles, a building's local frame,
+// the ground mesh (world_ground.cpp).
 #include <cmath>
 
 #include <Eigen/Core>
+
+#include "sextant/core/rng.hpp"
+#include "sextant/synth/settings.hpp"
+#include "sextant/synth/world.hpp"
 
 namespace sextant::synth::detail {
 
@@ -27,5 +32,8 @@ struct LocalFrame {
     return {origin.x() + c * x - s * y, origin.y() + s * x + c * y, z};
   }
 };
+
+/// Fills world's ground grid (cell, size, heights) over [min, max] and adds its triangles.
+void build_ground(const WorldSettings& s, Rng& rng, World& world);
 
 }  // namespace sextant::synth::detail
