@@ -44,8 +44,8 @@ std::vector<PlaneLandmark> random_landmarks(std::size_t n, double extent, Rng& r
     PlaneLandmark l;
     const double yaw = rng.uniform(0, 2 * M_PI);
     l.plane.normal = Eigen::Vector3d(std::cos(yaw), std::sin(yaw), 0);
-    l.centroid =
-        Eigen::Vector3d(rng.uniform(-extent, extent), rng.uniform(-extent, extent), rng.uniform(1, 5));
+    const double x = rng.uniform(-extent, extent), y = rng.uniform(-extent, extent), z = rng.uniform(1, 5);
+    l.centroid = Eigen::Vector3d(x, y, z);  // drawn in one order under every compiler
     l.plane.d = l.plane.normal.dot(l.centroid);
     const Eigen::Vector3d along(-std::sin(yaw), std::cos(yaw), 0);
     l.covariance = 8.0 * along * along.transpose() +
@@ -66,7 +66,8 @@ void BM_Associate(benchmark::State& state) {
   for (std::size_t i = 0; i < observed_size; ++i) {
     PlaneLandmark l = map[rng.index(map.size())];
     const Eigen::Vector3d along = Eigen::Vector3d::UnitZ().cross(l.plane.normal);
-    l.centroid += along * rng.normal(0, 1.0) + Eigen::Vector3d::UnitZ() * rng.normal(0, 0.3);  // in-plane
+    const double sideways = rng.normal(0, 1.0), up = rng.normal(0, 0.3);
+    l.centroid += along * sideways + Eigen::Vector3d::UnitZ() * up;  // in-plane
     observed.push_back(l);
   }
   const AssociationSettings settings;

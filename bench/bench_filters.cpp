@@ -28,7 +28,8 @@ Eigen::VectorXd control() {
 
 Eigen::VectorXd random_plane(Rng& rng) {
   Eigen::VectorXd m(4);
-  m << Eigen::Vector3d(rng.normal(), rng.normal(), rng.normal()).normalized(), rng.uniform(1.0, 30.0);
+  const double x = rng.normal(), y = rng.normal(), z = rng.normal();  // in one order on every compiler
+  m << Eigen::Vector3d(x, y, z).normalized(), rng.uniform(1.0, 30.0);
   return m;
 }
 

@@ -28,7 +28,10 @@ namespace student_t_noise {
 /// Gamma(shape, 1) by Marsaglia & Tsang (2000), §2 (shape ≥ 1) and its §6 boost for shape < 1:
 /// Gamma(a) = Gamma(a + 1) · U^(1/a).
 double gamma_draw(double shape, Rng& rng) {
-  if (shape < 1.0) return gamma_draw(shape + 1.0, rng) * std::pow(1.0 - rng.uniform(), 1.0 / shape);
+  if (shape < 1.0) {
+    const double boosted = gamma_draw(shape + 1.0, rng);  // drawn before U, on every compiler
+    return boosted * std::pow(1.0 - rng.uniform(), 1.0 / shape);
+  }
   const double d = shape - 1.0 / 3.0, c = 1.0 / std::sqrt(9.0 * d);
   for (;;) {
     const double x = rng.normal();

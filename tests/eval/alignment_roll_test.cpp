@@ -7,6 +7,7 @@
 
 #include "sextant/core/rng.hpp"
 #include "sextant/eval/alignment_roll.hpp"
+#include "sextant_test/random_draws.hpp"
 
 namespace sextant {
 namespace {
@@ -25,7 +26,7 @@ PoseList road(double wiggle) {
 PoseList noisy(const PoseList& truth, std::uint64_t seed, double sigma = 0.5) {
   Rng rng(seed);
   PoseList out = truth;
-  for (auto& T : out) T.translation() += Eigen::Vector3d(rng.normal(), rng.normal(), rng.normal()) * sigma;
+  for (auto& T : out) T.translation() += test::normal_draws<3>(rng) * sigma;
   return out;
 }
 

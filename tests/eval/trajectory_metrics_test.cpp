@@ -6,6 +6,7 @@
 #include "sextant/core/pose.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
+#include "sextant_test/random_draws.hpp"
 
 namespace sextant {
 namespace {
@@ -90,7 +91,7 @@ TEST(Umeyama, RecoversKnownSimilarity) {
   const Eigen::Vector3d t(4.0, -2.0, 1.5);
   const double s = 1.7;
   for (int i = 0; i < 20; ++i) {
-    src.emplace_back(rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-2, 2));
+    src.push_back(test::uniform_draws<3>(rng, {-10, -10, -2}, {10, 10, 2}));
     dst.push_back(s * R * src.back() + t);
   }
   const Similarity3 sim = umeyama_alignment(src, dst, true);

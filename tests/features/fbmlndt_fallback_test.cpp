@@ -11,6 +11,7 @@
 #include "sextant/matchers/feature_based_sampler.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/yaml.hpp"
+#include "sextant_test/random_draws.hpp"
 #include "synthetic_scene.hpp"
 
 namespace sextant {
@@ -44,7 +45,7 @@ PointCloud corridor_with_shrubs(const Eigen::Isometry3d& sensor_pose, Rng& rng) 
   for (const Eigen::Vector3d& centre : {Eigen::Vector3d(-9, 0.3, 2.5), Eigen::Vector3d(-3, -0.3, 2.5),
                                         Eigen::Vector3d(3, 0.2, 2.5), Eigen::Vector3d(9, -0.2, 2.5)}) {
     for (int i = 0; i < 1500; ++i) {
-      const Eigen::Vector3d d(rng.normal(0.0, 0.25), rng.normal(0.0, 0.25), rng.normal(0.0, 0.25));
+      const Eigen::Vector3d d = test::normal_draws<3>(rng, 0.25);
       cloud.push_back((to_sensor * (centre + d)).cast<float>());
     }
   }

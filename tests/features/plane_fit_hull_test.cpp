@@ -7,6 +7,7 @@
 #include "sextant/features/hull.hpp"
 #include "sextant/features/landmark.hpp"
 #include "sextant/features/plane_fit.hpp"
+#include "sextant_test/random_draws.hpp"
 
 namespace sextant {
 namespace {
@@ -15,8 +16,8 @@ std::vector<Eigen::Vector3f> noisy_plane_points(const Plane& plane, std::size_t 
   const Eigen::Vector3d u = plane.normal.unitOrthogonal(), v = plane.normal.cross(u);
   std::vector<Eigen::Vector3f> out;
   for (std::size_t i = 0; i < n; ++i) {
-    const Eigen::Vector3d p =
-        plane.normal * (plane.d + rng.normal(0, noise)) + u * rng.uniform(-3, 3) + v * rng.uniform(-2, 2);
+    const double along_v = rng.uniform(-2, 2), along_u = rng.uniform(-3, 3), offset = rng.normal(0, noise);
+    const Eigen::Vector3d p = plane.normal * (plane.d + offset) + u * along_u + v * along_v;
     out.push_back(p.cast<float>());
   }
   return out;
@@ -66,8 +67,11 @@ TEST(PlaneFit, CollinearAndTooFewPointsAreNotPlanes) {
 TEST(PointMoments, CombineEqualsMomentsOfTheUnion) {
   Rng rng(3);
   std::vector<Eigen::Vector3d> a, b, all;
-  for (int i = 0; i < 40; ++i) a.emplace_back(rng.normal(), rng.normal(1, 2), rng.normal(-3, 0.5));
-  for (int i = 0; i < 25; ++i) b.emplace_back(rng.normal(4, 1), rng.normal(), rng.normal());
+  for (int i = 0; i < 40; ++i) {
+    const Eigen::Vector3d n = test::normal_draws<3>(rng);
+    a.emplace_back(n.x(), 1 + 2 * n.y(), -3 + 0.5 * n.z());
+  }
+  for (int i = 0; i < 25; ++i) b.push_back(test::normal_draws<3>(rng) + Eigen::Vector3d(4, 0, 0));
   all = a;
   all.insert(all.end(), b.begin(), b.end());
   const PointMoments c = PointMoments::combine(compute_moments(a), compute_moments(b));
@@ -93,7 +97,10 @@ TEST(Hull, MinAreaRectangleOfARotatedRectangle) {
   const Eigen::Vector2d u(std::cos(a), std::sin(a)), v(-std::sin(a), std::cos(a));
   Rng rng(5);
   std::vector<Eigen::Vector2d> pts = {Eigen::Vector2d::Zero(), 3 * u, 3 * u + 1 * v, 1 * v};
-  for (int i = 0; i < 50; ++i) pts.push_back(rng.uniform(0, 3) * u + rng.uniform(0, 1) * v);
+  for (int i = 0; i < 50; ++i) {
+    const double along_v = rng.uniform(0, 1), along_u = rng.uniform(0, 3);
+    pts.push_back(along_u * u + along_v * v);
+  }
   const auto hull = convex_hull_2d(pts);
   EXPECT_EQ(hull.size(), 4u);
   const Rectangle2d rect = min_area_rectangle(hull);

@@ -10,6 +10,7 @@
 #include "sextant/core/point_cloud.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/features/plane.hpp"
+#include "sextant_test/random_draws.hpp"
 
 namespace sextant::test {
 
@@ -65,19 +66,20 @@ inline PointCloud sample_scene(const Scene& scene, const Eigen::Isometry3d& sens
   for (const Wall& w : scene.walls) {
     const auto n = static_cast<std::size_t>(w.length * w.height * wall_density);
     for (std::size_t i = 0; i < n; ++i) {
-      world.push_back(w.start + w.direction * rng.uniform(0.0, w.length) +
-                      Eigen::Vector3d::UnitZ() * rng.uniform(0.0, w.height) +
-                      w.normal() * rng.normal(0.0, noise));
+      const double offset = rng.normal(0.0, noise), up = rng.uniform(0.0, w.height),
+                   along = rng.uniform(0.0, w.length);
+      world.push_back(w.start + w.direction * along + Eigen::Vector3d::UnitZ() * up + w.normal() * offset);
     }
   }
   const double e = scene.ground_half_extent;
   const auto ng = static_cast<std::size_t>(4.0 * e * e * ground_density);
   for (std::size_t i = 0; i < ng; ++i) {
-    world.emplace_back(rng.uniform(-e, e), rng.uniform(-e, e), rng.normal(0.0, noise));
+    const double z = rng.normal(0.0, noise), y = rng.uniform(-e, e), x = rng.uniform(-e, e);
+    world.emplace_back(x, y, z);
   }
   for (const auto& c : scene.blob_centres) {
     for (std::size_t i = 0; i < blob_points; ++i) {
-      world.push_back(c + Eigen::Vector3d(rng.normal(0, 0.8), rng.normal(0, 0.8), rng.normal(0, 0.8)));
+      world.push_back(c + test::normal_draws<3>(rng, 0.8));
     }
   }
   const Eigen::Isometry3d to_sensor = sensor_pose.inverse();

@@ -9,6 +9,7 @@
 #include "plane_world.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/synth/campus.hpp"
+#include "sextant_test/random_draws.hpp"
 
 namespace sextant::test {
 
@@ -65,7 +66,7 @@ inline PlaneWorld campus_world(std::size_t scans, std::uint64_t seed) {
       if (fresh) w.planes.emplace_back(l.normal.x(), l.normal.y(), l.normal.z(), l.d);
       // z = (Rᵀnᵂ, dᵂ − nᵂ·t) (eq. 4.64) from the true pose, with the noise of make_plane_world.
       Eigen::VectorXd z = model.observe(w.truth[k].vector(), w.planes[static_cast<std::size_t>(it->second)]);
-      z.head<3>() += kCampusSigmaNormal * Eigen::Vector3d(rng.normal(), rng.normal(), rng.normal());
+      z.head<3>() += test::normal_draws<3>(rng, kCampusSigmaNormal);
       z.head<3>().normalize();
       z[3] += kCampusSigmaDistance * rng.normal();
       out.push_back({z, it->second});

@@ -10,6 +10,7 @@
 #include "sextant/filters/eseif.hpp"
 #include "sextant/filters/range_bearing_model.hpp"
 #include "sextant/filters/yaml.hpp"
+#include "sextant_test/random_draws.hpp"
 
 namespace sextant {
 namespace {
@@ -43,9 +44,7 @@ TEST(Eseif, RelocalizationIsExactlySparseAndConservativeOnALinearProblem) {
   ASSERT_TRUE(eseif.initialize(x0, P0).ok());
   ASSERT_TRUE(exact->initialize(x0, P0).ok());
   Rng rng(5);
-  auto vec = [&rng](double scale) {
-    return Eigen::Vector2d(scale * rng.normal(), scale * rng.normal()).eval();
-  };
+  auto vec = [&rng](double scale) { return test::normal_draws<2>(rng, scale); };
   double worst = 0.0;
   const auto check = [&] {
     const Eigen::MatrixXd diff = eseif.covariance() - exact->covariance();

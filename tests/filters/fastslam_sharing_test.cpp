@@ -11,6 +11,7 @@
 
 #include "plane_world.hpp"
 #include "sextant/filters/fastslam.hpp"
+#include "sextant_test/random_draws.hpp"
 
 namespace sextant {
 namespace {
@@ -21,7 +22,9 @@ constexpr int kLandmarks = 60;  // depth 2 of the 8-ary tree (8 < 60 ≤ 64)
 const Eigen::Matrix4d kR = Eigen::Vector4d(1e-4, 1e-4, 1e-4, 1e-4).asDiagonal();
 
 Eigen::Vector4d random_plane(Rng& rng) {
-  return test::plane(rng.normal(), rng.normal(), rng.normal(), rng.uniform(1.0, 20.0));
+  const double d = rng.uniform(1.0, 20.0);
+  const Eigen::Vector3d n = test::normal_draws<3>(rng);
+  return test::plane(n.x(), n.y(), n.z(), d);
 }
 
 /// A filter whose particles are spread by 1 m around the origin, with kLandmarks landmarks known

@@ -14,6 +14,7 @@
 #include "plane_world.hpp"
 #include "sextant/filters/fastslam.hpp"
 #include "sextant/filters/range_bearing_model.hpp"
+#include "sextant_test/random_draws.hpp"
 
 namespace sextant {
 namespace {
@@ -74,7 +75,7 @@ double end_difference(const LinearScenario& s, int particles, std::uint64_t seed
   Rng rng(11);  // the same data for every N and seed
   Eigen::VectorXd pose = s.x0 + noise(s.P0, rng);
   std::vector<Eigen::VectorXd> landmarks;
-  for (int k = 0; k < 4; ++k) landmarks.push_back(Eigen::Vector2d(rng.normal(), rng.normal()) * 5.0);
+  for (int k = 0; k < 4; ++k) landmarks.push_back(test::normal_draws<2>(rng) * 5.0);
   auto observe = [&](int k) { return (landmarks[k] - s.C * pose + noise(s.R, rng)).eval(); };
   auto augment = [&](int k) {
     const Eigen::VectorXd z = observe(k);
@@ -83,7 +84,7 @@ double end_difference(const LinearScenario& s, int particles, std::uint64_t seed
   };
   for (int k = 0; k < 3; ++k) augment(k);
   for (int step = 0; step < 8; ++step) {
-    const Eigen::VectorXd u = Eigen::Vector2d(rng.normal(), rng.normal());
+    const Eigen::VectorXd u = test::normal_draws<2>(rng);
     pose = s.A * pose + s.B * (u + noise(s.Q, rng));
     EXPECT_TRUE(filter.predict(u, s.Q).ok());
     kf.predict(u, s.Q);

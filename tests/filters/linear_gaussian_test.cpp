@@ -10,6 +10,7 @@
 #include "sextant/filters/filter.hpp"
 #include "sextant/filters/range_bearing_model.hpp"
 #include "sextant/filters/yaml.hpp"
+#include "sextant_test/random_draws.hpp"
 
 namespace sextant {
 namespace {
@@ -23,7 +24,7 @@ double worst_difference(Filter& filter, const LinearScenario& s, int landmarks =
   test::ExactKalman kf{s.A, s.B, s.C, s.x0, s.P0};
   EXPECT_TRUE(filter.initialize(s.x0, s.P0).ok());
   Rng rng(11);
-  auto vec = [&rng] { return Eigen::Vector2d(rng.normal(), rng.normal()).eval(); };
+  auto vec = [&rng] { return test::normal_draws<2>(rng); };
   double worst = 0.0;
   auto compare = [&] {
     const double dx = (filter.mean() - kf.x).norm() / (1.0 + kf.x.norm());

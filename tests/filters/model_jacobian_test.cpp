@@ -7,6 +7,7 @@
 #include "sextant/filters/plane_slam_model.hpp"
 #include "sextant/filters/range_bearing_model.hpp"
 #include "sextant_test/finite_differences.hpp"
+#include "sextant_test/random_draws.hpp"
 
 namespace sextant {
 namespace {
@@ -58,7 +59,7 @@ TEST(PlaneSlamModel, JacobiansMatchFiniteDifferences) {
     Eigen::VectorXd pose(6), u(6), m(4);
     for (int i = 0; i < 6; ++i) pose[i] = rng.uniform(-1.0, 1.0) * (i < 3 ? 10.0 : 1.2);
     for (int i = 0; i < 6; ++i) u[i] = rng.uniform(-1.0, 1.0) * (i < 3 ? 2.0 : 0.2);
-    m.head<3>() = Eigen::Vector3d(rng.normal(), rng.normal(), rng.normal()).normalized();
+    m.head<3>() = test::normal_draws<3>(rng).normalized();
     m[3] = rng.uniform(-20.0, 20.0);
     check_model(model, pose, u, m);
   }

@@ -10,6 +10,7 @@
 #include "sextant/core/rng.hpp"
 #include "sextant/filters/plane_slam_model.hpp"
 #include "sextant/filters/slam_runner.hpp"
+#include "sextant_test/random_draws.hpp"
 
 namespace sextant::test {
 
@@ -49,7 +50,7 @@ inline PlaneWorld make_plane_world(int steps, std::uint64_t seed) {
     std::vector<SlamObservation> out;
     for (std::size_t i = 0; i < w.planes.size(); ++i) {
       Eigen::VectorXd z = model.observe(pose.vector(), w.planes[i]);
-      z.head<3>() += sigma_n * Eigen::Vector3d(rng.normal(), rng.normal(), rng.normal());
+      z.head<3>() += test::normal_draws<3>(rng, sigma_n);
       z.head<3>().normalize();
       z[3] += sigma_d * rng.normal();
       out.push_back({z, static_cast<int>(i)});
@@ -99,7 +100,7 @@ void grow_random_plane_map(FilterT& filter, int planes, std::uint64_t seed) {
   const Eigen::MatrixXd Q = Eigen::MatrixXd::Identity(6, 6) * 1e-4;
   for (int i = 0; i < planes; ++i) {
     Eigen::VectorXd z(4);
-    z << Eigen::Vector3d(rng.normal(), rng.normal(), rng.normal()).normalized(), rng.uniform(1.0, 20.0);
+    z << test::normal_draws<3>(rng).normalized(), rng.uniform(1.0, 20.0);
     EXPECT_TRUE(filter.augment(z, R).ok());
     EXPECT_TRUE(filter.predict(u, Q).ok());
   }

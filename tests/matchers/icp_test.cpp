@@ -11,6 +11,7 @@
 #include "sextant/matchers/icp_steps.hpp"
 #include "sextant/matchers/kd_tree.hpp"
 #include "sextant/matchers/yaml.hpp"
+#include "sextant_test/random_draws.hpp"
 
 namespace sextant {
 namespace {
@@ -45,7 +46,7 @@ PointCloud synthetic_scene(Rng& rng, std::size_t n, double noise = 0.005) {
       const double angle = 2.0 * M_PI * a;  // pole at (−4, 4)
       p = {-4.0 + 0.15 * std::cos(angle), 4.0 + 0.15 * std::sin(angle), 3.0 * b};
     }
-    p += Eigen::Vector3d(rng.normal(0, noise), rng.normal(0, noise), rng.normal(0, noise));
+    p += test::normal_draws<3>(rng, noise);
     cloud.push_back(p.cast<float>());
   }
   return cloud;
@@ -57,13 +58,13 @@ TEST(KdTree, NearestAndKNearestMatchBruteForce) {
   Rng rng(7);
   std::vector<Eigen::Vector3f> points;
   for (int i = 0; i < 2000; ++i)
-    points.emplace_back(rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-1, 1));
+    points.push_back(test::uniform_draws<3>(rng, {-5, -5, -1}, {5, 5, 1}).cast<float>());
   points.emplace_back(NAN, 0.0f, 0.0f);  // skipped at build
   const KdTree tree(points, 4);
   EXPECT_EQ(tree.size(), 2000u);
   std::vector<KdTree::Neighbour> knn;
   for (int q = 0; q < 200; ++q) {
-    const Eigen::Vector3f query(rng.uniform(-6, 6), rng.uniform(-6, 6), rng.uniform(-2, 2));
+    const Eigen::Vector3f query = test::uniform_draws<3>(rng, {-6, -6, -2}, {6, 6, 2}).cast<float>();
     std::vector<std::pair<float, std::size_t>> brute;
     for (std::size_t i = 0; i < 2000; ++i) brute.emplace_back((points[i] - query).squaredNorm(), i);
     std::sort(brute.begin(), brute.end());
@@ -98,7 +99,7 @@ TEST(IcpSteps, PointToPointRecoversExactTransformInOneStep) {
   const Eigen::Isometry3d truth = pose(0.4, -0.2, 0.1, 5, -3, 20);
   Correspondences pairs;
   for (int i = 0; i < 50; ++i) {
-    const Eigen::Vector3d p(rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-2, 2));
+    const Eigen::Vector3d p = test::uniform_draws<3>(rng, {-5, -5, -2}, {5, 5, 2});
     pairs.input.push_back(p);
     pairs.reference.push_back(truth * p);
   }
@@ -129,7 +130,8 @@ TEST(IcpSteps, PointToPlaneSmallMotionConvergesQuadraticallyAndHasGaussNewtonH) 
   const Eigen::Vector3d normals[3] = {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(),
                                       Eigen::Vector3d::UnitZ()};
   for (int i = 0; i < 300; ++i) {
-    Eigen::Vector3d q(rng.uniform(-3, 3), rng.uniform(-3, 3), rng.uniform(-3, 3));
+    Eigen::Vector3d q =
+        test::uniform_draws<3>(rng, Eigen::Vector3d::Constant(-3), Eigen::Vector3d::Constant(3));
     const int k = i % 3;
     q[k] = 2.0 + k;  // plane x = 2, y = 3 or z = 4
     pairs.reference.push_back(q);
@@ -202,7 +204,8 @@ TEST_P(IcpSynthetic, DegenerateInputNeverCrashes) {
   Rng rng(2);
   PointCloud plane, line;
   for (int i = 0; i < 2000; ++i) {
-    plane.push_back(Eigen::Vector3f(rng.uniform(-5, 5), rng.uniform(-5, 5), 0.0f));
+    const double y = rng.uniform(-5, 5), x = rng.uniform(-5, 5);
+    plane.push_back(Eigen::Vector3d(x, y, 0.0).cast<float>());
     line.push_back(Eigen::Vector3f(rng.uniform(-5, 5), 0.0f, 0.0f));
   }
   icp->set_reference(line);

@@ -37,9 +37,9 @@ TEST(NdtGrid, MeanCovarianceAndLookup) {
   PointCloud cloud;
   std::vector<Eigen::Vector3d> in_cell;
   for (int i = 0; i < 200; ++i) {
-    const Eigen::Vector3f p(1.5f + 0.3f * static_cast<float>(rng.normal()) * 0.5f,
-                            0.5f + 0.1f * static_cast<float>(rng.uniform()),
-                            0.5f + 0.2f * static_cast<float>(rng.uniform()));
+    const auto z = static_cast<float>(rng.uniform()), y = static_cast<float>(rng.uniform()),
+               x = static_cast<float>(rng.normal());
+    const Eigen::Vector3f p(1.5f + 0.3f * x * 0.5f, 0.5f + 0.1f * y, 0.5f + 0.2f * z);
     cloud.push_back(p);
   }
   for (int i = 0; i < 3; ++i) cloud.push_back({0.5f, 2.5f, 0.5f});  // too few for a Gaussian

@@ -2,6 +2,7 @@
 // Synthetic scenes for the matcher tests: boxes and planes sampled with points.
 #include "sextant/core/point_cloud.hpp"
 #include "sextant/core/rng.hpp"
+#include "sextant_test/random_draws.hpp"
 
 namespace sextant::test {
 
@@ -15,9 +16,8 @@ inline void add_box(PointCloud& cloud, const Eigen::Vector3f& lo, const Eigen::V
     double pick = rng.uniform() * total;
     int face = 0;
     while (face < 4 && pick > areas[face]) pick -= areas[face++];
-    Eigen::Vector3f p(lo.x() + d.x() * static_cast<float>(rng.uniform()),
-                      lo.y() + d.y() * static_cast<float>(rng.uniform()),
-                      lo.z() + d.z() * static_cast<float>(rng.uniform()));
+    const Eigen::Vector3f u = unit_draws(rng).cast<float>();
+    Eigen::Vector3f p(lo.x() + d.x() * u.x(), lo.y() + d.y() * u.y(), lo.z() + d.z() * u.z());
     switch (face) {
       case 0: p.x() = lo.x(); break;
       case 1: p.x() = hi.x(); break;
@@ -25,7 +25,7 @@ inline void add_box(PointCloud& cloud, const Eigen::Vector3f& lo, const Eigen::V
       case 3: p.y() = hi.y(); break;
       default: p.z() = hi.z(); break;
     }
-    if (sigma > 0) p += Eigen::Vector3f(rng.normal(0, sigma), rng.normal(0, sigma), rng.normal(0, sigma));
+    if (sigma > 0) p += normal_draws<3>(rng, sigma).cast<float>();
     cloud.push_back(p);
   }
 }

@@ -16,6 +16,7 @@
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/odometry/yaml.hpp"
 #include "sextant/synth/campus.hpp"
+#include "sextant_test/random_draws.hpp"
 
 namespace sextant {
 namespace {
@@ -194,8 +195,7 @@ TEST(LocalMap, VoxelDownsampleMatchesAPlainCentroidPerVoxel) {
   Rng rng(5);
   PointCloud c;
   for (int i = 0; i < 20000; ++i) {
-    Eigen::Vector3f p(static_cast<float>(rng.uniform(-30, 30)), static_cast<float>(rng.uniform(-30, 30)),
-                      static_cast<float>(rng.uniform(-3, 3)));
+    Eigen::Vector3f p = test::uniform_draws<3>(rng, {-30, -30, -3}, {30, 30, 3}).cast<float>();
     if (i % 7 == 0) p = (p * 5.0f).array().round() / 5.0f;  // exactly on a 0.2 m border
     c.push_back(p);
     if (i % 3 == 0) c.push_back(p + Eigen::Vector3f(0.01f, 0.01f, 0.01f));  // a second point nearby

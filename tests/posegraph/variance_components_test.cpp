@@ -13,6 +13,7 @@
 #include "sextant/posegraph/loop_closing.hpp"
 #include "sextant/posegraph/relative_pose_factor.hpp"
 #include "sextant/posegraph/variance_components.hpp"
+#include "sextant_test/random_draws.hpp"
 #include "sextant_test/worst_error.hpp"
 
 namespace sextant {
@@ -41,8 +42,8 @@ PoseList square(int laps) {
 /// A draw of e = [t; rotation vector] ~ N(0, diag(σ_t², σ_t², σ_t², σ_r², σ_r², σ_r²)), as the
 /// transform (Exp(φ), t) the factor's error reads back (relative_pose_factor.hpp).
 Eigen::Isometry3d noise(double sigma_t, double sigma_r, Rng& rng) {
-  const Eigen::Vector3d t(rng.normal(0, sigma_t), rng.normal(0, sigma_t), rng.normal(0, sigma_t));
-  const Eigen::Vector3d phi(rng.normal(0, sigma_r), rng.normal(0, sigma_r), rng.normal(0, sigma_r));
+  const Eigen::Vector3d t = test::normal_draws<3>(rng, sigma_t);
+  const Eigen::Vector3d phi = test::normal_draws<3>(rng, sigma_r);
   return Eigen::Translation3d(t) * Eigen::AngleAxisd(phi.norm(), phi.norm() > 0 ? phi.normalized() : phi);
 }
 

@@ -48,9 +48,9 @@ TEST(WorldCast, FindsTheSameFirstHitAsTestingEveryPrimitive) {
     // Origins over the whole world (inside buildings too) at sensor heights and above the roofs;
     // directions from straight down to straight up.
     Ray ray;
-    ray.origin =
-        Eigen::Vector3d(world.min.x() + unit(rng) * (world.max.x() - world.min.x()),
-                        world.min.y() + unit(rng) * (world.max.y() - world.min.y()), -1.0 + unit(rng) * 30.0);
+    const double uz = unit(rng), uy = unit(rng), ux = unit(rng);  // z first, the order the data were made in
+    ray.origin = Eigen::Vector3d(world.min.x() + ux * (world.max.x() - world.min.x()),
+                                 world.min.y() + uy * (world.max.y() - world.min.y()), -1.0 + uz * 30.0);
     const double azimuth = 2.0 * pi * unit(rng), elevation = std::asin(2.0 * unit(rng) - 1.0);
     ray.direction = Eigen::Vector3d(std::cos(elevation) * std::cos(azimuth),
                                     std::cos(elevation) * std::sin(azimuth), std::sin(elevation));
