@@ -19,6 +19,7 @@
 #include "sextant/matchers/registration_quality.hpp"
 #include "sextant/matchers/sampler.hpp"
 #include "sextant/matchers/yaml.hpp"
+#include "sextant_test/random_draws.hpp"
 
 namespace sextant {
 namespace {
@@ -188,10 +189,7 @@ TEST(RobustLayerGeometry, StrayPointDuplicatesAndOutliersLeaveTheResult) {
   PointCloud repeated;
   Rng jitter(3);
   for (const Eigen::Vector3f& p : ref.points())
-    for (int k = 0; k < 10; ++k)
-      repeated.push_back(p + Eigen::Vector3f(static_cast<float>(jitter.normal(0.0, 0.02)),
-                                             static_cast<float>(jitter.normal(0.0, 0.02)),
-                                             static_cast<float>(jitter.normal(0.0, 0.02))));
+    for (int k = 0; k < 10; ++k) repeated.push_back(p + test::normal_draws<3>(jitter, 0.02).cast<float>());
   PointCloud outliers = ref;
   Rng gross(5);
   for (std::size_t i = 0; i < ref.size() / 1000; ++i)
