@@ -17,13 +17,6 @@
 namespace sextant {
 namespace {
 
-Eigen::Isometry3d pose(double x, double y, double z, double yaw_deg) {
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.linear() = Eigen::AngleAxisd(yaw_deg * M_PI / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  T.translation() = Eigen::Vector3d(x, y, z);
-  return T;
-}
-
 test::Scene ground_only() {
   test::Scene s;
   return s;
@@ -62,7 +55,7 @@ test::Scene two_walls() {
 
 ConstraintCheck check_of(const test::Scene& scene) {
   Rng rng(4);
-  const PointCloud cloud = test::sample_scene(scene, pose(0, 0, 1.5, 0), rng, 20.0, 10.0, 300);
+  const PointCloud cloud = test::sample_scene(scene, test::sensor_pose(0, 0, 1.5, 0), rng, 20.0, 10.0, 300);
   Rng ransac(1);
   const PlaneExtraction planes = extract_cell_planes(cloud, PlaneExtractionSettings{}, ransac);
   return check_plane_constraints(planes.cell_planes, cloud, ConstraintThresholds{});
@@ -93,8 +86,8 @@ TEST(SampleConstraints, TheCourtyardConstrainsEveryParameter) {
 /// fbmlndt on a corridor pair displaced 0.6 m along the corridor, from the identity (denser fallback GBS).
 RegistrationResult corridor_registration(const std::string& fallback, bool verify = false) {
   Rng rng(9);
-  const PointCloud reference = corridor_with_shrubs(pose(0, 0, 1.5, 0), rng);
-  const PointCloud input = corridor_with_shrubs(pose(0.6, 0, 1.5, 0), rng);
+  const PointCloud reference = corridor_with_shrubs(test::sensor_pose(0, 0, 1.5, 0), rng);
+  const PointCloud input = corridor_with_shrubs(test::sensor_pose(0.6, 0, 1.5, 0), rng);
   auto matcher =
       make_matcher("fbmlndt",
                    YAML::Load("{fallback: " + fallback + ", verify: " + (verify ? "true" : "false") +
@@ -136,9 +129,10 @@ TEST(Fbmlndt, VerifyOnGbsPointsCatchesTheCorridorSlide) {
 
 TEST(Fbmlndt, WellConstrainedScenesKeepTheFeatureSample) {
   Rng rng(21);
-  const PointCloud reference = test::sample_scene(test::courtyard(), pose(0, 0, 1.5, 0), rng, 6.0, 2.0, 200);
+  const PointCloud reference =
+      test::sample_scene(test::courtyard(), test::sensor_pose(0, 0, 1.5, 0), rng, 6.0, 2.0, 200);
   const PointCloud input =
-      test::sample_scene(test::courtyard(), pose(0.4, -0.3, 1.5, 4.0), rng, 6.0, 2.0, 200);
+      test::sample_scene(test::courtyard(), test::sensor_pose(0.4, -0.3, 1.5, 4.0), rng, 6.0, 2.0, 200);
   auto matcher = make_matcher("fbmlndt", YAML::Load("seed: 5"), "t.yaml");
   matcher->set_reference(reference);
   const RegistrationResult r = matcher->align(input, Eigen::Isometry3d::Identity());

@@ -16,16 +16,10 @@
 namespace sextant {
 namespace {
 
-Eigen::Isometry3d pose(double x, double y, double z, double yaw_deg) {
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.linear() = Eigen::AngleAxisd(yaw_deg * M_PI / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  T.translation() = Eigen::Vector3d(x, y, z);
-  return T;
-}
-
 TEST(FeatureBasedSampler, SelectsPlaneInliersOnly) {
   Rng rng(3);
-  const PointCloud cloud = test::sample_scene(test::courtyard(), pose(0, 0, 1.5, 0), rng, 4.0, 1.0, 300);
+  const PointCloud cloud =
+      test::sample_scene(test::courtyard(), test::sensor_pose(0, 0, 1.5, 0), rng, 4.0, 1.0, 300);
   const auto sampler = make_sampler("fbs", YAML::Load("cell_size: 2.0"), "t.yaml");
   EXPECT_EQ(sampler->name(), "fbs");
   Rng a(1), b(1);
@@ -48,7 +42,8 @@ TEST(FeatureBasedSampler, SelectsPlaneInliersOnly) {
 
 TEST(Fbmlndt, RecoversAKnownTransformOnASyntheticPair) {
   const test::Scene scene = test::courtyard();
-  const Eigen::Isometry3d reference_pose = pose(0, 0, 1.5, 0), input_pose = pose(0.4, -0.3, 1.5, 4.0);
+  const Eigen::Isometry3d reference_pose = test::sensor_pose(0, 0, 1.5, 0),
+                          input_pose = test::sensor_pose(0.4, -0.3, 1.5, 4.0);
   Rng rng(21);
   const PointCloud reference = test::sample_scene(scene, reference_pose, rng, 6.0, 2.0, 200);
   const PointCloud input = test::sample_scene(scene, input_pose, rng, 6.0, 2.0, 200);

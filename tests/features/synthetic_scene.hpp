@@ -14,6 +14,14 @@
 
 namespace sextant::test {
 
+/// The sensor pose at (x, y, z) [m], turned by `yaw_deg` about z.
+inline Eigen::Isometry3d sensor_pose(double x, double y, double z, double yaw_deg) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = Eigen::AngleAxisd(yaw_deg * M_PI / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  T.translation() = Eigen::Vector3d(x, y, z);
+  return T;
+}
+
 /// A vertical rectangular wall: from `start` along horizontal unit `direction` for `length`,
 /// from z = start.z() up to `height`.
 struct Wall {

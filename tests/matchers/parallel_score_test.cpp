@@ -5,11 +5,11 @@
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
-#include <fstream>
 #include <limits>
 #include <string>
 #include <vector>
 
+#include "pose_errors.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/cloud_io.hpp"
 #include "sextant/matchers/matcher.hpp"
@@ -25,23 +25,19 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 const std::vector<int> kThreadCounts = {1, 2, 3, 8, 0};  // 0: all hardware threads
 
-struct VelodynePair {
+struct VelodyneScans {
   PointCloud ref, in;
   Eigen::Isometry3d truth;  ///< p_ref = truth · p_in
-  VelodynePair() {
+  VelodyneScans() {
     const std::string dir = std::string(SEXTANT_DATA_DIR) + "/velodyne_pair/";
     ref = read_cloud(dir + "fast_gicp_251370668.pcd");
     in = read_cloud(dir + "fast_gicp_251371071.pcd");
-    std::ifstream file(dir + "fast_gicp_relative.txt");
-    Eigen::Matrix4d M;
-    for (int r = 0; r < 4; ++r)
-      for (int c = 0; c < 4; ++c) file >> M(r, c);
-    truth = Eigen::Isometry3d(M);
+    truth = test::read_transform(dir + "fast_gicp_relative.txt");
   }
 };
 
-const VelodynePair& velodyne() {
-  static const VelodynePair pair;
+const VelodyneScans& velodyne() {
+  static const VelodyneScans pair;
   return pair;
 }
 
@@ -204,7 +200,7 @@ TEST(ParallelScore, ReusedThreadsGiveTheSameEvaluations) {
 }
 
 TEST(ParallelScore, MlndtRegistrationIsBitIdenticalForOneAndFourThreads) {
-  const VelodynePair& p = velodyne();
+  const VelodyneScans& p = velodyne();
   std::vector<RegistrationResult> results;
   for (const int threads : {1, 4}) {
     auto matcher = make_matcher(
@@ -229,7 +225,7 @@ TEST(ParallelScore, MlndtRegistrationIsBitIdenticalForOneAndFourThreads) {
 // stage's two grids — give the same model and the same bits as one thread, from a guess the wide
 // basin has to correct (0.8 m and 8° off).
 TEST(ParallelScore, WideBasinRegistrationIsBitIdenticalForOneAndTwoThreads) {
-  const VelodynePair& p = velodyne();
+  const VelodyneScans& p = velodyne();
   const Eigen::Isometry3d guess = p.truth * to_isometry(Pose6{0.8, -0.5, 0.0, 0.0, 0.0, 0.14});
   std::vector<RegistrationResult> results;
   std::vector<std::vector<std::size_t>> modelled;
@@ -257,7 +253,7 @@ TEST(ParallelScore, WideBasinRegistrationIsBitIdenticalForOneAndTwoThreads) {
 // The whole registration with `threads: 0` (all TBB allows) under a process-wide TBB limit of one
 // and of two threads (tbb::global_control), with the library's default preset: the same bits.
 TEST(ParallelScore, MlndtRegistrationIsBitIdenticalUnderTbbLimitsOneAndTwo) {
-  const VelodynePair& p = velodyne();
+  const VelodyneScans& p = velodyne();
   std::vector<RegistrationResult> results;
   std::vector<int> concurrency;
   for (const std::size_t limit : {std::size_t{1}, std::size_t{2}}) {

@@ -4,7 +4,6 @@
 
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <map>
 
 #include <Eigen/Eigenvalues>
@@ -24,16 +23,6 @@ namespace {
 using test::pose;
 using test::rotation_error;
 using test::translation_error;
-
-Eigen::Isometry3d read_matrix(const std::string& file) {
-  std::ifstream in(file);
-  Eigen::Matrix4d M = Eigen::Matrix4d::Identity();
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) in >> M(r, c);
-  Eigen::Isometry3d T;
-  T.matrix() = M;
-  return T;
-}
 
 /// Centroid of the points in each `leaf`-sized voxel (fast_gicp's test protocol, 0.2 m). It
 /// thins the dense rings and self-hits near the sensor, which move with it and otherwise pull
@@ -154,7 +143,7 @@ class VelodynePair : public ::testing::TestWithParam<VelodyneCase> {
     const std::string dir = SEXTANT_DATA_DIR "/velodyne_pair/";
     reference_ = new PointCloud(voxel_centroids(read_cloud(dir + "fast_gicp_251370668.pcd"), 0.2));
     input_ = new PointCloud(voxel_centroids(read_cloud(dir + "fast_gicp_251371071.pcd"), 0.2));
-    truth_ = read_matrix(dir + "fast_gicp_relative.txt");
+    truth_ = test::read_transform(dir + "fast_gicp_relative.txt");
   }
   static void TearDownTestSuite() {
     delete reference_;

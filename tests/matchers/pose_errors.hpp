@@ -1,6 +1,10 @@
 #pragma once
-// Poses in degrees and the error of an estimated transform, for the matcher tests.
+// Poses in degrees, the error of an estimated transform and transform files, for the matcher tests.
 #include <cmath>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 
@@ -22,6 +26,22 @@ inline double translation_error(const Eigen::Isometry3d& truth, const Eigen::Iso
 /// Rotation angle of truth⁻¹·estimate [rad].
 inline double rotation_error(const Eigen::Isometry3d& truth, const Eigen::Isometry3d& estimate) {
   return rotation_angle(inverse(truth) * estimate);
+}
+
+/// Rotation angle of truth⁻¹·estimate [deg].
+inline double rotation_error_deg(const Eigen::Isometry3d& truth, const Eigen::Isometry3d& estimate) {
+  return rotation_error(truth, estimate) / kRadPerDeg;
+}
+
+/// A 4 × 4 transform written as 16 numbers, row by row (data/velodyne_pair/fast_gicp_relative.txt);
+/// the test fails when the file does not hold them.
+inline Eigen::Isometry3d read_transform(const std::string& path) {
+  std::ifstream in(path);
+  Eigen::Matrix4d M = Eigen::Matrix4d::Identity();
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) in >> M(r, c);
+  EXPECT_FALSE(in.fail()) << path << ": not 16 numbers";
+  return Eigen::Isometry3d(M);
 }
 
 }  // namespace sextant::test

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "pose_errors.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
@@ -35,13 +36,6 @@ PointCloud site(std::uint64_t seed) {
     }
   }
   return cloud;
-}
-
-double error_m(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
-  return translation_norm(a.inverse() * b);
-}
-double error_deg(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
-  return rotation_angle(a.inverse() * b) / kRadPerDeg;
 }
 
 TEST(PrecisionStage, TwoOverlappingGridsOfLayerNPlusOnesEdge) {
@@ -116,9 +110,9 @@ TEST(PrecisionStage, RefinesTheLastLayersPoseOnALargeScene) {
   EXPECT_EQ(fine.trace.back().layer, 5);  // the precision stage ran (labelled n + 1)
   EXPECT_EQ(coarse.trace.back().layer, 4);
   // Measured: the last layer alone 6.4 mm / 0.0036°, with the precision stage 4.8 mm / 0.0004°.
-  EXPECT_LT(error_m(fine.T, T), 0.9 * error_m(coarse.T, T));
-  EXPECT_LT(error_deg(fine.T, T), 0.3 * error_deg(coarse.T, T));
-  EXPECT_LT(error_m(fine.T, T), 0.006);
+  EXPECT_LT(test::translation_error(fine.T, T), 0.9 * test::translation_error(coarse.T, T));
+  EXPECT_LT(test::rotation_error_deg(fine.T, T), 0.3 * test::rotation_error_deg(coarse.T, T));
+  EXPECT_LT(test::translation_error(fine.T, T), 0.006);
 }
 
 TEST(PrecisionStage, SettingsAreReadAndChecked) {

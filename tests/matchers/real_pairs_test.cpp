@@ -9,9 +9,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 
+#include "pose_errors.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/cloud_io.hpp"
 #include "sextant/matchers/kd_tree.hpp"
@@ -29,15 +29,6 @@ namespace {
 constexpr const char* kThesisTrustRegion = "{preset: thesis, step_control: trust_region_last}";
 constexpr const char* kOutdoor =
     "{layers: 6, max_distance: 16, unmatched_penalty: 16, bounds_quantile: 0, solver: ";
-
-Eigen::Isometry3d read_matrix(const std::string& path) {
-  std::ifstream in(path);
-  Eigen::Matrix4d M;
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) in >> M(r, c);
-  EXPECT_TRUE(in.good()) << path;
-  return Eigen::Isometry3d(M);
-}
 
 struct Error {
   double metres, degrees;
@@ -122,7 +113,7 @@ double median_structure_gap(const PointCloud& ref, const PointCloud& in, const E
 // at 0.68 m). The file is read here only to show that it is wrong.
 TEST(RealPairs, KittiScansContradictTheWithdrawnDerivedPose) {
   const KittiPair p;
-  const Eigen::Isometry3d withdrawn = read_matrix(p.dir + "T_velo0_from_velo1_DERIVED.txt");
+  const Eigen::Isometry3d withdrawn = test::read_transform(p.dir + "T_velo0_from_velo1_DERIVED.txt");
   const RegistrationResult r =
       align(p.ref, p.in, "mlndt", std::string(kOutdoor) + "lm}", "all", "{}", Eigen::Isometry3d::Identity());
   ASSERT_TRUE(r.converged) << r.summary();
@@ -165,7 +156,7 @@ TEST(RealPairs, SolversAgreeOnTruncatedObjective) {
 
 TEST(RealPairs, VelodyneFromIdentity) {
   const std::string dir = std::string(SEXTANT_DATA_DIR) + "/velodyne_pair/";
-  const Eigen::Isometry3d truth = read_matrix(dir + "fast_gicp_relative.txt");
+  const Eigen::Isometry3d truth = test::read_transform(dir + "fast_gicp_relative.txt");
   const PointCloud ref = read_cloud(dir + "fast_gicp_251370668.pcd");
   const PointCloud in = read_cloud(dir + "fast_gicp_251371071.pcd");
   for (const char* solver : {"newton", "lm"}) {
@@ -207,7 +198,7 @@ TEST(RealPairs, RoomScansFromTutorialGuess) {
 // still available as step_control: none).
 TEST(RealPairs, NewtonStepControlOnVelodyneFromIdentity) {
   const std::string dir = std::string(SEXTANT_DATA_DIR) + "/velodyne_pair/";
-  const Eigen::Isometry3d truth = read_matrix(dir + "fast_gicp_relative.txt");
+  const Eigen::Isometry3d truth = test::read_transform(dir + "fast_gicp_relative.txt");
   const PointCloud ref = read_cloud(dir + "fast_gicp_251370668.pcd");
   const PointCloud in = read_cloud(dir + "fast_gicp_251371071.pcd");
   const auto run = [&](const std::string& settings) {
@@ -280,7 +271,7 @@ TEST(RealPairs, StepControlSettingIsNamed) {
 TEST(RealPairs, FbmlndtFromZeroGuess) {
   const KittiPair k;
   const std::string dir = std::string(SEXTANT_DATA_DIR) + "/velodyne_pair/";
-  const Eigen::Isometry3d vtruth = read_matrix(dir + "fast_gicp_relative.txt");
+  const Eigen::Isometry3d vtruth = test::read_transform(dir + "fast_gicp_relative.txt");
   const PointCloud vref = read_cloud(dir + "fast_gicp_251370668.pcd");
   const PointCloud vin = read_cloud(dir + "fast_gicp_251371071.pcd");
   const auto run = [](const std::string& settings, const PointCloud& ref, const PointCloud& in) {

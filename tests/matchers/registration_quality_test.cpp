@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <fstream>
 #include <string>
 
 #include "pose_errors.hpp"
@@ -25,16 +24,6 @@ namespace sextant {
 namespace {
 
 using test::pose;
-
-Eigen::Isometry3d read_matrix(const std::string& path) {
-  std::ifstream in(path);
-  Eigen::Matrix4d M = Eigen::Matrix4d::Identity();
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 4; ++c) in >> M(r, c);
-  Eigen::Isometry3d T;
-  T.matrix() = M;
-  return T;
-}
 
 RegistrationResult converged_result(std::size_t matched, std::size_t input, const Matrix6d& H) {
   RegistrationResult r;
@@ -142,7 +131,7 @@ TEST(RegistrationQuality, ConstraintRatioScalesRotationsToMetres) {
 // (no iterations), it is not.
 TEST(RegistrationQuality, VelodynePairRightPoseTrustedWrongPoseNot) {
   const std::string dir = std::string(SEXTANT_DATA_DIR) + "/velodyne_pair/";
-  const Eigen::Isometry3d truth = read_matrix(dir + "fast_gicp_relative.txt");
+  const Eigen::Isometry3d truth = test::read_transform(dir + "fast_gicp_relative.txt");
   const PointCloud ref = read_cloud(dir + "fast_gicp_251370668.pcd");
   const PointCloud in = read_cloud(dir + "fast_gicp_251371071.pcd");
   MlndtMatcher right;
@@ -174,7 +163,7 @@ TEST(RobustLayerGeometry, StrayPointDuplicatesAndOutliersLeaveTheResult) {
   const std::string dir = std::string(SEXTANT_DATA_DIR) + "/velodyne_pair/";
   const PointCloud ref = read_cloud(dir + "fast_gicp_251370668.pcd");
   const PointCloud in = read_cloud(dir + "fast_gicp_251371071.pcd");
-  const Eigen::Isometry3d truth = read_matrix(dir + "fast_gicp_relative.txt");
+  const Eigen::Isometry3d truth = test::read_transform(dir + "fast_gicp_relative.txt");
   const auto gbs = make_sampler("gbs");
   const auto register_against = [&](const PointCloud& reference) {
     MlndtMatcher matcher;
@@ -333,7 +322,7 @@ TEST(ResolvedSettings, EveryMatcherAndSamplerRecordReadsBackToItself) {
 // the road, the first registration is not trusted and the wide-basin retry recovers the pose.
 TEST(RegisterPair, SearchesWithoutAGuessAndRetriesAnUntrustedOne) {
   const std::string dir = std::string(SEXTANT_DATA_DIR) + "/velodyne_pair/";
-  const Eigen::Isometry3d truth = read_matrix(dir + "fast_gicp_relative.txt");
+  const Eigen::Isometry3d truth = test::read_transform(dir + "fast_gicp_relative.txt");
   const PointCloud ref = read_cloud(dir + "fast_gicp_251370668.pcd");
   const PointCloud in = read_cloud(dir + "fast_gicp_251371071.pcd");
   PairRegistrationRequest request;

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "pose_errors.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
@@ -40,13 +41,6 @@ Pair make_pair(const Eigen::Isometry3d& T, std::uint64_t seed = 1) {
   return p;
 }
 
-double error_m(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
-  return translation_norm(a.inverse() * b);
-}
-double error_deg(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b) {
-  return rotation_angle(a.inverse() * b) / kRadPerDeg;
-}
-
 RegistrationResult run(const std::string& method, const std::string& yaml, const Pair& p,
                        const Eigen::Isometry3d& init = Eigen::Isometry3d::Identity()) {
   auto matcher = make_matcher(method, YAML::Load(yaml));
@@ -62,8 +56,8 @@ TEST(Mlndt, RecoversKnownTransformWithEverySolver) {
     const RegistrationResult r =
         run("mlndt", std::string("{solver: ") + solver + ", epsilon: 1.0e-7, max_iterations: 100}", p);
     EXPECT_TRUE(r.converged) << solver << ": " << r.summary();
-    EXPECT_LT(error_m(r.T, p.T), 0.05) << solver;
-    EXPECT_LT(error_deg(r.T, p.T), 0.3) << solver;
+    EXPECT_LT(test::translation_error(r.T, p.T), 0.05) << solver;
+    EXPECT_LT(test::rotation_error_deg(r.T, p.T), 0.3) << solver;
     EXPECT_FALSE(r.trace.empty());
     EXPECT_GT(r.matched_points, 100u);
     EXPECT_EQ(r.input_points, p.input.size());
@@ -74,11 +68,11 @@ TEST(Mlndt, RecoversKnownTransformWithEverySolver) {
   // Newton's default trust region stops where no damped step lowers the score any more, on a
   // neighbouring piece of the piecewise objective (measured 1.8 mm from plain Newton).
   for (std::size_t i = 1; i < 3; ++i) {
-    EXPECT_LT(error_m(results[0].T, results[i].T), 1e-3) << i;
-    EXPECT_LT(error_deg(results[0].T, results[i].T), 0.01) << i;
+    EXPECT_LT(test::translation_error(results[0].T, results[i].T), 1e-3) << i;
+    EXPECT_LT(test::rotation_error_deg(results[0].T, results[i].T), 0.01) << i;
   }
-  EXPECT_LT(error_m(results[0].T, results[3].T), 3e-3);
-  EXPECT_LT(error_deg(results[0].T, results[3].T), 0.03);
+  EXPECT_LT(test::translation_error(results[0].T, results[3].T), 3e-3);
+  EXPECT_LT(test::rotation_error_deg(results[0].T, results[3].T), 0.03);
 }
 
 // Known answers for the robust options: a point at the cell mean scores 0, so the whole score is
@@ -134,8 +128,8 @@ TEST(Ndt, RecoversKnownTransform) {
     EXPECT_TRUE(r.converged) << yaml << ": " << r.summary();
     // The default cell (volume/64, 7 m here) is coarse: a few cm of bias from the different
     // point densities of reference and (GBS-sampled) input.
-    EXPECT_LT(error_m(r.T, p.T), 0.08) << yaml;
-    EXPECT_LT(error_deg(r.T, p.T), 0.3) << yaml;
+    EXPECT_LT(test::translation_error(r.T, p.T), 0.08) << yaml;
+    EXPECT_LT(test::rotation_error_deg(r.T, p.T), 0.3) << yaml;
   }
 }
 
@@ -159,13 +153,14 @@ TEST(Mlndt, LongRangeBeatsFixedCellNdt) {
   // 15°, several-metre displacement that NDT at the finest layer's cell size does not.
   const Pair p = make_pair(pose(3.0, -2.0, 0.0, 0, 0, 15 * kRadPerDeg), 3);
   const RegistrationResult ml = run("mlndt", "{start_layer: 1}", p);
-  EXPECT_LT(error_m(ml.T, p.T), 0.1) << ml.summary();
-  EXPECT_LT(error_deg(ml.T, p.T), 0.5);
+  EXPECT_LT(test::translation_error(ml.T, p.T), 0.1) << ml.summary();
+  EXPECT_LT(test::rotation_error_deg(ml.T, p.T), 0.5);
   MlndtMatcher probe;
   probe.set_reference(p.reference);
   const double finest = probe.layers().back().cell_edge();
   const RegistrationResult ndt = run("ndt", "{cell_size: " + std::to_string(finest) + "}", p);
-  EXPECT_TRUE(error_m(ndt.T, p.T) > 0.5 || error_deg(ndt.T, p.T) > 2.0) << ndt.summary();
+  EXPECT_TRUE(test::translation_error(ndt.T, p.T) > 0.5 || test::rotation_error_deg(ndt.T, p.T) > 2.0)
+      << ndt.summary();
 }
 
 TEST(Registration, DegenerateInputNeverCrashes) {

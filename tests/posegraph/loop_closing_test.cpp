@@ -8,36 +8,19 @@
 #include "exact_registration.hpp"
 #include "sextant/posegraph/loop_closing.hpp"
 #include "sextant_test/worst_error.hpp"
+#include "square_drive.hpp"
 
 namespace sextant {
 namespace {
 
-using PoseList = std::vector<Eigen::Isometry3d>;
-
-Eigen::Isometry3d pose(double x, double y, double yaw) {
-  return Eigen::Translation3d(x, y, 0) * Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ());
-}
-
-/// A 40 × 40 m square driven twice (2 m steps, 160 poses): pose 80 + k is pose k again.
-PoseList square_twice() {
-  PoseList truth;
-  for (int lap = 0; lap < 2; ++lap)
-    for (int side = 0; side < 4; ++side)
-      for (int step = 0; step < 20; ++step) {
-        const double yaw = side * M_PI / 2.0, along = 2.0 * step;
-        const Eigen::Vector2d corner[4] = {{0, 0}, {40, 0}, {40, 40}, {0, 40}};
-        truth.push_back(
-            pose(corner[side].x() + along * std::cos(yaw), corner[side].y() + along * std::sin(yaw), yaw));
-      }
-  return truth;
-}
+using test::PoseList;
 
 /// The chain of the truth's steps, each turned by `yaw_drift` [rad] more than it was.
 PoseList drifted_chain(const PoseList& truth, double yaw_drift, std::vector<ChainStep>* steps) {
   PoseList chain{truth.front()};
   for (std::size_t k = 1; k < truth.size(); ++k) {
     ChainStep s;
-    s.relative = relative(truth[k - 1], truth[k]) * pose(0, 0, yaw_drift);
+    s.relative = relative(truth[k - 1], truth[k]) * test::planar_pose(0, 0, yaw_drift);
     s.hessian = Matrix6d::Identity() * 1e4;
     s.converged = true;
     steps->push_back(s);
@@ -58,7 +41,7 @@ std::vector<PlaceMatch> true_places() {
 }
 
 TEST(OdometryGraph, StepsWithoutAUsableHessianGetTheMedianInformation) {
-  const PoseList truth = square_twice();
+  const PoseList truth = test::square_drive(2);
   std::vector<ChainStep> steps;
   const PoseList chain = drifted_chain(truth, 0.0, &steps);
   steps[3].converged = false;
@@ -74,7 +57,7 @@ TEST(OdometryGraph, StepsWithoutAUsableHessianGetTheMedianInformation) {
 }
 
 TEST(LoopClosing, ProximityClosesASmallDriftAndPlacesCloseALargeOne) {
-  const PoseList truth = square_twice();
+  const PoseList truth = test::square_drive(2);
   LoopClosingSettings s;
   s.closure.radius = 6.0;
   s.closure.min_index_gap = 40;
@@ -102,7 +85,7 @@ TEST(LoopClosing, ProximityClosesASmallDriftAndPlacesCloseALargeOne) {
 }
 
 TEST(LoopClosing, DescriptorCandidatesMustBeTrusted) {
-  const PoseList truth = square_twice();
+  const PoseList truth = test::square_drive(2);
   std::vector<ChainStep> steps;
   const PoseList chain = drifted_chain(truth, 0.5 * M_PI / 180.0, &steps);
   LoopClosingSettings s;

@@ -6,6 +6,7 @@
 
 #include "sextant/core/rng.hpp"
 #include "sextant/posegraph/scan_context.hpp"
+#include "square_drive.hpp"
 
 namespace sextant {
 namespace {
@@ -38,10 +39,6 @@ PointCloud scan_from(const std::vector<Eigen::Vector3d>& world, const Eigen::Iso
   return cloud;
 }
 
-Eigen::Isometry3d pose(double x, double y, double yaw) {
-  return Eigen::Translation3d(x, y, 0) * Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ());
-}
-
 TEST(ScanContext, BinsHoldTheHighestPointAndTheRingKeyTheirMean) {
   PointCloud cloud;
   cloud.mutable_points() = {{1, 0, 0}, {1.5, 0.1, 0.5}, {0, 1, 0}, {-1, 0, -3}, {10, 0, 1}};
@@ -64,8 +61,8 @@ TEST(ScanContext, RecoversTheYawBetweenTwoViewsOfOnePlace) {
   const double sector = 2.0 * M_PI / static_cast<double>(s.sectors);
   for (const double yaw_deg : {0.0, 37.0, 90.0, 170.0, -65.0, -178.0}) {
     const double yaw = yaw_deg * M_PI / 180.0;
-    const ScanContext a = make_scan_context(scan_from(world, pose(3, -2, 0.3)), s);
-    const ScanContext b = make_scan_context(scan_from(world, pose(3.4, -2.2, 0.3 + yaw)), s);
+    const ScanContext a = make_scan_context(scan_from(world, test::planar_pose(3, -2, 0.3)), s);
+    const ScanContext b = make_scan_context(scan_from(world, test::planar_pose(3.4, -2.2, 0.3 + yaw)), s);
     const ScanContextMatch m = compare_scan_contexts(a, b);
     // A yaw between two sector borders moves every wall across bins: up to 0.2 here, against ≈ 0.5
     // between different places (next test).
@@ -76,11 +73,11 @@ TEST(ScanContext, RecoversTheYawBetweenTwoViewsOfOnePlace) {
 
 TEST(ScanContext, TellsDifferentPlacesApart) {
   const ScanContextSettings s;
-  const ScanContext here = make_scan_context(scan_from(random_place(7), pose(0, 0, 0)), s);
-  const ScanContext again = make_scan_context(scan_from(random_place(7), pose(1, 0.5, 2.0)), s);
+  const ScanContext here = make_scan_context(scan_from(random_place(7), test::planar_pose(0, 0, 0)), s);
+  const ScanContext again = make_scan_context(scan_from(random_place(7), test::planar_pose(1, 0.5, 2.0)), s);
   const double same = compare_scan_contexts(here, again).distance;
   for (std::uint64_t seed = 20; seed < 25; ++seed) {
-    const ScanContext there = make_scan_context(scan_from(random_place(seed), pose(0, 0, 0)), s);
+    const ScanContext there = make_scan_context(scan_from(random_place(seed), test::planar_pose(0, 0, 0)), s);
     EXPECT_GT(compare_scan_contexts(here, there).distance, 3.0 * same) << "place " << seed;
     EXPECT_GT(compare_scan_contexts(here, there).distance, s.max_distance) << "place " << seed;
   }
@@ -89,7 +86,7 @@ TEST(ScanContext, TellsDifferentPlacesApart) {
 TEST(ScanContext, NoCommonColumnIsTheLargestDistance) {
   const ScanContextSettings s;
   const ScanContext empty = make_scan_context(PointCloud{}, s);
-  const ScanContext full = make_scan_context(scan_from(random_place(3), pose(0, 0, 0)), s);
+  const ScanContext full = make_scan_context(scan_from(random_place(3), test::planar_pose(0, 0, 0)), s);
   EXPECT_DOUBLE_EQ(compare_scan_contexts(empty, full).distance, 1.0);
 }
 
@@ -100,9 +97,10 @@ TEST(ScanContext, ProposesTheRevisitAndNothingElse) {
   std::vector<ScanContext> contexts;
   for (std::uint64_t k = 0; k < 60; ++k) {
     const bool revisit = k == 50;
-    contexts.push_back(make_scan_context(
-        scan_from(random_place(revisit ? 100 + 5 : 100 + k), revisit ? pose(0.8, -0.6, 2.1) : pose(0, 0, 0)),
-        s));
+    contexts.push_back(
+        make_scan_context(scan_from(random_place(revisit ? 100 + 5 : 100 + k),
+                                    revisit ? test::planar_pose(0.8, -0.6, 2.1) : test::planar_pose(0, 0, 0)),
+                          s));
   }
   const std::vector<PlaceMatch> found = find_place_matches(contexts, s);
   ASSERT_EQ(found.size(), 1u);

@@ -15,29 +15,12 @@
 #include "sextant/posegraph/variance_components.hpp"
 #include "sextant_test/random_draws.hpp"
 #include "sextant_test/worst_error.hpp"
+#include "square_drive.hpp"
 
 namespace sextant {
 namespace {
 
-using PoseList = std::vector<Eigen::Isometry3d>;
-
-Eigen::Isometry3d pose(double x, double y, double yaw) {
-  return Eigen::Translation3d(x, y, 0) * Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ());
-}
-
-/// A 40 × 40 m square driven `laps` times (2 m steps, 80 poses a lap): pose 80·l + k is pose k.
-PoseList square(int laps) {
-  PoseList truth;
-  const Eigen::Vector2d corner[4] = {{0, 0}, {40, 0}, {40, 40}, {0, 40}};
-  for (int lap = 0; lap < laps; ++lap)
-    for (int side = 0; side < 4; ++side)
-      for (int step = 0; step < 20; ++step) {
-        const double yaw = side * M_PI / 2.0, along = 2.0 * step;
-        truth.push_back(
-            pose(corner[side].x() + along * std::cos(yaw), corner[side].y() + along * std::sin(yaw), yaw));
-      }
-  return truth;
-}
+using test::PoseList;
 
 /// A draw of e = [t; rotation vector] ~ N(0, diag(σ_t², σ_t², σ_t², σ_r², σ_r², σ_r²)), as the
 /// transform (Exp(φ), t) the factor's error reads back (relative_pose_factor.hpp).
@@ -57,7 +40,7 @@ Matrix6d information(double sigma_t, double sigma_r) {
 /// Three laps, odometry with noise (σ_t, σ_r) but stated `overconfidence` times too confident,
 /// closures (every fourth pose of laps 1 and 2 onto lap 0) with their true information.
 PoseGraph noisy_graph(double overconfidence, std::uint64_t seed) {
-  const PoseList truth = square(3);
+  const PoseList truth = test::square_drive(3);
   Rng rng(seed);
   const double st = 0.05, sr = 0.005, ct = 0.02, cr = 0.002;
   PoseGraph g;
@@ -176,11 +159,11 @@ using test::worst_error;
 TEST(VarianceComponents, ABiasedConfidentChainKeepsItsTrueClosures) {
   // Two laps; every step turned 0.3° more than it was, with the same confident Hessian as the
   // closures: the chain ends tens of metres off and its stated covariance explains none of it.
-  const PoseList truth = square(2);
+  const PoseList truth = test::square_drive(2);
   std::vector<ChainStep> steps;
   PoseList chain{truth.front()};
   for (std::size_t k = 1; k < truth.size(); ++k) {
-    steps.push_back({relative(truth[k - 1], truth[k]) * pose(0, 0, 0.3 * M_PI / 180.0),
+    steps.push_back({relative(truth[k - 1], truth[k]) * test::planar_pose(0, 0, 0.3 * M_PI / 180.0),
                      Matrix6d::Identity() * 1e4, true});
     chain.push_back(chain.back() * steps.back().relative);
   }
