@@ -11,11 +11,7 @@
 namespace sextant {
 namespace {
 
-int count(const std::string& s, const std::string& what) {
-  int n = 0;
-  for (std::size_t p = s.find(what); p != std::string::npos; p = s.find(what, p + 1)) ++n;
-  return n;
-}
+using sextant::testing::occurrences;
 
 /// The dash attribute of every <polyline> (empty when solid), in drawing order.
 std::vector<std::string> polyline_dashes(const std::string& svg) {
@@ -65,8 +61,8 @@ TEST(PlotStyles, OverlappingSeriesGetDistinctDashesAndMarkers) {
   ASSERT_EQ(drawn.size(), 3u);
   EXPECT_EQ(std::set<std::string>(drawn.begin(), drawn.end()).size(), 3u);
   // Circles, squares (rect) and triangles (polygon) on the lines and in the legend.
-  EXPECT_EQ(count(svg, "<circle"), 12 + 1);
-  EXPECT_GE(count(svg, "<polygon"), 12 + 1);
+  EXPECT_EQ(occurrences(svg, "<circle"), 12 + 1);
+  EXPECT_GE(occurrences(svg, "<polygon"), 12 + 1);
   // The legend's samples carry the dash patterns too (lines of width 2.5).
   for (const std::string& d : drawn) {
     if (!d.empty()) {
@@ -104,8 +100,8 @@ TEST(PlotStyles, EveryMarkerShapeRendersWellFormed) {
   }
   const std::string svg = render_svg(plot);
   EXPECT_TRUE(sextant::testing::check_xml(svg).ok) << sextant::testing::check_xml(svg).error;
-  EXPECT_EQ(count(svg, "<circle"), 3 + 1);        // three points and the legend sample
-  EXPECT_EQ(count(svg, "<rect"), 1 + 1 + 3 + 1);  // background, frame, three squares, legend sample
+  EXPECT_EQ(occurrences(svg, "<circle"), 3 + 1);        // three points and the legend sample
+  EXPECT_EQ(occurrences(svg, "<rect"), 1 + 1 + 3 + 1);  // background, frame, three squares, legend sample
 }
 
 // Issue 26: E7's chained estimate ran on its ground truth indistinguishably. The first trajectory
@@ -123,8 +119,8 @@ TEST(PlotStyles, OverlappingTrajectoriesGetAWideReferenceAndDashes) {
   EXPECT_EQ(plot.trajectories[2].dash, "1 1");
   const std::string svg = render_svg(plot);
   EXPECT_TRUE(sextant::testing::check_xml(svg).ok);
-  EXPECT_EQ(count(svg, "stroke-width=\"3.5\""), 1u);
-  EXPECT_EQ(count(svg, "stroke-dasharray=\"8 4\""), 2u);  // the line and its legend sample
+  EXPECT_EQ(occurrences(svg, "stroke-width=\"3.5\""), 1u);
+  EXPECT_EQ(occurrences(svg, "stroke-dasharray=\"8 4\""), 2u);  // the line and its legend sample
 }
 
 }  // namespace

@@ -11,12 +11,7 @@ namespace sextant {
 namespace {
 
 using sextant::testing::check_xml;
-
-int count(const std::string& s, const std::string& what) {
-  int n = 0;
-  for (std::size_t p = s.find(what); p != std::string::npos; p = s.find(what, p + 1)) ++n;
-  return n;
-}
+using sextant::testing::occurrences;
 
 TEST(Plots, NiceTicksAndColormap) {
   EXPECT_EQ(nice_ticks(0, 10, 5), (std::vector<double>{0, 2, 4, 6, 8, 10}));
@@ -59,7 +54,7 @@ TEST(Plots, LogAxisSkipsNonPositiveValues) {
   ASSERT_TRUE(check_xml(svg).ok);
   EXPECT_NE(svg.find(">1000</text>"), std::string::npos);  // decade ticks
   EXPECT_NE(svg.find(">0.1</text>"), std::string::npos);
-  EXPECT_EQ(count(svg, "<polyline"), 1);  // (1,1000)–(2,10); (4,0.1) alone after the gap
+  EXPECT_EQ(occurrences(svg, "<polyline"), 1);  // (1,1000)–(2,10); (4,0.1) alone after the gap
 }
 
 TEST(Plots, EqualAspectWidensTheNarrowerRange) {
@@ -97,7 +92,7 @@ TEST(Plots, HeatmapCellsColourBarAndMissing) {
   ASSERT_TRUE(xml.ok) << xml.error;
   // 12 cells + 64 colour bands + plot frame + bar frame + background.
   EXPECT_EQ(xml.elements.at("rect"), 12 + 64 + 3);
-  EXPECT_EQ(count(svg, "fill=\"#cccccc\""), 1);
+  EXPECT_EQ(occurrences(svg, "fill=\"#cccccc\""), 1);
   EXPECT_NE(svg.find(">0.25</text>"), std::string::npos);
   EXPECT_NE(svg.find(">10°</text>"), std::string::npos);
   EXPECT_NE(svg.find(colormap(1.0)), std::string::npos);

@@ -9,6 +9,13 @@
 
 namespace sextant::testing {
 
+/// How often `what` occurs in `s` (overlapping occurrences too).
+inline int occurrences(const std::string& s, const std::string& what) {
+  int n = 0;
+  for (std::size_t p = s.find(what); p != std::string::npos; p = s.find(what, p + 1)) ++n;
+  return n;
+}
+
 struct XmlCheck {
   bool ok = true;
   std::string error;

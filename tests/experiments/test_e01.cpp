@@ -21,10 +21,10 @@ namespace {
 
 using test::TempDir;
 
-const std::filesystem::path kConfig =
+const std::filesystem::path kE01Config =
     std::filesystem::path(SEXTANT_SOURCE_DIR) / "experiments" / "e01_convergence_basin.yaml";
 
-std::size_t count_lines(const std::string& text) {
+std::size_t nonempty_lines(const std::string& text) {
   std::size_t n = 0;
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) n += line.empty() ? 0 : 1;
@@ -42,7 +42,7 @@ TEST(E01, QuickProfileWritesEveryTableAndFigure) {
   o.jobs = 2;
   o.quick = true;
   o.progress = false;
-  const RunnerSummary s = run_experiment(kConfig, o);
+  const RunnerSummary s = run_experiment(kE01Config, o);
   // quick: 6 methods × 4 scenes × 4 offsets × 3 yaws × 2 directions.
   ASSERT_EQ(s.executed, 6u * 4u * 4u * 3u * 2u);
   ASSERT_EQ(s.failed, 0u);
@@ -74,7 +74,7 @@ TEST(E01, QuickProfileWritesEveryTableAndFigure) {
     EXPECT_TRUE(std::filesystem::exists(folder / (std::string(table) + ".csv"))) << table;
   // Success map: one row per method × |yaw| value, columns method, |yaw| and the 4 offsets.
   const std::string map = test::read_text(folder / "success_map.csv");
-  EXPECT_EQ(count_lines(map), 1u + 6u * 3u) << map;
+  EXPECT_EQ(nonempty_lines(map), 1u + 6u * 3u) << map;
   EXPECT_EQ(count_fields(map.substr(0, map.find('\n'))), 2u + 4u) << map;
   const std::string basin = test::read_text(folder / "basin.md");
   for (const char* method :
@@ -122,7 +122,7 @@ TEST(E01, QuickProfileWritesEveryTableAndFigure) {
 
 TEST(E01, MissingPairFileIsNamed) {
   TempDir tmp;
-  std::string text = test::read_text(kConfig);
+  std::string text = test::read_text(kE01Config);
   // Absolute data paths (the copy lives elsewhere), then break the Velodyne reference.
   const std::string data = std::string(SEXTANT_DATA_DIR) + "/";
   for (std::size_t at; (at = text.find("../data/")) != std::string::npos;) text.replace(at, 8, data);

@@ -14,7 +14,7 @@ namespace {
 
 using test::TempDir;
 
-const std::filesystem::path kConfig =
+const std::filesystem::path kE18Config =
     std::filesystem::path(SEXTANT_SOURCE_DIR) / "experiments" / "e18_metric_examples.yaml";
 
 TEST(E18, ResultsAndReportHoldTheThesisValues) {
@@ -23,7 +23,7 @@ TEST(E18, ResultsAndReportHoldTheThesisValues) {
   o.results_root = tmp / "results";
   o.jobs = 2;
   o.progress = false;
-  const RunnerSummary s = run_experiment(kConfig, o);
+  const RunnerSummary s = run_experiment(kE18Config, o);
   ASSERT_EQ(s.executed, 10u);
   ASSERT_EQ(s.failed, 0u);
 
@@ -69,7 +69,7 @@ TEST(E18, ReportRendersInHeadlessChromium) {
   RunnerOptions o;
   o.results_root = tmp / "results";
   o.progress = false;
-  run_experiment(kConfig, o);
+  run_experiment(kE18Config, o);
   const ReportSummary r = write_report({tmp / "results"}, tmp / "report");
   const std::string command = "'" + script.string() + "' '" + r.index_html.string() + "'";
   EXPECT_EQ(std::system(command.c_str()), 0) << command;

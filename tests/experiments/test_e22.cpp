@@ -16,7 +16,7 @@ namespace {
 
 using test::TempDir;
 
-const std::filesystem::path kConfig =
+const std::filesystem::path kE22Config =
     std::filesystem::path(SEXTANT_SOURCE_DIR) / "experiments" / "e22_eseif_vs_seif.yaml";
 
 TEST(E22, QuickProfileComparesNeesCostAndErrorOfSeifEseifAndEkf) {
@@ -26,7 +26,7 @@ TEST(E22, QuickProfileComparesNeesCostAndErrorOfSeifEseifAndEkf) {
   o.jobs = 2;
   o.quick = true;
   o.progress = false;
-  const RunnerSummary s = run_experiment(kConfig, o);
+  const RunnerSummary s = run_experiment(kE22Config, o);
   ASSERT_EQ(s.executed, 3u);  // seif, eseif, ekf × 1 repetition
   ASSERT_EQ(s.failed, 0u);
   std::map<std::string, RunRow> rows;

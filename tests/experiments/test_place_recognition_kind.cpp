@@ -13,14 +13,13 @@
 #include "sextant/experiments/run_row.hpp"
 #include "sextant/experiments/runner.hpp"
 #include "sextant_test/temp_dir.hpp"
+#include "test_helpers.hpp"
 
 namespace sextant {
 namespace {
 
 namespace fs = std::filesystem;
 using test::TempDir;
-
-const fs::path kSource(SEXTANT_SOURCE_DIR);
 
 TEST(PlaceRecognitionKind, E24QuickProfileScoresEachSourceAgainstTheTrueRevisits) {
   TempDir tmp;
@@ -29,7 +28,7 @@ TEST(PlaceRecognitionKind, E24QuickProfileScoresEachSourceAgainstTheTrueRevisits
   o.jobs = 2;
   o.progress = false;
   o.quick = true;
-  const RunnerSummary s = run_experiment(kSource / "experiments" / "e24_place_recognition.yaml", o);
+  const RunnerSummary s = run_experiment(test::experiments_dir() / "e24_place_recognition.yaml", o);
   ASSERT_EQ(s.executed, 6u);  // 3 sources × 2 drifts, one repetition
   ASSERT_EQ(s.failed, 0u);
   for (const auto& row : read_rows(s.folder / kRunsJsonl).rows) {

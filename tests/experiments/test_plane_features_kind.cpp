@@ -21,31 +21,6 @@ namespace {
 
 using test::TempDir;
 
-const std::filesystem::path kExperiments = std::filesystem::path(SEXTANT_SOURCE_DIR) / "experiments";
-
-RunnerSummary run_quick(const std::string& file, const std::filesystem::path& results) {
-  RunnerOptions o;
-  o.results_root = results;
-  o.jobs = 2;
-  o.quick = true;
-  o.progress = false;
-  return run_experiment(kExperiments / file, o);
-}
-
-/// Number of table rows in a Markdown table file (lines starting with "| " after the separator).
-std::size_t markdown_rows(const std::string& text) {
-  std::size_t rows = 0;
-  bool body = false;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    if (line.rfind("| :", 0) == 0 || line.rfind("|---", 0) == 0)
-      body = true;
-    else if (body && line.rfind("| ", 0) == 0)
-      ++rows;
-  }
-  return rows;
-}
-
 /// Each figure's SVG exists and the summary lists them in this order.
 void expect_figures_in_order(const std::filesystem::path& folder, const std::string& summary,
                              const std::vector<std::string>& ids) {
@@ -63,7 +38,8 @@ void expect_figures_in_order(const std::filesystem::path& folder, const std::str
 // (C_p 4.74 / 2.91 / 12.88 / 10.70 against the thesis' 5.14 / 2.38 / 44.77 / 141.74).
 TEST(E10, QuickProfileGivesTheFixedSeedValuesAndTheReport) {
   TempDir tmp;
-  const RunnerSummary s = run_quick("e10_merging_tests.yaml", tmp / "results");
+  const RunnerSummary s =
+      test::run_quick(test::experiments_dir() / "e10_merging_tests.yaml", tmp / "results");
   ASSERT_EQ(s.failed, 0u);
   ASSERT_EQ(s.executed, 30u);
   const RunRow* first = nullptr;
@@ -90,7 +66,7 @@ TEST(E10, QuickProfileGivesTheFixedSeedValuesAndTheReport) {
   ASSERT_TRUE(r.failed.empty()) << r.failed.front();
   const auto folder = tmp / "report" / "e10_merging_tests";
   const std::string t41 = test::read_text(folder / "table_4_1.md");
-  EXPECT_EQ(markdown_rows(t41), 4u) << t41;
+  EXPECT_EQ(test::markdown_rows(t41), 4u) << t41;
   EXPECT_NE(
       t41.find("| case 1 | 1 and 2 | 2.79 | 4.28 | 0.62 | 0.19 | 4.74 | 5.14 | 22.44 | 15.00 | 15.20 |"),
       std::string::npos)
@@ -99,7 +75,7 @@ TEST(E10, QuickProfileGivesTheFixedSeedValuesAndTheReport) {
       t41.find("| case 2 | 1 and 3 | 2.05 | 1.62 | 5.00 | 4.86 | 10.70 | 141.74 | 114.60 | 25.50 | 25.88 |"),
       std::string::npos)
       << t41;
-  EXPECT_EQ(markdown_rows(test::read_text(folder / "merging_repetitions.md")), 4u);
+  EXPECT_EQ(test::markdown_rows(test::read_text(folder / "merging_repetitions.md")), 4u);
   const std::string summary = test::read_text(folder / "e10_merging_tests.md");
   // Figs 4.1, 4.2 (a), 4.2 (b) in the thesis' order, then ours.
   expect_figures_in_order(
@@ -118,7 +94,8 @@ TEST(E10, QuickProfileGivesTheFixedSeedValuesAndTheReport) {
 
 TEST(E11, QuickProfileWritesExtractionAssociationAndPrecisionRecall) {
   TempDir tmp;
-  const RunnerSummary s = run_quick("e11_extraction_association.yaml", tmp / "results");
+  const RunnerSummary s =
+      test::run_quick(test::experiments_dir() / "e11_extraction_association.yaml", tmp / "results");
   ASSERT_EQ(s.failed, 0u);
   ASSERT_EQ(s.executed, 5u);  // scan pairs 0 → 1 … 4 → 5
   for (const auto& r : read_rows(s.folder / kRunsJsonl).rows) {
@@ -139,12 +116,12 @@ TEST(E11, QuickProfileWritesExtractionAssociationAndPrecisionRecall) {
   const ReportSummary r = write_report({tmp / "results"}, tmp / "report");
   ASSERT_TRUE(r.failed.empty()) << r.failed.front();
   const auto folder = tmp / "report" / "e11_extraction_association";
-  EXPECT_EQ(markdown_rows(test::read_text(folder / "extraction_first_scans.md")), 5u);
-  EXPECT_EQ(markdown_rows(test::read_text(folder / "association_first_pairs.md")), 5u);
+  EXPECT_EQ(test::markdown_rows(test::read_text(folder / "extraction_first_scans.md")), 5u);
+  EXPECT_EQ(test::markdown_rows(test::read_text(folder / "association_first_pairs.md")), 5u);
   // Table 5.10 was computed with the ground-truth motion (§5.2): the true-pose table carries the
   // thesis' values; the predicted-pose table is our extension, with no thesis column.
   const std::string truth = test::read_text(folder / "table_5_10_truth.md");
-  EXPECT_GE(markdown_rows(truth), 4u);
+  EXPECT_GE(test::markdown_rows(truth), 4u);
   EXPECT_NE(truth.find("true (ground-truth) motion, as the thesis computed it (ours \\| thesis)"),
             std::string::npos)
       << truth;
@@ -158,7 +135,7 @@ TEST(E11, QuickProfileWritesExtractionAssociationAndPrecisionRecall) {
   // The turn needs a pose by the thresholds (51.5° > t_o = 20°): a sanity check, listed apart.
   EXPECT_GT(md.find("° turn cannot be dealt with"), md.find("Sanity checks")) << md;
   EXPECT_NE(md.find("decided by the thresholds"), std::string::npos) << md;
-  EXPECT_EQ(markdown_rows(test::read_text(folder / "precision_recall.md")), 8u);
+  EXPECT_EQ(test::markdown_rows(test::read_text(folder / "precision_recall.md")), 8u);
   // Figs 5.21, 5.22, 5.23, 5.24 (across the turn 3 → 4), 5.25, then ours.
   expect_figures_in_order(folder, test::read_text(folder / "e11_extraction_association.md"),
                           {"cell_segments_scan_0", "features_scan_0", "features_scan_1",

@@ -23,17 +23,6 @@ namespace {
 
 using test::TempDir;
 
-const std::filesystem::path kExperiments = std::filesystem::path(SEXTANT_SOURCE_DIR) / "experiments";
-
-RunnerSummary run_quick(const std::filesystem::path& config, const TempDir& tmp) {
-  RunnerOptions o;
-  o.results_root = tmp / "results";
-  o.jobs = 2;
-  o.quick = true;
-  o.progress = false;
-  return run_experiment(config, o);
-}
-
 std::size_t count_rows(const std::string& markdown_table) {
   std::size_t rows = 0;
   for (std::size_t at = markdown_table.find("\n|"); at != std::string::npos;
@@ -44,7 +33,7 @@ std::size_t count_rows(const std::string& markdown_table) {
 
 TEST(PlaneSlamKind, E17QuickProfileHasTimesImagesAndClaims) {
   TempDir tmp;
-  const RunnerSummary s = run_quick(kExperiments / "e17_seif.yaml", tmp);
+  const RunnerSummary s = test::run_quick(test::experiments_dir() / "e17_seif.yaml", tmp / "results");
   ASSERT_EQ(s.executed, 3u);  // seif, ekf, eif × 1 repetition
   ASSERT_EQ(s.failed, 0u);
   std::map<std::string, RunRow> rows;
@@ -111,7 +100,7 @@ TEST(PlaneSlamKind, E17QuickProfileHasTimesImagesAndClaims) {
   EXPECT_NE(html.find("merged"), std::string::npos);
 }
 
-const char* const kTiny = R"(name: slam_tiny
+const char* const kTinySlam = R"(name: slam_tiny
 kind: plane_slam
 seed: 5
 repetitions: 2
@@ -144,7 +133,7 @@ RunnerSummary run_tiny(const std::string& text, const TempDir& tmp) {
   return run_experiment(tmp / "e99_slam_tiny.yaml", o);
 }
 
-/// The distinct true landmarks with ≥ 40 points in scans [from, to) of kTiny's campus.
+/// The distinct true landmarks with ≥ 40 points in scans [from, to) of kTinySlam's campus.
 std::set<int> tiny_landmarks_seen(std::size_t from, std::size_t to) {
   synth::CampusSettings cs;
   cs.trajectory.scans = 12;
@@ -160,7 +149,7 @@ std::set<int> tiny_landmarks_seen(std::size_t from, std::size_t to) {
 
 TEST(PlaneSlamKind, TrueLandmarkMapHoldsEveryPlaneSeenWithEnoughPoints) {
   TempDir tmp;
-  const RunnerSummary s = run_tiny(kTiny, tmp);
+  const RunnerSummary s = run_tiny(kTinySlam, tmp);
   ASSERT_EQ(s.executed, 4u);
   ASSERT_EQ(s.failed, 0u);
   // Known answer: the distinct true landmarks with ≥ 40 points in scans 0..7.
@@ -192,7 +181,7 @@ TEST(PlaneSlamKind, TrueLandmarkMapHoldsEveryPlaneSeenWithEnoughPoints) {
 
 TEST(PlaneSlamKind, ExtractedLandmarksRunThroughPlaneSlam) {
   TempDir tmp;
-  std::string text = kTiny;
+  std::string text = kTinySlam;
   text.replace(text.find("landmarks: true"), 15, "landmarks: extracted");
   text.replace(text.find("scans: 8"), 8, "scans: 3");
   text.replace(text.find("repetitions: 2"), 14, "repetitions: 1");
@@ -213,7 +202,7 @@ TEST(PlaneSlamKind, ExtractedLandmarksRunThroughPlaneSlam) {
 // odometry; it is a failed run that names why.
 TEST(PlaneSlamKind, ARunThatMapsNothingIsAFailedRun) {
   TempDir tmp;
-  std::string text = kTiny;
+  std::string text = kTinySlam;
   text.replace(text.find("min_points: 40"), 14, "min_points: 100000000");
   text.replace(text.find("repetitions: 2"), 14, "repetitions: 1");
   const RunnerSummary s = run_tiny(text, tmp);
@@ -236,7 +225,7 @@ TEST(PlaneSlamKind, ARunThatMapsNothingIsAFailedRun) {
 // odometry is not.
 TEST(PlaneSlamKind, AMethodsOwnOdometryModelDrivesIt) {
   TempDir tmp;
-  std::string text = kTiny;
+  std::string text = kTinySlam;
   const std::string ckf = "  - {name: ckf, filter: ckf}\n";
   text.replace(text.find(ckf), ckf.size(),
                "  - {name: ekf_t0, filter: ekf, odometry: {model: student_t, student_t_translation: 0, "
@@ -264,7 +253,7 @@ TEST(PlaneSlamKind, AMethodsOwnOdometryModelDrivesIt) {
 
 void expect_rejected(const std::string& from, const std::string& to, const std::string& key) {
   TempDir tmp;
-  std::string text = kTiny;
+  std::string text = kTinySlam;
   ASSERT_NE(text.find(from), std::string::npos) << from;
   text.replace(text.find(from), from.size(), to);
   const auto file = tmp / "bad.yaml";
@@ -280,7 +269,7 @@ void expect_rejected(const std::string& from, const std::string& to, const std::
 }
 
 TEST(PlaneSlamKind, AStretchFromALaterScanStartsThereWithItsOwnMap) {
-  std::string text = kTiny;
+  std::string text = kTinySlam;
   text.replace(text.find("scans: 8"), 8, "first: 4\n  scans: 8");
   TempDir tmp;
   const RunnerSummary s = run_tiny(text, tmp);
@@ -333,7 +322,8 @@ class PlaneSlamQuick : public ::testing::TestWithParam<QuickCase> {};
 TEST_P(PlaneSlamQuick, QuickProfileRunsAndReports) {
   const QuickCase& c = GetParam();
   TempDir tmp;
-  const RunnerSummary s = run_quick(kExperiments / (std::string(c.config) + ".yaml"), tmp);
+  const RunnerSummary s =
+      test::run_quick(test::experiments_dir() / (std::string(c.config) + ".yaml"), tmp / "results");
   EXPECT_EQ(s.executed, c.runs);
   EXPECT_EQ(s.failed, 0u);
   for (const auto& row : read_rows(s.folder / kRunsJsonl).rows) {

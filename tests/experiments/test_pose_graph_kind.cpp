@@ -21,8 +21,6 @@ namespace {
 namespace fs = std::filesystem;
 using test::TempDir;
 
-const fs::path kSource(SEXTANT_SOURCE_DIR);
-
 /// Data rows of a Markdown table (lines starting with '|' after the header separator).
 std::size_t table_rows(const std::string& md) {
   std::size_t rows = 0;
@@ -49,7 +47,7 @@ TEST(PoseGraphKind, E20QuickProfileBuildsTheGraphAndComparesTheFilters) {
   o.jobs = 2;
   o.progress = false;
   o.quick = true;
-  const RunnerSummary s = run_experiment(kSource / "experiments" / "e20_pose_graph.yaml", o);
+  const RunnerSummary s = run_experiment(test::experiments_dir() / "e20_pose_graph.yaml", o);
   ASSERT_EQ(s.executed, 5u);  // mlndt + ekf, ukf, ckf, seif; one repetition
   ASSERT_EQ(s.failed, 0u);
   constexpr std::size_t kScans = 95;

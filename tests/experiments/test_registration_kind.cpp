@@ -17,7 +17,7 @@ using test::TempDir;
 
 // Three consecutive pairs of the default campus (only scans 0–3 are generated); ML-NDT (LM)
 // from the odometry guess. Measured errors: 3.6, 3.5 and 7.1 cm, below 0.5°.
-const char* const kTiny = R"(name: reg_tiny
+const char* const kTinyRegistration = R"(name: reg_tiny
 kind: registration
 seed: 3
 dataset:
@@ -40,7 +40,7 @@ reference:
 
 TEST(RegistrationKind, TinyExperimentRunsEndToEnd) {
   TempDir tmp;
-  test::write_text(tmp / "e99_reg_tiny.yaml", kTiny);
+  test::write_text(tmp / "e99_reg_tiny.yaml", kTinyRegistration);
   RunnerOptions o;
   o.results_root = tmp / "results";
   o.jobs = 2;
@@ -84,7 +84,7 @@ TEST(RegistrationKind, TinyExperimentRunsEndToEnd) {
 
 TEST(RegistrationKind, UnknownMatcherIsRejectedWithFileLineAndKey) {
   TempDir tmp;
-  std::string text = kTiny;
+  std::string text = kTinyRegistration;
   const std::string from = "matcher: mlndt";
   text.replace(text.find(from), from.size(), "matcher: mlndtt");
   const auto file = tmp / "bad.yaml";
@@ -104,7 +104,7 @@ TEST(RegistrationKind, UnknownMatcherIsRejectedWithFileLineAndKey) {
 
 TEST(RegistrationKind, SweepAxesMustFitThePairSource) {
   TempDir tmp;
-  std::string text = kTiny;
+  std::string text = kTinyRegistration;
   text.replace(text.find("  pair: {from: 0, to: 2}"), 24, "  pair: {from: 0, to: 2}\n  yaw: [0, 5]");
   const auto file = tmp / "bad.yaml";
   test::write_text(file, text);

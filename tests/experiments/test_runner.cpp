@@ -23,15 +23,7 @@ namespace {
 
 using test::TempDir;
 
-RunnerOptions options_for(const TempDir& tmp, const std::string& results = "results") {
-  RunnerOptions o;
-  o.results_root = tmp / results;
-  o.jobs = 2;
-  o.progress = false;
-  return o;
-}
-
-std::size_t count_lines(const std::filesystem::path& file) {
+std::size_t newlines_in(const std::filesystem::path& file) {
   const std::string text = test::read_text(file);
   return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
 }
@@ -39,13 +31,13 @@ std::size_t count_lines(const std::filesystem::path& file) {
 TEST(Runner, WritesRowsCsvAndProvenanceThenSkipsFinishedRuns) {
   TempDir tmp;
   test::write_text(tmp / "e.yaml", test::selftest_yaml("rt", 3, 1, 0));
-  const RunnerSummary first = run_experiment(tmp / "e.yaml", options_for(tmp));
+  const RunnerSummary first = run_experiment(tmp / "e.yaml", test::runner_options(tmp / "results"));
   EXPECT_EQ(first.total, 6u);
   EXPECT_EQ(first.executed, 6u);
   EXPECT_EQ(first.failed, 0u);
   const auto folder = tmp / "results" / "rt";
   EXPECT_EQ(read_rows(folder / kRunsJsonl).rows.size(), 6u);
-  EXPECT_EQ(count_lines(folder / kRunsCsv), 7u);
+  EXPECT_EQ(newlines_in(folder / kRunsCsv), 7u);
   const std::string provenance = test::read_text(folder / "provenance.json");
   for (const char* field : {"\"git\"", "\"sha\"", "\"dirty\"", "\"libraries\"", "\"host\"", "\"threads\": 2",
                             "\"start\"", "\"end\"", "\"resolved_config\"", "\"seed\""}) {
@@ -53,28 +45,28 @@ TEST(Runner, WritesRowsCsvAndProvenanceThenSkipsFinishedRuns) {
   }
   EXPECT_TRUE(std::filesystem::exists(folder / kEffectiveConfig));
 
-  const RunnerSummary second = run_experiment(tmp / "e.yaml", options_for(tmp));
+  const RunnerSummary second = run_experiment(tmp / "e.yaml", test::runner_options(tmp / "results"));
   EXPECT_EQ(second.executed, 0u);
   EXPECT_EQ(second.skipped, 6u);
-  EXPECT_EQ(count_lines(folder / kRunsJsonl), 6u);
+  EXPECT_EQ(newlines_in(folder / kRunsJsonl), 6u);
 }
 
 TEST(Runner, AnInterruptedSweepIsCompletedWithoutDuplicates) {
   TempDir tmp;
   test::write_text(tmp / "e.yaml", test::selftest_yaml("part", 5, 1, 0));
-  RunnerOptions o = options_for(tmp);
+  RunnerOptions o = test::runner_options(tmp / "results");
   o.max_runs = 4;
   EXPECT_EQ(run_experiment(tmp / "e.yaml", o).executed, 4u);
-  const RunnerSummary rest = run_experiment(tmp / "e.yaml", options_for(tmp));
+  const RunnerSummary rest = run_experiment(tmp / "e.yaml", test::runner_options(tmp / "results"));
   EXPECT_EQ(rest.executed, 6u);
   EXPECT_EQ(rest.skipped, 4u);
-  EXPECT_EQ(count_lines(tmp / "results" / "part" / kRunsJsonl), 10u);
+  EXPECT_EQ(newlines_in(tmp / "results" / "part" / kRunsJsonl), 10u);
 }
 
 TEST(Runner, ToleratesATruncatedLastLine) {
   TempDir tmp;
   test::write_text(tmp / "e.yaml", test::selftest_yaml("trunc", 2, 1, 0));
-  run_experiment(tmp / "e.yaml", options_for(tmp));
+  run_experiment(tmp / "e.yaml", test::runner_options(tmp / "results"));
   const auto jsonl = tmp / "results" / "trunc" / kRunsJsonl;
   // Keep three complete rows and half of the fourth, as a killed writer could leave it.
   std::string text = test::read_text(jsonl);
@@ -85,7 +77,7 @@ TEST(Runner, ToleratesATruncatedLastLine) {
   EXPECT_EQ(read_rows(jsonl).rows.size(), 3u);
   EXPECT_EQ(read_rows(jsonl).bad_lines, 1u);
 
-  const RunnerSummary s = run_experiment(tmp / "e.yaml", options_for(tmp));
+  const RunnerSummary s = run_experiment(tmp / "e.yaml", test::runner_options(tmp / "results"));
   EXPECT_EQ(s.executed, 1u);
   const RowFile rows = read_rows(jsonl);
   EXPECT_EQ(rows.rows.size(), 4u);
@@ -98,7 +90,7 @@ TEST(Runner, ShardsMergeIntoTheWholeSweep) {
   std::vector<std::filesystem::path> roots;
   std::size_t executed = 0;
   for (std::size_t i = 0; i < 3; ++i) {
-    RunnerOptions o = options_for(tmp, "shard" + std::to_string(i));
+    RunnerOptions o = test::runner_options(tmp / ("shard" + std::to_string(i)));
     o.shard = Shard{i, 3};
     executed += run_experiment(tmp / "e.yaml", o).executed;
     roots.push_back(o.results_root);
@@ -108,11 +100,11 @@ TEST(Runner, ShardsMergeIntoTheWholeSweep) {
   EXPECT_EQ(merge_results(roots, tmp / "merged").rows, 20u);
   const RowFile merged = read_rows(tmp / "merged" / "sharded" / kRunsJsonl);
   EXPECT_EQ(merged.rows.size(), 20u);
-  EXPECT_EQ(count_lines(tmp / "merged" / "sharded" / kRunsJsonl), 20u);
+  EXPECT_EQ(newlines_in(tmp / "merged" / "sharded" / kRunsJsonl), 20u);
   EXPECT_TRUE(std::filesystem::exists(tmp / "merged" / "sharded" / "provenance.shard-2-of-3.json"));
 
   // The merged root is complete: a rerun there has nothing left to do.
-  RunnerOptions o = options_for(tmp, "merged");
+  RunnerOptions o = test::runner_options(tmp / "merged");
   EXPECT_EQ(run_experiment(tmp / "e.yaml", o).executed, 0u);
 
   // The report reads the shard roots directly too.
@@ -155,7 +147,7 @@ TEST(Runner, ResumesAfterSigkillMidSweep) {
   const pid_t pid = spawn(args);
   ASSERT_GT(pid, 0);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-  while (count_lines(jsonl) < 6 && std::chrono::steady_clock::now() < deadline)
+  while (newlines_in(jsonl) < 6 && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   ::kill(pid, SIGKILL);
   const int status = wait_for(pid);
@@ -266,7 +258,7 @@ TEST(Merge, KeepsTheTargetsRowsAndCountsMissingAndDuplicatedRuns) {
   test::write_text(tmp / "e.yaml", test::selftest_yaml("sharded", 5, 2, 0));
   std::vector<std::filesystem::path> roots;
   for (std::size_t i = 0; i < 3; ++i) {
-    RunnerOptions o = options_for(tmp, "shard" + std::to_string(i));
+    RunnerOptions o = test::runner_options(tmp / ("shard" + std::to_string(i)));
     o.shard = Shard{i, 3};
     run_experiment(tmp / "e.yaml", o);
     roots.push_back(o.results_root);
@@ -292,7 +284,7 @@ TEST(Merge, KeepsTheTargetsRowsAndCountsMissingAndDuplicatedRuns) {
   EXPECT_GT(m.experiments.front().duplicated, 0u);  // shard 2's runs are in the target already
   // A shard of another config is refused, naming both files.
   test::write_text(tmp / "f.yaml", test::selftest_yaml("sharded", 4, 2, 0));
-  RunnerOptions other = options_for(tmp, "other");
+  RunnerOptions other = test::runner_options(tmp / "other");
   run_experiment(tmp / "f.yaml", other);
   try {
     merge_results({other.results_root}, tmp / "all");
@@ -314,7 +306,7 @@ namespace {
 TEST(Merge, IsRefusedWhileAnotherProcessHoldsTheFoldersLock) {
   TempDir tmp;
   test::write_text(tmp / "e.yaml", test::selftest_yaml("locked", 2, 1, 0));
-  RunnerOptions o = options_for(tmp, "shard");
+  RunnerOptions o = test::runner_options(tmp / "shard");
   run_experiment(tmp / "e.yaml", o);
   std::filesystem::create_directories(tmp / "all" / "locked");
   const int fd = ::open((tmp / "all" / "locked" / ".lock").c_str(), O_RDWR | O_CREAT, 0644);

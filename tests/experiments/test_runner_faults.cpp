@@ -23,14 +23,6 @@ namespace {
 
 using test::TempDir;
 
-RunnerOptions options_for(const TempDir& tmp) {
-  RunnerOptions o;
-  o.results_root = tmp / "results";
-  o.jobs = 2;
-  o.progress = false;
-  return o;
-}
-
 template <class F>
 std::string input_error_of(F&& f) {
   try {
@@ -57,11 +49,12 @@ TEST(RunnerFaults, ASecondRunnerOnTheSameFolderIsRefused) {
   const int fd = ::open((tmp / "results" / "locked" / ".lock").c_str(), O_RDWR | O_CREAT, 0644);
   ASSERT_GE(fd, 0);
   ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
-  const std::string message = input_error_of([&] { run_experiment(tmp / "e.yaml", options_for(tmp)); });
+  const std::string message =
+      input_error_of([&] { run_experiment(tmp / "e.yaml", test::runner_options(tmp / "results")); });
   EXPECT_NE(message.find("another sextant process is running this experiment"), std::string::npos) << message;
   EXPECT_FALSE(std::filesystem::exists(tmp / "results" / "locked" / kRunsJsonl));
   ::close(fd);  // the holder ends: the next run goes ahead
-  EXPECT_EQ(run_experiment(tmp / "e.yaml", options_for(tmp)).executed, 4u);
+  EXPECT_EQ(run_experiment(tmp / "e.yaml", test::runner_options(tmp / "results")).executed, 4u);
 }
 
 TEST(RunnerFaults, UnwritableResultsFolderIsAClearError) {
@@ -69,7 +62,7 @@ TEST(RunnerFaults, UnwritableResultsFolderIsAClearError) {
   test::write_text(tmp / "e.yaml", test::selftest_yaml("nowrite", 2, 1, 0));
   // A results root below a regular file cannot be created, root or not.
   test::write_text(tmp / "file", "x");
-  RunnerOptions o = options_for(tmp);
+  RunnerOptions o = test::runner_options(tmp / "results");
   o.results_root = tmp / "file" / "results";
   std::string message = input_error_of([&] { run_experiment(tmp / "e.yaml", o); });
   EXPECT_NE(message.find("cannot create the results folder"), std::string::npos) << message;
@@ -90,7 +83,7 @@ TEST(RunnerFaults, UnwritableResultsFolderIsAClearError) {
 TEST(RunnerFaults, DiskFullKeepsWhatWasWrittenAndLeavesNoHalfFile) {
   TempDir tmp;
   test::write_text(tmp / "e.yaml", test::selftest_yaml("full", 5, 1, 0));
-  RunnerOptions o = options_for(tmp);
+  RunnerOptions o = test::runner_options(tmp / "results");
   o.max_runs = 3;
   o.jobs = 1;
   run_experiment(tmp / "e.yaml", o);
@@ -122,7 +115,8 @@ TEST(RunnerFaults, DiskFullKeepsWhatWasWrittenAndLeavesNoHalfFile) {
   EXPECT_FALSE(test::read_text(folder / "provenance.json").empty());
   (void)provenance_before;
 
-  const RunnerSummary rest = run_experiment(tmp / "e.yaml", options_for(tmp));  // space again
+  const RunnerSummary rest =
+      run_experiment(tmp / "e.yaml", test::runner_options(tmp / "results"));  // space again
   EXPECT_EQ(rest.skipped + rest.executed, 10u);
   EXPECT_EQ(read_rows(folder / kRunsJsonl).rows.size(), 10u);
 }
@@ -130,14 +124,14 @@ TEST(RunnerFaults, DiskFullKeepsWhatWasWrittenAndLeavesNoHalfFile) {
 TEST(RunnerFaults, ACorruptedLineIsNamedAndTheRestIsUsed) {
   TempDir tmp;
   test::write_text(tmp / "e.yaml", test::selftest_yaml("corrupt", 3, 1, 0));
-  run_experiment(tmp / "e.yaml", options_for(tmp));
+  run_experiment(tmp / "e.yaml", test::runner_options(tmp / "results"));
   const auto folder = tmp / "results" / "corrupt";
   std::string text = test::read_text(folder / kRunsJsonl);
   const std::size_t second = text.find('\n') + 1;
   text.replace(second, 10, "#garbage!#");  // line 2 no longer parses
   test::write_text(folder / kRunsJsonl, text);
 
-  const RunnerSummary s = run_experiment(tmp / "e.yaml", options_for(tmp));
+  const RunnerSummary s = run_experiment(tmp / "e.yaml", test::runner_options(tmp / "results"));
   EXPECT_EQ(s.executed, 1u);  // only the run of the corrupted line is redone
   EXPECT_EQ(s.skipped, 5u);
   ASSERT_EQ(s.warnings.size(), 1u);
@@ -152,11 +146,11 @@ TEST(RunnerFaults, ACorruptedLineIsNamedAndTheRestIsUsed) {
 TEST(RunnerFaults, AnEditedConfigGetsNewRunsAndTheOldRowsStayApart) {
   TempDir tmp;
   test::write_text(tmp / "e.yaml", test::selftest_yaml("edited", 2, 1, 0));
-  run_experiment(tmp / "e.yaml", options_for(tmp));
+  run_experiment(tmp / "e.yaml", test::runner_options(tmp / "results"));
   std::string edited = test::selftest_yaml("edited", 2, 1, 0);
   edited.replace(edited.find("seed: 7"), 7, "seed: 8");
   test::write_text(tmp / "e.yaml", edited);
-  const RunnerSummary s = run_experiment(tmp / "e.yaml", options_for(tmp));
+  const RunnerSummary s = run_experiment(tmp / "e.yaml", test::runner_options(tmp / "results"));
   EXPECT_EQ(s.executed, 4u);  // new keys: nothing of the old config is reused
   EXPECT_EQ(s.skipped, 0u);
   const auto folder = tmp / "results" / "edited";

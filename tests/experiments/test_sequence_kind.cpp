@@ -22,36 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::TempDir;
 
-const fs::path kSource(SEXTANT_SOURCE_DIR);
-
-RunnerSummary run_quick(const fs::path& config, const fs::path& results, bool quick = true) {
-  RunnerOptions o;
-  o.results_root = results;
-  o.jobs = 2;
-  o.progress = false;
-  o.quick = quick;
-  return run_experiment(config, o);
-}
-
-/// Data rows of a Markdown table (lines starting with '|' after the header separator).
-std::size_t markdown_rows(const std::string& md) {
-  std::size_t rows = 0;
-  bool body = false;
-  std::size_t start = 0;
-  while (start < md.size()) {
-    const std::size_t end = std::min(md.find('\n', start), md.size());
-    const std::string line = md.substr(start, end - start);
-    if (line.rfind("| :", 0) == 0 || line.rfind("|---", 0) == 0) {
-      body = true;
-    } else if (body && line.rfind("|", 0) == 0) {
-      ++rows;
-    } else if (body) {
-      body = false;
-    }
-    start = end + 1;
-  }
-  return rows;
-}
+const fs::path kSourceDir(SEXTANT_SOURCE_DIR);
 
 void expect_tum(const fs::path& file, std::size_t poses, double first_stamp = 0) {
   ASSERT_TRUE(fs::exists(file)) << file;
@@ -64,7 +35,7 @@ void expect_tum(const fs::path& file, std::size_t poses, double first_stamp = 0)
 TEST(SequenceKind, E7QuickProfileChainsFbmlndtAndWritesTumFiles) {
   TempDir tmp;
   const RunnerSummary s =
-      run_quick(kSource / "experiments" / "e07_dead_reckoning_fbmlndt.yaml", tmp / "results");
+      test::run_quick(test::experiments_dir() / "e07_dead_reckoning_fbmlndt.yaml", tmp / "results");
   ASSERT_EQ(s.executed, 2u);  // quick: 2 repetitions of 20 scans
   ASSERT_EQ(s.failed, 0u);
   for (const auto& row : read_rows(s.folder / kRunsJsonl).rows) {
@@ -84,9 +55,9 @@ TEST(SequenceKind, E7QuickProfileChainsFbmlndtAndWritesTumFiles) {
   ASSERT_EQ(r.experiments, 1u);
   const fs::path dir = tmp / "report" / "e07_dead_reckoning_fbmlndt";
   const std::string end = test::read_text(dir / "end_point_error.md");
-  EXPECT_EQ(markdown_rows(end), 4u) << end;  // end point and largest along the path, odometry and chain
+  EXPECT_EQ(test::markdown_rows(end), 4u) << end;  // end point and largest along the path, odometry and chain
   EXPECT_NE(end.find("60.00"), std::string::npos) << end;  // the thesis' odometry end-point error
-  EXPECT_EQ(markdown_rows(test::read_text(dir / "trajectory_metrics.md")), 2u);
+  EXPECT_EQ(test::markdown_rows(test::read_text(dir / "trajectory_metrics.md")), 2u);
   for (const char* svg : {"trajectory.svg", "error_vs_scan.svg"}) EXPECT_TRUE(fs::exists(dir / svg)) << svg;
   for (const char* tum : {"trajectory_ground_truth.tum", "trajectory_odometry.tum", "trajectory_fbmlndt.tum"})
     expect_tum(dir / tum, 20);
@@ -96,7 +67,7 @@ TEST(SequenceKind, E7QuickProfileChainsFbmlndtAndWritesTumFiles) {
 
 TEST(SequenceKind, E9QuickProfileRunsTheKfWithAlarmsAndCovariance) {
   TempDir tmp;
-  const RunnerSummary s = run_quick(kSource / "experiments" / "e09_kf_mlndt_3d.yaml", tmp / "results");
+  const RunnerSummary s = test::run_quick(test::experiments_dir() / "e09_kf_mlndt_3d.yaml", tmp / "results");
   ASSERT_EQ(s.executed, 2u);
   ASSERT_EQ(s.failed, 0u);
   for (const auto& row : read_rows(s.folder / kRunsJsonl).rows) {
@@ -111,9 +82,10 @@ TEST(SequenceKind, E9QuickProfileRunsTheKfWithAlarmsAndCovariance) {
   const ReportSummary r = write_report({tmp / "results"}, tmp / "report");
   ASSERT_EQ(r.experiments, 1u);
   const fs::path dir = tmp / "report" / "e09_kf_mlndt_3d";
-  EXPECT_EQ(markdown_rows(test::read_text(dir / "alarms.md")), 1u);
-  EXPECT_EQ(markdown_rows(test::read_text(dir / "covariance.md")), 4u);  // quick checkpoints 5, 10, 15, 20
-  EXPECT_EQ(markdown_rows(test::read_text(dir / "trajectory_metrics.md")), 3u);
+  EXPECT_EQ(test::markdown_rows(test::read_text(dir / "alarms.md")), 1u);
+  EXPECT_EQ(test::markdown_rows(test::read_text(dir / "covariance.md")),
+            4u);  // quick checkpoints 5, 10, 15, 20
+  EXPECT_EQ(test::markdown_rows(test::read_text(dir / "trajectory_metrics.md")), 3u);
   for (const char* tum : {"trajectory_ground_truth.tum", "trajectory_odometry.tum", "trajectory_mlndt.tum",
                           "trajectory_kf.tum"})
     expect_tum(dir / tum, 20);
@@ -129,13 +101,13 @@ TEST(SequenceKind, ChainsFbmlndtOverTheRealUosScans) {
   const std::string yaml =
       "name: uos_chain\nkind: sequence\nseed: 1\n"
       "dataset: {source: folder, path: " +
-      (kSource / "data" / "uos_3dtk").string() +
+      (kSourceDir / "data" / "uos_3dtk").string() +
       "}\n"
       "methods:\n  - {name: fbmlndt, matcher: fbmlndt, settings: {preset: thesis, solver: lm}, sampler: "
       "all}\n"
       "params: {scans: 3, odometry: dataset, filter: none, report: dead_reckoning}\n";
   test::write_text(tmp / "e99_uos_chain.yaml", yaml);
-  const RunnerSummary s = run_quick(tmp / "e99_uos_chain.yaml", tmp / "results", false);
+  const RunnerSummary s = test::run_quick(tmp / "e99_uos_chain.yaml", tmp / "results", false);
   ASSERT_EQ(s.executed, 1u);
   ASSERT_EQ(s.failed, 0u);
   const auto rows = read_rows(s.folder / kRunsJsonl).rows;
@@ -163,7 +135,7 @@ TEST(SequenceKind, ValidationNamesTheKey) {
   };
   const std::string head = "name: bad\nkind: sequence\nmethods:\n  - {name: m, matcher: mlndt}\n";
   const std::string folder =
-      "dataset: {source: folder, path: " + (kSource / "data" / "uos_3dtk").string() + "}\n";
+      "dataset: {source: folder, path: " + (kSourceDir / "data" / "uos_3dtk").string() + "}\n";
   const std::string simulated = error_of(head + folder + "params: {odometry: simulated}\n");
   EXPECT_NE(simulated.find("odometry"), std::string::npos) << simulated;
   const std::string synthetic = "dataset: {source: synthetic}\n";

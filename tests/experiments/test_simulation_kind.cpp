@@ -17,18 +17,9 @@ namespace {
 
 using test::TempDir;
 
-RunnerSummary run_quick(const std::string& file, const std::filesystem::path& results) {
-  RunnerOptions o;
-  o.results_root = results;
-  o.jobs = 2;
-  o.quick = true;
-  o.progress = false;
-  return run_experiment(std::filesystem::path(SEXTANT_SOURCE_DIR) / "experiments" / file, o);
-}
-
 TEST(E8, QuickProfileTracksTheRoomLoopsAndMeasuresTheLag) {
   TempDir tmp;
-  const RunnerSummary s = run_quick("e08_ekf_mlndt_2d.yaml", tmp / "results");
+  const RunnerSummary s = test::run_quick(test::experiments_dir() / "e08_ekf_mlndt_2d.yaml", tmp / "results");
   ASSERT_EQ(s.failed, 0u);
   ASSERT_EQ(s.executed, 3u);
   const auto rows = read_rows(s.folder / kRunsJsonl).rows;
@@ -68,7 +59,8 @@ TEST(E8, QuickProfileTracksTheRoomLoopsAndMeasuresTheLag) {
 
 TEST(E15, QuickProfileRunsPairedFiltersAndComparesThem) {
   TempDir tmp;
-  const RunnerSummary s = run_quick("e15_rspkf_vs_ukf_2d.yaml", tmp / "results");
+  const RunnerSummary s =
+      test::run_quick(test::experiments_dir() / "e15_rspkf_vs_ukf_2d.yaml", tmp / "results");
   ASSERT_EQ(s.failed, 0u);
   ASSERT_EQ(s.executed, 12u);  // 3 filters (ukf κ = 3 − n, ukf_alpha1, rspkf) × 4 repetitions
   std::map<int, std::map<std::string, RunRow>> by_rep;

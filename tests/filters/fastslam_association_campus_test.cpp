@@ -13,14 +13,14 @@
 namespace sextant {
 namespace {
 
-constexpr std::size_t kScans = 36;
+constexpr std::size_t kAssociationScans = 36;
 
-struct CampusRun {
+struct AssociationRun {
   double final_error = 0.0, worst_error = 0.0, odometry_error = 0.0;
   std::size_t failed = 0, map = 0, matched = 0;
 };
 
-CampusRun run(const std::string& filter, bool particle_association) {
+AssociationRun run_association(const std::string& filter, bool particle_association) {
   const synth::Campus& c = test::campus();
   PlaneSlamSettings s;
   s.filter = filter;
@@ -34,8 +34,8 @@ CampusRun run(const std::string& filter, bool particle_association) {
   s.association.thresholds.orientation_deg = 5.0;
   s.association.thresholds.translation = 0.5;
   PlaneSlam slam(s, to_pose6(c.ground_truth[0]), 5);
-  CampusRun out;
-  for (std::size_t k = 0; k < kScans; ++k) {
+  AssociationRun out;
+  for (std::size_t k = 0; k < kAssociationScans; ++k) {
     const PlaneSlamStep step = slam.step(c.scan(k).cloud, to_pose6(c.odometry[k]));
     if (!step.filter.ok()) ++out.failed;
     out.matched += step.matched;
@@ -46,7 +46,7 @@ CampusRun run(const std::string& filter, bool particle_association) {
     EXPECT_EQ(step.map_size, static_cast<std::size_t>(slam.filter().num_landmarks()));
   }
   out.odometry_error =
-      (c.odometry[kScans - 1].translation() - c.ground_truth[kScans - 1].translation()).head<2>().norm();
+      (c.odometry[kAssociationScans - 1].translation() - c.ground_truth[kAssociationScans - 1].translation()).head<2>().norm();
   out.map = slam.map().size();
   return out;
 }
@@ -56,12 +56,12 @@ CampusRun run(const std::string& filter, bool particle_association) {
 // landmarks (EKF 51). Bound: final error below the odometry's, worst under 2.5 m, and most
 // re-observations associated (more than 80 matches; every observation new would give 0).
 TEST(FastSlamAssociationCampus, ExtractedPlanesPerParticleEndWithinBound) {
-  const CampusRun r = run("fastslam2", true);
-  const CampusRun ekf = run("ekf", true);
+  const AssociationRun r = run_association("fastslam2", true);
+  const AssociationRun ekf = run_association("ekf", true);
   std::printf(
       "[fastslam-association-campus] %zu scans: final xy error %.3f m (worst %.3f m), odometry %.3f m; "
       "map %zu landmarks, %zu matches, failed steps %zu; EKF final %.3f m, map %zu\n",
-      kScans, r.final_error, r.worst_error, r.odometry_error, r.map, r.matched, r.failed, ekf.final_error,
+      kAssociationScans, r.final_error, r.worst_error, r.odometry_error, r.map, r.matched, r.failed, ekf.final_error,
       ekf.map);
   EXPECT_EQ(r.failed, 0u);
   EXPECT_LT(r.final_error, r.odometry_error);

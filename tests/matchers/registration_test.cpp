@@ -17,10 +17,6 @@
 namespace sextant {
 namespace {
 
-Eigen::Isometry3d pose(double x, double y, double z, double a, double b, double g) {
-  return to_isometry(Pose6{x, y, z, a, b, g});
-}
-
 /// Reference and input of one scene seen from two poses: input = T⁻¹·scene (fresh sampling),
 /// so that p_ref = T·p_input.
 struct Pair {
@@ -49,7 +45,7 @@ RegistrationResult run(const std::string& method, const std::string& yaml, const
 }
 
 TEST(Mlndt, RecoversKnownTransformWithEverySolver) {
-  const Pair p = make_pair(pose(1.2, -0.8, 0.1, 1 * kRadPerDeg, -1 * kRadPerDeg, 8 * kRadPerDeg));
+  const Pair p = make_pair(test::pose(1.2, -0.8, 0.1, 1, -1, 8));
   std::vector<RegistrationResult> results;
   // The plain Newton step (step_control: none) first, then LM, Ceres and the default Newton.
   for (const char* solver : {"newton, step_control: none", "lm", "ceres", "newton"}) {
@@ -112,7 +108,7 @@ TEST(Mlndt, TruncationRejectsFarCorrespondencesAndDegenerateCellsAreDropped) {
 }
 
 TEST(Mlndt, TraceFollowsLayerSchedule) {
-  const Pair p = make_pair(pose(0.5, 0.3, 0, 0, 0, 3 * kRadPerDeg));
+  const Pair p = make_pair(test::pose(0.5, 0.3, 0, 0, 0, 3));
   const RegistrationResult r =
       run("mlndt", "{start_layer: 2, refine_first: false, precision_min_cell: 0}", p);
   ASSERT_GE(r.trace.size(), 7u);
@@ -122,7 +118,7 @@ TEST(Mlndt, TraceFollowsLayerSchedule) {
 }
 
 TEST(Ndt, RecoversKnownTransform) {
-  const Pair p = make_pair(pose(0.6, -0.4, 0.05, 0.5 * kRadPerDeg, -0.5 * kRadPerDeg, 4 * kRadPerDeg));
+  const Pair p = make_pair(test::pose(0.6, -0.4, 0.05, 0.5, -0.5, 4));
   for (const char* yaml : {"{cell_size: 2.0}", "{cell_size: 2.0, trilinear: true}", "{}"}) {
     const RegistrationResult r = run("ndt", yaml, p);
     EXPECT_TRUE(r.converged) << yaml << ": " << r.summary();
@@ -134,8 +130,8 @@ TEST(Ndt, RecoversKnownTransform) {
 }
 
 TEST(Mlndt, DofMaskKeepsFixedParameters) {
-  const Pair p = make_pair(pose(1.0, 0.7, 0, 0, 0, 6 * kRadPerDeg));
-  const Eigen::Isometry3d init = pose(0, 0, 0.3, 0, 0, 0);  // z is wrong but fixed
+  const Pair p = make_pair(test::pose(1.0, 0.7, 0, 0, 0, 6));
+  const Eigen::Isometry3d init = test::pose(0, 0, 0.3, 0, 0, 0);  // z is wrong but fixed
   for (const char* solver : {"newton", "lm", "ceres"}) {
     const RegistrationResult r =
         run("mlndt", std::string("{dof: [x, y, yaw], solver: ") + solver + "}", p, init);
@@ -151,7 +147,7 @@ TEST(Mlndt, DofMaskKeepsFixedParameters) {
 TEST(Mlndt, LongRangeBeatsFixedCellNdt) {
   // The thesis' long-range claim (§3.2, chapter 5): from a zero initial guess ML-NDT recovers a
   // 15°, several-metre displacement that NDT at the finest layer's cell size does not.
-  const Pair p = make_pair(pose(3.0, -2.0, 0.0, 0, 0, 15 * kRadPerDeg), 3);
+  const Pair p = make_pair(test::pose(3.0, -2.0, 0.0, 0, 0, 15), 3);
   const RegistrationResult ml = run("mlndt", "{start_layer: 1}", p);
   EXPECT_LT(test::translation_error(ml.T, p.T), 0.1) << ml.summary();
   EXPECT_LT(test::rotation_error_deg(ml.T, p.T), 0.5);
@@ -164,7 +160,7 @@ TEST(Mlndt, LongRangeBeatsFixedCellNdt) {
 }
 
 TEST(Registration, DegenerateInputNeverCrashes) {
-  const Pair p = make_pair(pose(0.3, 0.2, 0, 0, 0, 2 * kRadPerDeg));
+  const Pair p = make_pair(test::pose(0.3, 0.2, 0, 0, 0, 2));
   PointCloud tiny;
   for (int i = 0; i < 3; ++i) tiny.push_back({float(i), 0, 0});
   PointCloud collinear, coplanar, far_away;

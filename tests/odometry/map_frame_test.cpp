@@ -17,11 +17,12 @@
 #include "sextant/core/units.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant_test/temp_dir.hpp"
+#include "shared_mulran.hpp"
 
 namespace sextant {
 namespace {
 
-const std::filesystem::path kMulran = std::filesystem::path(SEXTANT_SHARED_DATA_DIR) / "mulran_riverside02";
+using test::kMulran;
 
 /// Line k of a text file (k from 0).
 std::string line_of(const std::filesystem::path& file, std::size_t k) {

@@ -21,11 +21,12 @@
 #include "sextant/matchers/yaml.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant_test/temp_dir.hpp"
+#include "shared_mulran.hpp"
 
 namespace sextant {
 namespace {
 
-const std::filesystem::path kMulran = std::filesystem::path(SEXTANT_SHARED_DATA_DIR) / "mulran_riverside02";
+using test::kMulran;
 
 /// The trusted steps of `r` (scans first, first + 1, …), each expected within 1 m and 5° of the
 /// reference's relative motion.
