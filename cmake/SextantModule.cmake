@@ -52,6 +52,8 @@ endfunction()
 function(sextant_add_test name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
+  # Batches of 8: the file-local helpers of one executable's files must not repeat names.
+  set_target_properties(${name} PROPERTIES UNITY_BUILD ${SEXTANT_UNITY_BUILD} UNITY_BUILD_BATCH_SIZE 8)
   target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest_main)
   sextant_test_settings(${name})
   if(SEXTANT_TEST_PCH)
