@@ -46,7 +46,9 @@ AssociationRun run_association(const std::string& filter, bool particle_associat
     EXPECT_EQ(step.map_size, static_cast<std::size_t>(slam.filter().num_landmarks()));
   }
   out.odometry_error =
-      (c.odometry[kAssociationScans - 1].translation() - c.ground_truth[kAssociationScans - 1].translation()).head<2>().norm();
+      (c.odometry[kAssociationScans - 1].translation() - c.ground_truth[kAssociationScans - 1].translation())
+          .head<2>()
+          .norm();
   out.map = slam.map().size();
   return out;
 }
@@ -61,8 +63,8 @@ TEST(FastSlamAssociationCampus, ExtractedPlanesPerParticleEndWithinBound) {
   std::printf(
       "[fastslam-association-campus] %zu scans: final xy error %.3f m (worst %.3f m), odometry %.3f m; "
       "map %zu landmarks, %zu matches, failed steps %zu; EKF final %.3f m, map %zu\n",
-      kAssociationScans, r.final_error, r.worst_error, r.odometry_error, r.map, r.matched, r.failed, ekf.final_error,
-      ekf.map);
+      kAssociationScans, r.final_error, r.worst_error, r.odometry_error, r.map, r.matched, r.failed,
+      ekf.final_error, ekf.map);
   EXPECT_EQ(r.failed, 0u);
   EXPECT_LT(r.final_error, r.odometry_error);
   EXPECT_LT(r.worst_error, 2.5);
