@@ -308,37 +308,6 @@ Termination empty_model_reason(std::size_t reference_points, const NdtGrid& grid
   return grid.too_large() ? Termination::kGridTooLarge : Termination::kNoGaussians;
 }
 
-Bounds robust_bounds(const PointCloud& cloud, double quantile) {
-  const Bounds box = cloud.bounds();
-  if (!(quantile > 0.0) || cloud.size() < 2) return box;
-  constexpr std::size_t kMaxSample = 16384;
-  const std::size_t stride = (cloud.size() + kMaxSample - 1) / kMaxSample;
-  std::vector<float> values;
-  values.reserve(cloud.size() / stride + 1);
-  Bounds robust;
-  for (int a = 0; a < 3; ++a) {
-    values.clear();
-    for (std::size_t i = 0; i < cloud.size(); i += stride) {
-      const float v = cloud[i](a);
-      if (std::isfinite(v)) values.push_back(v);
-    }
-    if (values.empty()) return box;
-    // The values of rank floor(q·(m − 1)) and floor((1 − q)·(m − 1)) in the sorted values; the
-    // second lies in the part the first selection left above its rank.
-    const auto rank = [&](double q) {
-      return values.begin() + static_cast<std::ptrdiff_t>(q * static_cast<double>(values.size() - 1));
-    };
-    const auto low_at = rank(quantile), high_at = rank(1.0 - quantile);
-    std::nth_element(values.begin(), low_at, values.end());
-    if (high_at != low_at) std::nth_element(low_at + 1, high_at, values.end());
-    const float low = *low_at, high = *high_at;
-    const float margin = 0.1f * (high - low);
-    robust.min(a) = std::max(box.min(a), low - margin);
-    robust.max(a) = std::min(box.max(a), high + margin);
-  }
-  return robust;
-}
-
 std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const LayerPyramidSettings& settings) {
   return build_layer_pyramid(reference, settings, robust_bounds(reference, settings.bounds_quantile));
 }
