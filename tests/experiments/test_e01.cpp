@@ -37,12 +37,7 @@ std::size_t count_fields(const std::string& line) {
 
 TEST(E01, QuickProfileWritesEveryTableAndFigure) {
   TempDir tmp;
-  RunnerOptions o;
-  o.results_root = tmp / "results";
-  o.jobs = 2;
-  o.quick = true;
-  o.progress = false;
-  const RunnerSummary s = run_experiment(kE01Config, o);
+  const RunnerSummary s = test::run_quick(kE01Config, tmp / "results");
   // quick: 6 methods × 4 scenes × 4 offsets × 3 yaws × 2 directions.
   ASSERT_EQ(s.executed, 6u * 4u * 4u * 3u * 2u);
   ASSERT_EQ(s.failed, 0u);

@@ -19,11 +19,7 @@ const std::filesystem::path kE18Config =
 
 TEST(E18, ResultsAndReportHoldTheThesisValues) {
   TempDir tmp;
-  RunnerOptions o;
-  o.results_root = tmp / "results";
-  o.jobs = 2;
-  o.progress = false;
-  const RunnerSummary s = run_experiment(kE18Config, o);
+  const RunnerSummary s = test::run_quick(kE18Config, tmp / "results", false);
   ASSERT_EQ(s.executed, 10u);
   ASSERT_EQ(s.failed, 0u);
 

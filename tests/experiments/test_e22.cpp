@@ -21,12 +21,7 @@ const std::filesystem::path kE22Config =
 
 TEST(E22, QuickProfileComparesNeesCostAndErrorOfSeifEseifAndEkf) {
   TempDir tmp;
-  RunnerOptions o;
-  o.results_root = tmp / "results";
-  o.jobs = 2;
-  o.quick = true;
-  o.progress = false;
-  const RunnerSummary s = run_experiment(kE22Config, o);
+  const RunnerSummary s = test::run_quick(kE22Config, tmp / "results");
   ASSERT_EQ(s.executed, 3u);  // seif, eseif, ekf × 1 repetition
   ASSERT_EQ(s.failed, 0u);
   std::map<std::string, RunRow> rows;

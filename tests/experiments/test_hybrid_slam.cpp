@@ -142,13 +142,7 @@ TEST(HybridSlam, HybridEkfIsCloserEarlyAndBoundedAtTheEnd) {
 }
 TEST(HybridSlam, QuickProfileOutputShape) {
   TempDir tmp;
-  RunnerOptions o;
-  o.results_root = tmp / "results";
-  o.jobs = 2;
-  o.quick = true;
-  o.progress = false;
-  const auto config = std::filesystem::path(SEXTANT_SOURCE_DIR) / "experiments" / "e21_hybrid_slam.yaml";
-  const RunnerSummary s = run_experiment(config, o);
+  const RunnerSummary s = test::run_quick(test::experiments_dir() / "e21_hybrid_slam.yaml", tmp / "results");
   ASSERT_EQ(s.failed, 0u);
   const auto rows = read_rows(s.folder / kRunsJsonl).rows;
   ASSERT_EQ(rows.size(), 6u);  // 3 filters × {odometry, fbmlndt}, 1 repetition

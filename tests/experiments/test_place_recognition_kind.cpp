@@ -23,12 +23,8 @@ using test::TempDir;
 
 TEST(PlaceRecognitionKind, E24QuickProfileScoresEachSourceAgainstTheTrueRevisits) {
   TempDir tmp;
-  RunnerOptions o;
-  o.results_root = tmp / "results";
-  o.jobs = 2;
-  o.progress = false;
-  o.quick = true;
-  const RunnerSummary s = run_experiment(test::experiments_dir() / "e24_place_recognition.yaml", o);
+  const RunnerSummary s =
+      test::run_quick(test::experiments_dir() / "e24_place_recognition.yaml", tmp / "results");
   ASSERT_EQ(s.executed, 6u);  // 3 sources × 2 drifts, one repetition
   ASSERT_EQ(s.failed, 0u);
   for (const auto& row : read_rows(s.folder / kRunsJsonl).rows) {

@@ -126,11 +126,7 @@ reference:
 /// Writes `text` as e99_slam_tiny.yaml in `tmp` and runs it in full (two workers).
 RunnerSummary run_tiny(const std::string& text, const TempDir& tmp) {
   test::write_text(tmp / "e99_slam_tiny.yaml", text);
-  RunnerOptions o;
-  o.results_root = tmp / "results";
-  o.jobs = 2;
-  o.progress = false;
-  return run_experiment(tmp / "e99_slam_tiny.yaml", o);
+  return test::run_quick(tmp / "e99_slam_tiny.yaml", tmp / "results", false);
 }
 
 /// The distinct true landmarks with ≥ 40 points in scans [from, to) of kTinySlam's campus.

@@ -42,12 +42,7 @@ std::size_t table_rows(const std::string& md) {
 
 TEST(PoseGraphKind, E20QuickProfileBuildsTheGraphAndComparesTheFilters) {
   TempDir tmp;
-  RunnerOptions o;
-  o.results_root = tmp / "results";
-  o.jobs = 2;
-  o.progress = false;
-  o.quick = true;
-  const RunnerSummary s = run_experiment(test::experiments_dir() / "e20_pose_graph.yaml", o);
+  const RunnerSummary s = test::run_quick(test::experiments_dir() / "e20_pose_graph.yaml", tmp / "results");
   ASSERT_EQ(s.executed, 5u);  // mlndt + ekf, ukf, ckf, seif; one repetition
   ASSERT_EQ(s.failed, 0u);
   constexpr std::size_t kScans = 95;
