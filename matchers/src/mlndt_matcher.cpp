@@ -13,12 +13,14 @@ using mlndt_detail::LayerObjective;
 
 // The library's defaults are the `default` preset (matchers/yaml.hpp), measured best on the shared
 // real pairs and the campus (docs/matcher_defaults.md): LM, n = 4, s = 2, the finest layer's terms
-// truncated at 16 and unmatched points charged 16. The thesis' settings are the `thesis` preset.
+// truncated at 16 and unmatched points charged 16, LM's function tolerance 10⁻⁵. The thesis'
+// settings are the `thesis` preset.
 MlndtSettings::MlndtSettings() {
   optimizer.solver = SolverKind::kLevenbergMarquardt;
   optimizer.iterations_per_stage = 3;
   optimizer.max_iterations = 50;
   optimizer.epsilon = 1e-4;
+  optimizer.function_tolerance = 1e-5;
   // Newton without step control oscillates or diverges in the last layer (issue 11: 160 cm off on
   // the Velodyne pair with GBS); the thesis-faithful plain step stays available as step_control: none.
   optimizer.step_control = StepControl::kTrustRegionLast;
@@ -103,6 +105,10 @@ void add_alternative(RegistrationResult& best, RegistrationResult other) {
   best.alternatives.push_back(std::move(other));
 }
 
+/// The pyramid's tolerance before a precision stage, in units of ε: 10⁻³ at the default ε, a
+/// millimetre or 0.06° (docs/matcher_defaults.md, "Fewer evaluations").
+constexpr double kPyramidTolerance = 10.0;
+
 const std::vector<NdtGrid>& no_grids() {
   static const std::vector<NdtGrid> none;
   return none;
@@ -154,10 +160,14 @@ RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Iso
     for (std::size_t k = 1; k < starts.size(); ++k)
       runs.emplace_back(&hypothesis, starts[k]);  // 0: the guess
   }
+  // With a precision stage after them, the runs only have to end in its basin (cells of half the
+  // last layer's edge, or more): they stop at kPyramidTolerance × ε, and the precision stage goes on
+  // to ε. Where it cannot run or does not converge, the run's pose stands.
+  OptimizerSettings optimizer = settings_.optimizer;
+  if (!precision_layers().empty()) optimizer.epsilon *= kPyramidTolerance;
   std::vector<RegistrationResult> results(runs.size());
-  threads_->for_each(runs.size(), [&](std::size_t k) {
-    results[k] = optimize(*runs[k].first, runs[k].second, settings_.optimizer);
-  });
+  threads_->for_each(
+      runs.size(), [&](std::size_t k) { results[k] = optimize(*runs[k].first, runs[k].second, optimizer); });
   // A run that passes the trust checks (registration_quality.hpp, default thresholds) wins over one
   // that does not; among equals the lowest final score (same input, same last layer: the scores
   // compare directly), the first of equals. The score alone let the coarse layers' pose win from the

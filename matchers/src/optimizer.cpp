@@ -136,6 +136,8 @@ class Loop {
       } else {
         // eq. (3.21) on Σ‖Lᵀe‖² (the same minimum as eq. 3.11): Δ = −(JᵀJ + λI)⁻¹·Jᵀr, with
         // JᵀJ = ½·gauss_newton and Jᵀr = ½·gradient. λ₀ = 10⁻³·mean(diag JᵀJ), ÷10 on success, ×10 otherwise.
+        // A step shorter than ε, or one whose predicted decrease is below function_tolerance × the
+        // score, is not tried: the stage is at its minimum.
         const Eigen::MatrixXd JtJ =
             0.5 * mask_.matrix(objective_.mahalanobis_grid(stage) ? at.gauss_newton : at.hessian);
         if (lambda < 0) lambda = 1e-3 * JtJ.diagonal().mean();
@@ -144,6 +146,9 @@ class Loop {
           const Eigen::MatrixXd damped = JtJ + lambda * Eigen::MatrixXd::Identity(JtJ.rows(), JtJ.cols());
           step = -damped.ldlt().solve(0.5 * g);
           if (!step.allFinite()) return finish(Termination::kSolverFailure, stage);
+          const double predicted_decrease = -(g.dot(step) + step.dot(JtJ * step));
+          if (at_minimum(step) || predicted_decrease < settings_.function_tolerance * std::abs(at.score))
+            break;
           const ScoreEvaluation& trial = with_hessian(stage, xi_ + mask_.expand(step));
           if (trial.matched >= settings_.min_matched && trial.score < at.score) {
             accepted = true;
@@ -153,7 +158,10 @@ class Loop {
             lambda *= 10.0;
           }
         }
-        if (!accepted) step.setZero();  // no decrease at any damping: a minimum of this stage
+        if (!accepted) {  // no decrease at any damping, or none worth a try: a minimum of this stage
+          record(stage, at.score, 0.0, at.matched);
+          return last ? finish(Termination::kConverged, stage) : false;
+        }
         xi_ += mask_.expand(step);
       }
       if (!xi_.allFinite()) return finish(Termination::kDiverged, stage);
@@ -162,6 +170,11 @@ class Loop {
     }
     return false;
   }
+
+  /// A damped step shorter than ε could only end the registration (‖Δξ‖ < ε) at a pose within ε of
+  /// this one, and a larger damping only shortens it: the stage is at its minimum, and the step is
+  /// not worth an evaluation.
+  bool at_minimum(const Eigen::VectorXd& step) const { return step.norm() < settings_.epsilon; }
 
   /// Whether this stage's Newton steps go through the trust region.
   bool damped_stage(bool last) const {
@@ -177,6 +190,7 @@ class Loop {
     const double scale = H.diagonal().cwiseAbs().mean();
     for (int attempt = 0; attempt < kMaxLmTries; ++attempt) {
       if (!newton_step(H, g, lambda * scale, step)) return false;
+      if (at_minimum(step)) break;
       const ScoreEvaluation& trial = with_hessian(stage, xi_ + mask_.expand(step));
       if (trial.matched >= settings_.min_matched && trial.score < at.score) {
         score = trial.score;
@@ -361,6 +375,8 @@ bool OptimizerSettings::valid(std::string* why) const {
     problem = "max_iterations must be at least 1";
   else if (!(epsilon > 0.0))
     problem = "epsilon must be positive";
+  else if (!(function_tolerance >= 0.0 && function_tolerance < 1.0))
+    problem = "function_tolerance must lie in [0, 1) (0: off)";
   if (problem && why) *why = problem;
   if (problem) return false;
   return line_search.valid(why) && dof.valid(why);

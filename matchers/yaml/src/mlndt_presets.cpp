@@ -23,7 +23,8 @@ constexpr Preset kPresets[] = {
     // unmatched charge of 50 it has always used: the thesis leaves that open).
     {"thesis",
      "{solver: newton, step_control: none, division: 8, layers: 4, start_layer: 2, "
-     "iterations_per_layer: 3, max_iterations: 50, epsilon: 1.0e-4, unmatched_penalty: 50, "
+     "iterations_per_layer: 3, max_iterations: 50, epsilon: 1.0e-4, function_tolerance: 0, "
+     "unmatched_penalty: 50, "
      "max_distance: .inf, truncated_layers: 1, bounds_quantile: 0, min_relative_spread: 0, refine_first: "
      "false, precision_min_cell: 0}"},
     // Measured with the bounding box (before robust_bounds): its 6 layers over the robust box are too

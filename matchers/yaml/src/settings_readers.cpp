@@ -12,6 +12,7 @@ void read_optimizer_settings(SettingsReader& in, const std::string& known_solver
     in.fail("solver", "unknown solver '" + solver + "' (known: " + known_solvers + ")");
   in.read("max_iterations", s.max_iterations);
   in.read("epsilon", s.epsilon);
+  in.read("function_tolerance", s.function_tolerance);
   bool line_search = false;
   const bool legacy = in.read_alias("line_search", line_search);
   if (legacy) s.step_control = line_search ? StepControl::kLineSearch : StepControl::kNone;

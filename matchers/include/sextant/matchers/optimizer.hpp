@@ -48,6 +48,11 @@ struct OptimizerSettings {
   int iterations_per_stage = 3;  ///< iterations in every stage but the last (Table 3.1) [count]
   int max_iterations = 100;      ///< cap on all iterations [count]
   double epsilon = 1e-4;  ///< stop in the last stage when ‖Δξ‖ < ε [m and rad mixed, as eq. 3.12]
+  /// LM: a stage is at its minimum when the damped step's predicted decrease of the score (the
+  /// Gauss–Newton model, −gᵀΔ − ΔᵀJᵀJΔ) is below this × the score, and the step is not tried. At
+  /// 10⁻⁵ that is about a millimetre of motion at the last layer (docs/matcher_defaults.md, "Fewer
+  /// evaluations") [ratio, 0..1; 0: off, the thesis' ε alone]
+  double function_tolerance = 0.0;
   StepControl step_control = StepControl::kNone;  ///< Newton only (LM and Ceres damp themselves)
   std::size_t min_matched = 6;      ///< fewer matched points → too_few_correspondences [count]
   MoreThuenteSettings line_search;  ///< μ, η, step bound and budget of step_control more_thuente
