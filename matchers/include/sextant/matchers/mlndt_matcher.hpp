@@ -3,11 +3,11 @@
 // Mahalanobis score (eq. 3.11), start layer s, three iterations per layer, then the last layer
 // until ‖Δξ‖ < ε. YAML keys: division, layers, start_layer, solver (newton | lm | ceres),
 // iterations_per_layer, max_iterations, unmatched_penalty, max_distance, truncated_layers, epsilon,
-// function_tolerance (lm),
-// step_control (newton: trust_region_last by default; none = eq. 3.16 as printed), min_points,
-// max_eigen_ratio, min_spread, bounds_quantile, refine_first, dof, threads, precision_min_cell,
-// precision_min_coverage (the precision stage of precision_stage.hpp), wide_basin (a map, absent = off:
-// the global initialisation of mlndt_global_init.hpp; `wide_basin: {}` uses its defaults).
+// function_tolerance (lm: optimizer.hpp), step_control (newton: trust_region_last by default; none =
+// eq. 3.16 as printed), min_points, max_eigen_ratio, min_spread, bounds_quantile, refine_first, dof,
+// threads, precision_min_cell, precision_min_coverage (the precision stage of precision_stage.hpp),
+// wide_basin (a map, absent = off: the global initialisation of mlndt_global_init.hpp; `wide_basin: {}`
+// uses its defaults).
 #include <limits>
 #include <memory>
 #include <string>
