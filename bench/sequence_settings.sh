@@ -21,6 +21,7 @@ settings=(
   "GBS 0.5 m cells, 10 points each|sampler: {cell_size: 0.5, max_per_cell: 10}"
   "bounding box (bounds_quantile: 0)|matcher: {bounds_quantile: 0}"
   "no precision stage|matcher: {precision_min_cell: 0}"
+  "LM without a function tolerance (ε alone)|matcher: {function_tolerance: 0}"
 )
 
 row() {  # row <dir>
