@@ -7,6 +7,7 @@
 #include "commands.hpp"
 #include "experiment_listing.hpp"
 #include "sextant/core/dataset.hpp"
+#include "sextant/core/error.hpp"
 #include "sextant/core/io/cloud_io.hpp"
 
 namespace sextant::cli {
@@ -37,23 +38,22 @@ void describe_cloud(const std::filesystem::path& file) {
   for (const std::string& warning : report.warnings) std::cout << "warning:     " << warning << "\n";
 }
 
-void describe_dataset(const std::filesystem::path& folder) {
-  const auto dataset = open_dataset(folder);
-  const DatasetMetadata& m = dataset->metadata();
-  std::cout << "folder:       " << folder.string() << "\n"
+void describe_dataset(const Dataset& dataset, const std::string& where) {
+  const DatasetMetadata& m = dataset.metadata();
+  std::cout << "dataset:      " << where << "\n"
             << "name:         " << m.name << "\n"
             << "format:       " << m.format << "\n"
             << "scans:        " << m.scan_count << "\n"
             << "odometry:     " << (m.has_odometry ? "yes" : "no") << "\n"
             << "ground truth: " << (m.has_ground_truth ? "yes" : "no") << "\n"
-            << "timestamps:   " << (m.scan_count > 0 && dataset->stamp(0) ? "yes" : "no") << "\n";
-  if (m.scan_count > 0) std::cout << "first scan:   " << dataset->scan_file(0).string() << "\n";
+            << "timestamps:   " << (m.scan_count > 0 && dataset.stamp(0) ? "yes" : "no") << "\n";
+  if (m.scan_count > 0 && !dataset.scan_file(0).empty())
+    std::cout << "first scan:   " << dataset.scan_file(0).string() << "\n";
   for (const std::string& note : m.notes) std::cout << "note:         " << note << "\n";
   if (m.has_ground_truth && m.scan_count > 1) {
     double length = 0.0;
     for (std::size_t i = 1; i < m.scan_count; ++i) {
-      length +=
-          (dataset->ground_truth(i)->translation() - dataset->ground_truth(i - 1)->translation()).norm();
+      length += (dataset.ground_truth(i)->translation() - dataset.ground_truth(i - 1)->translation()).norm();
     }
     std::cout << "path length:  " << std::fixed << std::setprecision(3) << length << " m (ground truth)\n";
   }
@@ -76,10 +76,16 @@ void add_info_command(CLI::App& app, int& exit_code) {
   cmd->callback([&exit_code, path, markdown] {
     exit_code = guarded([path, markdown] {
       std::error_code ec;  // a symlink loop: the reader names it
-      if (holds_experiments(*path)) {
+      if (names_builtin_campus(*path) && !std::filesystem::exists(*path, ec)) {
+        describe_dataset(*open_builtin_campus(1), "(built in: the synthetic campus, seed 1, cast when read)");
+      } else if (!std::filesystem::exists(*path, ec)) {
+        throw InputError(*path, "",
+                         "no such file or folder (expected a cloud file, a dataset folder, an experiment "
+                         "YAML or a folder of them, or 'campus')");
+      } else if (holds_experiments(*path)) {
         describe_experiments(*path, *markdown);
       } else if (std::filesystem::is_directory(*path, ec)) {
-        describe_dataset(*path);
+        describe_dataset(*open_dataset(*path), *path);
       } else {
         describe_cloud(*path);
       }

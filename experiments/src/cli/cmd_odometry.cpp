@@ -27,7 +27,6 @@
 #include "sextant/matchers/sampler.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/odometry/yaml.hpp"
-#include "sextant/synth/campus.hpp"
 
 namespace sextant::cli {
 namespace {
@@ -53,9 +52,7 @@ struct OdometryOptions : MatcherOptions {
 };
 
 std::unique_ptr<Dataset> open_cli_dataset(const OdometryOptions& o) {
-  if (o.dataset == "campus" || o.dataset == "synthetic")
-    return std::make_unique<synth::CampusDataset>(
-        synth::generate_campus(synth::CampusSettings{}, o.campus_seed));
+  if (names_builtin_campus(o.dataset)) return open_builtin_campus(o.campus_seed);
   const fs::path folder(o.dataset);
   if (!fs::exists(folder))
     throw InputError(o.dataset, "",

@@ -2,11 +2,17 @@
 // Each `sextant` subcommand lives in its own file cli/cmd_<name>.cpp and registers itself with
 // one add_<name>_command(app, exit_code) function declared here and called from main.cpp.
 // The subcommand's callback sets exit_code = guarded([&] { ... return 0; }).
+#include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 
 #include <CLI/CLI.hpp>
+
+namespace sextant {
+class Dataset;
+}
 
 namespace sextant::cli {
 
@@ -28,6 +34,12 @@ std::string version_line();
 
 /// Runs a subcommand body: an exception becomes "sextant: error: <message>" on stderr and exit code 1.
 int guarded(const std::function<int()>& body);
+
+/// Whether a dataset argument names the built-in synthetic campus ("campus" or "synthetic") rather
+/// than a folder (`odometry`, `info`).
+bool names_builtin_campus(const std::string& dataset);
+/// The built-in synthetic campus generated from `seed` (its scans are cast when read).
+std::unique_ptr<Dataset> open_builtin_campus(std::uint64_t seed);
 
 /// ./experiments when it exists, else the source tree's experiments/ (`reproduce`, `slurm reproduce`).
 std::filesystem::path default_experiments_folder();
