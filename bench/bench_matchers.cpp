@@ -12,8 +12,11 @@
 
 #include <cmath>
 #include <limits>
+#include <numeric>
+#include <string>
 
 #include "mahalanobis_kernel.hpp"
+#include "sextant/core/io/cloud_io.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
@@ -179,6 +182,34 @@ void BM_LayerPyramidBuild(benchmark::State& state) {
   state.counters["gaussians"] = static_cast<double>(gaussians);
 }
 BENCHMARK(BM_LayerPyramidBuild)->Args({100000, 4})->Args({100000, 6})->Unit(benchmark::kMillisecond);
+
+// The same build on a real scan (data/kitti00_pair/000000.xyz32.bin, 124,668 points), Args: layers,
+// order (0: as the lidar wrote them, ring by ring; 1: shuffled, as the synthetic scene above draws
+// its points). A point's cell is read and written in the points' order: in scan order neighbouring
+// points share cells and the cache, shuffled every point misses it.
+void BM_LayerPyramidBuildRealScan(benchmark::State& state) {
+  static const PointCloud scan = read_cloud(std::string(SEXTANT_DATA_DIR) + "/kitti00_pair/000000.xyz32.bin");
+  PointCloud reference = scan;
+  if (state.range(1) != 0) {
+    std::vector<std::size_t> order(scan.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    Rng rng(5);
+    for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.index(i)]);
+    reference = scan.subset(order);
+  }
+  LayerPyramidSettings settings;
+  settings.layers = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    const auto layers = build_layer_pyramid(reference, settings);
+    benchmark::DoNotOptimize(layers.back().gaussian_count());
+  }
+  report_per_point(state, reference.size());
+}
+BENCHMARK(BM_LayerPyramidBuildRealScan)
+    ->Args({4, 0})
+    ->Args({6, 0})
+    ->Args({6, 1})
+    ->Unit(benchmark::kMillisecond);
 
 // ML-NDT's whole reference model (MlndtMatcher::set_reference, default settings: the pyramid and
 // the precision stage's two grids) per 100k reference points; Arg: threads (wall-clock time).
