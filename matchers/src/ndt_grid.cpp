@@ -140,11 +140,18 @@ std::vector<CellSums> NdtGrid::split(const PointCloud& reference) {
                                                               std::min(static_cast<int>(fz), nz - 1)))
                       : kOutside;
   }
-  // One pass, sums per occupied cell in order of first appearance.
+  // One pass, sums per occupied cell in order of first appearance. Consecutive points in one cell
+  // (a lidar's scan order keeps neighbours together) are summed in `run`, a copy of the cell's sums
+  // that goes back when the cell changes: the same additions in the same order as one point at a
+  // time, without a trip through memory for every point.
   std::vector<CellSums> sums;
+  // At most one cell per point: the vector never reallocates (the prefetches below point into it).
   sums.reserve(std::min(reference.size(), index_.size()));
   std::int32_t* index = index_.data();
   constexpr std::size_t kIndexAhead = 16, kSumsAhead = 8;
+  CellSums run;
+  std::size_t run_slot = 0;
+  std::uint32_t run_cell = kOutside;
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (i + kIndexAhead < cells.size() && cells[i + kIndexAhead] != kOutside)
       __builtin_prefetch(index + cells[i + kIndexAhead]);
@@ -154,22 +161,28 @@ std::vector<CellSums> NdtGrid::split(const PointCloud& reference) {
     }
     const std::uint32_t cell = cells[i];
     if (cell == kOutside) continue;
-    std::int32_t& slot = index[cell];
-    if (slot < 0) {
-      slot = static_cast<std::int32_t>(sums.size());
-      CellSums& fresh = sums.emplace_back();
-      fresh.cell = static_cast<std::int32_t>(cell);
-      const Eigen::Vector3i c = cell_coordinates(cell);
-      fresh.x = c.x(), fresh.y = c.y(), fresh.z = c.z();
+    if (cell != run_cell) {
+      if (run_cell != kOutside) sums[run_slot] = run;
+      std::int32_t& slot = index[cell];
+      if (slot < 0) {
+        slot = static_cast<std::int32_t>(sums.size());
+        CellSums& fresh = sums.emplace_back();
+        fresh.cell = static_cast<std::int32_t>(cell);
+        const Eigen::Vector3i c = cell_coordinates(cell);
+        fresh.x = c.x(), fresh.y = c.y(), fresh.z = c.z();
+      }
+      run_slot = static_cast<std::size_t>(slot);
+      run_cell = cell;
+      run = sums[run_slot];
     }
     const double px = static_cast<double>(points[i].x()) - ox, py = static_cast<double>(points[i].y()) - oy,
                  pz = static_cast<double>(points[i].z()) - oz;
-    CellSums& s = sums[static_cast<std::size_t>(slot)];
-    ++s.count;
-    s.sum[0] += px, s.sum[1] += py, s.sum[2] += pz;
-    s.sum_sq[0] += px * px, s.sum_sq[1] += px * py, s.sum_sq[2] += px * pz;
-    s.sum_sq[3] += py * py, s.sum_sq[4] += py * pz, s.sum_sq[5] += pz * pz;
+    ++run.count;
+    run.sum[0] += px, run.sum[1] += py, run.sum[2] += pz;
+    run.sum_sq[0] += px * px, run.sum_sq[1] += px * py, run.sum_sq[2] += px * pz;
+    run.sum_sq[3] += py * py, run.sum_sq[4] += py * pz, run.sum_sq[5] += pz * pz;
   }
+  if (run_cell != kOutside) sums[run_slot] = run;
   return sums;
 }
 

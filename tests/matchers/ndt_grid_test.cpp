@@ -70,6 +70,44 @@ TEST(NdtGrid, MeanCovarianceAndLookup) {
   }
 }
 
+// split() sums a run of consecutive points in one cell in registers (scan order): every cell must
+// come out bit for bit as when its points arrive interleaved with another cell's, and as when a
+// cell's points come in several runs, with the cell changing between them.
+TEST(NdtGrid, RunsOfPointsInOneCellSumAsPointsOneAtATime) {
+  Rng rng(11);
+  std::vector<Eigen::Vector3f> a, b;  // cells (0, 0, 0) and (1, 0, 0)
+  for (int i = 0; i < 40; ++i) {
+    a.emplace_back(0.9f * static_cast<float>(rng.uniform()), 0.9f * static_cast<float>(rng.uniform()),
+                   0.9f * static_cast<float>(rng.uniform()));
+    b.emplace_back(1.05f + 0.9f * static_cast<float>(rng.uniform()), 0.9f * static_cast<float>(rng.uniform()),
+                   0.3f * static_cast<float>(rng.uniform()));
+  }
+  PointCloud runs, interleaved, chunks;  // a…a b…b; a b a b …; 10 a, 10 b, 10 a, …
+  for (const auto& p : a) runs.push_back(p);
+  for (const auto& p : b) runs.push_back(p);
+  for (std::size_t i = 0; i < a.size(); ++i) interleaved.push_back(a[i]), interleaved.push_back(b[i]);
+  for (std::size_t i = 0; i < a.size(); i += 10) {
+    for (std::size_t j = i; j < i + 10; ++j) chunks.push_back(a[j]);
+    for (std::size_t j = i; j < i + 10; ++j) chunks.push_back(b[j]);
+  }
+  const auto build = [](const PointCloud& cloud) {
+    return NdtGrid::build(cloud, Eigen::Vector3d::Zero(), 1.0, {2, 1, 1});
+  };
+  const NdtGrid expected = build(runs);
+  ASSERT_EQ(expected.gaussian_count(), 2u);
+  EXPECT_NEAR(expected.gaussian(expected.lookup(0.5f, 0.5f, 0.5f)).mean[1], 0.45, 0.1);
+  for (const PointCloud* cloud : {&interleaved, &chunks}) {
+    const NdtGrid grid = build(*cloud);
+    ASSERT_EQ(grid.gaussian_count(), 2u);
+    for (const float x : {0.5f, 1.5f}) {
+      const CellGaussian &want = expected.gaussian(expected.lookup(x, 0.5f, 0.5f)),
+                         &got = grid.gaussian(grid.lookup(x, 0.5f, 0.5f));
+      for (int i = 0; i < 3; ++i) EXPECT_EQ(got.mean[i], want.mean[i]) << "cell at x = " << x;
+      for (int i = 0; i < 6; ++i) EXPECT_EQ(got.inv_cov[i], want.inv_cov[i]) << "cell at x = " << x;
+    }
+  }
+}
+
 TEST(NdtGrid, CoplanarCellIsInflatedToRatio100) {
   PointCloud cloud;
   for (int i = 0; i < 10; ++i)
