@@ -248,7 +248,14 @@ RpeResult relative_pose_error(const PoseList& estimate, const PoseList& referenc
     return r;
   }
   std::vector<Eigen::Vector3d> rotation_vectors, translations;
+  std::vector<double> along;  // the scale error's terms [m]
+  double path = 0.0;          // the reference's motion over those pairs [m]
   for (const auto& [i, j] : r.pairs) {
+    const Eigen::Vector3d moved = relative(reference[i], reference[j]).translation();
+    if (moved.norm() >= kScaleMinMotion) {
+      along.push_back((relative(estimate[i], estimate[j]).translation() - moved).dot(moved.normalized()));
+      path += moved.norm();
+    }
     const Eigen::Isometry3d E = relative_error(estimate, reference, i, j);
     r.translation_errors.push_back(translation_norm(E));
     r.rotation_errors.push_back(rotation_angle(E));
@@ -260,6 +267,14 @@ RpeResult relative_pose_error(const PoseList& estimate, const PoseList& referenc
   r.rotation = summarize(r.rotation_errors);
   mean_and_standard_error(rotation_vectors, r.mean_rotation_vector, r.rotation_vector_standard_error);
   mean_and_standard_error(translations, r.mean_translation, r.translation_standard_error);
+  r.scale_pairs = along.size();
+  r.scale_error = r.scale_standard_error = std::numeric_limits<double>::quiet_NaN();
+  if (!along.empty()) {
+    const SampleStats a = summarize(along);  // its SD: 0 for one pair
+    const auto n = static_cast<double>(a.count);
+    r.scale_error = a.mean * n / path;
+    r.scale_standard_error = a.std * std::sqrt(n) / path;
+  }
   return r;
 }
 

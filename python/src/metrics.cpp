@@ -106,6 +106,10 @@ py::dict rpe(const py::object& reference, const py::object& estimate, double del
   d["rotation_vector_standard_error"] = vec3(r.rotation_vector_standard_error);
   d["mean_translation"] = vec3(r.mean_translation);
   d["translation_standard_error"] = vec3(r.translation_standard_error);
+  // The motions' scale error along the reference's motion (fraction), its standard error and pairs.
+  d["scale_error"] = r.scale_error;
+  d["scale_standard_error"] = r.scale_standard_error;
+  d["scale_pairs"] = r.scale_pairs;
   return d;
 }
 
@@ -205,7 +209,9 @@ void bind_metrics(py::module_& m) {
       "statistics, per-pair errors, the pairs (K×2), and per axis the signed mean of E_ij in pose "
       "i's frame with its standard error: mean_rotation_vector (rad), rotation_vector_standard_error, "
       "mean_translation (m), translation_standard_error (a bias every step shares lies many "
-      "standard errors from 0).",
+      "standard errors from 0); scale_error, the motions' shortfall (< 0) or excess along the "
+      "reference's motion over its path (a fraction), with scale_standard_error and scale_pairs "
+      "(pairs whose reference moves at least 1 cm).",
       py::arg("reference"), py::arg("estimate"), py::arg("delta") = 1.0, py::arg("unit") = "frames",
       py::arg("all_pairs") = false, py::arg("tolerance") = 0.1);
   metrics.def(

@@ -207,6 +207,42 @@ TEST(Rpe, SignedMeanSeparatesABiasFromNoise) {
   }
 }
 
+// Every motion 0.5 % short along a path that turns: the scale error is −0.5 % with no spread. Steps
+// ±1 % in turn: no scale error, a standard error of 1 %·√(20/19)/√20. Standing still (motions under
+// kScaleMinMotion) has no direction: no pairs.
+TEST(Rpe, ScaleErrorIsTheMotionsShortfallAlongTheReference) {
+  const double turn = 10.0 * std::acos(-1.0) / 180.0;
+  for (const bool alternating : {false, true}) {
+    PoseList ref, est;
+    Eigen::Isometry3d r = Eigen::Isometry3d::Identity(), e = r;
+    for (int i = 0; i < 21; ++i) {
+      ref.push_back(r);
+      est.push_back(e);
+      const double scale = alternating ? (i % 2 == 0 ? 1.01 : 0.99) : 0.995;
+      const Eigen::AngleAxisd yaw(turn, Eigen::Vector3d::UnitZ());
+      r = r * at(1.2, 1.6) * yaw;  // 2 m, not along an axis of the pose (a sideways-mounted scanner)
+      e = e * at(1.2 * scale, 1.6 * scale) * yaw;
+    }
+    const RpeResult rpe = relative_pose_error(est, ref);
+    ASSERT_TRUE(rpe.status.ok);
+    EXPECT_EQ(rpe.scale_pairs, 20u);
+    if (alternating) {
+      EXPECT_NEAR(rpe.scale_error, 0.0, 1e-12);
+      EXPECT_NEAR(rpe.scale_standard_error, 0.01 * std::sqrt(20.0 / 19.0) / std::sqrt(20.0), 1e-12);
+    } else {
+      EXPECT_NEAR(rpe.scale_error, -0.005, 1e-12);
+      EXPECT_NEAR(rpe.scale_standard_error, 0.0, 1e-12);
+      EXPECT_NEAR(rpe.mean_translation.norm(), 0.01, 1e-12);  // split over the axes of E's frame
+      EXPECT_GT(std::abs(rpe.mean_translation.y()), 0.005);
+    }
+  }
+  const PoseList still(5, Eigen::Isometry3d::Identity());
+  const RpeResult none = relative_pose_error(still, still);
+  ASSERT_TRUE(none.status.ok);
+  EXPECT_EQ(none.scale_pairs, 0u);
+  EXPECT_TRUE(std::isnan(none.scale_error));
+}
+
 TEST(KittiDrift, ConstantScaleError) {
   // A straight 999 m line with 1 m spacing; the estimate is 2 % too long. The devkit's last frame
   // has dist > first + L, i.e. L + 1 steps later, so each segment's error is 0.02·(L + 1) / L.

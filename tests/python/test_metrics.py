@@ -103,6 +103,10 @@ def test_scaled_path():
     assert sim3["alignment"]["scale"] == pytest.approx(1 / 1.1, abs=1e-12)
     assert metrics.rpe(reference, estimate)["translation_rms"] == pytest.approx(0.1, abs=1e-12)
     assert metrics.rpe(reference, estimate, delta=2)["translation_rms"] == pytest.approx(0.2, abs=1e-12)
+    rpe = metrics.rpe(reference, estimate)
+    assert rpe["scale_error"] == pytest.approx(0.1, abs=1e-12)  # every motion 10 % long
+    assert rpe["scale_standard_error"] == pytest.approx(0.0, abs=1e-12)
+    assert rpe["scale_pairs"] == 10
     assert metrics.kuemmerle(reference, estimate)["translation_rms"] == pytest.approx(0.1, abs=1e-12)
     # Kümmerle over chosen relations, one with its reference motion given (reference may be None)
     given = metrics.kuemmerle(None, estimate, relations=[(0, 10, sextant.pose_to_matrix(10, 0, 0, 0, 0, 0))])

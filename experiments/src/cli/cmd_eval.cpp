@@ -158,7 +158,10 @@ int run_eval(const EvalOptions& o) {
                      {{"rotation_deg", vector_json(e.rpe.mean_rotation_vector, deg)},
                       {"rotation_deg_standard_error", vector_json(e.rpe.rotation_vector_standard_error, deg)},
                       {"translation_m", vector_json(e.rpe.mean_translation, 1.0)},
-                      {"translation_m_standard_error", vector_json(e.rpe.translation_standard_error, 1.0)}}},
+                      {"translation_m_standard_error", vector_json(e.rpe.translation_standard_error, 1.0)},
+                      {"scale_percent", json_value(100.0 * e.rpe.scale_error)},
+                      {"scale_percent_standard_error", json_value(100.0 * e.rpe.scale_standard_error)},
+                      {"scale_pairs", e.rpe.scale_pairs}}},
                     {"rpe_delta", json_value(o.delta)},
                     {"rpe_delta_unit", o.delta_unit},
                     {"wulf_position_m", json_value(e.wulf.position_rms)},
@@ -209,6 +212,10 @@ int run_eval(const EvalOptions& o) {
             << bias_text(e.rpe.mean_rotation_vector, e.rpe.rotation_vector_standard_error, deg, 4, "°")
             << "; translation "
             << bias_text(e.rpe.mean_translation, e.rpe.translation_standard_error, 1.0, 4, " m") << "\n";
+  if (e.rpe.scale_pairs > 0)
+    std::cout << "motion scale error (along the reference's motion, over " << e.rpe.scale_pairs
+              << " pairs): " << fixed(100.0 * e.rpe.scale_error, 4) << " ± "
+              << fixed(100.0 * e.rpe.scale_standard_error, 4) << " %\n";
   if (verbosity() == Verbosity::kVerbose) {
     std::cout << "\n| KITTI segment [m] | segments | drift [%] | [°/100 m] |\n|---|---|---|---|\n";
     for (const KittiSegmentDrift& d : e.drift.per_length)
