@@ -75,10 +75,11 @@ void add_info_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--markdown", *markdown, "Experiments: print a Markdown table");
   cmd->callback([&exit_code, path, markdown] {
     exit_code = guarded([path, markdown] {
-      std::error_code ec;  // a symlink loop: the reader names it
-      if (names_builtin_campus(*path) && !std::filesystem::exists(*path, ec)) {
+      std::error_code ec;  // a symlink loop or no permission: the reader names it
+      const bool missing = !std::filesystem::exists(*path, ec) && !ec;
+      if (missing && names_builtin_campus(*path)) {
         describe_dataset(*open_builtin_campus(1), "(built in: the synthetic campus, seed 1, cast when read)");
-      } else if (!std::filesystem::exists(*path, ec)) {
+      } else if (missing) {
         throw InputError(*path, "",
                          "no such file or folder (expected a cloud file, a dataset folder, an experiment "
                          "YAML or a folder of them, or 'campus')");
