@@ -3,8 +3,8 @@
 # campus and the two trustworthy stretches of the shared MulRan Riverside02 excerpt (0–107 and
 # 116–165; its reference is wrong in between, see ../shared/data/README.md), then the same scans
 # with PCL's GICP (`--method pcl_gicp --map scan --no-recover`: a plain GICP loop) as the baseline
-# row. Prints one table: ATE, RPE, KITTI drift, the signed mean pitch error per step with its
-# standard error (`sextant eval`), for MulRan the KITTI drift against the reference's own
+# row. Prints one table: ATE, RPE, KITTI drift, the signed mean pitch error per step and the
+# motions' scale error, each with its standard error (`sextant eval`), for MulRan the KITTI drift against the reference's own
 # lidar-inertial odometry as well (`lio_odometry_poses.txt`, FAST-LIO2 before its pose graph: how
 # far the reference's two versions lie apart bounds what the reference can judge), time per scan
 # (wall: the whole run over its steps; registration: the registrations' own seconds over the steps,
@@ -19,6 +19,11 @@ cd "$(dirname "$0")/.."
 # shellcheck source=bench/sequence_common.sh
 source bench/sequence_common.sh "$@"
 
+# "<scale error> <its standard error>" in percent from `sextant eval --json` (RpeResult::scale_error).
+scale_of() {
+  sed -E 's/.*"scale_percent": ([^,]*), "scale_percent_standard_error": ([^,]*),.*/\1 \2/' <<<"$1"
+}
+
 run() {  # run <id> <label> <row> <method> <dataset> <second reference (KITTI) or -> [odometry options...]
   local id=$1 label=$2 row=$3 method=$4 dataset=$5 second=$6
   shift 6
@@ -31,27 +36,30 @@ run() {  # run <id> <label> <row> <method> <dataset> <second reference (KITTI) o
   # included), without loading or generating the scans and building the local map.
   registration=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "seconds") c = i; next }
                          { s += $c } END { printf "%.6f", s }' "$dir/steps.csv")
-  # The RPE's signed mean pitch per step and its standard error (`sextant eval`): a drift made of one
-  # bias every step shares.
-  pitch=$("$sextant" eval "$dir/groundtruth.tum" "$dir/trajectory.tum" --json |
-          sed -E 's/.*"rotation_deg": \[[^,]*, ([^,]*),.*"rotation_deg_standard_error": \[[^,]*, ([^,]*),.*/\1 \2/')
+  # The RPE's signed mean pitch per step and the motions' scale error, each with its standard error
+  # (`sextant eval`): a drift made of one bias every step shares.
+  local accuracy scale
+  accuracy=$("$sextant" eval "$dir/groundtruth.tum" "$dir/trajectory.tum" --json)
+  pitch=$(sed -E 's/.*"rotation_deg": \[[^,]*, ([^,]*),.*"rotation_deg_standard_error": \[[^,]*, ([^,]*),.*/\1 \2/' <<<"$accuracy")
+  scale=$(scale_of "$accuracy")
   [ "$second" = - ] || second_drift=$("$sextant" eval "$second" "$dir/trajectory.kitti.txt" --format kitti --json |
                                      sed -E 's/.*"drift_percent": ([-0-9.eE+]+|null).*/\1/')
   awk -v label="$label" -v method="$row" -v steps="$steps" -v secs="$(top "$m" seconds)" \
-      -v registration="$registration" -v pitch="$pitch" -v second="$second_drift" \
+      -v registration="$registration" -v pitch="$pitch" -v scale="$scale" -v second="$second_drift" \
       -v ate="$(field "$m" estimate ate_m)" -v rpe="$(field "$m" estimate rpe_m)" \
       -v rpedeg="$(field "$m" estimate rpe_deg)" -v drift="$(field "$m" estimate drift_percent)" \
       -v untrusted="$(top "$m" untrusted)" -v recovered="$(top "$m" recovered)" \
       -v nc="$(top "$m" not_converged)" 'BEGIN {
         split(pitch, p, " ")
+        split(scale, s, " ")
         second = second == "-" ? "–" : sprintf("%.2f", second)
-        printf "| %s | %s | %.3f | %.3f / %.2f | %.2f | %s | %.3f ± %.3f | %.1f | %.1f | %d | %d | %d |\n", label, method,
-               ate, rpe, rpedeg, drift, second, p[1], p[2], 1000 * secs / steps, 1000 * registration / steps, nc, untrusted,
-               recovered }'
+        printf "| %s | %s | %.3f | %.3f / %.2f | %.2f | %s | %.3f ± %.3f | %.3f ± %.3f | %.1f | %.1f | %d | %d | %d |\n", label,
+               method, ate, rpe, rpedeg, drift, second, p[1], p[2], s[1], s[2], 1000 * secs / steps,
+               1000 * registration / steps, nc, untrusted, recovered }'
 }
 
-echo "| sequence | method | ATE [m] | RPE per step [m / °] | KITTI drift [%] | drift against the reference's lidar-inertial odometry [%] | pitch bias per step [°] | ms per scan | registration ms per scan | not converged | untrusted | recovered |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| sequence | method | ATE [m] | RPE per step [m / °] | KITTI drift [%] | drift against the reference's lidar-inertial odometry [%] | pitch bias per step [°] | motion scale error [%] | ms per scan | registration ms per scan | not converged | untrusted | recovered |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 # A MulRan stretch's rows of the reference and of its lidar-inertial odometry (KITTI files).
 stretch() {  # stretch <first scan> <scans>: writes $out/{reference,lio_odometry}_<first>.txt
   local rows="$(($1 + 1)),$(($1 + $2))p"
@@ -77,9 +85,11 @@ done
 # The reference's two versions against each other: its lidar-inertial odometry scored against the
 # reference like an estimate (no timing, no trust: it is not a Sextant run).
 reference_row() {  # reference_row <label> <first scan of the stretch>
-  "$sextant" eval "$out/reference_$2.txt" "$out/lio_odometry_$2.txt" --format kitti --json |
-    sed -E 's/.*"summary": \{[^}]*"ate_m": ([^,]*),[^}]*"rpe_m": ([^,]*), "rpe_deg": ([^,]*),[^}]*"drift_percent": ([^,]*),.*"rotation_deg": \[[^,]*, ([^,]*),.*"rotation_deg_standard_error": \[[^,]*, ([^,]*),.*/\1 \2 \3 \4 \5 \6/' |
-    awk -v label="$1" '{ printf "| %s | the reference'"'"'s lidar-inertial odometry | %.3f | %.3f / %.2f | %.2f | – | %.3f ± %.3f | – | – | – | – | – |\n", label, $1, $2, $3, $4, $5, $6 }'
+  local accuracy
+  accuracy=$("$sextant" eval "$out/reference_$2.txt" "$out/lio_odometry_$2.txt" --format kitti --json)
+  sed -E 's/.*"summary": \{[^}]*"ate_m": ([^,]*),[^}]*"rpe_m": ([^,]*), "rpe_deg": ([^,]*),[^}]*"drift_percent": ([^,]*),.*"rotation_deg": \[[^,]*, ([^,]*),.*"rotation_deg_standard_error": \[[^,]*, ([^,]*),.*/\1 \2 \3 \4 \5 \6/' <<<"$accuracy" |
+    awk -v label="$1" -v scale="$(scale_of "$accuracy")" '{ split(scale, s, " ")
+      printf "| %s | the reference'"'"'s lidar-inertial odometry | %.3f | %.3f / %.2f | %.2f | – | %.3f ± %.3f | %.3f ± %.3f | – | – | – | – | – |\n", label, $1, $2, $3, $4, $5, $6, s[1], s[2] }'
 }
 reference_row "MulRan 0–107" 0
 reference_row "MulRan 116–165" 116
