@@ -252,9 +252,10 @@ RpeResult relative_pose_error(const PoseList& estimate, const PoseList& referenc
   double path = 0.0;          // the reference's motion over those pairs [m]
   for (const auto& [i, j] : r.pairs) {
     const Eigen::Vector3d moved = relative(reference[i], reference[j]).translation();
-    if (moved.norm() >= kScaleMinMotion) {
-      along.push_back((relative(estimate[i], estimate[j]).translation() - moved).dot(moved.normalized()));
-      path += moved.norm();
+    const double length = moved.norm();
+    if (length >= kScaleMinMotion) {
+      along.push_back((relative(estimate[i], estimate[j]).translation() - moved).dot(moved) / length);
+      path += length;
     }
     const Eigen::Isometry3d E = relative_error(estimate, reference, i, j);
     r.translation_errors.push_back(translation_norm(E));

@@ -175,20 +175,24 @@ TEST(Rpe, ConstantStepErrorGivesConstantRelativeError) {
   EXPECT_FALSE(relative_pose_error(est, PoseList{}, s).status.ok);
 }
 
+/// `count` poses from the identity, pose i + 1 = pose i · step(i).
+template <class Step>
+PoseList chained(int count, Step step) {
+  PoseList poses{Eigen::Isometry3d::Identity()};
+  for (int i = 0; i + 1 < count; ++i) poses.push_back(poses.back() * step(i));
+  return poses;
+}
+
 // Every step pitched up by the same 0.1° is a bias many standard errors from 0; steps pitched up and
 // down by 0.1° in turn have the same unsigned RPE but no bias.
 TEST(Rpe, SignedMeanSeparatesABiasFromNoise) {
   const double pitch = 0.1 * std::acos(-1.0) / 180.0;
   for (const bool alternating : {false, true}) {
-    PoseList ref, est;
-    Eigen::Isometry3d r = Eigen::Isometry3d::Identity(), e = r;
-    for (int i = 0; i < 21; ++i) {
-      ref.push_back(r);
-      est.push_back(e);
+    const PoseList ref = chained(21, [](int) { return at(1.0, 0.0); });
+    const PoseList est = chained(21, [&](int i) {
       const double sign = alternating && i % 2 == 1 ? -1.0 : 1.0;
-      r = r * at(1.0, 0.0);
-      e = e * at(1.0, 0.0) * Eigen::AngleAxisd(sign * pitch, Eigen::Vector3d::UnitY());
-    }
+      return at(1.0, 0.0) * Eigen::AngleAxisd(sign * pitch, Eigen::Vector3d::UnitY());
+    });
     const RpeResult rpe = relative_pose_error(est, ref);
     ASSERT_TRUE(rpe.status.ok);
     ASSERT_EQ(rpe.pairs.size(), 20u);
@@ -213,16 +217,13 @@ TEST(Rpe, SignedMeanSeparatesABiasFromNoise) {
 TEST(Rpe, ScaleErrorIsTheMotionsShortfallAlongTheReference) {
   const double turn = 10.0 * std::acos(-1.0) / 180.0;
   for (const bool alternating : {false, true}) {
-    PoseList ref, est;
-    Eigen::Isometry3d r = Eigen::Isometry3d::Identity(), e = r;
-    for (int i = 0; i < 21; ++i) {
-      ref.push_back(r);
-      est.push_back(e);
+    const Eigen::AngleAxisd yaw(turn, Eigen::Vector3d::UnitZ());
+    // 2 m, not along an axis of the pose (a sideways-mounted scanner)
+    const PoseList ref = chained(21, [&](int) { return at(1.2, 1.6) * yaw; });
+    const PoseList est = chained(21, [&](int i) {
       const double scale = alternating ? (i % 2 == 0 ? 1.01 : 0.99) : 0.995;
-      const Eigen::AngleAxisd yaw(turn, Eigen::Vector3d::UnitZ());
-      r = r * at(1.2, 1.6) * yaw;  // 2 m, not along an axis of the pose (a sideways-mounted scanner)
-      e = e * at(1.2 * scale, 1.6 * scale) * yaw;
-    }
+      return at(1.2 * scale, 1.6 * scale) * yaw;
+    });
     const RpeResult rpe = relative_pose_error(est, ref);
     ASSERT_TRUE(rpe.status.ok);
     EXPECT_EQ(rpe.scale_pairs, 20u);
