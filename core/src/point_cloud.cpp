@@ -4,6 +4,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
+
 namespace sextant {
 
 double Bounds::volume() const {
@@ -59,11 +63,36 @@ Bounds PointCloud::bounds() const {
   Bounds b;
   const PointsView points = this->points();
   if (points.empty()) return b;
-  b.min = b.max = points.front();
-  for (const auto& p : points) {
-    b.min = b.min.cwiseMin(p);
-    b.max = b.max.cwiseMax(p);
+  // The coordinates as one float array, four points (12 floats) at a time into 12 running minima and
+  // maxima, slot j holding axis j % 3. Every update is std::min(m, x) = x < m ? x : m (a NaN
+  // coordinate never replaces a number; _mm_min_ps(x, m) is the same), so the result is the same as
+  // one point at a time.
+  const float* c = points.data()->data();
+  const std::size_t n = points.size();
+  alignas(16) float lo[12], hi[12];
+  for (int j = 0; j < 12; ++j) lo[j] = hi[j] = c[j % 3];
+  std::size_t i = 0;
+#if defined(__SSE2__)
+  __m128 lo4[3], hi4[3];
+  for (int k = 0; k < 3; ++k) lo4[k] = hi4[k] = _mm_load_ps(lo + 4 * k);
+  for (; i + 4 <= n; i += 4, c += 12)
+    for (int k = 0; k < 3; ++k) {
+      const __m128 x = _mm_loadu_ps(c + 4 * k);
+      lo4[k] = _mm_min_ps(x, lo4[k]);
+      hi4[k] = _mm_max_ps(x, hi4[k]);
+    }
+  for (int k = 0; k < 3; ++k) _mm_store_ps(lo + 4 * k, lo4[k]), _mm_store_ps(hi + 4 * k, hi4[k]);
+#else
+  for (; i + 4 <= n; i += 4, c += 12)
+    for (int j = 0; j < 12; ++j) lo[j] = std::min(lo[j], c[j]), hi[j] = std::max(hi[j], c[j]);
+#endif
+  for (int a = 0; a < 3; ++a) {
+    b.min(a) = lo[a], b.max(a) = hi[a];
+    for (int j = a + 3; j < 12; j += 3)
+      b.min(a) = std::min(b.min(a), lo[j]), b.max(a) = std::max(b.max(a), hi[j]);
   }
+  for (; i < n; ++i, c += 3)
+    for (int a = 0; a < 3; ++a) b.min(a) = std::min(b.min(a), c[a]), b.max(a) = std::max(b.max(a), c[a]);
   return b;
 }
 

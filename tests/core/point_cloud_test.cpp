@@ -1,6 +1,7 @@
 // A borrowed cloud reads another's memory until it is changed; copies always own their points.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -25,6 +26,41 @@ TEST(PointCloud, ABorrowedCloudReadsTheMemoryInPlace) {
   EXPECT_EQ(cloud.bounds().min, Eigen::Vector3f(-4, -8, 3));
   EXPECT_EQ(cloud.subset({2, 0}).points(), PointsView(std::vector<Eigen::Vector3f>{memory[2], memory[0]}));
   EXPECT_FALSE(PointCloud::borrow(memory.data(), 0).borrowed());
+}
+
+/// The bounds one point at a time, std::min / std::max per coordinate (what bounds() must equal).
+Bounds bounds_one_at_a_time(const std::vector<Eigen::Vector3f>& points) {
+  Bounds b;
+  if (points.empty()) return b;
+  b.min = b.max = points.front();
+  for (const Eigen::Vector3f& p : points)
+    for (int a = 0; a < 3; ++a) b.min(a) = std::min(b.min(a), p(a)), b.max(a) = std::max(b.max(a), p(a));
+  return b;
+}
+
+// bounds() takes four points at a time in twelve lanes: every size around a multiple of four, the
+// extremes in every lane and in the tail, and a NaN coordinate (which, after a first number, never
+// replaces one) must give the same box as one point at a time.
+TEST(PointCloud, BoundsAreThoseOfOnePointAtATime) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (std::size_t n = 1; n <= 13; ++n)
+    for (std::size_t extreme = 0; extreme < n; ++extreme)
+      for (const bool with_nan : {false, true}) {
+        std::vector<Eigen::Vector3f> points;
+        for (std::size_t i = 0; i < n; ++i)
+          points.emplace_back(static_cast<float>(i % 3), -static_cast<float>(i % 5),
+                              0.5f * static_cast<float>(i));
+        points[extreme] = Eigen::Vector3f(-100.0f - static_cast<float>(extreme), 50.0f, -7.0f);
+        if (with_nan && n > 1) points[(extreme + 1) % n].y() = nan;
+        const Bounds want = bounds_one_at_a_time(points);
+        const Bounds got = PointCloud::borrow(points.data(), points.size()).bounds();
+        for (int a = 0; a < 3; ++a) {
+          const bool both_nan = std::isnan(want.min(a)) && std::isnan(got.min(a));
+          EXPECT_TRUE(both_nan || got.min(a) == want.min(a)) << "n " << n << ", extreme " << extreme;
+          EXPECT_TRUE(std::isnan(want.max(a)) ? std::isnan(got.max(a)) : got.max(a) == want.max(a))
+              << "n " << n << ", extreme " << extreme;
+        }
+      }
 }
 
 TEST(PointCloud, ChangingABorrowedCloudCopiesItFirst) {
