@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <utility>
 
 #include <Eigen/Eigenvalues>
@@ -129,8 +130,9 @@ std::vector<CellSums> NdtGrid::split(const PointCloud& reference) {
   // comparison, ∞ exceeds the far face), so that the accumulation below can prefetch the cells of
   // points ahead: the index and the sums are read in the points' (random) order.
   constexpr std::uint32_t kOutside = 0xffffffffu;
-  std::vector<std::uint32_t> cells(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
+  const std::size_t n = points.size();
+  const std::unique_ptr<std::uint32_t[]> cells(new std::uint32_t[n]);  // each written below, not zeroed first
+  for (std::size_t i = 0; i < n; ++i) {
     const double fx = (static_cast<double>(points[i].x()) - ox) * inv_edge,
                  fy = (static_cast<double>(points[i].y()) - oy) * inv_edge,
                  fz = (static_cast<double>(points[i].z()) - oz) * inv_edge;
@@ -152,10 +154,10 @@ std::vector<CellSums> NdtGrid::split(const PointCloud& reference) {
   CellSums run;
   std::size_t run_slot = 0;
   std::uint32_t run_cell = kOutside;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (i + kIndexAhead < cells.size() && cells[i + kIndexAhead] != kOutside)
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i + kIndexAhead < n && cells[i + kIndexAhead] != kOutside)
       __builtin_prefetch(index + cells[i + kIndexAhead]);
-    if (i + kSumsAhead < cells.size() && cells[i + kSumsAhead] != kOutside) {
+    if (i + kSumsAhead < n && cells[i + kSumsAhead] != kOutside) {
       const std::int32_t ahead = index[cells[i + kSumsAhead]];
       if (ahead >= 0) __builtin_prefetch(sums.data() + ahead, 1);
     }
