@@ -5,19 +5,21 @@
 # dataset of links to the shared keyframes with the matching rows of poses.txt (and times.txt), run
 # with `sextant odometry` and no options. Prints, per variant, the steps more than 1 m or 5° off the
 # reference, how many of them say trusted (the number that must be 0), the untrusted steps, the KITTI
-# drift and the time per scan.
+# drift and the time per scan, for each GBS seed in $SEEDS (default 1; `--seed`): the input sample
+# is random, and a result that holds for one draw only is not a result.
 #
-#   bench/variants.sh [build/experiments/sextant] [path/to/mulran_riverside02] [output folder]
+#   [SEEDS="1 2 3 4 5"] bench/variants.sh [build/experiments/sextant] [path/to/mulran_riverside02] [output folder]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=bench/sequence_common.sh
 source bench/sequence_common.sh "$@"
+seeds=${SEEDS:-1}
 
 variant() {  # variant <name> <with times: yes|no> <keyframe numbers...>
   local name=$1 times=$2 n=0 i
   shift 2
   local dir="$out/$name"
-  rm -rf "$dir" "$dir.out"
+  rm -rf "$dir" "$dir".seed*
   mkdir -p "$dir/scans"
   : >"$dir/poses.txt"
   for i in "$@"; do
@@ -26,19 +28,22 @@ variant() {  # variant <name> <with times: yes|no> <keyframe numbers...>
     [ "$times" = yes ] && sed -n "$((i + 1))p" "$mulran/times.txt" >>"$dir/times.txt"
     n=$((n + 1))
   done
-  "$sextant" odometry "$dir" --out "$dir.out" --no-progress >"$dir.log" 2>&1 ||
-    { echo "| $name | failed: see $dir.log |"; return; }
-  local m="$dir.out/metrics.json"
-  awk -F, -v name="$name" -v drift="$(field "$m" estimate drift_percent)" -v secs="$(top "$m" seconds)" '
-    NR == 1 { for (c = 1; c <= NF; ++c) col[$c] = c; next }
-    { ++steps; wrong = $col["error_m"] > 1 || $col["error_deg"] > 5
-      bad += wrong; trusted_bad += wrong && $col["trust"] == "ok"; untrusted += $col["trust"] != "ok" }
-    END { printf "| %s | %d | %d | **%d** | %d | %.2f | %.1f |\n", name, steps, bad, trusted_bad, untrusted,
-                 drift, 1000 * secs / steps }' "$dir.out/steps.csv"
+  local seed
+  for seed in $seeds; do
+    "$sextant" odometry "$dir" --seed "$seed" --out "$dir.seed$seed" --no-progress >"$dir.seed$seed.log" 2>&1 ||
+      { echo "| $name | $seed | failed: see $dir.seed$seed.log |"; continue; }
+    local m="$dir.seed$seed/metrics.json"
+    awk -F, -v name="$name" -v seed="$seed" -v drift="$(field "$m" estimate drift_percent)" -v secs="$(top "$m" seconds)" '
+      NR == 1 { for (c = 1; c <= NF; ++c) col[$c] = c; next }
+      { ++steps; wrong = $col["error_m"] > 1 || $col["error_deg"] > 5
+        bad += wrong; trusted_bad += wrong && $col["trust"] == "ok"; untrusted += $col["trust"] != "ok" }
+      END { printf "| %s | %s | %d | %d | **%d** | %d | %.2f | %.1f |\n", name, seed, steps, bad, trusted_bad,
+                   untrusted, drift, 1000 * secs / steps }' "$dir.seed$seed/steps.csv"
+  done
 }
 
-echo "| variant | steps | steps > 1 m or 5° off | of them trusted | untrusted | KITTI drift [%] | ms per scan |"
-echo "|---|---|---|---|---|---|---|"
+echo "| variant | GBS seed | steps | steps > 1 m or 5° off | of them trusted | untrusted | KITTI drift [%] | ms per scan |"
+echo "|---|---|---|---|---|---|---|---|"
 variant "0–107, every 2nd" yes $(seq 0 2 107)
 variant "0–107, every 3rd" yes $(seq 0 3 107)
 variant "0–107, every 2nd, no times" no $(seq 0 2 107)
