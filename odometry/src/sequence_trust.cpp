@@ -35,6 +35,18 @@ void SequenceTrust::check(RegistrationQuality& quality) const {
   }
 }
 
+void check_unconfirmed_no_motion(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
+                                 const QualitySettings& tolerance, double fit_factor) {
+  if (!quality.trusted() || quality.fit_ratio <= fit_factor ||
+      far_apart(relative, Eigen::Isometry3d::Identity(), tolerance))
+    return;
+  quality.trust = Trust::kSuspect;
+  quality.reason = fmt::format(
+      "no motion (within {} m and {}°) with fit {:.2f} × the prediction, above the {:.1f} of two scans from "
+      "one place, and no trusted motion yet: a lidar's rings coincide at no motion",
+      tolerance.ambiguity_metres, tolerance.ambiguity_degrees, quality.fit_ratio, fit_factor);
+}
+
 void SequenceTrust::record(const RegistrationQuality& quality) {
   if (!quality.trusted()) return;
   trusted_.push_back(quality);

@@ -34,6 +34,7 @@ OdometryStep StepWorker::first_try(const PointCloud& reference, const PointCloud
                                    const std::vector<Eigen::Isometry3d>& other_priors, bool search) {
   Rng rng(seed);
   const SampledInput sample = sample_input(*sampler_, input, rng);
+  motion_unknown_ = search;
   Matcher& matcher = search && recovery_ ? *recovery_ : *matcher_;
   PairMatch m = match_sample(matcher, sample, reference, guess, settings_.quality);
   matcher_reference_ = &matcher == matcher_.get() ? &reference : nullptr;
@@ -177,6 +178,10 @@ OdometryStep StepWorker::to_step(const PairMatch& m, const PointCloud& reference
   step.status = to_string(m.result.why);
   step.fallback = m.result.fallback;
   step.quality = m.result.quality;
+  // No motion is the answer a lidar's rings always offer: confirmed only by a fit as of one place,
+  // where no motion is known yet or the guess says the vehicle moves (sequence_trust.hpp).
+  if (motion_unknown_ || far_apart(guess, Eigen::Isometry3d::Identity(), settings_.quality))
+    check_unconfirmed_no_motion(step.quality, step.relative, settings_.quality);
   if (!step.relative.matrix().allFinite()) {  // never chain NaN: keep the guess, say so
     step.relative = guess;
     step.converged = false;

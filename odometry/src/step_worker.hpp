@@ -32,12 +32,12 @@ class StepWorker {
   /// is trusted; when none is, the step chains one of the registrations whose only flaw is their fit
   /// (suspect_choice.hpp), else `starts.back()` (the last trusted motion), and stays untrusted. The sequence
   /// check only triggers this search: the wide basin's answer is judged on its own
-  /// (registration_quality.hpp), since a step may rightly overlap less than its neighbours (a corner, an open
-  /// space; measured on the campus: right poses 0.70 where the median is 0.87). Every registration of
-  /// the step is an answer (the first, its alternatives, each recovery): a trusted recovery far from an
-  /// answer (QualitySettings' ambiguity tolerance) that does not fit clearly better than it is a second
-  /// answer, and when nothing else is trusted the step is chained as the least suspect and says it is
-  /// ambiguous.
+  /// (registration_quality.hpp; an answer of no motion by check_unconfirmed_no_motion too), since a step may
+  /// rightly overlap less than its neighbours (a corner, an open space; measured on the campus: right poses
+  /// 0.70 where the median is 0.87). Every registration of the step is an answer (the first, its
+  /// alternatives, each recovery): a trusted recovery far from an answer (QualitySettings' ambiguity
+  /// tolerance) that does not fit clearly better than it is a second answer, and when nothing else is trusted
+  /// the step is chained as the least suspect and says it is ambiguous.
   void recover(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
                const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed);
 
@@ -58,7 +58,10 @@ class StepWorker {
   /// matcher itself from the other starts; null when recovery is off.
   std::unique_ptr<Matcher> recovery_;
   bool wide_basin_ = false;
-  bool searched_ = false;        ///< this step's first registration was the wide basin's
+  bool searched_ = false;  ///< this step's first registration was the wide basin's
+  /// This step has no motion prior (search): its answers of no motion need confirming
+  /// (sequence_trust.hpp, check_unconfirmed_no_motion)
+  bool motion_unknown_ = false;
   std::vector<Answer> answers_;  ///< this step's answers so far (first_try, recover)
   std::unique_ptr<Sampler> sampler_;
   const OdometrySettings& settings_;

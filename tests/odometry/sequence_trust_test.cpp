@@ -50,5 +50,37 @@ TEST(SequenceTrust, WindowForgetsOldSteps) {
   EXPECT_TRUE(q.trusted()) << q.reason;
 }
 
+// No motion is what a lidar's rings always offer: without a trusted motion to confirm it, an answer
+// within the ambiguity distance of no motion is believed only when it fits as two scans from one
+// place do (fit ≤ 1.1 × the prediction). Moving answers, good fits and untrusted steps are left as they are.
+TEST(SequenceTrust, NoMotionIsTrustedOnlyWithTheFitOfOnePlace) {
+  const QualitySettings tolerance;  // 1 m, 5°
+  const auto moved = [](double x, double yaw_deg) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.translation().x() = x;
+    T.linear() = Eigen::AngleAxisd(yaw_deg * M_PI / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    return T;
+  };
+  RegistrationQuality standing_poorly = trusted(0.83, 1.28);
+  check_unconfirmed_no_motion(standing_poorly, moved(0.4, 1.0), tolerance);
+  EXPECT_EQ(standing_poorly.trust, Trust::kSuspect);
+  EXPECT_NE(standing_poorly.reason.find("fit 1.28"), std::string::npos) << standing_poorly.reason;
+  RegistrationQuality standing_well = trusted(0.97, 1.04);
+  check_unconfirmed_no_motion(standing_well, moved(0.4, 1.0), tolerance);
+  EXPECT_TRUE(standing_well.trusted()) << standing_well.reason;
+  RegistrationQuality driving = trusted(0.75, 1.28);  // 5.7 m: not the rings' answer
+  check_unconfirmed_no_motion(driving, moved(5.7, 0.0), tolerance);
+  EXPECT_TRUE(driving.trusted()) << driving.reason;
+  RegistrationQuality turning = trusted(0.8, 1.28);  // 8° of yaw in place: far from no motion too
+  check_unconfirmed_no_motion(turning, moved(0.0, 8.0), tolerance);
+  EXPECT_TRUE(turning.trusted()) << turning.reason;
+  RegistrationQuality low = trusted(0.3, 1.28);
+  low.trust = Trust::kLowOverlap;
+  low.reason = "30.0 % of the input matched";
+  check_unconfirmed_no_motion(low, moved(0.1, 0.0), tolerance);
+  EXPECT_EQ(low.trust, Trust::kLowOverlap);
+  EXPECT_EQ(low.reason, "30.0 % of the input matched");
+}
+
 }  // namespace
 }  // namespace sextant
