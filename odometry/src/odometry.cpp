@@ -6,6 +6,7 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <utility>
 #include <vector>
 
 #include <tbb/parallel_for.h>
@@ -13,6 +14,8 @@
 
 #include "sextant/core/error.hpp"
 #include "sextant/core/rng.hpp"
+#include "sextant/matchers/registration_centre.hpp"
+#include "sextant/odometry/common_view.hpp"
 #include "sextant/odometry/local_map.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/odometry/sequence_trust.hpp"
@@ -106,6 +109,16 @@ class StepCounter {
   std::mutex mutex_;
 };
 
+/// The reference and the input as a step registers them: with `common_view`, what both sensors see
+/// from `guess` (common_view.hpp; `reference_scan` is the scan whose sensor stands at the reference's
+/// origin), else the whole clouds. Scans not in their sensor's frame (no sensor could stand at the
+/// origin: registration_centre.hpp) are registered whole.
+void keep_what_both_see(PointCloud& reference, const PointCloud& reference_scan, PointCloud& input,
+                        const Eigen::Isometry3d& guess, bool common_view) {
+  if (!common_view || !registration_centre(reference).isZero()) return;
+  keep_common_view(reference, sensor_view(reference_scan), input, sensor_view(input), guess);
+}
+
 /// Guess odometry + map scan: the registrations are independent; scans are loaded and registered
 /// kChunk at a time, in parallel. Per-step seeds make the result independent of the thread count.
 std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometrySettings& s, std::size_t first,
@@ -120,14 +133,18 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
     tbb::parallel_for(begin, end, [&](std::size_t k) {
       chunk[k - begin] = load_sequence_scan(dataset, first + k, s.min_range);
     });
-    // Each step in its frame until its recovery is done (step_frame.hpp).
+    // Each step's clouds (what both sensors see) and its frame until its recovery is done (step_frame.hpp).
+    std::vector<std::pair<PointCloud, PointCloud>> seen(end - begin);
     std::vector<std::unique_ptr<StepFrame>> frames(end - begin);
     tbb::parallel_for(begin, end, [&](std::size_t k) {
+      const Eigen::Isometry3d guess = relative(odometry[k - 1], odometry[k]);
+      seen[k - begin] = {k == begin ? previous : chunk[k - 1 - begin], chunk[k - begin]};
+      auto& [reference, input] = seen[k - begin];
+      keep_what_both_see(reference, reference, input, guess, s.common_view);
       auto& frame = frames[k - begin];
-      frame = std::make_unique<StepFrame>(k == begin ? previous : chunk[k - 1 - begin], chunk[k - begin]);
+      frame = std::make_unique<StepFrame>(reference, input);
       StepWorker worker(s);
-      steps[k - 1] = worker.first_try(frame->reference(), frame->input(),
-                                      frame->local(relative(odometry[k - 1], odometry[k])), seeds[k]);
+      steps[k - 1] = worker.first_try(frame->reference(), frame->input(), frame->local(guess), seeds[k]);
       counter.tick();
     });
     // The sequence check in sequence order, then the recovery of what is not trusted (independent
@@ -221,11 +238,15 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
         clouds.push_back(&window[j]);
         poses.push_back(relative(previous_pose, window_poses[j]));
       }
-      const PointCloud map = merge_local_map(clouds, poses, s.local_map_max_points, s.local_map_voxel);
-      steps.push_back(register_step(worker, trust, map, input, guess, other_priors, search,
+      PointCloud map = merge_local_map(clouds, poses, s.local_map_max_points, s.local_map_voxel);
+      PointCloud seen_input = input;
+      keep_what_both_see(map, window.back(), seen_input, guess, s.common_view);
+      steps.push_back(register_step(worker, trust, map, seen_input, guess, other_priors, search,
                                     recovery_starts(s, guess, last_trusted), seeds[k]));
     } else {
-      steps.push_back(register_step(worker, trust, window.back(), input, guess, other_priors, search,
+      PointCloud reference = window.back(), seen_input = input;
+      keep_what_both_see(reference, window.back(), seen_input, guess, s.common_view);
+      steps.push_back(register_step(worker, trust, reference, seen_input, guess, other_priors, search,
                                     recovery_starts(s, guess, last_trusted), seeds[k]));
     }
     trust.record(steps.back().quality);

@@ -135,6 +135,18 @@ TEST(Odometry, LocalMapRegistersAgainstTheLastScans) {
   EXPECT_GT(r.steps[4].reference_points, 2 * one);  // later: three scans (below the voxel limit)
 }
 
+// Registering only what both sensors see (common_view.hpp) keeps the campus' steps right, and each
+// step registers a part of its reference: the input's sensor does not see all of it.
+TEST(Odometry, CommonViewRegistersWhatBothSensorsSee) {
+  OdometrySettings s = mlndt_settings();
+  s.map = OdometryMap::local_map;
+  s.common_view = true;
+  const OdometryResult r = run_odometry(campus(), s, 0, 8);
+  expect_close_to_truth(campus(), r, 0, 0.5, 0.15, "common view");
+  EXPECT_LT(r.steps[0].reference_points, campus().scan(0).size());
+  EXPECT_GT(r.steps[0].reference_points, campus().scan(0).size() / 2);
+}
+
 TEST(Odometry, OdometryGuessWithoutOdometryIsAClearError) {
   const NoOdometry d(campus());
   try {

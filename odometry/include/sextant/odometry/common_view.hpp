@@ -1,0 +1,38 @@
+#pragma once
+// What two scans can both see (issue 22). A lidar sees a band of elevations out to a range, both
+// fixed to the sensor, so every scan's coverage ends where its own sensor's view ends: at the top and
+// the bottom of a wall, on the ground around the vehicle, at the farthest returns. Registered whole,
+// two scans' coverage edges coincide only at no motion, and the cells those edges cross pull every
+// step short. Registering only what both sensors see — the reference's points that the input's
+// sensor sees from the guessed pose, the input's points that the reference's sensor sees — puts the
+// same edges in both: on the campus the drift falls from 0.051 to 0.045 % and on MulRan 116–165 from
+// 1.10 to 0.92 % (`sextant odometry --common-view`; not the default: docs/matcher_defaults.md,
+// "Registering only what both scans can see").
+#include <Eigen/Geometry>
+
+#include "sextant/core/point_cloud.hpp"
+
+namespace sextant {
+
+/// A sensor's view, from its own points: the band of elevations (as slopes z / √(x² + y²), the
+/// tangents of the lowest and highest elevation; ∓∞ where the band reaches straight down or up) and
+/// the farthest range.
+struct SensorView {
+  double min_slope = -1.0, max_slope = 1.0;  ///< tan of the lowest and highest elevation seen
+  double max_range = 0.0;                    ///< [m]
+  /// Whether a point in the sensor's frame lies in the view (false for a non-finite point).
+  bool sees(const Eigen::Vector3d& p) const;
+};
+
+/// The view of a scan in its own sensor frame: the extremes of its points' elevations, widened by 1°
+/// on each side, and of their ranges (points straight above or below the sensor are left out of the
+/// band). A scan without a point off the vertical sees nothing.
+SensorView sensor_view(const PointCloud& scan);
+
+/// Keeps of `reference` (in the frame of the sensor with `reference_view`) the points the input's
+/// sensor sees from `guess` (reference ← input), and of `input` (in its sensor's frame) the points
+/// the reference's sensor sees. `reference` may be a local map of several scans in that frame.
+void keep_common_view(PointCloud& reference, const SensorView& reference_view, PointCloud& input,
+                      const SensorView& input_view, const Eigen::Isometry3d& guess);
+
+}  // namespace sextant

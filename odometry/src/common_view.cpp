@@ -1,0 +1,67 @@
+// What two scans can both see (common_view.hpp).
+#include "sextant/odometry/common_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+#include "sextant/core/units.hpp"
+
+namespace sextant {
+namespace {
+
+/// The elevation band of a view is widened by 1° on each side: a beam's divergence, and the tilt a
+/// guess may get wrong, so that a planar scanner (every point at elevation 0) still sees its own plane
+/// from a slightly tilted guess [rad].
+constexpr double kMargin = 1.0 * kRadPerDeg;
+constexpr double kHalfTurn = 0.5 * kPi;  // straight up or down [rad]
+
+/// Keeps the points of `cloud` that `view` sees once `to_sensor` (sensor ← cloud's frame) moves them.
+void keep_seen(PointCloud& cloud, const SensorView& view, const Eigen::Isometry3d& to_sensor) {
+  std::vector<std::size_t> keep;
+  keep.reserve(cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    if (view.sees(to_sensor * cloud[i].cast<double>())) keep.push_back(i);
+  if (keep.size() < cloud.size()) cloud = cloud.subset(keep);
+}
+
+}  // namespace
+
+bool SensorView::sees(const Eigen::Vector3d& p) const {
+  constexpr double kInfinity = std::numeric_limits<double>::infinity();
+  const double horizontal = std::sqrt(p.x() * p.x() + p.y() * p.y());
+  return p.squaredNorm() <= max_range * max_range &&
+         (min_slope == -kInfinity || p.z() >= min_slope * horizontal) &&
+         (max_slope == kInfinity || p.z() <= max_slope * horizontal);
+}
+
+SensorView sensor_view(const PointCloud& scan) {
+  SensorView view;
+  view.min_slope = std::numeric_limits<double>::infinity();
+  view.max_slope = -std::numeric_limits<double>::infinity();
+  for (const Eigen::Vector3f& q : scan.points()) {
+    const Eigen::Vector3d p = q.cast<double>();
+    if (!p.allFinite()) continue;
+    view.max_range = std::max(view.max_range, p.norm());
+    const double horizontal = std::sqrt(p.x() * p.x() + p.y() * p.y());
+    if (!(horizontal > 0.0)) continue;
+    view.min_slope = std::min(view.min_slope, p.z() / horizontal);
+    view.max_slope = std::max(view.max_slope, p.z() / horizontal);
+  }
+  if (!(view.min_slope <= view.max_slope)) return view;  // no point off the vertical: sees nothing
+  // The band widened by kMargin on each side, open where it reaches straight down or up.
+  const double low = std::atan(view.min_slope) - kMargin, high = std::atan(view.max_slope) + kMargin;
+  view.min_slope = low <= -kHalfTurn ? -std::numeric_limits<double>::infinity() : std::tan(low);
+  view.max_slope = high >= kHalfTurn ? std::numeric_limits<double>::infinity() : std::tan(high);
+  return view;
+}
+
+void keep_common_view(PointCloud& reference, const SensorView& reference_view, PointCloud& input,
+                      const SensorView& input_view, const Eigen::Isometry3d& guess) {
+  keep_seen(reference, input_view, guess.inverse());
+  keep_seen(input, reference_view, guess);
+}
+
+}  // namespace sextant

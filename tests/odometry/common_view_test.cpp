@@ -1,0 +1,93 @@
+// What two scans can both see (common_view.hpp): a scan's band of elevations and range from its own
+// points, and each cloud cut to what the other sensor sees from the guess.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "sextant/core/units.hpp"
+#include "sextant/odometry/common_view.hpp"
+
+namespace sextant {
+namespace {
+
+/// A point at `range` metres, `elevation_deg` above the sensor's horizon, `azimuth_deg` from x.
+Eigen::Vector3f polar(double range, double elevation_deg, double azimuth_deg) {
+  const double e = elevation_deg * kRadPerDeg, a = azimuth_deg * kRadPerDeg;
+  return Eigen::Vector3d(range * std::cos(e) * std::cos(a), range * std::cos(e) * std::sin(a),
+                         range * std::sin(e))
+      .cast<float>();
+}
+
+Eigen::Isometry3d forward(double x) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.translation().x() = x;
+  return T;
+}
+
+TEST(CommonView, AScanSeesItsBandOfElevationsWidenedByADegreeAndItsFarthestRange) {
+  PointCloud scan;
+  for (const double e : {-15.0, -3.0, 0.0, 7.0, 20.0})
+    scan.push_back(polar(10.0 + std::fabs(e), e, 30.0 * e));
+  scan.push_back(polar(50.0, 2.0, 100.0));
+  scan.push_back(Eigen::Vector3f(std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f));  // left out
+  const SensorView view = sensor_view(scan);
+  EXPECT_NEAR(view.min_slope, std::tan(-16.0 * kRadPerDeg), 1e-6);
+  EXPECT_NEAR(view.max_slope, std::tan(21.0 * kRadPerDeg), 1e-6);
+  EXPECT_NEAR(view.max_range, 50.0, 1e-5);
+  EXPECT_TRUE(view.sees(polar(49.0, 20.5, 0.0).cast<double>()));
+  EXPECT_FALSE(view.sees(polar(49.0, 21.5, 0.0).cast<double>()));   // above the band
+  EXPECT_FALSE(view.sees(polar(49.0, -16.5, 0.0).cast<double>()));  // below it
+  EXPECT_FALSE(view.sees(polar(51.0, 0.0, 0.0).cast<double>()));    // beyond the range
+  EXPECT_FALSE(view.sees(Eigen::Vector3d(std::nan(""), 0.0, 0.0)));
+  EXPECT_FALSE(sensor_view(PointCloud()).sees(Eigen::Vector3d(1.0, 0.0, 0.0)));  // an empty scan sees nothing
+}
+
+TEST(CommonView, EachCloudKeepsWhatTheOtherSensorSeesFromTheGuess) {
+  // Both sensors see elevations −15…+15° (the band's two points, 30 m to the left, seen from both);
+  // the reference reaches 35 m, the input 38 m, and the input's sensor stands 10 m ahead.
+  PointCloud band;
+  for (const double e : {-15.0, 15.0}) band.push_back(polar(30.0, e, 90.0));
+  PointCloud reference = band, input = band;
+  const Eigen::Vector3f wall_top(20.0f, 0.0f, 4.0f);  // 11.3° from the reference, 21.8° from the input
+  const Eigen::Vector3f behind(-35.0f, 0.0f, 0.0f);   // 35 m behind the reference, 45 m behind the input
+  const Eigen::Vector3f ahead(38.0f, 0.0f, 0.0f);     // 38 m ahead of the input, 48 m ahead of the reference
+  reference.push_back(wall_top);
+  reference.push_back(behind);
+  input.push_back(ahead);
+  input.push_back(Eigen::Vector3f(5.0f, 0.0f, 0.0f));  // 15 m ahead of the reference: both see it
+  keep_common_view(reference, sensor_view(reference), input, sensor_view(input), forward(10.0));
+  ASSERT_EQ(reference.size(), 2u);  // the band's two points
+  for (const Eigen::Vector3f& p : reference.points()) EXPECT_NE(p, wall_top) << "above the input's band";
+  for (const Eigen::Vector3f& p : reference.points()) EXPECT_NE(p, behind) << "beyond the input's range";
+  ASSERT_EQ(input.size(), 3u);
+  for (const Eigen::Vector3f& p : input.points()) EXPECT_NE(p, ahead) << "beyond the reference's range";
+}
+
+// A planar scanner (every point at elevation 0) still sees its own plane from a guess tilted by less
+// than the band's 1° margin, and nothing of it from one tilted by more.
+TEST(CommonView, APlanarScannerSeesItsPlaneFromASlightlyTiltedGuess) {
+  PointCloud plane;
+  for (int a = 0; a < 360; a += 10) plane.push_back(polar(20.0, 0.0, a));
+  plane.push_back(polar(25.0, 0.0, 45.0));  // the farthest: the 20 m points lie well inside the range
+  const auto inside_range = [](const PointCloud& c) {
+    std::size_t n = 0;
+    for (const Eigen::Vector3f& p : c.points()) n += p.norm() < 24.0f;
+    return n;
+  };
+  const auto tilted = [](double degrees) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.linear() = Eigen::AngleAxisd(degrees * kRadPerDeg, Eigen::Vector3d::UnitY()).toRotationMatrix();
+    return T;
+  };
+  PointCloud reference = plane, input = plane;
+  keep_common_view(reference, sensor_view(reference), input, sensor_view(input), tilted(0.5));
+  EXPECT_EQ(inside_range(reference), 36u);
+  EXPECT_EQ(inside_range(input), 36u);
+  reference = plane, input = plane;
+  keep_common_view(reference, sensor_view(reference), input, sensor_view(input), tilted(3.0));
+  EXPECT_LT(inside_range(input), 20u);  // tilted out of the band: only points near the tilt's axis stay
+}
+
+}  // namespace
+}  // namespace sextant
