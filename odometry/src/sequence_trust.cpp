@@ -43,7 +43,7 @@ void check_unconfirmed_no_motion(RegistrationQuality& quality, const Eigen::Isom
   quality.trust = Trust::kSuspect;
   quality.reason = fmt::format(
       "no motion (within {} m and {}°) with fit {:.2f} × the prediction, above the {:.1f} of two scans from "
-      "one place, and no trusted motion yet: a lidar's rings coincide at no motion",
+      "one place, where no motion is known yet or the guess moves: a lidar's rings coincide at no motion",
       tolerance.ambiguity_metres, tolerance.ambiguity_degrees, quality.fit_ratio, fit_factor);
 }
 

@@ -37,13 +37,13 @@ class SequenceTrust {
   std::deque<RegistrationQuality> trusted_;
 };
 
-/// Before a sequence has a trusted motion (the constant-velocity guess knows none yet, and each
-/// registration searches from no motion), marks a trusted `quality` suspect when its `relative` lies
-/// within `tolerance`'s ambiguity distance of no motion but fits worse than two scans from one place
-/// do: above `fit_factor` × the prediction (the sequence check's own "about equal"). A lidar's rings
-/// coincide at no motion whatever the vehicle did, so there the scans always offer an answer; on
-/// MulRan keyframes 5–8 m apart, read backwards, it fit 1.28 against one scan, passed the absolute
-/// checks, and the chain then stood still on a map of scans stacked at one place
+/// For a step with no motion known yet (the constant-velocity guess knows none, and the registration
+/// searches from no motion) or whose guess moves (StepWorker applies it there), marks a trusted
+/// `quality` suspect when its `relative` lies within `tolerance`'s ambiguity distance of no motion but
+/// fits worse than two scans from one place do: above `fit_factor` × the prediction (the sequence check's own
+/// "about equal"). A lidar's rings coincide at no motion whatever the vehicle did, so there the scans always
+/// offer an answer; on MulRan keyframes 5–8 m apart, read backwards, it fit 1.28 against one scan, passed the
+/// absolute checks, and the chain then stood still on a map of scans stacked at one place
 /// (docs/matcher_defaults.md, "The collapse to no motion, and the check that stops it"). Right steps
 /// of that car fit 0.96–1.11 read forwards (10th to 90th percentile); two scans from one place, about 1.
 void check_unconfirmed_no_motion(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
