@@ -199,11 +199,15 @@ void BM_LayerPyramidBuildRealScan(benchmark::State& state) {
   }
   LayerPyramidSettings settings;
   settings.layers = static_cast<int>(state.range(0));
+  std::size_t gaussians = 0;
   for (auto _ : state) {
     const auto layers = build_layer_pyramid(reference, settings);
     benchmark::DoNotOptimize(layers.back().gaussian_count());
+    gaussians = 0;
+    for (const NdtGrid& layer : layers) gaussians += layer.gaussian_count();
   }
   report_per_point(state, reference.size());
+  state.counters["gaussians"] = static_cast<double>(gaussians);
 }
 BENCHMARK(BM_LayerPyramidBuildRealScan)
     ->Args({4, 0})

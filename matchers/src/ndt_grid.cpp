@@ -10,6 +10,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "sextant/matchers/cell_covariance.hpp"
+
 namespace sextant {
 
 namespace ndt_detail {
@@ -39,6 +41,14 @@ int saturated_cell_count(double n) {
 
 using ndt_detail::CellSums;
 
+/// Zeroes the count and the sums field by field: GCC zeroes a whole new CellSums with `rep stos`,
+/// whose start-up cost was a tenth of a split.
+void zero_sums(CellSums& s) {
+  s.count = 0;
+  for (double& v : s.sum) v = 0.0;
+  for (double& v : s.sum_sq) v = 0.0;
+}
+
 /// Mean (eq. 3.2) and inverse covariance (eq. 3.3) with eigenvalues raised to λmax / ratio; false
 /// when the cell has (almost) no spread: λmax below `min_spread` (repeated points) or below
 /// (min_relative_spread · edge)² (a blob, not a surface at this cell size).
@@ -51,17 +61,13 @@ bool cell_gaussian(const CellSums& s, const Eigen::Vector3d& origin, double edge
       s.sum_sq[4], s.sum_sq[5];
   const Eigen::Matrix3d C = (sum_sq - n * mean * mean.transpose()) / (n - 1.0);
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
-  eig.computeDirect(C);
+  eig.computeDirect(C, Eigen::EigenvaluesOnly);  // C'⁻¹ needs no eigenvectors, which cost more
   const Eigen::Vector3d& l = eig.eigenvalues();  // ascending
   if (!(l(2) > 0.0) || !(l(2) >= settings.min_spread) || !std::isfinite(l(2))) return false;
   const double relative = settings.min_relative_spread * edge;
   if (l(2) < relative * relative) return false;
   // C'⁻¹ = V Λ'⁻¹ Vᵀ with Λ' = max(Λ, λmax / ratio)
-  const double floor_value = l(2) / settings.max_eigen_ratio;
-  const Eigen::Vector3d inv_l(1.0 / std::max(l(0), floor_value), 1.0 / std::max(l(1), floor_value),
-                              1.0 / l(2));
-  const Eigen::Matrix3d& V = eig.eigenvectors();
-  const Eigen::Matrix3d inv = V * inv_l.asDiagonal() * V.transpose();
+  const Eigen::Matrix3d inv = inflated_inverse(C, l, l(2) / settings.max_eigen_ratio);
   const Eigen::Vector3d m = mean + origin;
   for (int i = 0; i < 3; ++i) out.mean[i] = static_cast<float>(m(i));
   const double upper[6] = {inv(0, 0), inv(0, 1), inv(0, 2), inv(1, 1), inv(1, 2), inv(2, 2)};
@@ -166,16 +172,18 @@ std::vector<CellSums> NdtGrid::split(const PointCloud& reference) {
     if (cell != run_cell) {
       if (run_cell != kOutside) sums[run_slot] = run;
       std::int32_t& slot = index[cell];
-      if (slot < 0) {
+      if (slot < 0) {  // a new cell: its sums start in `run`
         slot = static_cast<std::int32_t>(sums.size());
-        CellSums& fresh = sums.emplace_back();
-        fresh.cell = static_cast<std::int32_t>(cell);
+        zero_sums(run);
+        run.cell = static_cast<std::int32_t>(cell);
         const Eigen::Vector3i c = cell_coordinates(cell);
-        fresh.x = c.x(), fresh.y = c.y(), fresh.z = c.z();
+        run.x = c.x(), run.y = c.y(), run.z = c.z();
+        sums.push_back(run);
+      } else {
+        run = sums[static_cast<std::size_t>(slot)];
       }
       run_slot = static_cast<std::size_t>(slot);
       run_cell = cell;
-      run = sums[run_slot];
     }
     const double px = static_cast<double>(points[i].x()) - ox, py = static_cast<double>(points[i].y()) - oy,
                  pz = static_cast<double>(points[i].z()) - oz;
@@ -197,11 +205,12 @@ std::vector<CellSums> NdtGrid::merge_children(const std::vector<CellSums>& child
     const int x = child.x >> 1, y = child.y >> 1, z = child.z >> 1;
     const std::size_t cell = cell_index(x, y, z);
     std::int32_t& slot = index_[cell];
-    if (slot < 0) {
+    if (slot < 0) {  // a new parent: its first child's sums (0 + a = a)
       slot = static_cast<std::int32_t>(sums.size());
-      CellSums& fresh = sums.emplace_back();
-      fresh.cell = static_cast<std::int32_t>(cell);
-      fresh.x = x, fresh.y = y, fresh.z = z;
+      CellSums& parent = sums.emplace_back(child);
+      parent.cell = static_cast<std::int32_t>(cell);
+      parent.x = x, parent.y = y, parent.z = z;
+      continue;
     }
     CellSums& s = sums[static_cast<std::size_t>(slot)];
     s.count += child.count;
