@@ -63,13 +63,15 @@ void MlndtMatcher::set_reference(const PointCloud& reference) {
   const std::vector<double> edges = precision_edges(last.cell_edge, settings_.precision);
   auto model = std::make_shared<MlndtModel>();
   std::vector<NdtGrid> pair(2);
+  const CellStatsSettings precision_cells = settings_.precision.cells(pyramid.cells);
   const auto build_pair = [&](std::size_t task, double edge) {
-    pair[task] = precision_grid(reference, frame, edge, task == 0 ? 0.0 : 0.5, pyramid.cells);
+    pair[task] = precision_grid(reference, frame, edge, task == 0 ? 0.0 : 0.5, precision_cells);
   };
   const bool nested = !edges.empty() && edges.front() == 0.5 * last.cell_edge && pyramid_nests(box, pyramid);
   threads_->for_each(edges.empty() ? 1 : (nested ? 2 : 3), [&](std::size_t task) {
     if (task == 0)
-      model->layers = build_layer_pyramid(reference, pyramid, box, nested ? &pair[0] : nullptr);
+      model->layers =
+          build_layer_pyramid(reference, pyramid, box, nested ? &pair[0] : nullptr, &precision_cells);
     else
       build_pair(nested ? 1 : task - 1, edges.front());
   });
@@ -94,7 +96,9 @@ bool same_model(const MlndtSettings& a, const MlndtSettings& b) {
          p.cells.min_points == q.cells.min_points && p.cells.max_eigen_ratio == q.cells.max_eigen_ratio &&
          p.cells.min_spread == q.cells.min_spread &&
          p.cells.min_relative_spread == q.cells.min_relative_spread &&
-         a.precision.min_cell == b.precision.min_cell && a.precision.min_coverage == b.precision.min_coverage;
+         a.precision.min_cell == b.precision.min_cell &&
+         a.precision.min_coverage == b.precision.min_coverage &&
+         a.precision.max_eigen_ratio == b.precision.max_eigen_ratio;
 }
 
 /// Keeps `other`, a solution not chosen, in `best.alternatives` when it converged (without its trace).

@@ -351,7 +351,8 @@ bool pyramid_nests(const Bounds& box, const LayerPyramidSettings& settings) {
 }
 
 std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const LayerPyramidSettings& settings,
-                                         const Bounds& bounds, NdtGrid* finer) {
+                                         const Bounds& bounds, NdtGrid* finer,
+                                         const CellStatsSettings* finer_cells) {
   const Eigen::Vector3d origin = bounds.min.cast<double>();
   const auto n = static_cast<std::size_t>(std::max(settings.layers, 0));
   const std::vector<LayerGeometry> g = pyramid_geometry(bounds, settings);
@@ -367,7 +368,7 @@ std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const Laye
     if (finer && finer->init(origin, 0.5 * g[n - 1].cell_edge, 2 * g[n - 1].dims, kMaxCells)) {
       const std::vector<CellSums> children = finer->split(reference);
       sums = layers[n - 1].merge_children(children);
-      finer->generate(children, settings.cells);
+      finer->generate(children, finer_cells ? *finer_cells : settings.cells);
     } else {
       if (finer) *finer = NdtGrid();  // too many cells for layer n + 1: the caller builds its own
       sums = layers[n - 1].split(reference);

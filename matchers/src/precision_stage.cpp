@@ -17,8 +17,16 @@ bool PrecisionSettings::valid(std::string* why) const {
     problem = "precision_min_cell must be 0 (off) or lie in [0.05, 100] m";
   else if (!(min_coverage > 0.0 && min_coverage <= 1.0))
     problem = "precision_min_coverage must lie in (0, 1]";
+  else if (!(max_eigen_ratio >= 1.0) || !std::isfinite(max_eigen_ratio))
+    problem = "precision_max_eigen_ratio must be finite and at least 1";
   if (problem && why) *why = problem;
   return problem == nullptr;
+}
+
+CellStatsSettings PrecisionSettings::cells(const CellStatsSettings& pyramid_cells) const {
+  CellStatsSettings c = pyramid_cells;
+  c.max_eigen_ratio = max_eigen_ratio;
+  return c;
 }
 
 std::vector<double> precision_edges(double last_edge, const PrecisionSettings& settings) {
@@ -53,14 +61,15 @@ RegistrationResult MlndtMatcher::refine(const PointCloud& input, RegistrationRes
   RegistrationResult r = optimize(fine, coarse.T, settings_.optimizer);
   coarse.seconds += r.seconds;
   if (r.why != Termination::kConverged) return coarse;  // the pyramid's pose stands
-  // Overlap and fit stay those of the last layer, at the refined pose: the trust checks
-  // (registration_quality.hpp) were measured there. The Hessian is the finest grid's, whose
-  // minimum the pose is (R = H⁻¹, eq. 3.50).
+  // Overlap, fit and the degeneracy check's Hessian stay those of the last layer, at the refined
+  // pose: the trust checks (registration_quality.hpp) were measured there. H is the finest grids',
+  // whose minimum the pose is (R = H⁻¹, eq. 3.50).
   const mlndt_detail::LayerObjective last(layers(), n - 1, n - settings_.truncated_layers, 0, settings_,
                                           input, *threads_);
-  const ScoreEvaluation at = last.evaluate(0, to_pose6(r.T).vector(), Derivatives::kScore);
+  const ScoreEvaluation at = last.evaluate(0, to_pose6(r.T).vector(), Derivatives::kHessian);
   coarse.T = r.T;
   coarse.H = r.H;
+  coarse.constraint_hessian = at.hessian;
   coarse.score = at.score;
   coarse.matched_points = at.matched;
   coarse.mean_matched_score = at.matched > 0 ? at.matched_score / static_cast<double>(at.matched) : 0.0;

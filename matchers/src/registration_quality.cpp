@@ -92,7 +92,8 @@ RegistrationQuality assess_alone(const RegistrationResult& result, const PointCl
   q.overlap = result.input_points == 0
                   ? 0.0
                   : static_cast<double>(result.matched_points) / static_cast<double>(result.input_points);
-  q.constraint_ratio = constraint_ratio(result.H, rms_range(input));
+  q.constraint_ratio = constraint_ratio(
+      result.constraint_hessian.isZero(0.0) ? result.H : result.constraint_hessian, rms_range(input));
   if (result.predicted_matched_score > 0.0 && std::isfinite(result.mean_matched_score))
     q.fit_ratio = result.mean_matched_score / result.predicted_matched_score;
   if (!result.converged) {

@@ -3,6 +3,9 @@
 // synthetic scene whose last layer is coarse.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -86,6 +89,42 @@ TEST(PrecisionStage, TwoOverlappingGridsOfLayerNPlusOnesEdge) {
   EXPECT_TRUE(off.precision_layers().empty());
 }
 
+/// The median information along z (C'⁻¹ zz) of a grid's ground cells (means within 5 cm of z = 0).
+double median_ground_information(const NdtGrid& grid) {
+  std::vector<double> zz;
+  for (int g = 0; g < static_cast<int>(grid.gaussian_count()); ++g)
+    if (std::abs(grid.gaussian(g).mean[2]) < 0.05f) zz.push_back(grid.gaussian(g).inv_cov[5]);
+  if (zz.empty()) return 0.0;
+  std::nth_element(zz.begin(), zz.begin() + static_cast<std::ptrdiff_t>(zz.size() / 2), zz.end());
+  return zz[zz.size() / 2];
+}
+
+// The precision grids raise eigenvalues only to λmax / 10⁴: a ground cell's Gaussian is as thin as
+// the ground's 2 cm noise (information 1 / 0.02² = 2500 along z; more in a cell of about ten points,
+// whose smallest sample spread falls short of the true one), where the layers' λmax / 100 makes it
+// about ten times thicker (a 2.2 m cell: λmax ≈ 2.2² / 12, raised λ ≈ 0.004).
+TEST(PrecisionStage, GridsKeepTheSurfacesThin) {
+  const PointCloud reference = site(1);
+  MlndtSettings s;
+  ASSERT_DOUBLE_EQ(s.precision.max_eigen_ratio, 1e4);
+  MlndtMatcher matcher(s);
+  matcher.set_reference(reference);
+  s.precision.max_eigen_ratio = 100.0;  // the layers' own
+  MlndtMatcher thick(s);
+  thick.set_reference(reference);
+  ASSERT_EQ(matcher.precision_layers().size(), 2u);
+  ASSERT_EQ(thick.precision_layers().size(), 2u);
+  // The aligned grid (the pyramid's layer n + 1) and the shifted one.
+  for (std::size_t i = 0; i < 2; ++i) {
+    const double thin_zz = median_ground_information(matcher.precision_layers()[i]),
+                 thick_zz = median_ground_information(thick.precision_layers()[i]);
+    EXPECT_GT(thin_zz, 2000.0) << "grid " << i;
+    EXPECT_LT(thin_zz, 5000.0) << "grid " << i;
+    EXPECT_LT(thick_zz, 400.0) << "grid " << i;
+  }
+  EXPECT_LT(median_ground_information(matcher.layers().back()), 400.0);
+}
+
 TEST(PrecisionStage, RefinesTheLastLayersPoseOnALargeScene) {
   const PointCloud reference = site(2);
   // The input: a fresh sampling of the same site, GBS-sampled as odometry does, seen from T.
@@ -122,10 +161,15 @@ TEST(PrecisionStage, SettingsAreReadAndChecked) {
       read_mlndt_settings(YAML::Load("{precision_min_cell: 2, precision_min_coverage: 0.5}"), "x");
   EXPECT_DOUBLE_EQ(on.precision.min_cell, 2.0);
   EXPECT_DOUBLE_EQ(on.precision.min_coverage, 0.5);
+  EXPECT_DOUBLE_EQ(on.precision.max_eigen_ratio, 1e4);
+  EXPECT_DOUBLE_EQ(
+      read_mlndt_settings(YAML::Load("{precision_max_eigen_ratio: 500}"), "x").precision.max_eigen_ratio,
+      500.0);
   for (const char* bad :
        {"{precision_min_cell: -1}", "{precision_min_cell: 0.01}", "{precision_min_cell: 500}",
         "{precision_min_cell: .nan}", "{precision_min_coverage: 0}", "{precision_min_coverage: 1.5}",
-        "{precision_min_cell: x}"})
+        "{precision_min_cell: x}", "{precision_max_eigen_ratio: 0.5}", "{precision_max_eigen_ratio: .nan}",
+        "{precision_max_eigen_ratio: .inf}"})
     EXPECT_THROW(read_mlndt_settings(YAML::Load(bad), "x"), InputError) << bad;
   PrecisionSettings p;
   std::string why;

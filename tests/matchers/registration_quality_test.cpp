@@ -68,6 +68,14 @@ TEST(RegistrationQuality, EachCheckDecidesItsOwnCase) {
   EXPECT_EQ(slid.trust, Trust::kDegenerate);
   // rotations scaled by 1/L² (L = 10 m): 100 → 1, so the weakest over the strongest is 1e-3 / 100
   EXPECT_NEAR(slid.constraint_ratio, 1e-5, 1e-12);
+  // The degeneracy check reads constraint_hessian where a matcher sets one (ML-NDT's precision stage:
+  // its last layer's), H otherwise.
+  r = converged_result(90, 100, corridor);
+  r.constraint_hessian = full;
+  EXPECT_EQ(assess_registration(r, input).trust, Trust::kOk);
+  r = converged_result(90, 100, full);
+  r.constraint_hessian = corridor;
+  EXPECT_EQ(assess_registration(r, input).trust, Trust::kDegenerate);
 
   r = converged_result(90, 100, full);
   r.mean_matched_score = 4.5;  // 1.5 × the χ²₃ mean

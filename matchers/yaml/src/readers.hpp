@@ -29,7 +29,7 @@ void read_cell_stats_settings(SettingsReader& in, CellStatsSettings& s);
 /// (MoreThuenteSettings) and dof.
 void read_optimizer_settings(SettingsReader& in, const std::string& known_solvers, OptimizerSettings& s);
 
-/// Reads precision_min_cell and precision_min_coverage at the reader's level.
+/// Reads precision_min_cell, precision_min_coverage and precision_max_eigen_ratio at the reader's level.
 void read_precision_settings(SettingsReader& in, PrecisionSettings& s);
 
 /// The registries' factories (factories.cpp): settings from YAML (null node → defaults).

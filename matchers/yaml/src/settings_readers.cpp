@@ -47,6 +47,7 @@ void read_dof_mask(SettingsReader& in, const std::string& key, DofMask& mask) {
 void read_precision_settings(SettingsReader& in, PrecisionSettings& s) {
   in.read("precision_min_cell", s.min_cell);
   in.read("precision_min_coverage", s.min_coverage);
+  in.read("precision_max_eigen_ratio", s.max_eigen_ratio);
 }
 
 WideBasinSettings read_wide_basin_settings(const YAML::Node& node, const std::string& file) {

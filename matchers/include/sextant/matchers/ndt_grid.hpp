@@ -89,7 +89,7 @@ class NdtGrid {
  private:
   friend std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference,
                                                   const LayerPyramidSettings& settings, const Bounds& box,
-                                                  NdtGrid* finer);
+                                                  NdtGrid* finer, const CellStatsSettings* finer_cells);
   /// Geometry and an empty index; false (an empty grid) for a bad geometry or too many cells.
   bool init(const Eigen::Vector3d& origin, double cell_edge, const Eigen::Vector3i& dims,
             std::size_t max_cells);
@@ -162,10 +162,12 @@ std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const Laye
 /// With `finer`, and when the layers nest, the split is into layer n + 1 instead (edge half of layer
 /// n's, the same origin, twice its cells per axis), which `finer` receives, and layer n sums its
 /// children there: ML-NDT's aligned precision grid (precision_stage.hpp) from the pyramid's one pass
-/// over the points. `finer` is left empty when the layers do not nest (pyramid_nests is false) or
-/// it would have too many cells.
+/// over the points; its Gaussians follow `finer_cells` (default: the layers' own settings.cells).
+/// `finer` is left empty when the layers do not nest (pyramid_nests is false) or it would have too
+/// many cells.
 std::vector<NdtGrid> build_layer_pyramid(const PointCloud& reference, const LayerPyramidSettings& settings,
-                                         const Bounds& box, NdtGrid* finer = nullptr);
+                                         const Bounds& box, NdtGrid* finer = nullptr,
+                                         const CellStatsSettings* finer_cells = nullptr);
 /// Whether the layers over `box` nest (q = 8 and each layer's edge twice the next one's; see
 /// build_layer_pyramid), so that build_layer_pyramid can also give layer n + 1.
 bool pyramid_nests(const Bounds& box, const LayerPyramidSettings& settings);

@@ -23,7 +23,17 @@
 // the precision stage's, whose minimum the pose is. A stage that does not converge leaves the
 // pyramid's result as it was.
 //
-// YAML keys of mlndt / fbmlndt: precision_min_cell (0 = off, the `thesis` preset), precision_min_coverage.
+// The precision grids raise small eigenvalues only to λmax / 10⁴, where the pyramid raises them to
+// λmax / 100 (the thesis' inflation after eq. 3.11, from Magnusson). The inflation keeps C invertible
+// and widens the basin the coarse layers need; but it also thickens every planar cell to a tenth of
+// its extent, so that the pattern of the returns inside a plane (rings that move with the sensor)
+// pulls the pose as much as the plane's offset does. From a pose the pyramid has already found, the
+// precision stage needs no basin: with thin Gaussians it fits the surfaces themselves. On the campus
+// this removed most of a scale bias that every step shared (docs/matcher_defaults.md, "Thin
+// Gaussians in the precision stage").
+//
+// YAML keys of mlndt / fbmlndt: precision_min_cell (0 = off, the `thesis` preset), precision_min_coverage,
+// precision_max_eigen_ratio.
 #include <string>
 #include <vector>
 
@@ -44,7 +54,13 @@ struct PrecisionSettings {
   /// reference points the last layer's Gaussians hold; below it the grids take the last layer's edge
   /// [fraction, (0, 1]]
   double min_coverage = 0.8;
+  /// The precision grids' max_eigen_ratio (CellStatsSettings): eigenvalues below λmax / ratio are
+  /// raised to it. Far above the pyramid's 100: thin Gaussians for a pose already found; 10⁴ keeps
+  /// C'⁻¹ well within float precision [ratio, ≥ 1]
+  double max_eigen_ratio = 1e4;
   bool enabled() const { return min_cell > 0.0; }
+  /// The precision grids' cell settings: the pyramid's `cells`, with this max_eigen_ratio.
+  CellStatsSettings cells(const CellStatsSettings& pyramid_cells) const;
   bool valid(std::string* why) const;
 };
 

@@ -61,6 +61,11 @@ struct RegistrationResult {
   Termination why = Termination::kMaxIterations;
   int iterations = 0;
   Matrix6d H = Matrix6d::Zero();  ///< Hessian of the score at the solution; R = H⁻¹, eq. (3.50)
+  /// The Hessian whose conditioning the degeneracy check reads (registration_quality.hpp); zero: H.
+  /// ML-NDT's precision stage sets it to the last layer's at the final pose, where its other trust
+  /// checks are measured too: the stage's thin Gaussians stiffen the surfaces' normals a hundredfold,
+  /// not the directions the surfaces leave free, and the check's bar was set on the layers' Gaussians.
+  Matrix6d constraint_hessian = Matrix6d::Zero();
   double score = 0.0;
   /// Mean score of a matched point at the solution (the penalties of unmatched and rejected points
   /// left out), and what the score's model predicts for it at the right pose (3 for the Mahalanobis
