@@ -41,14 +41,6 @@ int saturated_cell_count(double n) {
 
 using ndt_detail::CellSums;
 
-/// Zeroes the count and the sums field by field: GCC zeroes a whole new CellSums with `rep stos`,
-/// whose start-up cost was a tenth of a split.
-void zero_sums(CellSums& s) {
-  s.count = 0;
-  for (double& v : s.sum) v = 0.0;
-  for (double& v : s.sum_sq) v = 0.0;
-}
-
 /// Mean (eq. 3.2) and inverse covariance (eq. 3.3) with eigenvalues raised to λmax / ratio; false
 /// when the cell has (almost) no spread: λmax below `min_spread` (repeated points) or below
 /// (min_relative_spread · edge)² (a blob, not a surface at this cell size).
@@ -172,18 +164,16 @@ std::vector<CellSums> NdtGrid::split(const PointCloud& reference) {
     if (cell != run_cell) {
       if (run_cell != kOutside) sums[run_slot] = run;
       std::int32_t& slot = index[cell];
-      if (slot < 0) {  // a new cell: its sums start in `run`
+      if (slot < 0) {
         slot = static_cast<std::int32_t>(sums.size());
-        zero_sums(run);
-        run.cell = static_cast<std::int32_t>(cell);
+        CellSums& fresh = sums.emplace_back();
+        fresh.cell = static_cast<std::int32_t>(cell);
         const Eigen::Vector3i c = cell_coordinates(cell);
-        run.x = c.x(), run.y = c.y(), run.z = c.z();
-        sums.push_back(run);
-      } else {
-        run = sums[static_cast<std::size_t>(slot)];
+        fresh.x = c.x(), fresh.y = c.y(), fresh.z = c.z();
       }
       run_slot = static_cast<std::size_t>(slot);
       run_cell = cell;
+      run = sums[run_slot];
     }
     const double px = static_cast<double>(points[i].x()) - ox, py = static_cast<double>(points[i].y()) - oy,
                  pz = static_cast<double>(points[i].z()) - oz;
