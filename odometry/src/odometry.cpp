@@ -6,6 +6,7 @@
 #include <deque>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -109,14 +110,19 @@ class StepCounter {
   std::mutex mutex_;
 };
 
-/// The reference and the input as a step registers them: with `common_view`, what both sensors see
-/// from `guess` (common_view.hpp; `reference_scan` is the scan whose sensor stands at the reference's
-/// origin), else the whole clouds. Scans not in their sensor's frame (no sensor could stand at the
-/// origin: registration_centre.hpp) are registered whole.
-void keep_what_both_see(PointCloud& reference, const PointCloud& reference_scan, PointCloud& input,
-                        const Eigen::Isometry3d& guess, bool common_view) {
-  if (!common_view || !registration_centre(reference).isZero()) return;
-  keep_common_view(reference, sensor_view(reference_scan), input, sensor_view(input), guess);
+/// With `common_view`, copies of the reference and the input cut to what both sensors see from
+/// `guess` (common_view.hpp; `reference_scan` is the scan whose sensor stands at the reference's
+/// origin). Nothing otherwise, and for scans not in their sensor's frame (no sensor could stand at the
+/// origin: registration_centre.hpp): the step registers the clouds as they are, without a copy.
+std::optional<std::pair<PointCloud, PointCloud>> what_both_see(const PointCloud& reference,
+                                                               const PointCloud& reference_scan,
+                                                               const PointCloud& input,
+                                                               const Eigen::Isometry3d& guess,
+                                                               bool common_view) {
+  if (!common_view || !registration_centre(reference).isZero()) return std::nullopt;
+  std::pair<PointCloud, PointCloud> seen{reference, input};
+  keep_common_view(seen.first, sensor_view(reference_scan), seen.second, sensor_view(input), guess);
+  return seen;
 }
 
 /// Guess odometry + map scan: the registrations are independent; scans are loaded and registered
@@ -133,16 +139,17 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
     tbb::parallel_for(begin, end, [&](std::size_t k) {
       chunk[k - begin] = load_sequence_scan(dataset, first + k, s.min_range);
     });
-    // Each step's clouds (what both sensors see) and its frame until its recovery is done (step_frame.hpp).
-    std::vector<std::pair<PointCloud, PointCloud>> seen(end - begin);
+    // Each step's clouds cut to what both sensors see (with --common-view) and its frame, until its
+    // recovery is done (step_frame.hpp).
+    std::vector<std::optional<std::pair<PointCloud, PointCloud>>> seen(end - begin);
     std::vector<std::unique_ptr<StepFrame>> frames(end - begin);
     tbb::parallel_for(begin, end, [&](std::size_t k) {
       const Eigen::Isometry3d guess = relative(odometry[k - 1], odometry[k]);
-      seen[k - begin] = {k == begin ? previous : chunk[k - 1 - begin], chunk[k - begin]};
-      auto& [reference, input] = seen[k - begin];
-      keep_what_both_see(reference, reference, input, guess, s.common_view);
+      const PointCloud& reference = k == begin ? previous : chunk[k - 1 - begin];
+      const PointCloud& input = chunk[k - begin];
+      const auto& cut = seen[k - begin] = what_both_see(reference, reference, input, guess, s.common_view);
       auto& frame = frames[k - begin];
-      frame = std::make_unique<StepFrame>(reference, input);
+      frame = std::make_unique<StepFrame>(cut ? cut->first : reference, cut ? cut->second : input);
       StepWorker worker(s);
       steps[k - 1] = worker.first_try(frame->reference(), frame->input(), frame->local(guess), seeds[k]);
       counter.tick();
@@ -238,15 +245,14 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
         clouds.push_back(&window[j]);
         poses.push_back(relative(previous_pose, window_poses[j]));
       }
-      PointCloud map = merge_local_map(clouds, poses, s.local_map_max_points, s.local_map_voxel);
-      PointCloud seen_input = input;
-      keep_what_both_see(map, window.back(), seen_input, guess, s.common_view);
-      steps.push_back(register_step(worker, trust, map, seen_input, guess, other_priors, search,
-                                    recovery_starts(s, guess, last_trusted), seeds[k]));
+      const PointCloud map = merge_local_map(clouds, poses, s.local_map_max_points, s.local_map_voxel);
+      const auto cut = what_both_see(map, window.back(), input, guess, s.common_view);
+      steps.push_back(register_step(worker, trust, cut ? cut->first : map, cut ? cut->second : input, guess,
+                                    other_priors, search, recovery_starts(s, guess, last_trusted), seeds[k]));
     } else {
-      PointCloud reference = window.back(), seen_input = input;
-      keep_what_both_see(reference, window.back(), seen_input, guess, s.common_view);
-      steps.push_back(register_step(worker, trust, reference, seen_input, guess, other_priors, search,
+      const auto cut = what_both_see(window.back(), window.back(), input, guess, s.common_view);
+      steps.push_back(register_step(worker, trust, cut ? cut->first : window.back(),
+                                    cut ? cut->second : input, guess, other_priors, search,
                                     recovery_starts(s, guess, last_trusted), seeds[k]));
     }
     trust.record(steps.back().quality);
