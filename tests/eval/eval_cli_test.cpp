@@ -118,6 +118,30 @@ TEST(EvalCli, SaysWhenTheRollAboutAStraightPathComesFromTheOrientations) {
   EXPECT_NE(json.output.find("\"roll_from_orientations\": true"), std::string::npos) << json.output;
 }
 
+// --car-slip: a straight drive along −x of the sensor whose reference jumps 0.8 m to the left on step
+// 6 (a car cannot) is listed with that step and slip, in the text and the JSON; off, nothing is said.
+TEST(EvalCli, ListsTheReferenceStepsACarCannotMake) {
+  test::TempDir tmp;
+  Trajectory ref;
+  for (int i = 0; i < 12; ++i) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.translation() = Eigen::Vector3d(-5.0 * i, i >= 7 ? 0.8 : 0.0, 0.0);
+    ref.push_back({double(i), T});
+  }
+  write_kitti_trajectory(tmp / "ref.txt", ref);
+  const std::string files = (tmp / "ref.txt").string() + " " + (tmp / "ref.txt").string();
+  const test::CliRun text = run_cli("eval " + files + " --car-slip 0.5");
+  ASSERT_EQ(text.exit_code, 0) << text.output;
+  EXPECT_EQ(line_after(text.output, "reference: 1 step slip sideways more than 0.50 m"),
+            ", which a car cannot (the car's axis 0.0° from the sensor's x): 6→7 0.80 m")
+      << text.output;
+  const test::CliRun json = run_cli("eval " + files + " --car-slip 0.5 --json");
+  EXPECT_NE(json.output.find("\"steps\": [{\"step\": 6, \"slip_m\": 0.7999"), std::string::npos)
+      << json.output;
+  EXPECT_EQ(run_cli("eval " + files + " --car-slip 1").output.find("6→7"), std::string::npos);
+  EXPECT_EQ(run_cli("eval " + files).output.find("slip"), std::string::npos);
+}
+
 TEST(EvalCli, BadInputIsAClearError) {
   test::TempDir tmp;
   Trajectory a, b;

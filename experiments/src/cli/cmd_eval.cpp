@@ -1,13 +1,16 @@
 // `sextant eval REFERENCE ESTIMATE [--format auto|tum|kitti] [--max-diff S] [--align se3|sim3|origin|none]
-// [--delta N] [--delta-unit frames|m] [--json] [--plot DIR]`: the accuracy of a trajectory one already
-// has (evo_ape / evo_rpe's job, plus KITTI drift, Wulf and Kümmerle). TUM files pair by timestamp,
+// [--delta N] [--delta-unit frames|m] [--json] [--plot DIR] [--car-slip M]`: the accuracy of a trajectory one
+// already has (evo_ape / evo_rpe's job, plus KITTI drift, Wulf and Kümmerle). TUM files pair by timestamp,
 // KITTI files (no time) by index. For `sextant odometry`'s own files, with the defaults, it prints the
 // very line odometry printed (both go through evaluate_trajectory).
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "sextant/core/atomic_file.hpp"
@@ -17,6 +20,7 @@
 #include "sextant/eval/alignment_roll.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/trajectory_evaluation.hpp"
+#include "sextant/eval/vehicle_slip.hpp"
 #include "sextant/experiments/json.hpp"
 #include "trajectory_accuracy.hpp"
 
@@ -34,6 +38,7 @@ struct EvalOptions {
   std::string delta_unit = "frames";
   bool json = false;
   std::string plot;
+  double car_slip = 0.0;  ///< > 0: list the reference's steps that slip sideways more than this [m]
 };
 
 struct LoadedTrajectory {
@@ -109,6 +114,30 @@ void write_plots(const fs::path& dir, const AssociatedPoses& pairs, const Trajec
   write_svg(render_svg(along), dir / "error_along_path.svg");
 }
 
+/// With --car-slip: the reference's steps (pair k to k + 1) a car cannot make (vehicle_slip.hpp).
+struct ReferenceSlip {
+  VehicleSlip slip;
+  std::vector<std::size_t> steps;
+};
+
+Json slip_json(const ReferenceSlip& r, double limit) {
+  Json steps = Json::array();
+  for (std::size_t k : r.steps) steps.push_back({{"step", k}, {"slip_m", json_value(r.slip.slip[k])}});
+  return {{"limit_m", limit}, {"mounting_deg", json_value(r.slip.mounting * kDegPerRad)}, {"steps", steps}};
+}
+
+std::string slip_line(const ReferenceSlip& r, double limit) {
+  std::string line = "reference: " + std::to_string(r.steps.size()) + " step" +
+                     (r.steps.size() == 1 ? "" : "s") + " slip sideways more than " + fixed(limit, 2) +
+                     " m, which a car cannot (the car's axis " +
+                     fixed(std::round(r.slip.mounting * kDegPerRad * 10.0) / 10.0 + 0.0, 1) +  // no "-0.0"
+                     "° from the sensor's x)";
+  for (std::size_t i = 0; i < r.steps.size(); ++i)
+    line += (i ? ", " : ": ") + std::to_string(r.steps[i]) + "→" + std::to_string(r.steps[i] + 1) + " " +
+            fixed(r.slip.slip[r.steps[i]], 2) + " m";
+  return line;
+}
+
 int run_eval(const EvalOptions& o) {
   const LoadedTrajectory reference = load(o.reference, o.format);
   const LoadedTrajectory estimate = load(o.estimate, o.format);
@@ -134,40 +163,47 @@ int run_eval(const EvalOptions& o) {
           ? "scan"
           : fixed(o.delta, o.delta_unit == "m" ? 1 : 0) + (o.delta_unit == "m" ? " m" : " frames");
   if (!o.plot.empty()) write_plots(o.plot, pairs, e);
+  std::optional<ReferenceSlip> slip;
+  if (o.car_slip > 0.0) {
+    slip.emplace();
+    slip->slip = vehicle_slip(pairs.reference);
+    slip->steps = slip->slip.slipping(o.car_slip);
+  }
 
   const double deg = kDegPerRad;
   if (o.json) {
-    const Json j = {{"reference", o.reference},
-                    {"estimate", o.estimate},
-                    {"pairs", pairs.estimate.size()},
-                    {"associated_by", by_stamp ? "stamp" : "index"},
-                    {"unmatched_estimate", pairs.unmatched_estimate},
-                    {"unmatched_reference", pairs.unmatched_reference},
-                    {"largest_stamp_difference_s", json_value(pairs.largest_difference)},
-                    {"alignment",
-                     {{"kind", o.align},
-                      {"scale", json_value(e.ate.alignment.scale)},
-                      {"translation_m", json_value(e.ate.alignment.translation.norm())},
-                      {"roll_from_orientations", e.ate.roll_from_orientations}}},
-                    {"summary", accuracy_json(a)},
-                    {"ate_m", stats_json(e.ate.translation, 1.0)},
-                    {"ate_deg", stats_json(e.ate.rotation, deg)},
-                    {"rpe_m", stats_json(e.rpe.translation, 1.0)},
-                    {"rpe_deg", stats_json(e.rpe.rotation, deg)},
-                    {"rpe_bias",
-                     {{"rotation_deg", vector_json(e.rpe.mean_rotation_vector, deg)},
-                      {"rotation_deg_standard_error", vector_json(e.rpe.rotation_vector_standard_error, deg)},
-                      {"translation_m", vector_json(e.rpe.mean_translation, 1.0)},
-                      {"translation_m_standard_error", vector_json(e.rpe.translation_standard_error, 1.0)},
-                      {"scale_percent", json_value(100.0 * e.rpe.scale_error)},
-                      {"scale_percent_standard_error", json_value(100.0 * e.rpe.scale_standard_error)},
-                      {"scale_pairs", e.rpe.scale_pairs}}},
-                    {"rpe_delta", json_value(o.delta)},
-                    {"rpe_delta_unit", o.delta_unit},
-                    {"wulf_position_m", json_value(e.wulf.position_rms)},
-                    {"wulf_orientation_deg", json_value(e.wulf.orientation_rms * deg)},
-                    {"kummerle_translation_m", json_value(e.kummerle.translation_rms)},
-                    {"kummerle_rotation_deg", json_value(e.kummerle.rotation_rms * deg)}};
+    Json j = {{"reference", o.reference},
+              {"estimate", o.estimate},
+              {"pairs", pairs.estimate.size()},
+              {"associated_by", by_stamp ? "stamp" : "index"},
+              {"unmatched_estimate", pairs.unmatched_estimate},
+              {"unmatched_reference", pairs.unmatched_reference},
+              {"largest_stamp_difference_s", json_value(pairs.largest_difference)},
+              {"alignment",
+               {{"kind", o.align},
+                {"scale", json_value(e.ate.alignment.scale)},
+                {"translation_m", json_value(e.ate.alignment.translation.norm())},
+                {"roll_from_orientations", e.ate.roll_from_orientations}}},
+              {"summary", accuracy_json(a)},
+              {"ate_m", stats_json(e.ate.translation, 1.0)},
+              {"ate_deg", stats_json(e.ate.rotation, deg)},
+              {"rpe_m", stats_json(e.rpe.translation, 1.0)},
+              {"rpe_deg", stats_json(e.rpe.rotation, deg)},
+              {"rpe_bias",
+               {{"rotation_deg", vector_json(e.rpe.mean_rotation_vector, deg)},
+                {"rotation_deg_standard_error", vector_json(e.rpe.rotation_vector_standard_error, deg)},
+                {"translation_m", vector_json(e.rpe.mean_translation, 1.0)},
+                {"translation_m_standard_error", vector_json(e.rpe.translation_standard_error, 1.0)},
+                {"scale_percent", json_value(100.0 * e.rpe.scale_error)},
+                {"scale_percent_standard_error", json_value(100.0 * e.rpe.scale_standard_error)},
+                {"scale_pairs", e.rpe.scale_pairs}}},
+              {"rpe_delta", json_value(o.delta)},
+              {"rpe_delta_unit", o.delta_unit},
+              {"wulf_position_m", json_value(e.wulf.position_rms)},
+              {"wulf_orientation_deg", json_value(e.wulf.orientation_rms * deg)},
+              {"kummerle_translation_m", json_value(e.kummerle.translation_rms)},
+              {"kummerle_rotation_deg", json_value(e.kummerle.rotation_rms * deg)}};
+    if (slip) j["reference_slip"] = slip_json(*slip, o.car_slip);
     std::cout << json_line(j) << "\n";
     return 0;
   }
@@ -223,6 +259,7 @@ int run_eval(const EvalOptions& o) {
                 << (d.segments ? fixed(100.0 * d.translation, 2) : "–") << " | "
                 << (d.segments ? fixed(100.0 * deg * d.rotation, 3) : "–") << " |\n";
   }
+  if (slip) std::cout << slip_line(*slip, o.car_slip) << "\n";
   if (!o.plot.empty())
     std::cout << "wrote: " << (fs::path(o.plot) / "trajectories.svg").string() << ", error_along_path.svg\n";
   return 0;
@@ -260,6 +297,10 @@ void add_eval_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"frames", "m"}))
       ->capture_default_str();
   cmd->add_flag("--json", o->json, "Print the results as one JSON object");
+  cmd->add_option("--car-slip", o->car_slip,
+                  "The reference is a car's: list its steps that slip sideways more than this [m] (a car "
+                  "follows arcs; such a step cannot judge the estimate's; 0: off)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_option("--plot", o->plot,
                   "Write trajectories.svg (top view) and error_along_path.svg into this folder");
   cmd->callback([o, &exit_code] { exit_code = guarded([&] { return run_eval(*o); }); });
