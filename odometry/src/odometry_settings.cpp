@@ -50,4 +50,8 @@ std::string to_string(OdometryMap map) {
   return "?";
 }
 
+bool common_view_by_default(const std::string& method) {
+  return method == "mlndt";
+}
+
 }  // namespace sextant

@@ -59,7 +59,7 @@ py::dict metadata_dict(const DatasetMetadata& m) {
 OdometryRun odometry(const py::object& source, const std::string& method, const py::object& preset,
                      const std::string& sampling, const py::object& guess, const std::string& map,
                      std::size_t first, std::size_t scans, std::size_t local_map_scans, double min_range,
-                     std::uint64_t seed, bool recover, const py::object& poses,
+                     std::uint64_t seed, bool recover, const py::object& common_view, const py::object& poses,
                      const py::object& odometry_poses, const py::object& times, std::uint64_t campus_seed,
                      int jobs, const py::object& sampler_settings, const py::kwargs& settings) {
   // Arguments first (cheap), then the dataset, as the CLI.
@@ -78,6 +78,7 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
   s.min_range = min_range;
   s.seed = seed;
   s.recover = recover;
+  s.common_view = common_view.is_none() ? common_view_by_default(method) : common_view.cast<bool>();
   if (const std::string why = s.problem(); !why.empty()) throw InputError("arguments", "", why);
   if (jobs < 0) throw py::value_error("jobs: expected 0 (all cores) or a positive number of threads");
 
@@ -155,7 +156,8 @@ map: "local_map" (the default: the last local_map_scans scans) or "scan" (the pr
 first, scans: the scans first … first + scans − 1 (scans = 0: to the end).
 min_range: drop points closer than this to the sensor [m]. seed: sampler seed (per-step seeds derive
     from it). recover: an untrusted step is registered again with the wide basin (the CLI's default;
-    False = --no-recover). jobs: worker threads (0: all cores).
+    False = --no-recover). common_view: register only what both sensors see from the guess (True,
+    --common-view) or the whole scans (False, --whole-scans); None: the CLI's default (True for mlndt). jobs: worker threads (0: all cores).
 poses: ground truth. For a folder of scans: a TUM or KITTI file (the CLI's --poses); for a list: an
     N×4×4 array (world ← scan). odometry_poses (N×4×4) and times (N seconds): a list's odometry and
     clock.
@@ -205,9 +207,9 @@ void bind_odometry(py::module_& m) {
         py::arg("preset") = py::none(), py::arg("sampling") = "gbs", py::arg("guess") = py::none(),
         py::arg("map") = "local_map", py::arg("first") = 0, py::arg("scans") = 0,
         py::arg("local_map_scans") = 5, py::arg("min_range") = 0.0, py::arg("seed") = 1,
-        py::arg("recover") = true, py::arg("poses") = py::none(), py::arg("odometry_poses") = py::none(),
-        py::arg("times") = py::none(), py::arg("campus_seed") = 1, py::arg("jobs") = 0,
-        py::arg("sampler_settings") = py::none());
+        py::arg("recover") = true, py::arg("common_view") = py::none(), py::arg("poses") = py::none(),
+        py::arg("odometry_poses") = py::none(), py::arg("times") = py::none(), py::arg("campus_seed") = 1,
+        py::arg("jobs") = 0, py::arg("sampler_settings") = py::none());
 }
 
 }  // namespace sextant::python

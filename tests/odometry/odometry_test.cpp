@@ -129,6 +129,7 @@ TEST(Odometry, LocalMapRegistersAgainstTheLastScans) {
   OdometrySettings s = mlndt_settings();
   s.map = OdometryMap::local_map;
   s.local_map_scans = 3;
+  s.common_view = false;  // the map's own size, not what the input's sensor sees of it
   const OdometryResult r = run_odometry(campus(), s, 0, 8);
   expect_close_to_truth(campus(), r, 0, 0.5, 0.15, "local map");
   const std::size_t one = campus().scan(0).size();
@@ -162,16 +163,21 @@ TEST(Odometry, PrecisionStageFitsSurfacesToAMillimetre) {
   EXPECT_GT(largest_step_error(campus(), inflated), 4.0 * largest_step_error(campus(), thin));
 }
 
-// Registering only what both sensors see (common_view.hpp) keeps the campus' steps right, and each
-// step registers a part of its reference: the input's sensor does not see all of it.
+// Registering only what both sensors see (common_view.hpp, the default) keeps the campus' steps right,
+// and each step registers a part of its reference: the input's sensor does not see all of it. Off,
+// the whole scans are registered.
 TEST(Odometry, CommonViewRegistersWhatBothSensorsSee) {
   OdometrySettings s = mlndt_settings();
   s.map = OdometryMap::local_map;
-  s.common_view = true;
+  ASSERT_TRUE(s.common_view) << "the default";
   const OdometryResult r = run_odometry(campus(), s, 0, 8);
   expect_close_to_truth(campus(), r, 0, 0.5, 0.15, "common view");
   EXPECT_LT(r.steps[0].reference_points, campus().scan(0).size());
   EXPECT_GT(r.steps[0].reference_points, campus().scan(0).size() / 2);
+  s.common_view = false;
+  const OdometryResult whole = run_odometry(campus(), s, 0, 3);
+  EXPECT_EQ(whole.steps[0].reference_points, campus().scan(0).size());
+  expect_close_to_truth(campus(), whole, 0, 0.5, 0.15, "whole scans");
 }
 
 TEST(Odometry, OdometryGuessWithoutOdometryIsAClearError) {

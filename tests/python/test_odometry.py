@@ -91,6 +91,20 @@ def test_arrays_give_the_folders_result(mulran):
     np.testing.assert_allclose(from_arrays.poses, from_folder.poses, rtol=0, atol=1e-12)
 
 
+def test_common_view_is_the_default_and_whole_scans_can_be_asked_for(mulran, sextant_binary, tmp_path, python_run):
+    """common_view=False registers the whole scans, as the CLI's --whole-scans; the default cuts each
+    step's reference to what the input's sensor sees."""
+    count = 3
+    whole = sextant.odometry(mulran, scans=count, common_view=False)
+    done = run([sextant_binary, "odometry", mulran, "--scans", count, "--whole-scans", "--out", tmp_path,
+                "--no-progress"])
+    assert done.returncode == 0, done.stdout + done.stderr
+    np.testing.assert_allclose(whole.poses, kitti_poses(tmp_path / "trajectory.kitti.txt"), rtol=1e-8, atol=1e-8)
+    first_scan = len(sextant.read_cloud(sorted((mulran / "scans").glob("*.pcd"))[0]))
+    assert whole.steps["reference_points"][0] == first_scan
+    assert python_run.steps["reference_points"][0] < first_scan
+
+
 def test_recovers_a_synthetic_sequence_of_known_poses(data_dir):
     """One real scan seen from five poses 0.6 m and 2° apart: odometry must find those poses."""
     world = sextant.read_cloud(data_dir / "velodyne_pair" / "fast_gicp_251370668.pcd").astype(np.float64)

@@ -48,7 +48,8 @@ struct OdometryOptions : MatcherOptions {
   int jobs = 0;
   bool no_progress = false;
   bool no_recover = false;
-  bool common_view = false;
+  bool common_view = false;  ///< --common-view: whatever the method
+  bool whole_scans = false;  ///< --whole-scans: whatever the method
   bool print_config = false;
 };
 
@@ -151,7 +152,7 @@ int run_odometry_command(const OdometryOptions& o) {
   s.min_range = o.min_range;
   s.seed = o.seed;
   s.recover = !o.no_recover;
-  s.common_view = o.common_view;
+  s.common_view = o.whole_scans ? false : o.common_view || common_view_by_default(o.method);
   if (const std::string why = s.problem(); !why.empty()) throw InputError("arguments", "", why);
   std::optional<LoopCandidateSource> loop_source;
   if (!o.loop_closure.empty()) {
@@ -348,11 +349,14 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--min-range", o->min_range, "Drop points closer than this to the sensor [m] (self-hits)")
       ->capture_default_str();
-  cmd->add_flag(
+  CLI::Option* common_view = cmd->add_flag(
       "--common-view", o->common_view,
-      "Register only what both sensors see from the guess (each scan's band of elevations and range; "
-      "default: the whole scans). More accurate on the real sequences measured, off by default "
-      "(docs/matcher_defaults.md, \"Registering only what both scans can see\")");
+      "Register only what both sensors see from the guess (each scan's band of elevations and range): the "
+      "default for mlndt, measured better there (docs/matcher_defaults.md, \"Registering only what both "
+      "scans can see\")");
+  cmd->add_flag("--whole-scans", o->whole_scans,
+                "Register the whole scans: the default for every method but mlndt")
+      ->excludes(common_view);
   cmd->add_option("--first", o->first, "First scan index")->capture_default_str();
   cmd->add_option("--scans", o->scans, "Number of scans (0: to the end)")->capture_default_str();
   cmd->add_option("--seed", o->seed, "Seed of the samplers' random choices")->capture_default_str();

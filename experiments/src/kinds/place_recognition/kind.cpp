@@ -57,6 +57,7 @@ class PlaceRecognitionSession : public KindSession {
     for (std::size_t k = 0; k < n_; ++k) truth_.push_back(*dataset_.ground_truth(k));
     OdometrySettings s;         // ML-NDT on a GBS sample, the campus' odometry as the guess,
     s.map = OdometryMap::scan;  // scan to scan as E20's chain
+    s.common_view = false;      // of whole scans, as E20's
     s.seed = config.seed;
     s.initial_pose = truth_.front();
     chain_ = run_odometry(dataset_, s, 0, n_);

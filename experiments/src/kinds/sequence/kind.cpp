@@ -115,7 +115,8 @@ class SequenceSession : public KindSession {
     chain_settings.map = OdometryMap::scan;
     chain_settings.odometry = odometry;
     chain_settings.initial_pose = truth_.front();
-    chain_settings.recover = false;  // §5.1.3's dead reckoning chains every registration as it is
+    chain_settings.recover = false;      // §5.1.3's dead reckoning chains every registration as it is
+    chain_settings.common_view = false;  // and registers the whole scans
     chain_settings.seeds.resize(params_.scans);  // the sampler seeds this kind has always used
     for (auto& seed : chain_settings.seeds) seed = master.bits();
     const PreloadedDataset scans(*dataset_, params_.first_scan, scans_);
