@@ -139,7 +139,7 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
     tbb::parallel_for(begin, end, [&](std::size_t k) {
       chunk[k - begin] = load_sequence_scan(dataset, first + k, s.min_range);
     });
-    // Each step's clouds cut to what both sensors see (with --common-view) and its frame, until its
+    // Each step's clouds cut to what both sensors see (with common_view) and its frame, until its
     // recovery is done (step_frame.hpp).
     std::vector<std::optional<std::pair<PointCloud, PointCloud>>> seen(end - begin);
     std::vector<std::unique_ptr<StepFrame>> frames(end - begin);

@@ -157,7 +157,8 @@ first, scans: the scans first … first + scans − 1 (scans = 0: to the end).
 min_range: drop points closer than this to the sensor [m]. seed: sampler seed (per-step seeds derive
     from it). recover: an untrusted step is registered again with the wide basin (the CLI's default;
     False = --no-recover). common_view: register only what both sensors see from the guess (True,
-    --common-view) or the whole scans (False, --whole-scans); None: the CLI's default (True for mlndt). jobs: worker threads (0: all cores).
+    --common-view) or the whole scans (False, --whole-scans); None: the CLI's default (True for
+    mlndt). jobs: worker threads (0: all cores).
 poses: ground truth. For a folder of scans: a TUM or KITTI file (the CLI's --poses); for a list: an
     N×4×4 array (world ← scan). odometry_poses (N×4×4) and times (N seconds): a list's odometry and
     clock.
