@@ -18,13 +18,35 @@ namespace {
 constexpr double kMargin = 1.0 * kRadPerDeg;
 constexpr double kHalfTurn = 0.5 * kPi;  // straight up or down [rad]
 
-/// Keeps the points of `cloud` that `view` sees once `to_sensor` (sensor ← cloud's frame) moves them.
+/// z ≥ slope · √horizontal2 without the root (squares compared on the side of zero where both lie),
+/// true for slope = −∞ (`open`).
+bool at_least(float z, float slope, float horizontal2, bool open) {
+  const float bound2 = slope * slope * horizontal2;
+  return open | (slope <= 0.0f ? (z >= 0.0f) | (z * z <= bound2) : (z >= 0.0f) & (z * z >= bound2));
+}
+
+/// Keeps the points of `cloud` that `view` sees once `to_sensor` (sensor ← cloud's frame) moves them:
+/// SensorView::sees in single precision, as the points are stored (the view's edges are a degree
+/// wide), without a root or a branch per point: a local map holds 10⁵ points, and every step cuts one.
 void keep_seen(PointCloud& cloud, const SensorView& view, const Eigen::Isometry3d& to_sensor) {
-  std::vector<std::size_t> keep;
-  keep.reserve(cloud.size());
-  for (std::size_t i = 0; i < cloud.size(); ++i)
-    if (view.sees(to_sensor * cloud[i].cast<double>())) keep.push_back(i);
-  if (keep.size() < cloud.size()) cloud = cloud.subset(keep);
+  const Eigen::Matrix3f R = to_sensor.linear().cast<float>();
+  const Eigen::Vector3f t = to_sensor.translation().cast<float>();
+  const float range2 = static_cast<float>(view.max_range * view.max_range);
+  const float low = static_cast<float>(view.min_slope), high = static_cast<float>(view.max_slope);
+  const bool open_below = view.min_slope == -std::numeric_limits<double>::infinity(),
+             open_above = view.max_slope == std::numeric_limits<double>::infinity();
+  const PointsView points = cloud.points();
+  std::vector<std::size_t> keep(points.size());
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3f p = R * points[i] + t;
+    const float horizontal2 = p.x() * p.x() + p.y() * p.y();
+    keep[kept] = i;  // NaN fails the range test
+    kept += (horizontal2 + p.z() * p.z() <= range2) & at_least(p.z(), low, horizontal2, open_below) &
+            at_least(-p.z(), -high, horizontal2, open_above);
+  }
+  keep.resize(kept);
+  if (kept < cloud.size()) cloud = cloud.subset(keep);
 }
 
 }  // namespace

@@ -4,7 +4,10 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+#include <utility>
 
+#include "sextant/core/rng.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/odometry/common_view.hpp"
 
@@ -87,6 +90,36 @@ TEST(CommonView, APlanarScannerSeesItsPlaneFromASlightlyTiltedGuess) {
   reference = plane, input = plane;
   keep_common_view(reference, sensor_view(reference), input, sensor_view(input), tilted(3.0));
   EXPECT_LT(inside_range(input), 20u);  // tilted out of the band: only points near the tilt's axis stay
+}
+
+// The cut (single precision, no root) keeps exactly the points SensorView::sees keeps, for bands
+// closed, open below, open above and open both ways, from a turned and shifted guess.
+TEST(CommonView, TheCutKeepsWhatTheViewSees) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  Rng rng(7);
+  PointCloud cloud;
+  for (int i = 0; i < 20000; ++i)
+    cloud.push_back(Eigen::Vector3f(static_cast<float>(rng.uniform(-60.0, 60.0)),
+                                    static_cast<float>(rng.uniform(-60.0, 60.0)),
+                                    static_cast<float>(rng.uniform(-30.0, 30.0))));
+  Eigen::Isometry3d guess = Eigen::Isometry3d::Identity();
+  guess.linear() = Eigen::AngleAxisd(0.3, Eigen::Vector3d(0.2, -0.1, 1.0).normalized()).toRotationMatrix();
+  guess.translation() = Eigen::Vector3d(4.0, -2.0, 0.5);
+  for (const auto& [low, high] : {std::pair{-0.3, 0.4}, std::pair{-kInf, 0.2}, std::pair{-0.1, kInf},
+                                  std::pair{-kInf, kInf}, std::pair{0.1, 0.5}, std::pair{-0.6, -0.2}}) {
+    SCOPED_TRACE(std::to_string(low) + " … " + std::to_string(high));
+    SensorView view;
+    view.min_slope = low, view.max_slope = high, view.max_range = 50.0;
+    std::size_t expected = 0;
+    for (const Eigen::Vector3f& p : cloud.points()) expected += view.sees(guess.inverse() * p.cast<double>());
+    PointCloud reference = cloud, input;
+    keep_common_view(reference, SensorView{}, input, view, guess);
+    ASSERT_EQ(reference.size(), expected);
+    for (const Eigen::Vector3f& p : reference.points())
+      EXPECT_TRUE(view.sees(guess.inverse() * p.cast<double>()));
+    EXPECT_GT(expected, 0u);
+    EXPECT_LT(expected, cloud.size());
+  }
 }
 
 }  // namespace
