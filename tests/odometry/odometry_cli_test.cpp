@@ -314,5 +314,25 @@ TEST(OdometryCli, SaysWhenTheTrustChecksRunOutsideTheirCalibration) {
   EXPECT_NE(icp.output.find("(method icp_p2l)"), std::string::npos) << icp.output;
 }
 
+// ML-NDT registers what both sensors see by default, every other method the whole scans; each flag
+// overrides the method's default, and the two exclude each other. provenance.json says which ran.
+TEST(OdometryCli, CommonViewIsMlndtsDefaultAndEitherFlagOverridesIt) {
+  TempDir tmp;
+  const auto common_view = [&](const std::string& name, const std::string& options) {
+    const CliRun r =
+        run_cli("odometry campus --scans 3 --no-progress " + options + " --out " + (tmp / name).string());
+    EXPECT_EQ(r.exit_code, 0) << r.output;
+    return read_text(tmp / name / "provenance.json").find("\"common_view\": true") != std::string::npos;
+  };
+  EXPECT_TRUE(common_view("mlndt", ""));
+  EXPECT_FALSE(common_view("mlndt_whole", "--whole-scans"));
+  EXPECT_FALSE(common_view("icp", "--method icp_p2l"));
+  EXPECT_TRUE(common_view("icp_cut", "--method icp_p2l --common-view"));
+  const CliRun both =
+      run_cli("odometry campus --scans 3 --common-view --whole-scans --out " + (tmp / "both").string());
+  EXPECT_EQ(both.exit_code, 2) << both.output;
+  EXPECT_NE(both.output.find("excludes"), std::string::npos) << both.output;
+}
+
 }  // namespace
 }  // namespace sextant
