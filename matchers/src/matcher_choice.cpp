@@ -1,6 +1,8 @@
 // Matchers and samplers chosen in code (matcher_choice.hpp).
 #include "sextant/matchers/matcher_choice.hpp"
 
+#include "sextant/matchers/judged_matcher.hpp"
+
 namespace sextant {
 
 namespace {
@@ -9,7 +11,7 @@ template <class Settings, class Make>
 MatcherChoice choice(std::string name, const Settings& settings, Make make) {
   MatcherChoice c;
   c.name = std::move(name);
-  c.make = [settings, make] { return make(settings); };
+  c.make = [settings, make] { return judged(make(settings)); };
   return c;
 }
 

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "layer_objective.hpp"
+#include "sextant/core/pose.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 
 namespace sextant {
@@ -133,6 +134,22 @@ const std::vector<NdtGrid>& MlndtMatcher::layers() const {
 
 const std::vector<NdtGrid>& MlndtMatcher::precision_layers() const {
   return model_ ? model_->precision : no_grids();
+}
+
+ScoreEvaluation MlndtMatcher::last_layer_at(const PointCloud& input, const Eigen::Isometry3d& T) const {
+  if (layers().empty() || layers().back().empty()) return {};
+  const int n = settings_.pyramid.layers;
+  const mlndt_detail::LayerObjective last(layers(), n - 1, n - settings_.truncated_layers, 0, settings_,
+                                          input, *threads_);
+  return last.evaluate(0, to_pose6(T).vector(), Derivatives::kHessian);
+}
+
+double MlndtMatcher::predicted_matched_score() const {
+  static const PointCloud kNoInput;  // the prediction depends on the layer's τ alone
+  const int n = settings_.pyramid.layers;
+  return mlndt_detail::LayerObjective(layers(), n - 1, n - settings_.truncated_layers, 0, settings_, kNoInput,
+                                      *threads_)
+      .predicted_matched_score();
 }
 
 RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Isometry3d& initial) {

@@ -6,7 +6,6 @@
 #include <cmath>
 
 #include "layer_objective.hpp"
-#include "sextant/core/pose.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 
 namespace sextant {
@@ -64,9 +63,7 @@ RegistrationResult MlndtMatcher::refine(const PointCloud& input, RegistrationRes
   // Overlap, fit and the degeneracy check's Hessian stay those of the last layer, at the refined
   // pose: the trust checks (registration_quality.hpp) were measured there. H is the finest grids',
   // whose minimum the pose is (R = H⁻¹, eq. 3.50).
-  const mlndt_detail::LayerObjective last(layers(), n - 1, n - settings_.truncated_layers, 0, settings_,
-                                          input, *threads_);
-  const ScoreEvaluation at = last.evaluate(0, to_pose6(r.T).vector(), Derivatives::kHessian);
+  const ScoreEvaluation at = last_layer_at(input, r.T);
   coarse.T = r.T;
   coarse.H = r.H;
   coarse.constraint_hessian = at.hessian;

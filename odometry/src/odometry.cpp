@@ -209,7 +209,9 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
                                            const std::vector<std::uint64_t>& seeds, StepCounter& counter) {
   StepWorker worker(s);
   SequenceTrust trust;
-  Eigen::Isometry3d last_trusted = Eigen::Isometry3d::Identity();  // the last trusted relative motion
+  // The motion constant velocity continues: the last trusted one; with --no-recover the last chained
+  // one, as a plain chain continues it (its trust is counted, not acted on).
+  Eigen::Isometry3d last_motion = Eigen::Isometry3d::Identity();
   bool any_trusted = false;
   std::vector<OdometryStep> steps;
   std::deque<PointCloud> window;               // the last scans, oldest first
@@ -225,17 +227,18 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
     if (k + 1 < count) prefetch.run([&] { next = load_sequence_scan(dataset, first + k + 1, s.min_range); });
     Eigen::Isometry3d guess = Eigen::Isometry3d::Identity();
     if (s.guess == OdometryGuess::odometry) guess = relative(odometry[k - 1], odometry[k]);
-    // Constant velocity, unless every registration is to be chained as it comes (--no-recover): no
-    // motion is known before the first trusted step (the first registration then searches), and
-    // where velocity × Δt lies far from the last motion per scan (the vehicle accelerated, or the
-    // keyframes follow distance, not time) both are priors.
+    // Constant velocity: no motion is known before the first trusted step, so an answer of no motion
+    // needs confirming (and, with recovery on, the first registration searches); unless every
+    // registration is to be chained as it comes (--no-recover), where velocity × Δt lies far from
+    // the last motion per scan (the vehicle accelerated, or the keyframes follow distance, not time)
+    // both are priors.
     std::vector<Eigen::Isometry3d> other_priors;
     bool search = false;
     if (s.guess == OdometryGuess::constant_velocity) {
-      guess = scale_motion(last_trusted, time_ratio(dataset, first + k));
-      search = s.recover && !any_trusted;
-      if (s.recover && any_trusted && far_apart(guess, last_trusted, s.quality))
-        other_priors.push_back(last_trusted);
+      guess = scale_motion(last_motion, time_ratio(dataset, first + k));
+      search = !any_trusted;
+      if (s.recover && any_trusted && far_apart(guess, last_motion, s.quality))
+        other_priors.push_back(last_motion);
     }
     const Eigen::Isometry3d& previous_pose = window_poses.back();
     if (s.map == OdometryMap::local_map && window.size() > 1) {
@@ -248,18 +251,16 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
       const PointCloud map = merge_local_map(clouds, poses, s.local_map_max_points, s.local_map_voxel);
       const auto cut = what_both_see(map, window.back(), input, guess, s.common_view);
       steps.push_back(register_step(worker, trust, cut ? cut->first : map, cut ? cut->second : input, guess,
-                                    other_priors, search, recovery_starts(s, guess, last_trusted), seeds[k]));
+                                    other_priors, search, recovery_starts(s, guess, last_motion), seeds[k]));
     } else {
       const auto cut = what_both_see(window.back(), window.back(), input, guess, s.common_view);
       steps.push_back(register_step(worker, trust, cut ? cut->first : window.back(),
                                     cut ? cut->second : input, guess, other_priors, search,
-                                    recovery_starts(s, guess, last_trusted), seeds[k]));
+                                    recovery_starts(s, guess, last_motion), seeds[k]));
     }
     trust.record(steps.back().quality);
-    if (steps.back().trusted()) {
-      last_trusted = steps.back().relative;
-      any_trusted = true;
-    }
+    if (steps.back().trusted() || !s.recover) last_motion = steps.back().relative;
+    any_trusted = any_trusted || steps.back().trusted();
     // An untrusted step places its scan by a registration we do not believe: the older scans of the
     // window are then placed against it by that same doubtful motion, so the map starts again from
     // this scan alone (a wrong step would otherwise fit the map it made and pass the trust checks).

@@ -22,8 +22,8 @@ class StepWorker {
   /// further starts the sequence offers (constant velocity: the last motion unscaled, where velocity ×
   /// Δt lies far from it), registered too and kept as the result's alternatives, so that two priors
   /// leading to two trusted poses far apart make the step ambiguous. `search`: there is no prior
-  /// (no motion known yet), and the first registration is the wide basin's, as `sextant match`'s
-  /// without --init.
+  /// (no motion known yet), so an answer of no motion needs confirming, and with recovery on the
+  /// first registration is the wide basin's, as `sextant match`'s without --init.
   OdometryStep first_try(const PointCloud& reference, const PointCloud& input, const Eigen::Isometry3d& guess,
                          std::uint64_t seed, const std::vector<Eigen::Isometry3d>& other_priors = {},
                          bool search = false);

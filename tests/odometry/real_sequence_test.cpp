@@ -23,6 +23,7 @@
 #include "sextant/matchers/sampler.hpp"
 #include "sextant/matchers/yaml.hpp"
 #include "sextant/odometry/odometry.hpp"
+#include "sextant/odometry/yaml.hpp"
 #include "sextant_test/temp_dir.hpp"
 #include "shared_mulran.hpp"
 
@@ -235,6 +236,33 @@ TEST(RealSequence, MulranBackwardsIsRightOrSaysSo) {
     const std::size_t trusted = trusted_steps_expecting_them_right(*dataset, r, 0);
     EXPECT_GE(trusted, 3u) << "a few steps are registered and believed";
   }
+}
+
+// A plain chain of another matcher says which steps may be wrong (judged_matcher.hpp): point-to-plane
+// ICP from no motion on keyframes 116–127, recovery off, stays near no motion while the car drives
+// 6–8 m per keyframe. Its own correspondences overlap well, so before its poses were judged on the
+// default ML-NDT's last layer every converged step passed; there they fit 1.44–1.55 × the prediction.
+TEST(RealSequence, APlainIcpChainSaysItStoodStill) {
+  if (!std::filesystem::is_directory(kMulran)) GTEST_SKIP() << "no " << kMulran;
+  const auto dataset = open_dataset(kMulran);
+  OdometrySettings s;
+  s.registration = odometry_registration({"icp_p2l", YAML::Node(), "gbs", YAML::Node()});
+  s.guess = OdometryGuess::constant_velocity;
+  s.map = OdometryMap::scan;
+  s.common_view = common_view_by_default("icp_p2l");
+  s.recover = false;
+  const std::size_t first = 116, count = 12;
+  const OdometryResult r = run_odometry(*dataset, s, first, count);
+  ASSERT_EQ(r.steps.size(), count - 1);
+  trusted_steps_expecting_them_right(*dataset, r, first);
+  std::size_t wrong = 0;
+  for (std::size_t i = 0; i < r.steps.size(); ++i) {
+    const Eigen::Isometry3d truth =
+        relative(*dataset->ground_truth(first + i), *dataset->ground_truth(first + i + 1));
+    wrong += translation_norm(relative(truth, r.steps[i].relative)) > 1.0;
+  }
+  EXPECT_GE(wrong, 8u) << "the chain stands still: a case for the checks";
+  EXPECT_EQ(r.recovered(), 0u);
 }
 
 // A good guess stays good: from the reference pose, the default ML-NDT ends within the reference's

@@ -367,8 +367,10 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
                 "Print every matcher and sampler setting this run would use (the defaults included) as YAML, "
                 "and exit");
   cmd->add_flag("--no-recover", o->no_recover,
-                "Chain every registration as the matcher returns it (default: an untrusted one is "
-                "registered again with the wide basin, else its guess is chained)");
+                "Chain every registration as the matcher returns it, a plain loop whose constant velocity "
+                "continues the last chained motion; trust is counted, not acted on (default: an untrusted "
+                "step is registered again with the wide basin, else the least suspect registration or the "
+                "last trusted motion is chained)");
   cmd->callback([&exit_code, o] { exit_code = guarded([o] { return run_odometry_command(*o); }); });
 }
 

@@ -1,6 +1,7 @@
 // The matcher registry: one line per built-in matcher (others insert their own lines).
 #include "readers.hpp"
 
+#include "sextant/matchers/judged_matcher.hpp"
 #include "sextant/matchers/yaml.hpp"
 
 namespace sextant {
@@ -37,7 +38,7 @@ MatcherChoice matcher_choice(const std::string& name, const YAML::Node& settings
                              const std::string& wide_file) {
   MatcherChoice c;
   c.name = name;
-  c.make = [name, settings, file] { return make_matcher(name, settings, file); };
+  c.make = [name, settings, file] { return judged(make_matcher(name, settings, file)); };
   if (const std::optional<YAML::Node> wide = with_wide_basin(name, settings)) {
     const std::string where = wide_file.empty() ? file : wide_file;
     c.make_wide = [name, node = *wide, where] { return make_matcher(name, node, where); };

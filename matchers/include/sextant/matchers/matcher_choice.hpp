@@ -1,7 +1,8 @@
 #pragma once
 // A matcher and a sampler chosen in code, from the plain settings structs (no YAML): factories that
 // build fresh instances of one configuration (each worker, each retry its own), and the wide-basin
-// variant a registration retries with (register_pair.hpp, odometry.hpp).
+// variant a registration retries with (register_pair.hpp, odometry.hpp). Matchers that do not judge
+// their own poses come judged by the default ML-NDT's last layer (judged_matcher.hpp).
 //
 //   MlndtSettings s;                       // the library's defaults: the `default` preset
 //   s.pyramid.layers = 3;

@@ -85,6 +85,14 @@ class MlndtMatcher final : public Matcher {
   const std::vector<NdtGrid>& layers() const;
   /// The precision stage's grids for the current reference, coarse to fine (empty: no stage).
   const std::vector<NdtGrid>& precision_layers() const;
+  /// The last layer's view of `input` at the pose `T` (reference ← input): its truncated score with
+  /// matched points, matched terms and Hessian, as the trust checks read every result of this
+  /// matcher (registration_quality.hpp), whichever matcher found `T` (judged_matcher.hpp). Nothing
+  /// matched before set_reference or without Gaussians.
+  ScoreEvaluation last_layer_at(const PointCloud& input, const Eigen::Isometry3d& T) const;
+  /// What a matched term of the last layer averages at a right pose, E[χ²₃ | ≤ τ]: the fit's
+  /// denominator (LayerObjective::predicted_matched_score).
+  double predicted_matched_score() const;
   const MlndtSettings& settings() const { return settings_; }
 
  private:

@@ -87,7 +87,8 @@ struct OdometrySettings {
   /// motion and the last trusted motion, and take the first result the absolute checks trust (the
   /// sequence check only triggers the search); else chain the last
   /// trusted motion (the odometry guess). Off: every registration is chained as the matcher
-  /// returned it (its trust still recorded).
+  /// returned it (its trust still recorded), a plain loop whose constant velocity continues the last
+  /// chained motion.
   bool recover = true;
   QualitySettings quality;
 
