@@ -41,9 +41,11 @@ void keep_seen(PointCloud& cloud, const SensorView& view, const Eigen::Isometry3
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Eigen::Vector3f p = R * points[i] + t;
     const float horizontal2 = p.x() * p.x() + p.y() * p.y();
-    keep[kept] = i;  // NaN fails the range test
-    kept += (horizontal2 + p.z() * p.z() <= range2) & at_least(p.z(), low, horizontal2, open_below) &
-            at_least(-p.z(), -high, horizontal2, open_above);
+    const bool in_range = horizontal2 + p.z() * p.z() <= range2;  // NaN fails it
+    const bool above = at_least(p.z(), low, horizontal2, open_below);
+    const bool below = at_least(-p.z(), -high, horizontal2, open_above);
+    keep[kept] = i;
+    kept += in_range & above & below;
   }
   keep.resize(kept);
   if (kept < cloud.size()) cloud = cloud.subset(keep);
