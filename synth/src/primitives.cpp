@@ -201,11 +201,14 @@ std::optional<double> Triangle::intersect(const Ray& ray, double max_range) cons
   if (std::abs(det) < kParallel) return std::nullopt;
   const double inv = 1.0 / det;
   const Eigen::Vector3d s = ray.origin - a;
+  // Barycentric coordinates a hair past the edges still count: a ray through a vertex or an edge
+  // the mesh's triangles share hits at least one of them, whatever the rounding.
+  constexpr double kEdge = 1e-9;
   const double u = s.dot(p) * inv;
-  if (u < 0.0 || u > 1.0) return std::nullopt;
+  if (u < -kEdge || u > 1.0 + kEdge) return std::nullopt;
   const Eigen::Vector3d q = s.cross(e1);
   const double v = ray.direction.dot(q) * inv;
-  if (v < 0.0 || u + v > 1.0) return std::nullopt;
+  if (v < -kEdge || u + v > 1.0 + kEdge) return std::nullopt;
   const double t = e2.dot(q) * inv;
   if (!(t >= 0.0 && t <= max_range)) return std::nullopt;
   return t;

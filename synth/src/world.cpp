@@ -101,18 +101,24 @@ PrimitiveGrid::PrimitiveGrid(const std::vector<Primitive>& primitives, Eigen::Ve
     : min_(min), cell_(cell) {
   nx_ = std::max(1, static_cast<int>(std::ceil((max.x() - min.x()) / cell)));
   ny_ = std::max(1, static_cast<int>(std::ceil((max.y() - min.y()) / cell)));
-  const auto clamp_x = [&](double x) {
-    return std::clamp(static_cast<int>(std::floor((x - min_.x()) / cell_)), 0, nx_ - 1);
+  // A primitive is listed in the cells its xy box overlaps: [lo, hi] against each cell's [start,
+  // start + cell). A box that ends exactly on a cell's start (the ground mesh's triangles, whose
+  // spacing is the grid's) is not listed in that cell: a ray there can only meet it on the shared
+  // border, where the cell before finds it at its exit.
+  const auto first_cell = [](double lo, double origin, double edge, int n) {
+    return std::clamp(static_cast<int>(std::floor((lo - origin) / edge)), 0, n - 1);
   };
-  const auto clamp_y = [&](double y) {
-    return std::clamp(static_cast<int>(std::floor((y - min_.y()) / cell_)), 0, ny_ - 1);
+  const auto last_cell = [&](double lo, double hi, double origin, double edge, int n) {
+    const int last = std::clamp(static_cast<int>(std::ceil((hi - origin) / edge)) - 1, 0, n - 1);
+    return std::max(first_cell(lo, origin, edge, n), last);
   };
   // Two passes: count, then fill (compressed rows).
   std::vector<std::uint32_t> counts(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
   std::vector<std::array<int, 4>> ranges(primitives.size());
   for (std::size_t i = 0; i < primitives.size(); ++i) {
     const auto [lo, hi] = xy_bounds(primitives[i].shape);
-    ranges[i] = {clamp_x(lo.x()), clamp_x(hi.x()), clamp_y(lo.y()), clamp_y(hi.y())};
+    ranges[i] = {first_cell(lo.x(), min_.x(), cell_, nx_), last_cell(lo.x(), hi.x(), min_.x(), cell_, nx_),
+                 first_cell(lo.y(), min_.y(), cell_, ny_), last_cell(lo.y(), hi.y(), min_.y(), cell_, ny_)};
     for (int iy = ranges[i][2]; iy <= ranges[i][3]; ++iy)
       for (int ix = ranges[i][0]; ix <= ranges[i][1]; ++ix)
         ++counts[static_cast<std::size_t>(iy) * nx_ + ix + 1];
@@ -121,6 +127,8 @@ PrimitiveGrid::PrimitiveGrid(const std::vector<Primitive>& primitives, Eigen::Ve
   offsets_ = counts;
   items_.resize(counts.back());
   item_heights_.resize(counts.back());
+  cell_heights_.assign(static_cast<std::size_t>(nx_) * ny_,
+                       {std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()});
   for (std::size_t i = 0; i < primitives.size(); ++i) {
     const auto [z_lo, z_hi] = z_bounds(primitives[i].shape);
     for (int iy = ranges[i][2]; iy <= ranges[i][3]; ++iy)
@@ -128,6 +136,8 @@ PrimitiveGrid::PrimitiveGrid(const std::vector<Primitive>& primitives, Eigen::Ve
         const std::uint32_t slot = counts[static_cast<std::size_t>(iy) * nx_ + ix]++;
         items_[slot] = static_cast<std::uint32_t>(i);
         item_heights_[slot] = {static_cast<float>(z_lo), static_cast<float>(z_hi)};
+        auto& cell = cell_heights_[static_cast<std::size_t>(iy) * nx_ + ix];
+        cell = {std::min(cell[0], item_heights_[slot][0]), std::max(cell[1], item_heights_[slot][1])};
       }
   }
 }
@@ -177,7 +187,7 @@ std::optional<RayHit> World::cast(const Ray& ray, double max_range, std::uint64_
   best.range = inf;
   double t_enter = 0.0;  // where the ray enters the current cell
   while (true) {
-    const auto [begin, end] = grid_.cell_items(ix, iy);
+    auto [begin, end] = grid_.cell_items(ix, iy);
     const std::array<float, 2>* heights = grid_.cell_item_heights(ix, iy);
     // A hit on a primitive of this cell that lies in another cell is found there (the primitive is
     // listed in every cell its xy box touches), so only heights the ray has inside this cell can
@@ -192,6 +202,8 @@ std::optional<RayHit> World::cast(const Ray& ray, double max_range, std::uint64_
                                                     : z_enter;
     const double z_low = std::min(z_enter, z_last) - kHeightMargin;
     const double z_high = std::max(z_enter, z_last) + kHeightMargin;
+    const std::array<float, 2>& all = grid_.cell_heights(ix, iy);
+    if (all[1] < z_low || all[0] > z_high) end = begin;  // passes over or under everything here
     for (const std::uint32_t* it = begin; it != end; ++it, ++heights) {
       if ((*heights)[1] < z_low || (*heights)[0] > z_high) continue;  // passes over or under it
       const Primitive& prim = primitives[*it];

@@ -69,5 +69,46 @@ TEST(WorldCast, FindsTheSameFirstHitAsTestingEveryPrimitive) {
   EXPECT_GT(rays_up, 1500);  // and many go up, past the ground of every cell they cross
 }
 
+// The grid lists a primitive in the cells its xy box overlaps, not in the cell its box only touches
+// (the ground mesh's triangles end exactly on cell borders): rays that meet the ground exactly on a
+// cell border or corner, from either side, still find it, where testing every primitive does.
+TEST(WorldCast, FindsTheGroundOnCellBordersFromEitherSide) {
+  const Campus campus = generate_campus(CampusSettings{}, 3);
+  World world = *campus.world;
+  world.foliage_porosity = 0.0;
+  world.foliage_penetration = 0.0;
+  const double cell = CampusSettings{}.world.grid_cell;
+  ASSERT_EQ(cell, world.ground_cell);  // the mesh's vertices lie on the grid's borders
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const int nx = static_cast<int>((world.max.x() - world.min.x()) / cell);
+  const int ny = static_cast<int>((world.max.y() - world.min.y()) / cell);
+  int hits = 0;
+  for (int i = 0; i < 3000; ++i) {
+    // A target on a border: x on one (i % 3 == 0), y on one (1), or both, a corner (2).
+    // 6 cells (24 m) in from the world's edge: the rays start inside the grid.
+    const int bx = 6 + static_cast<int>(unit(rng) * (nx - 12)),
+              by = 6 + static_cast<int>(unit(rng) * (ny - 12));
+    double x = world.min.x() + (bx + unit(rng)) * cell, y = world.min.y() + (by + unit(rng)) * cell;
+    if (i % 3 != 1) x = world.min.x() + bx * cell;
+    if (i % 3 != 0) y = world.min.y() + by * cell;
+    const Eigen::Vector3d target(x, y, world.ground_height(x, y));
+    // From 2–20 m away on either side, 1.5–3 m above the ground.
+    const double angle = 2.0 * std::acos(-1.0) * unit(rng), reach = 2.0 + 18.0 * unit(rng);
+    Ray ray;
+    ray.origin =
+        target + Eigen::Vector3d(reach * std::cos(angle), reach * std::sin(angle), 1.5 + 1.5 * unit(rng));
+    ray.direction = (target - ray.origin).normalized();
+    const std::optional<double> expected = first_hit_of_all(world, ray, 120.0);
+    const std::optional<RayHit> got = world.cast(ray, 120.0, static_cast<std::uint64_t>(i));
+    ASSERT_EQ(expected.has_value(), got.has_value()) << "ray " << i;
+    if (!got) continue;
+    // Two triangles of the mesh meet on the border: either may be found, their ranges a few ulps apart.
+    EXPECT_NEAR(*expected, got->range, 1e-12 * got->range) << "ray " << i;
+    if (std::abs(got->range - (target - ray.origin).norm()) < 1e-6) ++hits;
+  }
+  EXPECT_GT(hits, 1500);  // most rays reach their border point unobstructed: the borders are tested
+}
+
 }  // namespace
 }  // namespace sextant::synth

@@ -76,6 +76,11 @@ class PrimitiveGrid {
   std::pair<const std::uint32_t*, const std::uint32_t*> cell_items(int ix, int iy) const;
   /// Vertical extent (z_min, z_max) of each entry of cell_items, in the same order.
   const std::array<float, 2>* cell_item_heights(int ix, int iy) const;
+  /// Vertical extent of all of cell (ix, iy)'s items together (empty: z_min > z_max), so that a
+  /// ray passing over or under all of them skips the cell.
+  const std::array<float, 2>& cell_heights(int ix, int iy) const {
+    return cell_heights_[static_cast<std::size_t>(iy) * nx_ + ix];
+  }
 
  private:
   Eigen::Vector2d min_ = Eigen::Vector2d::Zero();
@@ -84,6 +89,7 @@ class PrimitiveGrid {
   std::vector<std::uint32_t> offsets_;
   std::vector<std::uint32_t> items_;
   std::vector<std::array<float, 2>> item_heights_;
+  std::vector<std::array<float, 2>> cell_heights_;
 };
 
 class World {
