@@ -25,10 +25,10 @@ bool at_least(float z, float slope, float horizontal2, bool open) {
   return open | (slope <= 0.0f ? (z >= 0.0f) | (z * z <= bound2) : (z >= 0.0f) & (z * z >= bound2));
 }
 
-/// Keeps the points of `cloud` that `view` sees once `to_sensor` (sensor ← cloud's frame) moves them:
+/// The points of `cloud` that `view` sees once `to_sensor` (sensor ← cloud's frame) moves them:
 /// SensorView::sees in single precision, as the points are stored (the view's edges are a degree
 /// wide), without a root or a branch per point: a local map holds 10⁵ points, and every step cuts one.
-void keep_seen(PointCloud& cloud, const SensorView& view, const Eigen::Isometry3d& to_sensor) {
+PointCloud seen(const PointCloud& cloud, const SensorView& view, const Eigen::Isometry3d& to_sensor) {
   const Eigen::Matrix3f R = to_sensor.linear().cast<float>();
   const Eigen::Vector3f t = to_sensor.translation().cast<float>();
   const float range2 = static_cast<float>(view.max_range * view.max_range);
@@ -48,7 +48,7 @@ void keep_seen(PointCloud& cloud, const SensorView& view, const Eigen::Isometry3
     kept += in_range & above & below;
   }
   keep.resize(kept);
-  if (kept < cloud.size()) cloud = cloud.subset(keep);
+  return kept < cloud.size() ? cloud.subset(keep) : cloud;
 }
 
 }  // namespace
@@ -82,10 +82,10 @@ SensorView sensor_view(const PointCloud& scan) {
   return view;
 }
 
-void keep_common_view(PointCloud& reference, const SensorView& reference_view, PointCloud& input,
-                      const SensorView& input_view, const Eigen::Isometry3d& guess) {
-  keep_seen(reference, input_view, guess.inverse());
-  keep_seen(input, reference_view, guess);
+std::pair<PointCloud, PointCloud> common_view(const PointCloud& reference, const SensorView& reference_view,
+                                              const PointCloud& input, const SensorView& input_view,
+                                              const Eigen::Isometry3d& guess) {
+  return {seen(reference, input_view, guess.inverse()), seen(input, reference_view, guess)};
 }
 
 }  // namespace sextant

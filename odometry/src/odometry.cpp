@@ -110,19 +110,24 @@ class StepCounter {
   std::mutex mutex_;
 };
 
-/// With `common_view`, copies of the reference and the input cut to what both sensors see from
-/// `guess` (common_view.hpp; `reference_scan` is the scan whose sensor stands at the reference's
+/// With `common_view`, the reference and the input cut to what both sensors see from `guess`
+/// (common_view.hpp; `reference_view` is the view of the scan whose sensor stands at the reference's
 /// origin). Nothing otherwise, and for scans not in their sensor's frame (no sensor could stand at the
 /// origin: registration_centre.hpp): the step registers the clouds as they are, without a copy.
-std::optional<std::pair<PointCloud, PointCloud>> what_both_see(const PointCloud& reference,
-                                                               const PointCloud& reference_scan,
-                                                               const PointCloud& input,
-                                                               const Eigen::Isometry3d& guess,
-                                                               bool common_view) {
+std::optional<std::pair<PointCloud, PointCloud>> what_both_see(
+    const PointCloud& reference, const SensorView& reference_view, const PointCloud& input,
+    const SensorView& input_view, const Eigen::Isometry3d& guess, bool common_view) {
   if (!common_view || !registration_centre(reference).isZero()) return std::nullopt;
-  std::pair<PointCloud, PointCloud> seen{reference, input};
-  keep_common_view(seen.first, sensor_view(reference_scan), seen.second, sensor_view(input), guess);
-  return seen;
+  return sextant::common_view(reference, reference_view, input, input_view, guess);
+}
+
+/// The view of each scan where the steps cut to what both sensors see (default views otherwise,
+/// which nothing reads).
+std::vector<SensorView> views_of(const std::vector<PointCloud>& scans, bool common_view) {
+  std::vector<SensorView> views(scans.size());
+  if (common_view)
+    tbb::parallel_for(std::size_t{0}, views.size(), [&](std::size_t k) { views[k] = sensor_view(scans[k]); });
+  return views;
 }
 
 /// Guess odometry + map scan: the registrations are independent; scans are loaded and registered
@@ -133,12 +138,14 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
   std::vector<OdometryStep> steps(count - 1);
   SequenceTrust trust;
   PointCloud previous = load_sequence_scan(dataset, first, s.min_range);
+  SensorView previous_view = s.common_view ? sensor_view(previous) : SensorView{};
   for (std::size_t begin = 1; begin < count; begin += kChunk) {
     const std::size_t end = std::min(count, begin + kChunk);
     std::vector<PointCloud> chunk(end - begin);
     tbb::parallel_for(begin, end, [&](std::size_t k) {
       chunk[k - begin] = load_sequence_scan(dataset, first + k, s.min_range);
     });
+    const std::vector<SensorView> views = views_of(chunk, s.common_view);
     // Each step's clouds cut to what both sensors see (with common_view) and its frame, until its
     // recovery is done (step_frame.hpp).
     std::vector<std::optional<std::pair<PointCloud, PointCloud>>> seen(end - begin);
@@ -147,7 +154,9 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
       const Eigen::Isometry3d guess = relative(odometry[k - 1], odometry[k]);
       const PointCloud& reference = k == begin ? previous : chunk[k - 1 - begin];
       const PointCloud& input = chunk[k - begin];
-      const auto& cut = seen[k - begin] = what_both_see(reference, reference, input, guess, s.common_view);
+      const SensorView& reference_view = k == begin ? previous_view : views[k - 1 - begin];
+      const auto& cut = seen[k - begin] =
+          what_both_see(reference, reference_view, input, views[k - begin], guess, s.common_view);
       auto& frame = frames[k - begin];
       frame = std::make_unique<StepFrame>(cut ? cut->first : reference, cut ? cut->second : input);
       StepWorker worker(s);
@@ -170,6 +179,7 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
     });
     for (std::size_t k = begin; k < end; ++k) frames[k - begin]->to_coordinates(steps[k - 1]);
     previous = std::move(chunk.back());
+    previous_view = views.back();
   }
   return steps;
 }
@@ -216,15 +226,23 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
   std::vector<OdometryStep> steps;
   std::deque<PointCloud> window;               // the last scans, oldest first
   std::deque<Eigen::Isometry3d> window_poses;  // their chained poses (frame of the sequence's first scan)
-  window.push_back(load_sequence_scan(dataset, first, s.min_range));
+  // A scan and its sensor's view (where the steps cut to what both sensors see), loaded ahead.
+  const auto load = [&](std::size_t k, PointCloud& scan, SensorView& view) {
+    scan = load_sequence_scan(dataset, first + k, s.min_range);
+    if (s.common_view) view = sensor_view(scan);
+  };
+  SensorView last_view, next_view;  // of window.back() and of `next`
+  window.emplace_back();
+  load(0, window.back(), last_view);
   window_poses.push_back(Eigen::Isometry3d::Identity());
   PointCloud next;
-  if (count > 1) next = load_sequence_scan(dataset, first + 1, s.min_range);
+  if (count > 1) load(1, next, next_view);
   for (std::size_t k = 1; k < count; ++k) {
     PointCloud input = std::move(next);
+    const SensorView input_view = next_view;
     tbb::task_group prefetch;
     const WaitOnExit wait_on_exit{prefetch};
-    if (k + 1 < count) prefetch.run([&] { next = load_sequence_scan(dataset, first + k + 1, s.min_range); });
+    if (k + 1 < count) prefetch.run([&] { load(k + 1, next, next_view); });
     Eigen::Isometry3d guess = Eigen::Isometry3d::Identity();
     if (s.guess == OdometryGuess::odometry) guess = relative(odometry[k - 1], odometry[k]);
     // Constant velocity: no motion is known before the first trusted step, so an answer of no motion
@@ -249,11 +267,11 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
         poses.push_back(relative(previous_pose, window_poses[j]));
       }
       const PointCloud map = merge_local_map(clouds, poses, s.local_map_max_points, s.local_map_voxel);
-      const auto cut = what_both_see(map, window.back(), input, guess, s.common_view);
+      const auto cut = what_both_see(map, last_view, input, input_view, guess, s.common_view);
       steps.push_back(register_step(worker, trust, cut ? cut->first : map, cut ? cut->second : input, guess,
                                     other_priors, search, recovery_starts(s, guess, last_motion), seeds[k]));
     } else {
-      const auto cut = what_both_see(window.back(), window.back(), input, guess, s.common_view);
+      const auto cut = what_both_see(window.back(), last_view, input, input_view, guess, s.common_view);
       steps.push_back(register_step(worker, trust, cut ? cut->first : window.back(),
                                     cut ? cut->second : input, guess, other_priors, search,
                                     recovery_starts(s, guess, last_motion), seeds[k]));
@@ -268,6 +286,7 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
         s.map == OdometryMap::local_map && steps.back().trusted() ? s.local_map_scans : 1;
     window_poses.push_back(previous_pose * steps.back().relative);
     window.push_back(std::move(input));
+    last_view = input_view;
     while (window.size() > keep) {
       window.pop_front();
       window_poses.pop_front();

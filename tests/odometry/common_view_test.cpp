@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "sextant/core/rng.hpp"
@@ -59,7 +60,8 @@ TEST(CommonView, EachCloudKeepsWhatTheOtherSensorSeesFromTheGuess) {
   reference.push_back(behind);
   input.push_back(ahead);
   input.push_back(Eigen::Vector3f(5.0f, 0.0f, 0.0f));  // 15 m ahead of the reference: both see it
-  keep_common_view(reference, sensor_view(reference), input, sensor_view(input), forward(10.0));
+  std::tie(reference, input) =
+      common_view(reference, sensor_view(reference), input, sensor_view(input), forward(10.0));
   ASSERT_EQ(reference.size(), 2u);  // the band's two points
   for (const Eigen::Vector3f& p : reference.points()) EXPECT_NE(p, wall_top) << "above the input's band";
   for (const Eigen::Vector3f& p : reference.points()) EXPECT_NE(p, behind) << "beyond the input's range";
@@ -83,12 +85,11 @@ TEST(CommonView, APlanarScannerSeesItsPlaneFromASlightlyTiltedGuess) {
     T.linear() = Eigen::AngleAxisd(degrees * kRadPerDeg, Eigen::Vector3d::UnitY()).toRotationMatrix();
     return T;
   };
-  PointCloud reference = plane, input = plane;
-  keep_common_view(reference, sensor_view(reference), input, sensor_view(input), tilted(0.5));
+  PointCloud reference, input;
+  std::tie(reference, input) = common_view(plane, sensor_view(plane), plane, sensor_view(plane), tilted(0.5));
   EXPECT_EQ(inside_range(reference), 36u);
   EXPECT_EQ(inside_range(input), 36u);
-  reference = plane, input = plane;
-  keep_common_view(reference, sensor_view(reference), input, sensor_view(input), tilted(3.0));
+  std::tie(reference, input) = common_view(plane, sensor_view(plane), plane, sensor_view(plane), tilted(3.0));
   EXPECT_LT(inside_range(input), 20u);  // tilted out of the band: only points near the tilt's axis stay
 }
 
@@ -112,8 +113,7 @@ TEST(CommonView, TheCutKeepsWhatTheViewSees) {
     view.min_slope = low, view.max_slope = high, view.max_range = 50.0;
     std::size_t expected = 0;
     for (const Eigen::Vector3f& p : cloud.points()) expected += view.sees(guess.inverse() * p.cast<double>());
-    PointCloud reference = cloud, input;
-    keep_common_view(reference, SensorView{}, input, view, guess);
+    const PointCloud reference = common_view(cloud, SensorView{}, PointCloud(), view, guess).first;
     ASSERT_EQ(reference.size(), expected);
     for (const Eigen::Vector3f& p : reference.points())
       EXPECT_TRUE(view.sees(guess.inverse() * p.cast<double>()));

@@ -8,6 +8,8 @@
 // same edges in both: on MulRan 0–107 the drift falls from 3.36 to 2.98 % and on 116–165 from 0.94 to
 // 0.67 % (ML-NDT's default in `sextant odometry`; `--whole-scans` turns it off: docs/matcher_defaults.md,
 // "Registering only what both scans can see").
+#include <utility>
+
 #include <Eigen/Geometry>
 
 #include "sextant/core/point_cloud.hpp"
@@ -29,10 +31,11 @@ struct SensorView {
 /// band). A scan without a point off the vertical sees nothing.
 SensorView sensor_view(const PointCloud& scan);
 
-/// Keeps of `reference` (in the frame of the sensor with `reference_view`) the points the input's
-/// sensor sees from `guess` (reference ← input), and of `input` (in its sensor's frame) the points
+/// The points of `reference` (in the frame of the sensor with `reference_view`) that the input's
+/// sensor sees from `guess` (reference ← input), and those of `input` (in its sensor's frame) that
 /// the reference's sensor sees. `reference` may be a local map of several scans in that frame.
-void keep_common_view(PointCloud& reference, const SensorView& reference_view, PointCloud& input,
-                      const SensorView& input_view, const Eigen::Isometry3d& guess);
+std::pair<PointCloud, PointCloud> common_view(const PointCloud& reference, const SensorView& reference_view,
+                                              const PointCloud& input, const SensorView& input_view,
+                                              const Eigen::Isometry3d& guess);
 
 }  // namespace sextant
