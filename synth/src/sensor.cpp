@@ -34,7 +34,10 @@ SimulatedScan simulate_scan(const World& world, const SensorSettings& sensor, do
       const double noise = rng.normal(0.0, sensor.range_noise);
       ++scan.stats.rays;
       const Eigen::Vector3d dir_s(cos_e[j] * cy, cos_e[j] * sy, sin_e[j]);
-      const auto self = body.intersect(Ray{Eigen::Vector3d::Zero(), dir_s}, sensor.max_range);
+      // A body below the scanner cannot be hit by a ray that does not go down.
+      const bool may_hit_body = dir_s.z() < 0.0 || body.max.z() >= 0.0;
+      const auto self =
+          may_hit_body ? body.intersect(Ray{Eigen::Vector3d::Zero(), dir_s}, sensor.max_range) : std::nullopt;
       ray.direction = R * dir_s;
       const auto hit = world.cast(ray, self ? *self : sensor.max_range, key);
       if (!hit) {
