@@ -175,7 +175,7 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
       const std::size_t k = untrusted[u];
       const StepFrame& frame = *frames[k - begin];
       StepWorker worker(s);
-      worker.recover(steps[k - 1], frame.reference(), frame.input(), {steps[k - 1].guess}, seeds[k]);
+      worker.recover(steps[k - 1], frame.reference(), frame.input(), {steps[k - 1].guess}, seeds[k], trust);
     });
     for (std::size_t k = begin; k < end; ++k) frames[k - begin]->to_coordinates(steps[k - 1]);
     previous = std::move(chunk.back());
@@ -195,7 +195,7 @@ OdometryStep register_step(StepWorker& worker, const SequenceTrust& trust, const
   OdometryStep step = worker.first_try(frame.reference(), frame.input(), frame.local(guess), seed,
                                        frame.local(other_priors), search);
   trust.check(step.quality);
-  worker.recover(step, frame.reference(), frame.input(), frame.local(starts), seed);
+  worker.recover(step, frame.reference(), frame.input(), frame.local(starts), seed, trust);
   frame.to_coordinates(step);
   return step;
 }

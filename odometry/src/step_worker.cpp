@@ -62,7 +62,8 @@ OdometryStep StepWorker::first_try(const PointCloud& reference, const PointCloud
 }
 
 void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
-                         const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed) {
+                         const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed,
+                         const SequenceTrust& sequence) {
   if (step.trusted() || !recovery_ || starts.empty()) return;  // recovery_: null when it is off
   double seconds = step.seconds;
   // The registrations whose only flaw is their fit: converged, enough overlap, every direction
@@ -109,6 +110,9 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
     const PairMatch w = align_sample(*recovery_, sample, start, settings_.quality);
     OdometryStep again = to_step(w, reference, step.guess);
     seconds += again.seconds;
+    // An answer that confirms the first registration stands on its own: the sequence check only asked
+    // for a second search. One that lands elsewhere must also pass the sequence check.
+    if (far_apart(again.relative, step.first_relative, quality)) sequence.check(again.quality);
     const bool disputed = again.trusted() && second_answer(again);
     remember(w, sample.points);
     if (disputed) {

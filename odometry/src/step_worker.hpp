@@ -10,6 +10,7 @@
 #include "sextant/core/point_cloud.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/odometry/odometry.hpp"
+#include "sextant/odometry/sequence_trust.hpp"
 
 namespace sextant::odometry_detail {
 
@@ -30,16 +31,21 @@ class StepWorker {
 
   /// An untrusted step: the wide basin from each of `starts` (the guess first) until a registration
   /// is trusted; when none is, the step chains one of the registrations whose only flaw is their fit
-  /// (suspect_choice.hpp), else `starts.back()` (the last trusted motion), and stays untrusted. The sequence
-  /// check only triggers this search: the wide basin's answer is judged on its own
-  /// (registration_quality.hpp; an answer of no motion by check_unconfirmed_no_motion too), since a step may
-  /// rightly overlap less than its neighbours (a corner, an open space; measured on the campus: right poses
-  /// 0.70 where the median is 0.87). Every registration of the step is an answer (the first, its
+  /// (suspect_choice.hpp), else `starts.back()` (the last trusted motion), and stays untrusted. The wide
+  /// basin's answer is judged on its own (registration_quality.hpp; an answer of no motion by
+  /// check_unconfirmed_no_motion too) and by `sequence`, the check that flagged the first try: an answer
+  /// the sequence check flags is trusted only when it confirms the first registration (within
+  /// QualitySettings' ambiguity tolerance: two independent searches agree), since a step may rightly
+  /// overlap less than its neighbours (a corner, an open space; measured on the campus: right poses 0.70
+  /// where the median is 0.87), but a search that lands somewhere new with such an overlap has nothing
+  /// to back it (the campus every 3rd metre, constant velocity: 3.5 m and 17° off, overlap 0.50 where its
+  /// neighbours matched 0.66). Every registration of the step is an answer (the first, its
   /// alternatives, each recovery): a trusted recovery far from an answer (QualitySettings' ambiguity
   /// tolerance) that does not fit clearly better than it is a second answer, and when nothing else is trusted
   /// the step is chained as the least suspect and says it is ambiguous.
   void recover(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
-               const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed);
+               const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed,
+               const SequenceTrust& sequence);
 
  private:
   OdometryStep to_step(const PairMatch& m, const PointCloud& reference, const Eigen::Isometry3d& guess) const;

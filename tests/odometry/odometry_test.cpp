@@ -13,6 +13,7 @@
 
 #include "sextant/core/error.hpp"
 #include "sextant/core/rng.hpp"
+#include "sextant/core/units.hpp"
 #include "sextant/odometry/local_map.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/odometry/yaml.hpp"
@@ -123,6 +124,31 @@ TEST(Odometry, ConstantVelocityAndIdentityGuessesNeedNoOdometry) {
   s.registration =
       odometry_registration({"mlndt", YAML::Load("{preset: default, wide_basin: {}}"), "gbs", {}});
   expect_close_to_truth(d, run_odometry(d, s, 4, 4), 4, 0.5, 0.15, "identity, wide basin");
+}
+
+// The route divided into 150 scans (9 m apart), read with the constant-velocity guess through a sharp
+// turn: the guess is 30–55° off, the first tries match too little, and the wide basin lands metres
+// along the road where the scans overlap far less than their neighbours did. Such an answer confirms
+// nothing and must say so: no step more than 1 m or 5° off is trusted. (Before the wide basin's
+// answers faced the sequence check, scans 24→25 and 25→26 were trusted 1.0 and 8.2 m off.)
+TEST(Odometry, ARecoveryThatLandsSomewhereNewMustFitTheSequence) {
+  synth::CampusSettings settings;
+  settings.trajectory.scans = 150;
+  const synth::Campus route = synth::generate_campus(settings, 1);
+  const synth::CampusDataset window(synth::campus_window(route, 18, 10));
+  const NoOdometry d(window);
+  OdometrySettings s = mlndt_settings();
+  s.guess = OdometryGuess::constant_velocity;
+  const OdometryResult r = run_odometry(d, s, 0, 10);
+  int wrong = 0;
+  for (std::size_t i = 0; i < r.steps.size(); ++i) {
+    const Eigen::Isometry3d error =
+        relative(relative(*d.ground_truth(i), *d.ground_truth(i + 1)), r.steps[i].relative);
+    if (translation_norm(error) <= 1.0 && rotation_angle(error) <= 5.0 * kRadPerDeg) continue;
+    ++wrong;
+    EXPECT_FALSE(r.steps[i].trusted()) << "step " << i << " is " << translation_norm(error) << " m off";
+  }
+  EXPECT_GE(wrong, 1);  // the turn is hard enough to test the check
 }
 
 TEST(Odometry, LocalMapRegistersAgainstTheLastScans) {
