@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -28,6 +29,8 @@ bool at_least(float z, float slope, float horizontal2, bool open) {
 /// The points of `cloud` that `view` sees once `to_sensor` (sensor ← cloud's frame) moves them:
 /// SensorView::sees in single precision, as the points are stored (the view's edges are a degree
 /// wide), without a root or a branch per point: a local map holds 10⁵ points, and every step cuts one.
+/// The test runs over all points first and the kept ones are then copied in order, so that neither
+/// loop carries a dependency from one point to the next but the count.
 PointCloud seen(const PointCloud& cloud, const SensorView& view, const Eigen::Isometry3d& to_sensor) {
   const Eigen::Matrix3f R = to_sensor.linear().cast<float>();
   const Eigen::Vector3f t = to_sensor.translation().cast<float>();
@@ -36,19 +39,36 @@ PointCloud seen(const PointCloud& cloud, const SensorView& view, const Eigen::Is
   const bool open_below = view.min_slope == -std::numeric_limits<double>::infinity(),
              open_above = view.max_slope == std::numeric_limits<double>::infinity();
   const PointsView points = cloud.points();
-  std::vector<std::size_t> keep(points.size());
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < points.size(); ++i) {
+  const std::size_t n = points.size();
+  std::vector<std::uint8_t> sees(n);
+  for (std::size_t i = 0; i < n; ++i) {
     const Eigen::Vector3f p = R * points[i] + t;
     const float horizontal2 = p.x() * p.x() + p.y() * p.y();
     const bool in_range = horizontal2 + p.z() * p.z() <= range2;  // NaN fails it
     const bool above = at_least(p.z(), low, horizontal2, open_below);
     const bool below = at_least(-p.z(), -high, horizontal2, open_above);
-    keep[kept] = i;
-    kept += in_range & above & below;
+    sees[i] = static_cast<std::uint8_t>(in_range & above & below);
   }
-  keep.resize(kept);
-  return kept < cloud.size() ? cloud.subset(keep) : cloud;
+  PointCloud out;
+  std::vector<Eigen::Vector3f>& kept_points = out.mutable_points();
+  kept_points.resize(n);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    kept_points[kept] = points[i];
+    kept += sees[i];
+  }
+  kept_points.resize(kept);
+  if (cloud.has_intensity()) {
+    std::vector<float>& intensity = out.intensity();
+    intensity.resize(n);
+    kept = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      intensity[kept] = cloud.intensity()[i];
+      kept += sees[i];
+    }
+    intensity.resize(kept);
+  }
+  return out;
 }
 
 }  // namespace
