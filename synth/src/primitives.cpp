@@ -63,17 +63,17 @@ bool Box::contains(const Eigen::Vector3d& p, double tolerance) const {
 }
 
 Eigen::Vector3d OrientedBox::to_local(const Eigen::Vector3d& p) const {
-  return rotate_z(p - center, std::cos(yaw), -std::sin(yaw));
+  return rotate_z(p - center_, cos_yaw_, -sin_yaw_);
 }
 
 std::optional<double> OrientedBox::intersect(const Ray& ray, double max_range) const {
-  const double c = std::cos(yaw), s = -std::sin(yaw);
-  const Ray local{rotate_z(ray.origin - center, c, s), rotate_z(ray.direction, c, s)};
-  return Box{-half, half}.intersect(local, max_range);
+  const double c = cos_yaw_, s = -sin_yaw_;
+  const Ray local{rotate_z(ray.origin - center_, c, s), rotate_z(ray.direction, c, s)};
+  return Box{-half_, half_}.intersect(local, max_range);
 }
 
 double OrientedBox::surface_distance(const Eigen::Vector3d& p) const {
-  const Eigen::Vector3d q = to_local(p).cwiseAbs() - half;
+  const Eigen::Vector3d q = to_local(p).cwiseAbs() - half_;
   const double outside = q.cwiseMax(0.0).norm();
   const double inside = std::min(q.maxCoeff(), 0.0);
   return std::abs(outside + inside);

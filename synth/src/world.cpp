@@ -30,9 +30,9 @@ struct XyBounds {
     return {lo, hi};
   }
   std::pair<Eigen::Vector2d, Eigen::Vector2d> operator()(const OrientedBox& b) const {
-    const double c = std::abs(std::cos(b.yaw)), s = std::abs(std::sin(b.yaw));
-    const Eigen::Vector2d r(c * b.half.x() + s * b.half.y(), s * b.half.x() + c * b.half.y());
-    return {b.center.head<2>() - r, b.center.head<2>() + r};
+    const double c = std::abs(std::cos(b.yaw())), s = std::abs(std::sin(b.yaw()));
+    const Eigen::Vector2d r(c * b.half().x() + s * b.half().y(), s * b.half().x() + c * b.half().y());
+    return {b.center().head<2>() - r, b.center().head<2>() + r};
   }
   std::pair<Eigen::Vector2d, Eigen::Vector2d> operator()(const Cylinder& c) const {
     return {c.center.array() - c.radius, c.center.array() + c.radius};
@@ -56,7 +56,7 @@ struct ZBounds {
     return {lo, hi};
   }
   std::pair<double, double> operator()(const OrientedBox& b) const {
-    return {b.center.z() - b.half.z(), b.center.z() + b.half.z()};
+    return {b.center().z() - b.half().z(), b.center().z() + b.half().z()};
   }
   std::pair<double, double> operator()(const Cylinder& c) const { return {c.z_min, c.z_max}; }
   std::pair<double, double> operator()(const Ellipsoid& e) const {

@@ -3,6 +3,7 @@
 // oriented boxes (cars, balconies, kerbs), vertical cylinders (poles, trunks), axis-aligned
 // ellipsoids (foliage) and triangles (the ground mesh). Each intersect() returns the distance
 // along the ray to the first hit in [0, max_range], or nothing. Directions are unit length.
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -31,16 +32,28 @@ struct Box {
 };
 
 /// A box of half extents `half` centred at `center`, rotated by `yaw` about the vertical axis.
-struct OrientedBox {
-  Eigen::Vector3d center = Eigen::Vector3d::Zero();
-  Eigen::Vector3d half = Eigen::Vector3d::Constant(0.5);  ///< half extents [m]
-  double yaw = 0.0;                                       ///< [rad]
+/// A box turned by `yaw` about the vertical axis through its centre.
+class OrientedBox {
+ public:
+  OrientedBox() = default;
+  OrientedBox(const Eigen::Vector3d& center, const Eigen::Vector3d& half, double yaw)
+      : center_(center), half_(half), yaw_(yaw), cos_yaw_(std::cos(yaw)), sin_yaw_(std::sin(yaw)) {}
+
+  const Eigen::Vector3d& center() const { return center_; }
+  const Eigen::Vector3d& half() const { return half_; }  ///< half extents [m]
+  double yaw() const { return yaw_; }                    ///< [rad]
 
   std::optional<double> intersect(const Ray& ray, double max_range) const;
   /// Distance of p from the box surface (0 on the surface, positive outside or inside).
   double surface_distance(const Eigen::Vector3d& p) const;
   /// Point in box coordinates.
   Eigen::Vector3d to_local(const Eigen::Vector3d& p) const;
+
+ private:
+  Eigen::Vector3d center_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3d half_ = Eigen::Vector3d::Constant(0.5);
+  double yaw_ = 0.0;
+  double cos_yaw_ = 1.0, sin_yaw_ = 0.0;  // of yaw_, for every ray a cast tests against the box
 };
 
 /// A planar simple polygon (not necessarily convex), two-sided.
