@@ -38,11 +38,11 @@ class StepWorker {
   /// QualitySettings' ambiguity tolerance: two independent searches agree), since a step may rightly
   /// overlap less than its neighbours (a corner, an open space; measured on the campus: right poses 0.70
   /// where the median is 0.87), but a search that lands somewhere new with such an overlap has nothing
-  /// to back it (the campus every 3rd metre, constant velocity: 3.5 m and 17° off, overlap 0.50 where its
-  /// neighbours matched 0.66). Every registration of the step is an answer (the first, its
-  /// alternatives, each recovery): a trusted recovery far from an answer (QualitySettings' ambiguity
-  /// tolerance) that does not fit clearly better than it is a second answer, and when nothing else is trusted
-  /// the step is chained as the least suspect and says it is ambiguous.
+  /// to back it (the campus route in 150 scans, 9 m apart, with constant velocity: trusted 8.2 m off at
+  /// overlap 0.59 where its neighbours matched 0.66–0.77). Every registration of the step is an answer (the
+  /// first, its alternatives, each recovery): a trusted recovery far from an answer (QualitySettings'
+  /// ambiguity tolerance) that does not fit clearly better than it is a second answer, and when nothing else
+  /// is trusted the step is chained as the least suspect and says it is ambiguous.
   void recover(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
                const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed,
                const SequenceTrust& sequence);

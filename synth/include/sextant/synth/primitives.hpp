@@ -32,7 +32,6 @@ struct Box {
 };
 
 /// A box of half extents `half` centred at `center`, rotated by `yaw` about the vertical axis.
-/// A box turned by `yaw` about the vertical axis through its centre.
 class OrientedBox {
  public:
   OrientedBox() = default;
