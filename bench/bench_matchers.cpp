@@ -111,11 +111,10 @@ BENCHMARK(BM_MahalanobisKernel)
 // for: Args derivatives, instruction set (0 plain x86-64, 1 AVX2; the same bits, see
 // KernelInstructionSet.*). A set the CPU lacks is skipped.
 void BM_MahalanobisBlock(benchmark::State& state) {
-  using score_detail::KernelInstructionSet;
   const KernelFixture& f = kernel_fixture();
   const auto mode = static_cast<Derivatives>(state.range(0));
-  const auto isa = static_cast<KernelInstructionSet>(state.range(1));
-  if (!score_detail::kernel_instruction_set_available(isa)) {
+  const auto isa = static_cast<InstructionSet>(state.range(1));
+  if (!instruction_set_available(isa)) {
     state.SkipWithError("the CPU lacks this instruction set");
     return;
   }

@@ -44,22 +44,11 @@ namespace avx2 {
 #define SEXTANT_HAVE_AVX2_KERNEL 0
 #endif
 
-bool cpu_has_avx2() {
-#if SEXTANT_HAVE_AVX2_KERNEL
-  static const bool has = __builtin_cpu_supports("avx2");
-  return has;
-#else
-  return false;
-#endif
-}
-
 template <bool kGradient, bool kHessian>
-void block(KernelInstructionSet isa, const NdtGrid& grid, const Eigen::Vector3f* begin,
-           const Eigen::Vector3f* end, const Eigen::Matrix3d& R, const Eigen::Vector3d& t, double max_q,
-           Sums& s) {
+void block(InstructionSet isa, const NdtGrid& grid, const Eigen::Vector3f* begin, const Eigen::Vector3f* end,
+           const Eigen::Matrix3d& R, const Eigen::Vector3d& t, double max_q, Sums& s) {
 #if SEXTANT_HAVE_AVX2_KERNEL
-  if (isa == KernelInstructionSet::kAvx2)
-    return avx2::block<kGradient, kHessian>(grid, begin, end, R, t, max_q, s);
+  if (isa == InstructionSet::kAvx2) return avx2::block<kGradient, kHessian>(grid, begin, end, R, t, max_q, s);
 #endif
   (void)isa;
   baseline::block<kGradient, kHessian>(grid, begin, end, R, t, max_q, s);
@@ -67,19 +56,11 @@ void block(KernelInstructionSet isa, const NdtGrid& grid, const Eigen::Vector3f*
 
 }  // namespace
 
-bool kernel_instruction_set_available(KernelInstructionSet isa) {
-  return isa == KernelInstructionSet::kBaseline || cpu_has_avx2();
-}
-
-KernelInstructionSet best_kernel_instruction_set() {
-  return cpu_has_avx2() ? KernelInstructionSet::kAvx2 : KernelInstructionSet::kBaseline;
-}
-
 void mahalanobis_block(const NdtGrid& grid, const Eigen::Vector3f* begin, const Eigen::Vector3f* end,
                        const Eigen::Matrix3d& R, const Eigen::Vector3d& t, double max_q,
-                       Derivatives derivatives, Sums& s, KernelInstructionSet isa) {
+                       Derivatives derivatives, Sums& s, InstructionSet isa) {
   if (grid.empty()) return;
-  if (!kernel_instruction_set_available(isa)) isa = KernelInstructionSet::kBaseline;
+  if (!instruction_set_available(isa)) isa = InstructionSet::kBaseline;
   switch (derivatives) {
     case Derivatives::kScore: block<false, false>(isa, grid, begin, end, R, t, max_q, s); break;
     case Derivatives::kGradient: block<true, false>(isa, grid, begin, end, R, t, max_q, s); break;

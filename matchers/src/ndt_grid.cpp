@@ -10,24 +10,10 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "cell_split.hpp"
 #include "sextant/matchers/cell_covariance.hpp"
 
 namespace sextant {
-
-namespace ndt_detail {
-
-/// Running sums of one occupied cell, relative to the grid origin (double precision): Σp and
-/// the upper triangle of Σppᵀ (xx xy xz yy yz zz; p(i)·p(j) = p(j)·p(i) exactly, so the lower
-/// triangle is the same numbers), with the cell's index along each axis.
-struct CellSums {
-  std::int32_t cell = 0;
-  std::int32_t count = 0;
-  std::int32_t x = 0, y = 0, z = 0;
-  double sum[3] = {0.0, 0.0, 0.0};
-  double sum_sq[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-};
-
-}  // namespace ndt_detail
 
 namespace {
 
@@ -118,72 +104,13 @@ bool NdtGrid::init(const Eigen::Vector3d& origin, double cell_edge, const Eigen:
 }
 
 std::vector<CellSums> NdtGrid::split(const PointCloud& reference) {
-  const double inv_edge = 1.0 / cell_edge_;
-  const double ox = origin_.x(), oy = origin_.y(), oz = origin_.z();
-  const int nx = dims_.x(), ny = dims_.y(), nz = dims_.z();
-  // Points on the far face of the box belong to the last cell (the box is closed).
-  const double fx_max = nx + 1e-9, fy_max = ny + 1e-9, fz_max = nz + 1e-9;
+  const ndt_detail::SplitGrid grid{origin_.x(), origin_.y(), origin_.z(), 1.0 / cell_edge_,
+                                   dims_.x(),   dims_.y(),   dims_.z()};
   const PointsView points = reference.points();
-  // First every point's cell (kOutside for points outside the box, or not finite: NaN fails every
-  // comparison, ∞ exceeds the far face), so that the accumulation below can prefetch the cells of
-  // points ahead: the index and the sums are read in the points' (random) order.
-  constexpr std::uint32_t kOutside = 0xffffffffu;
-  const std::size_t n = points.size();
-  const std::unique_ptr<std::uint32_t[]> cells(new std::uint32_t[n]);  // each written below, not zeroed first
-  for (std::size_t i = 0; i < n; ++i) {
-    const double fx = (static_cast<double>(points[i].x()) - ox) * inv_edge,
-                 fy = (static_cast<double>(points[i].y()) - oy) * inv_edge,
-                 fz = (static_cast<double>(points[i].z()) - oz) * inv_edge;
-    const bool inside = fx >= 0.0 && fy >= 0.0 && fz >= 0.0 && fx <= fx_max && fy <= fy_max && fz <= fz_max;
-    cells[i] = inside ? static_cast<std::uint32_t>(cell_index(std::min(static_cast<int>(fx), nx - 1),
-                                                              std::min(static_cast<int>(fy), ny - 1),
-                                                              std::min(static_cast<int>(fz), nz - 1)))
-                      : kOutside;
-  }
-  // One pass, sums per occupied cell in order of first appearance. Consecutive points in one cell
-  // (a lidar's scan order keeps neighbours together) are summed in `run`, a copy of the cell's sums
-  // that goes back when the cell changes: the same additions in the same order as one point at a
-  // time, without a trip through memory for every point.
-  std::vector<CellSums> sums;
-  // At most one cell per point: the vector never reallocates (the prefetches below point into it).
-  sums.reserve(std::min(reference.size(), index_.size()));
-  std::int32_t* index = index_.data();
-  constexpr std::size_t kIndexAhead = 16, kSumsAhead = 8;
-  CellSums run;
-  std::size_t run_slot = 0;
-  std::uint32_t run_cell = kOutside;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (i + kIndexAhead < n && cells[i + kIndexAhead] != kOutside)
-      __builtin_prefetch(index + cells[i + kIndexAhead]);
-    if (i + kSumsAhead < n && cells[i + kSumsAhead] != kOutside) {
-      const std::int32_t ahead = index[cells[i + kSumsAhead]];
-      if (ahead >= 0) __builtin_prefetch(sums.data() + ahead, 1);
-    }
-    const std::uint32_t cell = cells[i];
-    if (cell == kOutside) continue;
-    if (cell != run_cell) {
-      if (run_cell != kOutside) sums[run_slot] = run;
-      std::int32_t& slot = index[cell];
-      if (slot < 0) {
-        slot = static_cast<std::int32_t>(sums.size());
-        CellSums& fresh = sums.emplace_back();
-        fresh.cell = static_cast<std::int32_t>(cell);
-        const Eigen::Vector3i c = cell_coordinates(cell);
-        fresh.x = c.x(), fresh.y = c.y(), fresh.z = c.z();
-      }
-      run_slot = static_cast<std::size_t>(slot);
-      run_cell = cell;
-      run = sums[run_slot];
-    }
-    const double px = static_cast<double>(points[i].x()) - ox, py = static_cast<double>(points[i].y()) - oy,
-                 pz = static_cast<double>(points[i].z()) - oz;
-    ++run.count;
-    run.sum[0] += px, run.sum[1] += py, run.sum[2] += pz;
-    run.sum_sq[0] += px * px, run.sum_sq[1] += px * py, run.sum_sq[2] += px * pz;
-    run.sum_sq[3] += py * py, run.sum_sq[4] += py * pz, run.sum_sq[5] += pz * pz;
-  }
-  if (run_cell != kOutside) sums[run_slot] = run;
-  return sums;
+  // Every point's cell first, so that the accumulation can prefetch the cells of points ahead.
+  const std::unique_ptr<std::uint32_t[]> cells(new std::uint32_t[points.size()]);  // each written, not zeroed
+  ndt_detail::assign_cells(points, grid, cells.get());
+  return ndt_detail::accumulate_cells(points, cells.get(), grid, index_.data());
 }
 
 std::vector<CellSums> NdtGrid::merge_children(const std::vector<CellSums>& children) {

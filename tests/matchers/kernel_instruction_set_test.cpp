@@ -29,7 +29,7 @@ void expect_same_bits(const Sums& a, const Sums& b) {
 }
 
 TEST(KernelInstructionSet, Avx2GivesTheBaselineBits) {
-  if (!kernel_instruction_set_available(KernelInstructionSet::kAvx2)) GTEST_SKIP() << "no AVX2 here";
+  if (!instruction_set_available(InstructionSet::kAvx2)) GTEST_SKIP() << "no AVX2 here";
   Rng rng(7);
   const PointCloud reference = test::yard(rng);
   LayerPyramidSettings settings;
@@ -51,8 +51,8 @@ TEST(KernelInstructionSet, Avx2GivesTheBaselineBits) {
     for (const Derivatives d : {Derivatives::kScore, Derivatives::kGradient, Derivatives::kHessian}) {
       Sums baseline, avx2;
       mahalanobis_block(grid, begin, begin + input.size(), R, t, max_q, d, baseline,
-                        KernelInstructionSet::kBaseline);
-      mahalanobis_block(grid, begin, begin + input.size(), R, t, max_q, d, avx2, KernelInstructionSet::kAvx2);
+                        InstructionSet::kBaseline);
+      mahalanobis_block(grid, begin, begin + input.size(), R, t, max_q, d, avx2, InstructionSet::kAvx2);
       SCOPED_TRACE(::testing::Message() << "max_q " << max_q << ", derivatives " << static_cast<int>(d));
       ASSERT_GT(baseline.matched, max_q < 10.0 ? 100u : 500u);
       if (max_q < 10.0) {
@@ -64,8 +64,8 @@ TEST(KernelInstructionSet, Avx2GivesTheBaselineBits) {
 }
 
 TEST(KernelInstructionSet, TheBestIsAvailableAndTheBaselineAlwaysIs) {
-  EXPECT_TRUE(kernel_instruction_set_available(KernelInstructionSet::kBaseline));
-  EXPECT_TRUE(kernel_instruction_set_available(best_kernel_instruction_set()));
+  EXPECT_TRUE(instruction_set_available(InstructionSet::kBaseline));
+  EXPECT_TRUE(instruction_set_available(best_instruction_set()));
 }
 
 }  // namespace
