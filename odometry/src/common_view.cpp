@@ -28,6 +28,19 @@ bool at_least(float z, float slope, float horizontal2, bool open) {
   return open | (falls & (up | (z * z <= bound2))) | (!falls & up & (z * z >= bound2));
 }
 
+/// The elements of `all` whose `keep` is 1, in order, into `kept`: each is written where the next kept one
+/// goes and the position moves on by its flag, with no branch.
+template <typename Elements, typename T>
+void compact(const Elements& all, const std::vector<std::uint8_t>& keep, std::vector<T>& kept) {
+  kept.resize(keep.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < keep.size(); ++i) {
+    kept[k] = all[i];
+    k += keep[i];
+  }
+  kept.resize(k);
+}
+
 /// The points of `cloud` that `view` sees once `to_sensor` (sensor ← cloud's frame) moves them:
 /// SensorView::sees in single precision, as the points are stored (the view's edges are a degree
 /// wide), without a root or a branch per point: a local map holds 10⁵ points, and every step cuts one.
@@ -57,24 +70,8 @@ PointCloud seen(const PointCloud& cloud, const SensorView& view, const Eigen::Is
     sees[i] = static_cast<std::uint8_t>(in_range & above & below);
   }
   PointCloud out;
-  std::vector<Eigen::Vector3f>& kept_points = out.mutable_points();
-  kept_points.resize(n);
-  std::size_t kept = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    kept_points[kept] = points[i];
-    kept += sees[i];
-  }
-  kept_points.resize(kept);
-  if (cloud.has_intensity()) {
-    std::vector<float>& intensity = out.intensity();
-    intensity.resize(n);
-    kept = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      intensity[kept] = cloud.intensity()[i];
-      kept += sees[i];
-    }
-    intensity.resize(kept);
-  }
+  compact(points, sees, out.mutable_points());
+  if (cloud.has_intensity()) compact(cloud.intensity(), sees, out.intensity());
   return out;
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 #include "sextant/core/rng.hpp"
 #include "sextant/core/units.hpp"
@@ -67,6 +68,23 @@ TEST(CommonView, EachCloudKeepsWhatTheOtherSensorSeesFromTheGuess) {
   for (const Eigen::Vector3f& p : reference.points()) EXPECT_NE(p, behind) << "beyond the input's range";
   ASSERT_EQ(input.size(), 3u);
   for (const Eigen::Vector3f& p : input.points()) EXPECT_NE(p, ahead) << "beyond the reference's range";
+}
+
+// A cloud with intensities keeps each kept point's intensity, in order; one without gets none.
+TEST(CommonView, KeptPointsKeepTheirIntensities) {
+  PointCloud reference;
+  for (const double e : {-15.0, 15.0}) reference.push_back(polar(30.0, e, 90.0));
+  PointCloud input = reference;
+  input.push_back(Eigen::Vector3f(5.0f, 0.0f, 0.0f));    // seen
+  input.push_back(Eigen::Vector3f(200.0f, 0.0f, 0.0f));  // beyond the reference's range
+  input.push_back(Eigen::Vector3f(6.0f, 1.0f, 0.0f));    // seen
+  input.intensity() = {0.1f, 0.2f, 0.3f, 0.4f, 0.5f};
+  const auto [cut_reference, cut_input] = common_view(reference, sensor_view(reference), input,
+                                                      sensor_view(input), Eigen::Isometry3d::Identity());
+  ASSERT_EQ(cut_input.size(), 4u);
+  EXPECT_EQ(cut_input.intensity(), (std::vector<float>{0.1f, 0.2f, 0.3f, 0.5f}));
+  EXPECT_EQ(cut_input[3], Eigen::Vector3f(6.0f, 1.0f, 0.0f));
+  EXPECT_FALSE(cut_reference.has_intensity());
 }
 
 // A planar scanner (every point at elevation 0) still sees its own plane from a guess tilted by less
