@@ -104,6 +104,15 @@ TEST(CellSplit, EveryPointInItsCellAndTheSumsOfEachCellInPointOrder) {
   }
 }
 
+TEST(CellSplit, NoPointsNoCells) {
+  std::vector<std::int32_t> index(60, -1);
+  for (const InstructionSet isa : {InstructionSet::kBaseline, best_instruction_set()}) {
+    assign_cells(PointsView(), grid(), nullptr, isa);
+    EXPECT_TRUE(accumulate_cells(PointsView(), nullptr, grid(), index.data(), isa).empty());
+  }
+  EXPECT_EQ(index, std::vector<std::int32_t>(60, -1));
+}
+
 void expect_same_bits(const std::vector<CellSums>& a, const std::vector<CellSums>& b) {
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t s = 0; s < a.size(); ++s) {
