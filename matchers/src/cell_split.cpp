@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cstring>
 
-#if defined(__x86_64__)
+#if SEXTANT_HAVE_AVX2
 #include <immintrin.h>
 #endif
 
@@ -45,8 +45,7 @@ inline vd widen(vf v) {
 #undef SEXTANT_LANES_TARGET
 }  // namespace baseline
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define SEXTANT_HAVE_AVX2_SPLIT 1
+#if SEXTANT_HAVE_AVX2
 namespace avx2 {
 #define SEXTANT_LANES_TARGET __attribute__((target("avx2")))
 // Four floats to four doubles in one instruction (GCC 12 converts the vector in halves).
@@ -56,18 +55,16 @@ SEXTANT_LANES_TARGET inline vd widen(vf v) {
 #include "cell_split_lanes.inc"
 #undef SEXTANT_LANES_TARGET
 }  // namespace avx2
-#else
-#define SEXTANT_HAVE_AVX2_SPLIT 0
-#endif
 
 bool use_avx2(InstructionSet isa) {
-  return SEXTANT_HAVE_AVX2_SPLIT && isa == InstructionSet::kAvx2 && instruction_set_available(isa);
+  return isa == InstructionSet::kAvx2 && instruction_set_available(isa);
 }
+#endif
 
 }  // namespace
 
 void assign_cells(PointsView points, const SplitGrid& grid, std::uint32_t* cells, InstructionSet isa) {
-#if SEXTANT_HAVE_AVX2_SPLIT
+#if SEXTANT_HAVE_AVX2
   if (use_avx2(isa)) return avx2::assign(points.data(), points.size(), grid, cells);
 #endif
   (void)isa;
@@ -76,7 +73,7 @@ void assign_cells(PointsView points, const SplitGrid& grid, std::uint32_t* cells
 
 std::vector<CellSums> accumulate_cells(PointsView points, const std::uint32_t* cells, const SplitGrid& grid,
                                        std::int32_t* index, InstructionSet isa) {
-#if SEXTANT_HAVE_AVX2_SPLIT
+#if SEXTANT_HAVE_AVX2
   if (use_avx2(isa)) return avx2::accumulate(points.data(), points.size(), cells, grid, index);
 #endif
   (void)isa;

@@ -3,7 +3,7 @@
 namespace sextant {
 
 bool instruction_set_available(InstructionSet isa) {
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#if SEXTANT_HAVE_AVX2
   static const bool avx2 = __builtin_cpu_supports("avx2");
   return isa == InstructionSet::kBaseline || avx2;
 #else

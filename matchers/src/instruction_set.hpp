@@ -3,6 +3,13 @@
 // for plain x86-64 (SSE2) and with AVX2, which the CPU chooses at run time; elsewhere only the
 // baseline is. Every loop gives the same bits on both (its tests check it): the choice is speed only.
 
+/// 1 where this build compiles the AVX2 paths (x86-64 with GCC or Clang), else 0.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define SEXTANT_HAVE_AVX2 1
+#else
+#define SEXTANT_HAVE_AVX2 0
+#endif
+
 namespace sextant {
 
 enum class InstructionSet { kBaseline, kAvx2 };

@@ -33,21 +33,18 @@ namespace baseline {
 #undef SEXTANT_LANES_TARGET
 }  // namespace baseline
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define SEXTANT_HAVE_AVX2_KERNEL 1
+#if SEXTANT_HAVE_AVX2
 namespace avx2 {
 #define SEXTANT_LANES_TARGET __attribute__((target("avx2")))
 #include "mahalanobis_lanes.inc"
 #undef SEXTANT_LANES_TARGET
 }  // namespace avx2
-#else
-#define SEXTANT_HAVE_AVX2_KERNEL 0
 #endif
 
 template <bool kGradient, bool kHessian>
 void block(InstructionSet isa, const NdtGrid& grid, const Eigen::Vector3f* begin, const Eigen::Vector3f* end,
            const Eigen::Matrix3d& R, const Eigen::Vector3d& t, double max_q, Sums& s) {
-#if SEXTANT_HAVE_AVX2_KERNEL
+#if SEXTANT_HAVE_AVX2
   if (isa == InstructionSet::kAvx2) return avx2::block<kGradient, kHessian>(grid, begin, end, R, t, max_q, s);
 #endif
   (void)isa;
