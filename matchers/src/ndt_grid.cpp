@@ -8,7 +8,8 @@
 #include <memory>
 #include <utility>
 
-#include <Eigen/Eigenvalues>
+#include <Eigen/Cholesky>
+#include <Eigen/LU>
 
 #include "cell_split.hpp"
 #include "sextant/matchers/cell_covariance.hpp"
@@ -38,14 +39,11 @@ bool cell_gaussian(const CellSums& s, const Eigen::Vector3d& origin, double edge
   sum_sq << s.sum_sq[0], s.sum_sq[1], s.sum_sq[2], s.sum_sq[1], s.sum_sq[3], s.sum_sq[4], s.sum_sq[2],
       s.sum_sq[4], s.sum_sq[5];
   const Eigen::Matrix3d C = (sum_sq - n * mean * mean.transpose()) / (n - 1.0);
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
-  eig.computeDirect(C, Eigen::EigenvaluesOnly);  // C'⁻¹ needs no eigenvectors, which cost more
-  const Eigen::Vector3d& l = eig.eigenvalues();  // ascending
-  if (!(l(2) > 0.0) || !(l(2) >= settings.min_spread) || !std::isfinite(l(2))) return false;
-  const double relative = settings.min_relative_spread * edge;
-  if (l(2) < relative * relative) return false;
   // C'⁻¹ = V Λ'⁻¹ Vᵀ with Λ' = max(Λ, λmax / ratio)
-  const Eigen::Matrix3d inv = inflated_inverse(C, l, l(2) / settings.max_eigen_ratio);
+  const double relative = settings.min_relative_spread * edge;
+  Eigen::Matrix3d inv;
+  if (!cell_information(C, settings.max_eigen_ratio, std::max(settings.min_spread, relative * relative), inv))
+    return false;
   const Eigen::Vector3d m = mean + origin;
   for (int i = 0; i < 3; ++i) out.mean[i] = static_cast<float>(m(i));
   const double upper[6] = {inv(0, 0), inv(0, 1), inv(0, 2), inv(1, 1), inv(1, 2), inv(2, 2)};

@@ -1,9 +1,11 @@
-// inflated_inverse against V max(Λ, floor)⁻¹ Vᵀ from known eigenvectors and eigenvalues: in each case
-// of raised eigenvalues and at the case boundaries, where the spectral gaps vanish.
+// cell_information against V max(Λ, floor)⁻¹ Vᵀ from known eigenvectors and eigenvalues: in each case
+// of raised eigenvalues and at the case boundaries, where the spectral gaps vanish; its eigenvalues
+// against the known ones, and the cells it refuses.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
@@ -30,14 +32,15 @@ Eigen::Matrix3d random_rotation(Rng& rng) {
 std::vector<Spectrum> spectra() {
   const double f = 0.01;  // the floor for λ₂ = 1 and ratio 100
   return {
-      {{0.2, 0.5, 1.0}, 100.0},            // nothing raised
-      {{1e-5, 0.3, 1.0}, 100.0},           // a plane: λ₀ raised
-      {{1e-6, 2e-4, 1.0}, 100.0},          // a line: λ₀ and λ₁ raised
-      {{0.0, 0.0, 1.0}, 100.0},            // rank one
-      {{1e-4, 1.0, 1.0}, 100.0},           // a round plane: λ₁ = λ₂
-      {{1e-4, 1e-4, 1.0}, 100.0},          // a thin line: λ₀ = λ₁ below the floor
-      {{1.0, 1.0, 1.0}, 100.0},            // a ball
-      {{f * (1 - 1e-12), f, 1.0}, 100.0},  // λ₀ a hair below the floor, λ₁ on it
+      {{0.2, 0.5, 1.0}, 100.0},             // nothing raised
+      {{1e-5, 0.3, 1.0}, 100.0},            // a plane: λ₀ raised
+      {{1e-6, 2e-4, 1.0}, 100.0},           // a line: λ₀ and λ₁ raised
+      {{0.0, 0.0, 1.0}, 100.0},             // rank one
+      {{1e-4, 1.0, 1.0}, 100.0},            // a round plane: λ₁ = λ₂
+      {{1e-4, 1e-4, 1.0}, 100.0},           // a thin line: λ₀ = λ₁ below the floor
+      {{1.0, 1.0, 1.0}, 100.0},             // a ball
+      {{f * (1 - 1e-12), f, 1.0}, 100.0},   // λ₀ a hair below the floor, λ₁ on it
+      {{f * (1 + 1e-9), 0.5, 1.0}, 100.0},  // λ₀ a hair above it: nothing raised, not provably
       {{f * (1 - 1e-9), f * (1 + 1e-12), 1.0}, 100.0},
       {{f * 0.5, f * (1 - 1e-13), 1.0}, 100.0},  // λ₁ a hair below the floor
       {{0.3, 1.0 - 1e-13, 1.0}, 1.0},            // ratio 1: everything raised to λ₂
@@ -46,36 +49,108 @@ std::vector<Spectrum> spectra() {
   };
 }
 
-TEST(CellCovariance, InflatedInverseIsTheInverseOfTheRaisedSpectrum) {
+/// A matrix with the spectrum's eigenvalues in random directions, and the directions.
+Eigen::Matrix3d with_spectrum(const Eigen::Vector3d& values, Rng& rng,
+                              Eigen::Matrix3d* directions = nullptr) {
+  const Eigen::Matrix3d V = random_rotation(rng);
+  if (directions) *directions = V;
+  return V * values.asDiagonal() * V.transpose();
+}
+
+// The rounding of two closed forms differs from trial to trial: each spectrum's worst error over the
+// trials is compared.
+TEST(CellCovariance, EigenvaluesAsAccurateAsEigensClosedForm) {
+  Rng rng(3);
+  for (const Spectrum& s : spectra()) {
+    double worst = 0.0, eigens_worst = 0.0;
+    for (int trial = 0; trial < 50; ++trial) {
+      const Eigen::Matrix3d C = with_spectrum(s.values, rng);
+      const Eigen::Vector3d l = symmetric_eigenvalues(C);
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+      eig.computeDirect(C, Eigen::EigenvaluesOnly);
+      worst = std::max(worst, (l - s.values).cwiseAbs().maxCoeff());
+      eigens_worst = std::max(eigens_worst, (eig.eigenvalues() - s.values).cwiseAbs().maxCoeff());
+      EXPECT_LE(l(0), l(1));
+      EXPECT_LE(l(1), l(2));
+    }
+    // A repeated eigenvalue is found to about √ε · λ₂ by any closed form: Eigen's error is the bar.
+    EXPECT_LE(worst, std::max(2.0 * eigens_worst, 1e-14 * s.values(2)))
+        << "spectrum " << s.values.transpose() << ", Eigen's worst error " << eigens_worst;
+  }
+}
+
+TEST(CellCovariance, InformationIsTheInverseOfTheRaisedSpectrum) {
   Rng rng(7);
   for (const Spectrum& s : spectra()) {
+    double worst = 0.0, vectors_worst = 0.0;
     for (int trial = 0; trial < 50; ++trial) {
-      const Eigen::Matrix3d V = random_rotation(rng);
-      const Eigen::Matrix3d C = V * s.values.asDiagonal() * V.transpose();
+      Eigen::Matrix3d V;
+      const Eigen::Matrix3d C = with_spectrum(s.values, rng, &V);
       const double floor = s.values(2) / s.ratio;
       const Eigen::Vector3d raised = s.values.cwiseMax(floor);
       const Eigen::Matrix3d expected = V * raised.cwiseInverse().asDiagonal() * V.transpose();
-      // As cell_gaussian calls it: with the eigenvalues computed from C, not the exact ones.
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
-      eig.computeDirect(C, Eigen::EigenvaluesOnly);
-      const Eigen::Vector3d l = eig.eigenvalues();
-      const Eigen::Matrix3d got = inflated_inverse(C, l, l(2) / s.ratio);
+      Eigen::Matrix3d got;
+      ASSERT_TRUE(cell_information(C, s.ratio, 0.0, got)) << s.values.transpose();
       ASSERT_TRUE(got.allFinite()) << s.values.transpose();
+      EXPECT_EQ(got, got.transpose());
       // The closed-form eigenvalues of a (nearly) repeated root carry errors of about √ε, which
-      // an inverse built from the computed eigenvectors shares: the bar is that inverse's error.
+      // an inverse built from Eigen's eigenvalues and eigenvectors shares: the bar is its error.
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
       eig.computeDirect(C);
       const Eigen::Matrix3d& W = eig.eigenvectors();
+      const double computed_floor = eig.eigenvalues()(2) / s.ratio;
       const Eigen::Matrix3d from_vectors =
-          W * eig.eigenvalues().cwiseMax(l(2) / s.ratio).cwiseInverse().asDiagonal() * W.transpose();
+          W * eig.eigenvalues().cwiseMax(computed_floor).cwiseInverse().asDiagonal() * W.transpose();
       const double error = (got - expected).norm() / expected.norm();
-      const double vectors_error = (from_vectors - expected).norm() / expected.norm();
-      EXPECT_LE(error, std::max(2.0 * vectors_error, 1e-12))
-          << "spectrum " << s.values.transpose() << ", trial " << trial << ", with eigenvectors "
-          << vectors_error;
+      worst = std::max(worst, error);
+      vectors_worst = std::max(vectors_worst, (from_vectors - expected).norm() / expected.norm());
       EXPECT_LT(error, 1e-6)  // about √ε · λ₂ / floor at most
           << "spectrum " << s.values.transpose() << ", trial " << trial;
     }
+    EXPECT_LE(worst, std::max(2.0 * vectors_worst, 1e-12))
+        << "spectrum " << s.values.transpose() << ", with eigenvectors " << vectors_worst;
   }
+}
+
+// The same cells in any unit: the direct route's squared bounds and the eigenvalues' scaling neither
+// overflow nor underflow.
+TEST(CellCovariance, InformationScalesWithTheCovariance) {
+  Rng rng(13);
+  for (const Eigen::Vector3d& values : {Eigen::Vector3d(0.2, 0.5, 1.0), Eigen::Vector3d(1e-5, 0.3, 1.0)}) {
+    Eigen::Matrix3d V;
+    const Eigen::Matrix3d C = with_spectrum(values, rng, &V);
+    const Eigen::Matrix3d expected = V * values.cwiseMax(0.01).cwiseInverse().asDiagonal() * V.transpose();
+    for (const double unit : {1e-60, 1e-30, 1e-3, 1e30, 1e60}) {
+      Eigen::Matrix3d got;
+      ASSERT_TRUE(cell_information(unit * C, 100.0, 0.0, got)) << unit;
+      EXPECT_LT((unit * got - expected).norm() / expected.norm(), 1e-12)
+          << values.transpose() << " × " << unit;
+    }
+  }
+}
+
+TEST(CellCovariance, CellsWithoutSpreadOrNotFiniteAreRefused) {
+  Rng rng(11);
+  const Eigen::Matrix3d marker = Eigen::Matrix3d::Constant(42.0);
+  Eigen::Matrix3d out = marker;
+  EXPECT_FALSE(cell_information(Eigen::Matrix3d::Zero(), 100.0, 0.0, out));  // repeated points
+  const Eigen::Matrix3d ball = with_spectrum({0.5, 0.8, 1.0}, rng);
+  EXPECT_FALSE(cell_information(ball, 100.0, 1.0 + 1e-9, out));  // λ₂ just below the least spread
+  const Eigen::Matrix3d line = with_spectrum({0.0, 0.0, 1e-4}, rng);
+  EXPECT_FALSE(cell_information(line, 100.0, 2e-4, out));
+  for (const double bad : {std::nan(""), std::numeric_limits<double>::infinity()}) {
+    Eigen::Matrix3d C = ball;
+    C(0, 2) = C(2, 0) = bad;
+    EXPECT_FALSE(cell_information(C, 100.0, 0.0, out)) << bad;
+  }
+  EXPECT_EQ(out, marker);  // untouched by every refusal
+  // Negative definite (no spread at all) and a rounding below zero in every direction.
+  EXPECT_FALSE(cell_information(-ball, 100.0, 0.0, out));
+  EXPECT_FALSE(cell_information(with_spectrum({-3e-18, -2e-18, -1e-18}, rng), 100.0, 0.0, out));
+  // At the bar: λ₂ = least spread is kept, on both the direct and the raised route.
+  EXPECT_TRUE(cell_information(Eigen::Vector3d(0.9, 1.0, 1.0).asDiagonal(), 100.0, 1.0, out));
+  EXPECT_TRUE(cell_information(Eigen::Vector3d(0.0, 0.0, 1.0).asDiagonal(), 100.0, 1.0, out));
+  EXPECT_TRUE(out.isApprox(Eigen::Vector3d(100.0, 100.0, 1.0).asDiagonal().toDenseMatrix(), 1e-14));
 }
 
 }  // namespace

@@ -1,16 +1,28 @@
 #pragma once
-// The inverse of a cell covariance with its small eigenvalues raised (the covariance inflation
-// after eq. 3.11), from the eigenvalues alone.
+// A cell's information matrix: the inverse of its covariance with the small eigenvalues raised (the
+// covariance inflation after eq. 3.11), from the eigenvalues alone, or from no eigenvalue at all.
 #include <Eigen/Core>
 
 namespace sextant {
 
-/// C'⁻¹, where C = V Λ Vᵀ is symmetric with ascending eigenvalues `l` (Λ) and C' = V Λ' Vᵀ with
-/// Λ' = max(Λ, floor), for 0 < floor ≤ λ₂. The eigenvectors are never formed: a raised eigenvalue
-/// enters through its spectral projector Pᵢ = Πⱼ≠ᵢ (C − λⱼ I) / (λᵢ − λⱼ) (Sylvester's formula), and
-/// C' (whose condition number is at most λ₂ / floor) is inverted by its cofactors. Every coefficient
-/// that multiplies a projector is at most the gap it divides by, so the error in C' stays of the
-/// order of machine ε · λ₂, however close the eigenvalues.
-Eigen::Matrix3d inflated_inverse(const Eigen::Matrix3d& C, const Eigen::Vector3d& l, double floor);
+/// The eigenvalues of a symmetric matrix (its upper triangle is read), ascending: the trigonometric
+/// solution of the characteristic cubic of C − (tr C / 3) I, scaled to its largest entry. Their error
+/// is of the order of machine ε · max |λ|, and of √ε · max |λ| at a (nearly) repeated eigenvalue.
+Eigen::Vector3d symmetric_eigenvalues(const Eigen::Matrix3d& C);
+
+/// C'⁻¹ for a symmetric C = V Λ Vᵀ (its upper triangle is read), where C' = V Λ' Vᵀ raises every
+/// eigenvalue below λ₂ / ratio to it (ratio ≥ 1). False, and `information` untouched, when C is not
+/// finite or its largest eigenvalue λ₂ is not above 0 and at least `least_spread` (a cell without
+/// spread).
+///
+/// The eigenvectors are never formed: a raised eigenvalue enters through its spectral projector
+/// Pᵢ = Πⱼ≠ᵢ (C − λⱼ I) / (λᵢ − λⱼ) (Sylvester's formula), a polynomial in C and so symmetric, and C'
+/// (whose condition number is at most ratio) is inverted by its cofactors. Every coefficient that
+/// multiplies a projector is at most the gap it divides by, so the error in C' stays of the order of
+/// machine ε · λ₂, however close the eigenvalues. Where no eigenvalue needs raising for certain,
+/// because λ₀ ≥ det C / c₂ ≥ ‖C‖_F / ratio ≥ λ₂ / ratio (c₂ the sum of C's principal 2 × 2 minors,
+/// all eigenvalues positive), C is inverted at once and no eigenvalue is computed.
+bool cell_information(const Eigen::Matrix3d& C, double ratio, double least_spread,
+                      Eigen::Matrix3d& information);
 
 }  // namespace sextant
