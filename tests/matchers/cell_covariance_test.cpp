@@ -147,7 +147,10 @@ TEST(CellCovariance, CellsWithoutSpreadOrNotFiniteAreRefused) {
   // Negative definite (no spread at all) and a rounding below zero in every direction.
   EXPECT_FALSE(cell_information(-ball, 100.0, 0.0, out));
   EXPECT_FALSE(cell_information(with_spectrum({-3e-18, -2e-18, -1e-18}, rng), 100.0, 0.0, out));
-  // At the bar: λ₂ = least spread is kept, on both the direct and the raised route.
+  // At the bar, λ₂ = least spread is kept: on the direct route (a ball, trace = 3 × least spread),
+  // and from the eigenvalues with nothing raised (trace below it) and with λ₀ and λ₁ raised.
+  EXPECT_TRUE(cell_information(Eigen::Matrix3d::Identity(), 100.0, 1.0, out));
+  EXPECT_EQ(out, Eigen::Matrix3d::Identity());
   EXPECT_TRUE(cell_information(Eigen::Vector3d(0.9, 1.0, 1.0).asDiagonal(), 100.0, 1.0, out));
   EXPECT_TRUE(cell_information(Eigen::Vector3d(0.0, 0.0, 1.0).asDiagonal(), 100.0, 1.0, out));
   EXPECT_TRUE(out.isApprox(Eigen::Vector3d(100.0, 100.0, 1.0).asDiagonal().toDenseMatrix(), 1e-14));
