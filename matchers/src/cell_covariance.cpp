@@ -30,6 +30,11 @@ Sym plus(const Sym& a, const Sym& b) {
   return {a.xx + b.xx, a.xy + b.xy, a.xz + b.xz, a.yy + b.yy, a.yz + b.yz, a.zz + b.zz};
 }
 
+/// ‖S‖_F²: the sum of the squares of all nine entries.
+double squared_norm(const Sym& s) {
+  return s.xx * s.xx + s.yy * s.yy + s.zz * s.zz + 2.0 * (s.xy * s.xy + s.xz * s.xz + s.yz * s.yz);
+}
+
 /// The cofactors of a symmetric matrix (its adjugate, also symmetric).
 Sym cofactors(const Sym& s) {
   return {s.yy * s.zz - s.yz * s.yz, s.xz * s.yz - s.xy * s.zz, s.xy * s.yz - s.xz * s.yy,
@@ -64,8 +69,7 @@ Eigen::Vector3d eigenvalues_of(const Sym& s) {
   if (!(scale > 0.0)) return Eigen::Vector3d::Constant(mean);  // a multiple of I
   const double k = 1.0 / scale;
   const Sym K{k * (s.xx - mean), k * s.xy, k * s.xz, k * (s.yy - mean), k * s.yz, k * (s.zz - mean)};
-  const double p =
-      (K.xx * K.xx + K.yy * K.yy + K.zz * K.zz + 2.0 * (K.xy * K.xy + K.xz * K.xz + K.yz * K.yz)) / 6.0;
+  const double p = squared_norm(K) / 6.0;
   const double q = 0.5 * determinant(K, cofactors(K));
   // θ ∈ [0, π/3]: 2√p cos θ is the largest root and the other two come in order.
   const double theta = std::atan2(std::sqrt(std::max(p * p * p - q * q, 0.0)), q) / 3.0;
@@ -99,8 +103,7 @@ Eigen::Vector3d symmetric_eigenvalues(const Eigen::Matrix3d& C) {
 bool cell_information(const Eigen::Matrix3d& C, double ratio, double least_spread,
                       Eigen::Matrix3d& information) {
   const Sym s = upper_of(C);
-  const double squares =
-      s.xx * s.xx + s.yy * s.yy + s.zz * s.zz + 2.0 * (s.xy * s.xy + s.xz * s.xz + s.yz * s.yz);
+  const double squares = squared_norm(s);
   if (!std::isfinite(squares)) return false;  // NaN or ∞ anywhere
   const double trace = s.xx + s.yy + s.zz;
   const Sym cof = cofactors(s);
