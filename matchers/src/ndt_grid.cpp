@@ -11,8 +11,8 @@
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 
+#include "cell_covariance_lanes.hpp"
 #include "cell_split.hpp"
-#include "sextant/matchers/cell_covariance.hpp"
 
 namespace sextant {
 
@@ -28,27 +28,13 @@ int saturated_cell_count(double n) {
 
 using ndt_detail::CellSums;
 
-/// Mean (eq. 3.2) and inverse covariance (eq. 3.3) with eigenvalues raised to λmax / ratio; false
-/// when the cell has (almost) no spread: λmax below `min_spread` (repeated points) or below
-/// (min_relative_spread · edge)² (a blob, not a surface at this cell size).
-bool cell_gaussian(const CellSums& s, const Eigen::Vector3d& origin, double edge,
-                   const CellStatsSettings& settings, CellGaussian& out) {
+/// Mean (eq. 3.2) and covariance (eq. 3.3, its upper triangle xx xy xz yy yz zz) of a cell, the mean
+/// relative to the grid origin.
+void cell_moments(const CellSums& s, double mean[3], double covariance[6]) {
   const double n = s.count;
-  const Eigen::Vector3d mean = Eigen::Vector3d(s.sum[0], s.sum[1], s.sum[2]) / n;
-  Eigen::Matrix3d sum_sq;
-  sum_sq << s.sum_sq[0], s.sum_sq[1], s.sum_sq[2], s.sum_sq[1], s.sum_sq[3], s.sum_sq[4], s.sum_sq[2],
-      s.sum_sq[4], s.sum_sq[5];
-  const Eigen::Matrix3d C = (sum_sq - n * mean * mean.transpose()) / (n - 1.0);
-  // C'⁻¹ = V Λ'⁻¹ Vᵀ with Λ' = max(Λ, λmax / ratio)
-  const double relative = settings.min_relative_spread * edge;
-  Eigen::Matrix3d inv;
-  if (!cell_information(C, settings.max_eigen_ratio, std::max(settings.min_spread, relative * relative), inv))
-    return false;
-  const Eigen::Vector3d m = mean + origin;
-  for (int i = 0; i < 3; ++i) out.mean[i] = static_cast<float>(m(i));
-  const double upper[6] = {inv(0, 0), inv(0, 1), inv(0, 2), inv(1, 1), inv(1, 2), inv(2, 2)};
-  for (int i = 0; i < 6; ++i) out.inv_cov[i] = static_cast<float>(upper[i]);
-  return true;
+  for (int i = 0; i < 3; ++i) mean[i] = s.sum[i] / n;
+  const int row[6] = {0, 0, 0, 1, 1, 2}, col[6] = {0, 1, 2, 1, 2, 2};
+  for (int e = 0; e < 6; ++e) covariance[e] = (s.sum_sq[e] - n * mean[row[e]] * mean[col[e]]) / (n - 1.0);
 }
 
 /// The stored C'⁻¹ of a cell as a symmetric double matrix.
@@ -138,17 +124,41 @@ std::vector<CellSums> NdtGrid::merge_children(const std::vector<CellSums>& child
 void NdtGrid::generate(const std::vector<CellSums>& sums, const CellStatsSettings& settings) {
   gaussians_.reserve(sums.size());
   cell_of_gaussian_.reserve(sums.size());
+  // C'⁻¹ with eigenvalues raised to λmax / ratio; no Gaussian for a cell with (almost) no spread: λmax
+  // below `min_spread` (repeated points) or below (min_relative_spread · edge)² (a blob, not a surface
+  // at this cell size).
+  const double relative = settings.min_relative_spread * cell_edge_;
+  const double least_spread = std::max(settings.min_spread, relative * relative);
+  // The cells with enough points, a block at a time: their moments, then their information four cells
+  // per vector (cells_information), then their Gaussians in the cells' order.
+  constexpr std::size_t kBlock = 64;
+  const CellSums* cells[kBlock];
+  double means[kBlock][3], covariances[6 * kBlock], information[6 * kBlock];
+  bool kept[kBlock];
+  std::size_t filled = 0;
+  const auto flush = [&] {
+    ndt_detail::cells_information(covariances, filled, settings.max_eigen_ratio, least_spread, information,
+                                  kept);
+    for (std::size_t j = 0; j < filled; ++j) {
+      if (!kept[j]) continue;
+      CellGaussian g{};
+      for (int i = 0; i < 3; ++i) g.mean[i] = static_cast<float>(means[j][i] + origin_(i));
+      for (int e = 0; e < 6; ++e) g.inv_cov[e] = static_cast<float>(information[6 * j + e]);
+      index_[static_cast<std::size_t>(cells[j]->cell)] = static_cast<std::int32_t>(gaussians_.size());
+      modelled_points_ += static_cast<std::size_t>(cells[j]->count);
+      gaussians_.push_back(g);
+      cell_of_gaussian_.push_back(cells[j]->cell);
+    }
+    filled = 0;
+  };
   for (const CellSums& s : sums) {
-    std::int32_t& slot = index_[static_cast<std::size_t>(s.cell)];
-    slot = -1;
+    index_[static_cast<std::size_t>(s.cell)] = -1;
     if (static_cast<std::size_t>(s.count) < settings.min_points) continue;
-    CellGaussian g{};
-    if (!cell_gaussian(s, origin_, cell_edge_, settings, g)) continue;
-    slot = static_cast<std::int32_t>(gaussians_.size());
-    modelled_points_ += static_cast<std::size_t>(s.count);
-    gaussians_.push_back(g);
-    cell_of_gaussian_.push_back(s.cell);
+    cell_moments(s, means[filled], covariances + 6 * filled);
+    cells[filled++] = &s;
+    if (filled == kBlock) flush();
   }
+  flush();
 }
 
 NdtGrid NdtGrid::build(const PointCloud& reference, const Eigen::Vector3d& origin, double cell_edge,

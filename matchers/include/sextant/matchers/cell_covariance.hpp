@@ -6,7 +6,8 @@
 namespace sextant {
 
 /// The eigenvalues of a symmetric matrix (its upper triangle is read), ascending: the trigonometric
-/// solution of the characteristic cubic of C − (tr C / 3) I, scaled to its largest entry. Their error
+/// solution of the characteristic cubic of C − (tr C / 3) I, scaled to its largest entry, with the
+/// angle's cosine and sine from a complex cube root by Halley's iteration (no libm call). Their error
 /// is of the order of machine ε · max |λ|, and of √ε · max |λ| at a (nearly) repeated eigenvalue.
 Eigen::Vector3d symmetric_eigenvalues(const Eigen::Matrix3d& C);
 
