@@ -51,15 +51,6 @@ SEXTANT_LANES_TARGET inline vd sqrt_lanes(vd v) {
 }  // namespace avx2
 #endif
 
-bool use_avx2(InstructionSet isa) {
-#if SEXTANT_HAVE_AVX2
-  return isa == InstructionSet::kAvx2 && instruction_set_available(isa);
-#else
-  (void)isa;
-  return false;
-#endif
-}
-
 /// C's upper triangle, xx xy xz yy yz zz.
 void upper_of(const Eigen::Matrix3d& C, double upper[6]) {
   const double u[6] = {C(0, 0), C(0, 1), C(0, 2), C(1, 1), C(1, 2), C(2, 2)};
@@ -73,8 +64,9 @@ namespace ndt_detail {
 void cells_information(const double* covariances, std::size_t n, double ratio, double least_spread,
                        double* information, bool* kept, InstructionSet isa) {
 #if SEXTANT_HAVE_AVX2
-  if (use_avx2(isa)) return avx2::information_batch(covariances, n, ratio, least_spread, information, kept);
+  if (runs_avx2(isa)) return avx2::information_batch(covariances, n, ratio, least_spread, information, kept);
 #endif
+  (void)isa;
   baseline::information_batch(covariances, n, ratio, least_spread, information, kept);
 }
 
@@ -85,7 +77,7 @@ Eigen::Vector3d symmetric_eigenvalues(const Eigen::Matrix3d& C) {
   upper_of(C, upper);
   Eigen::Vector3d values;
 #if SEXTANT_HAVE_AVX2
-  if (use_avx2(best_instruction_set())) {
+  if (runs_avx2(best_instruction_set())) {
     avx2::eigenvalues_one(upper, values.data());
     return values;
   }

@@ -55,17 +55,13 @@ SEXTANT_LANES_TARGET inline vd widen(vf v) {
 #include "cell_split_lanes.inc"
 #undef SEXTANT_LANES_TARGET
 }  // namespace avx2
-
-bool use_avx2(InstructionSet isa) {
-  return isa == InstructionSet::kAvx2 && instruction_set_available(isa);
-}
 #endif
 
 }  // namespace
 
 void assign_cells(PointsView points, const SplitGrid& grid, std::uint32_t* cells, InstructionSet isa) {
 #if SEXTANT_HAVE_AVX2
-  if (use_avx2(isa)) return avx2::assign(points.data(), points.size(), grid, cells);
+  if (runs_avx2(isa)) return avx2::assign(points.data(), points.size(), grid, cells);
 #endif
   (void)isa;
   baseline::assign(points.data(), points.size(), grid, cells);
@@ -74,7 +70,7 @@ void assign_cells(PointsView points, const SplitGrid& grid, std::uint32_t* cells
 std::vector<CellSums> accumulate_cells(PointsView points, const std::uint32_t* cells, const SplitGrid& grid,
                                        std::int32_t* index, InstructionSet isa) {
 #if SEXTANT_HAVE_AVX2
-  if (use_avx2(isa)) return avx2::accumulate(points.data(), points.size(), cells, grid, index);
+  if (runs_avx2(isa)) return avx2::accumulate(points.data(), points.size(), cells, grid, index);
 #endif
   (void)isa;
   return baseline::accumulate(points.data(), points.size(), cells, grid, index);

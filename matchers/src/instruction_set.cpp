@@ -15,4 +15,8 @@ InstructionSet best_instruction_set() {
   return instruction_set_available(InstructionSet::kAvx2) ? InstructionSet::kAvx2 : InstructionSet::kBaseline;
 }
 
+bool runs_avx2(InstructionSet isa) {
+  return isa == InstructionSet::kAvx2 && SEXTANT_HAVE_AVX2 && instruction_set_available(isa);
+}
+
 }  // namespace sextant

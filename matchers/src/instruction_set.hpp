@@ -17,5 +17,7 @@ enum class InstructionSet { kBaseline, kAvx2 };
 bool instruction_set_available(InstructionSet isa);
 /// The fastest available one.
 InstructionSet best_instruction_set();
+/// True when `isa` is AVX2 and this build and the CPU both have it: where a dispatch takes its AVX2 path.
+bool runs_avx2(InstructionSet isa);
 
 }  // namespace sextant
