@@ -1,9 +1,10 @@
-// A cell's information matrix (the covariance inflation after eq. 3.11), four cells per vector: every
-// lane takes the same IEEE operations, and the route a cell needs (direct, or from its eigenvalues with
-// λ₀, or λ₀ and λ₁, raised) is chosen per lane by a select. One cell alone runs in lane 0 of the same
-// code. The lanes (cell_covariance_lanes.inc) are compiled twice on x86-64, for plain x86-64 and with
-// AVX2, like the split's (cell_split.cpp); this file is compiled with -ffp-contract=off
-// (matchers/CMakeLists.txt), so both give the same bits (CellCovariance.* checks it).
+// A cell's information matrix (the covariance inflation after eq. 3.11), four cells per vector: the
+// direct route for every cell, then the cells it cannot take gathered through the eigenvalues, where
+// which of them are raised is a select per lane. Every lane takes the same IEEE operations, so a cell
+// alone (in lane 0 of the same code) gets the bits it gets in a batch. The lanes
+// (cell_covariance_lanes.inc) are compiled twice on x86-64, for plain x86-64 and with AVX2, like the
+// split's (cell_split.cpp); this file is compiled with -ffp-contract=off (matchers/CMakeLists.txt), so
+// both give the same bits (CellCovariance.* checks it).
 #include "sextant/matchers/cell_covariance.hpp"
 
 #include <algorithm>
