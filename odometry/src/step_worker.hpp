@@ -41,8 +41,9 @@ class StepWorker {
   /// to back it (the campus route in 150 scans, 9 m apart, with constant velocity: trusted 8.2 m off at
   /// overlap 0.59 where its neighbours matched 0.66–0.77). Every registration of the step is an answer (the
   /// first, its alternatives, each recovery): a trusted recovery far from an answer (QualitySettings'
-  /// ambiguity tolerance) that does not fit clearly better than it is a second answer, and when nothing else
-  /// is trusted the step is chained as the least suspect and says it is ambiguous.
+  /// ambiguity tolerance) that does not fit clearly better than it is a second answer, and so is one that
+  /// reaches a pose already in dispute (an ambiguous registration's, or the alternative that made it so);
+  /// when nothing else is trusted the step is chained as the least suspect and says it is ambiguous.
   void recover(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
                const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed,
                const SequenceTrust& sequence);
@@ -69,6 +70,8 @@ class StepWorker {
   /// (sequence_trust.hpp, check_unconfirmed_no_motion)
   bool motion_unknown_ = false;
   std::vector<Answer> answers_;  ///< this step's answers so far (first_try, recover)
+  /// The poses of this step's ambiguous registrations and of the alternatives that made them so
+  std::vector<Eigen::Isometry3d> disputed_;
   std::unique_ptr<Sampler> sampler_;
   const OdometrySettings& settings_;
   const PointCloud* matcher_reference_ = nullptr;   ///< what `matcher_` was last given (its model's source)
