@@ -82,6 +82,11 @@ bool far_apart(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, const Qua
          rotation_angle(d) * kDegPerRad > settings.ambiguity_degrees;
 }
 
+bool rivals(const Eigen::Isometry3d& pose, double fit, const Eigen::Isometry3d& other, double other_fit,
+            const QualitySettings& settings) {
+  return far_apart(pose, other, settings) && other_fit <= settings.ambiguity_fit_band * fit;
+}
+
 namespace {
 
 /// The checks on `result` alone (its alternatives left out).
@@ -124,9 +129,8 @@ RegistrationQuality assess_registration(const RegistrationResult& result, const 
   RegistrationQuality q = assess_alone(result, input, settings);
   if (!q.trusted()) return q;
   for (const RegistrationResult& other : result.alternatives) {
-    if (!far_apart(result.T, other.T, settings)) continue;
     const RegistrationQuality alone = assess_alone(other, input, settings);
-    if (!alone.trusted() || alone.fit_ratio > settings.ambiguity_fit_band * q.fit_ratio) continue;
+    if (!alone.trusted() || !rivals(result.T, q.fit_ratio, other.T, alone.fit_ratio, settings)) continue;
     const Eigen::Isometry3d d = relative(result.T, other.T);
     q.trust = Trust::kSuspect;
     q.ambiguous = true;

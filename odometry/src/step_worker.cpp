@@ -84,8 +84,7 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
   const QualitySettings& quality = settings_.quality;
   const auto second_answer = [&](const OdometryStep& again) {
     return std::any_of(answers_.begin(), answers_.end(), [&](const Answer& a) {
-      return far_apart(again.relative, a.relative, quality) &&
-             again.quality.fit_ratio * quality.ambiguity_fit_band >= a.fit_ratio;
+      return rivals(again.relative, again.quality.fit_ratio, a.relative, a.fit_ratio, quality);
     });
   };
   // A pose already in dispute (two answers of one registration, far apart, fitting about as well):
@@ -175,9 +174,8 @@ void StepWorker::remember(const PairMatch& m, const PointCloud& sample) {
     const RegistrationQuality q = assess_registration(other, sample, settings_.quality);
     if (!q.trusted()) continue;
     answers_.push_back({other.T, q.fit_ratio});
-    // The alternatives that make `r` ambiguous (assess_registration's test) are in dispute with it.
-    if (r.quality.ambiguous && far_apart(r.T, other.T, settings_.quality) &&
-        q.fit_ratio <= settings_.quality.ambiguity_fit_band * r.quality.fit_ratio)
+    // The alternatives that make `r` ambiguous are in dispute with it.
+    if (r.quality.ambiguous && rivals(r.T, r.quality.fit_ratio, other.T, q.fit_ratio, settings_.quality))
       disputed_.push_back(other.T);
   }
 }

@@ -79,4 +79,11 @@ RegistrationQuality assess_registration(const RegistrationResult& result, const 
 /// Whether `a` and `b` lie farther apart than the settings' ambiguity tolerance (either part).
 bool far_apart(const Eigen::Isometry3d& a, const Eigen::Isometry3d& b, const QualitySettings& settings);
 
+/// Whether a solution at `other` that passes the checks and fits `other_fit` × the prediction is a
+/// rival of one at `pose` fitting `fit`: farther apart than the ambiguity tolerance, and fitting about
+/// as well or better (within ambiguity_fit_band × `fit`). Two rivals cannot both be right, and the
+/// scans cannot tell which is.
+bool rivals(const Eigen::Isometry3d& pose, double fit, const Eigen::Isometry3d& other, double other_fit,
+            const QualitySettings& settings);
+
 }  // namespace sextant
