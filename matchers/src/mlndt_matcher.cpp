@@ -1,10 +1,12 @@
 #include "sextant/matchers/mlndt_matcher.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
 
 #include "layer_objective.hpp"
+#include "run_memo.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 
@@ -50,7 +52,11 @@ bool MlndtSettings::valid(std::string* why) const {
 }
 
 MlndtMatcher::MlndtMatcher(MlndtSettings settings)
-    : settings_(std::move(settings)), threads_(std::make_unique<ScoreThreads>(settings_.threads)) {}
+    : settings_(std::move(settings)),
+      threads_(std::make_unique<ScoreThreads>(settings_.threads)),
+      runs_(std::make_unique<mlndt_detail::RunMemo>()) {}
+
+MlndtMatcher::~MlndtMatcher() = default;
 
 void MlndtMatcher::set_reference(const PointCloud& reference) {
   // Splitting and generative processes. The precision grids lie over layer n's box, which only needs
@@ -86,6 +92,7 @@ void MlndtMatcher::set_reference(const PointCloud& reference) {
   }
   model->reference_points = reference.size();
   model_ = std::move(model);
+  runs_->clear();
 }
 
 namespace {
@@ -100,6 +107,23 @@ bool same_model(const MlndtSettings& a, const MlndtSettings& b) {
          a.precision.min_cell == b.precision.min_cell &&
          a.precision.min_coverage == b.precision.min_coverage &&
          a.precision.max_eigen_ratio == b.precision.max_eigen_ratio;
+}
+
+bool same_optimizer(const OptimizerSettings& a, const OptimizerSettings& b) {
+  const MoreThuenteSettings &l = a.line_search, &m = b.line_search;
+  return a.solver == b.solver && a.iterations_per_stage == b.iterations_per_stage &&
+         a.max_iterations == b.max_iterations && a.epsilon == b.epsilon &&
+         a.function_tolerance == b.function_tolerance && a.step_control == b.step_control &&
+         a.min_matched == b.min_matched && a.dof.active == b.dof.active && l.mu == m.mu && l.eta == m.eta &&
+         l.max_step == m.max_step && l.iterations == m.iterations;
+}
+
+/// Whether two settings make the same runs on one model: every objective and the optimiser alike
+/// (the wide basin and the thread count may differ: they choose starts and share out work).
+bool same_runs(const MlndtSettings& a, const MlndtSettings& b) {
+  return same_model(a, b) && a.start_layer == b.start_layer && a.unmatched_penalty == b.unmatched_penalty &&
+         a.max_distance == b.max_distance && a.truncated_layers == b.truncated_layers &&
+         same_optimizer(a.optimizer, b.optimizer);
 }
 
 /// Keeps `other`, a solution not chosen, in `best.alternatives` when it converged (without its trace).
@@ -125,6 +149,10 @@ bool MlndtMatcher::share_reference(const Matcher& built) {
   const auto* other = dynamic_cast<const MlndtMatcher*>(&built);
   if (other == nullptr || !other->model_ || !same_model(settings_, other->settings_)) return false;
   model_ = other->model_;
+  if (same_runs(settings_, other->settings_))
+    *runs_ = *other->runs_;
+  else
+    runs_->clear();
   return true;
 }
 
@@ -186,9 +214,18 @@ RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Iso
   // to ε. Where it cannot run or does not converge, the run's pose stands.
   OptimizerSettings optimizer = settings_.optimizer;
   if (!precision_layers().empty()) optimizer.epsilon *= kPyramidTolerance;
+  // A run this input already made on this model (run_memo.hpp) is not made again.
+  runs_->keep_only(model_, input);
+  std::vector<const RegistrationResult*> known(runs.size());
+  for (std::size_t k = 0; k < runs.size(); ++k)
+    known[k] = runs_->find(runs[k].first->stage_label(0), runs[k].second);
+  reused_runs_ = static_cast<int>(runs.size() - std::count(known.begin(), known.end(), nullptr));
   std::vector<RegistrationResult> results(runs.size());
-  threads_->for_each(
-      runs.size(), [&](std::size_t k) { results[k] = optimize(*runs[k].first, runs[k].second, optimizer); });
+  threads_->for_each(runs.size(), [&](std::size_t k) {
+    results[k] = known[k] ? *known[k] : optimize(*runs[k].first, runs[k].second, optimizer);
+  });
+  for (std::size_t k = 0; k < runs.size(); ++k)
+    if (!known[k]) runs_->add(runs[k].first->stage_label(0), runs[k].second, results[k]);
   // A run that passes the trust checks (registration_quality.hpp, default thresholds) wins over one
   // that does not; among equals the lowest final score (same input, same last layer: the scores
   // compare directly), the first of equals. The score alone let the coarse layers' pose win from the

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "layer_objective.hpp"
+#include "run_memo.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 
 namespace sextant {
@@ -50,15 +51,18 @@ bool precision_pair_usable(const NdtGrid& aligned, const NdtGrid& shifted, const
          static_cast<double>(aligned.modelled_points()) >= settings.min_coverage * modelled;
 }
 
-RegistrationResult MlndtMatcher::refine(const PointCloud& input, RegistrationResult coarse) const {
+RegistrationResult MlndtMatcher::refine(const PointCloud& input, RegistrationResult coarse) {
   const bool usable = coarse.why == Termination::kConverged || coarse.why == Termination::kMaxIterations;
   const std::vector<NdtGrid>& precision = precision_layers();
   if (precision.empty() || !usable) return coarse;
   const int n = settings_.pyramid.layers;
   // Both grids' truncated scores summed (eq. 3.11 over each); the trace labels the stage n + 1.
   const mlndt_detail::OverlappingGridsObjective fine(precision, n + 1, settings_, input, *threads_);
-  RegistrationResult r = optimize(fine, coarse.T, settings_.optimizer);
-  coarse.seconds += r.seconds;
+  const RegistrationResult* known = runs_->find(n + 1, coarse.T);
+  reused_runs_ += known != nullptr;
+  RegistrationResult r = known ? *known : optimize(fine, coarse.T, settings_.optimizer);
+  if (!known) runs_->add(n + 1, coarse.T, r);
+  coarse.seconds += known ? 0.0 : r.seconds;            // the time spent in this registration
   if (r.why != Termination::kConverged) return coarse;  // the pyramid's pose stands
   // Overlap, fit and the degeneracy check's Hessian stay those of the last layer, at the refined
   // pose: the trust checks (registration_quality.hpp) were measured there. H is the finest grids',

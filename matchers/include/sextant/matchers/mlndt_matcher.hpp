@@ -71,14 +71,21 @@ struct MlndtModel {
   std::size_t reference_points = 0;
 };
 
+namespace mlndt_detail {
+class RunMemo;
+}
+
 class MlndtMatcher final : public Matcher {
  public:
   explicit MlndtMatcher(MlndtSettings settings = {});
+  ~MlndtMatcher() override;
   std::string name() const override { return "mlndt"; }
   void set_reference(const PointCloud& reference) override;
   /// Takes `built`'s model when it is an MlndtMatcher whose settings build the same one (pyramid,
   /// cells and precision stage; the optimiser and the wide basin may differ): odometry's wide-basin
-  /// recovery registers against the model its first try built.
+  /// recovery registers against the model its first try built. When the settings also make the same
+  /// runs (all but the wide basin equal), it takes the runs `built` made on that model too: a run
+  /// repeated on the same input is not computed again (run_memo.hpp).
   bool share_reference(const Matcher& built) override;
   RegistrationResult align(const PointCloud& input, const Eigen::Isometry3d& initial) override;
 
@@ -94,15 +101,20 @@ class MlndtMatcher final : public Matcher {
   /// denominator (LayerObjective::predicted_matched_score).
   double predicted_matched_score() const;
   const MlndtSettings& settings() const { return settings_; }
+  /// How many of the last align's runs (the optimisations from one start, the precision stage's
+  /// included) were taken from an earlier registration of the same input on the same model [count]
+  int reused_runs() const { return reused_runs_; }
 
  private:
   /// The precision stage from `coarse`'s pose (precision_stage.cpp); `coarse` as it is when there is
   /// no stage, coarse did not end usably, or the stage does not converge.
-  RegistrationResult refine(const PointCloud& input, RegistrationResult coarse) const;
+  RegistrationResult refine(const PointCloud& input, RegistrationResult coarse);
 
   MlndtSettings settings_;
   std::unique_ptr<ScoreThreads> threads_;    ///< settings_.threads, for every registration of this matcher
   std::shared_ptr<const MlndtModel> model_;  ///< null before set_reference
+  std::unique_ptr<mlndt_detail::RunMemo> runs_;  ///< this input's runs on model_
+  int reused_runs_ = 0;
 };
 
 }  // namespace sextant
