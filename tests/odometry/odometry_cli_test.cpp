@@ -197,6 +197,27 @@ TEST(OdometryCli, SyntheticKittiSequenceFolder) {
   // reports a 5° ATE rotation): the files' rounding moves the ATE by a few 0.1 mm.
   EXPECT_NEAR(json_number(metrics, "ate_m", "estimate"), ate.translation.rms, 1e-3) << metrics;
   EXPECT_NE(metrics.find("\"odometry\": null"), std::string::npos) << metrics;
+  EXPECT_NE(metrics.find("\"trusted_off_reference\": []"), std::string::npos) << metrics;
+  EXPECT_EQ(r.output.find("check:"), std::string::npos) << r.output;
+}
+
+// A trusted step far from the reference's motion is either a wrong registration that passed the checks
+// or a wrong reference (MulRan Riverside02 between keyframes 107 and 116): the run says which steps,
+// on the console and in metrics.json. Here the reference jumps 3 m between scans 5 and 6.
+TEST(OdometryCli, TrustedStepsFarFromTheReferenceAreNamed) {
+  TempDir tmp;
+  const fs::path folder = tmp / "sequences" / "07";
+  std::vector<Eigen::Isometry3d> camera = write_kitti_sequence(folder, 10);
+  for (std::size_t i = 6; i < camera.size(); ++i) camera[i].translation() += Eigen::Vector3d(3.0, 0.0, 0.0);
+  write_kitti_poses(folder / "poses.txt", camera);
+  const CliRun r = run_cli("odometry " + folder.string() + " --no-progress --out " + (tmp / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("check:    1 trusted step lies more than 1 m or 5° from the reference's motion "
+                          "(scans 5→6): the reference or this registration is wrong there"),
+            std::string::npos)
+      << r.output;
+  const std::string metrics = read_text(tmp / "out" / "metrics.json");
+  EXPECT_NE(metrics.find("\"trusted_off_reference\": [5]"), std::string::npos) << metrics;
 }
 
 TEST(OdometryCli, BadArgumentsAreClearErrors) {

@@ -227,6 +227,7 @@ int run_odometry_command(const OdometryOptions& o) {
   std::string estimate_problem, odometry_problem;  // why an accuracy could not be computed
   if (truth && scans >= 2) {
     estimate_accuracy = trajectory_accuracy(poses, *truth, &estimate_problem);
+    counts.trusted_off_reference = trusted_steps_off_reference(result, *truth);
     if (const auto odometry = odometry_of(*dataset, o.first, scans))
       odometry_accuracy = trajectory_accuracy(*odometry, *truth, &odometry_problem);
   }
@@ -296,6 +297,10 @@ int run_odometry_command(const OdometryOptions& o) {
                 << (odometry_accuracy ? accuracy_line(*odometry_accuracy)
                                       : "no accuracy: " + odometry_problem)
                 << " (the dataset's)\n";
+    if (counts.trusted_off_reference) {
+      const std::string off = off_reference_warning(*counts.trusted_off_reference, o.first);
+      if (!off.empty()) std::cout << "check:    " << off << "\n";
+    }
   }
   if (verbosity() == Verbosity::kVerbose) print_steps(result, o.first);
   if (!quiet)

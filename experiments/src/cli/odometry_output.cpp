@@ -1,5 +1,6 @@
 #include "odometry_output.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -10,6 +11,7 @@
 #include "sextant/core/units.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
 #include "sextant/experiments/json.hpp"
+#include "sextant/matchers/registration_quality.hpp"
 
 namespace sextant::cli {
 namespace {
@@ -109,17 +111,46 @@ void write_steps_csv(const std::filesystem::path& file, std::size_t first, const
   write_file_atomically(file, out.str());
 }
 
+std::vector<std::size_t> trusted_steps_off_reference(const OdometryResult& result,
+                                                     const std::vector<Eigen::Isometry3d>& truth) {
+  std::vector<std::size_t> off;
+  const QualitySettings tolerance;
+  for (std::size_t i = 0; i < result.steps.size() && i + 1 < truth.size(); ++i)
+    if (result.steps[i].trusted() &&
+        far_apart(result.steps[i].relative, relative(truth[i], truth[i + 1]), tolerance))
+      off.push_back(i);
+  return off;
+}
+
+std::string off_reference_warning(const std::vector<std::size_t>& steps, std::size_t first) {
+  if (steps.empty()) return "";
+  const QualitySettings tolerance;
+  std::ostringstream out;
+  out << steps.size() << " trusted step" << (steps.size() == 1 ? " lies" : "s lie") << " more than "
+      << tolerance.ambiguity_metres << " m or " << tolerance.ambiguity_degrees
+      << "° from the reference's motion (scans ";
+  constexpr std::size_t kListed = 8;
+  for (std::size_t k = 0; k < std::min(steps.size(), kListed); ++k)
+    out << (k ? ", " : "") << first + steps[k] << "→" << first + steps[k] + 1;
+  if (steps.size() > kListed) out << ", …";
+  out << "): the reference or " << (steps.size() == 1 ? "this registration is" : "these registrations are")
+      << " wrong there, and the accuracy includes them";
+  return out.str();
+}
+
 void write_metrics_json(const std::filesystem::path& file, const std::optional<TrajectoryAccuracy>& estimate,
                         const std::optional<TrajectoryAccuracy>& odometry, std::size_t scans,
                         const OdometryCounts& counts, double seconds,
                         const std::optional<LoopClosureSummary>& loops) {
-  Json metrics = {{"scans", scans},
-                  {"not_converged", counts.not_converged},
-                  {"untrusted", counts.untrusted},
-                  {"recovered", counts.recovered},
-                  {"seconds", json_value(seconds)},
-                  {"estimate", estimate ? accuracy_json(*estimate) : Json()},
-                  {"odometry", odometry ? accuracy_json(*odometry) : Json()}};
+  Json metrics = {
+      {"scans", scans},
+      {"not_converged", counts.not_converged},
+      {"untrusted", counts.untrusted},
+      {"recovered", counts.recovered},
+      {"trusted_off_reference", counts.trusted_off_reference ? Json(*counts.trusted_off_reference) : Json()},
+      {"seconds", json_value(seconds)},
+      {"estimate", estimate ? accuracy_json(*estimate) : Json()},
+      {"odometry", odometry ? accuracy_json(*odometry) : Json()}};
   if (loops)
     metrics["loop_closure"] = {{"source", loops->source},
                                {"candidates", loops->candidates},
