@@ -9,7 +9,9 @@
 # far the reference's two versions lie apart bounds what the reference can judge), time per scan
 # (wall: the whole run over its steps; registration: the registrations' own seconds over the steps,
 # which the parallel scan-to-scan path overlaps on several cores) and the trust counts (untrusted
-# steps, recovered steps). Two last rows score that odometry against the reference.
+# steps, recovered steps, and trusted steps more than 1 m or 5° from the reference: metrics.json's
+# trusted_off_reference, the issue's target of none). Two last rows score that odometry against the
+# reference.
 #
 #   bench/sequences.sh [build/experiments/sextant] [path/to/mulran_riverside02] [output folder]
 #
@@ -30,8 +32,9 @@ run() {  # run <id> <label> <row> <method> <dataset> <second reference (KITTI) o
   local dir="$out/$id-${row// /_}"
   "$sextant" odometry "$dataset" --method "$method" --out "$dir" --no-progress "$@" >"$dir.log" 2>&1 ||
     { echo "| $label | $row | failed: see $dir.log |"; return; }
-  local m="$dir/metrics.json" steps registration pitch second_drift=-
+  local m="$dir/metrics.json" steps registration pitch second_drift=- off
   steps=$(($(top "$m" scans) - 1))
+  off=$(sed -nE 's/.*"trusted_off_reference": \[([^]]*)\].*/\1/p' "$m" | awk -F, '{ print $0 == "" ? 0 : NF }')
   # The registrations' own seconds (steps.csv: registration, reference model, sampling; recoveries
   # included), without loading or generating the scans and building the local map.
   registration=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "seconds") c = i; next }
@@ -49,17 +52,17 @@ run() {  # run <id> <label> <row> <method> <dataset> <second reference (KITTI) o
       -v ate="$(field "$m" estimate ate_m)" -v rpe="$(field "$m" estimate rpe_m)" \
       -v rpedeg="$(field "$m" estimate rpe_deg)" -v drift="$(field "$m" estimate drift_percent)" \
       -v untrusted="$(top "$m" untrusted)" -v recovered="$(top "$m" recovered)" \
-      -v nc="$(top "$m" not_converged)" 'BEGIN {
+      -v nc="$(top "$m" not_converged)" -v off="$off" 'BEGIN {
         split(pitch, p, " ")
         split(scale, s, " ")
         second = second == "-" ? "–" : sprintf("%.2f", second)
-        printf "| %s | %s | %.3f | %.3f / %.2f | %.2f | %s | %.3f ± %.3f | %.3f ± %.3f | %.1f | %.1f | %d | %d | %d |\n", label,
+        printf "| %s | %s | %.3f | %.3f / %.2f | %.2f | %s | %.3f ± %.3f | %.3f ± %.3f | %.1f | %.1f | %d | %d | %d | %d |\n", label,
                method, ate, rpe, rpedeg, drift, second, p[1], p[2], s[1], s[2], 1000 * secs / steps,
-               1000 * registration / steps, nc, untrusted, recovered }'
+               1000 * registration / steps, nc, untrusted, recovered, off }'
 }
 
-echo "| sequence | method | ATE [m] | RPE per step [m / °] | KITTI drift [%] | drift against the reference's lidar-inertial odometry [%] | pitch bias per step [°] | motion scale error [%] | ms per scan | registration ms per scan | not converged | untrusted | recovered |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| sequence | method | ATE [m] | RPE per step [m / °] | KITTI drift [%] | drift against the reference's lidar-inertial odometry [%] | pitch bias per step [°] | motion scale error [%] | ms per scan | registration ms per scan | not converged | untrusted | recovered | trusted > 1 m or 5° off |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 # A MulRan stretch's rows of the reference and of its lidar-inertial odometry (KITTI files).
 stretch() {  # stretch <first scan> <scans>: writes $out/{reference,lio_odometry}_<first>.txt
   local rows="$(($1 + 1)),$(($1 + $2))p"
@@ -89,7 +92,7 @@ reference_row() {  # reference_row <label> <first scan of the stretch>
   accuracy=$("$sextant" eval "$out/reference_$2.txt" "$out/lio_odometry_$2.txt" --format kitti --json)
   sed -E 's/.*"summary": \{[^}]*"ate_m": ([^,]*),[^}]*"rpe_m": ([^,]*), "rpe_deg": ([^,]*),[^}]*"drift_percent": ([^,]*),.*"rotation_deg": \[[^,]*, ([^,]*),.*"rotation_deg_standard_error": \[[^,]*, ([^,]*),.*/\1 \2 \3 \4 \5 \6/' <<<"$accuracy" |
     awk -v label="$1" -v scale="$(scale_of "$accuracy")" '{ split(scale, s, " ")
-      printf "| %s | the reference'"'"'s lidar-inertial odometry | %.3f | %.3f / %.2f | %.2f | – | %.3f ± %.3f | %.3f ± %.3f | – | – | – | – | – |\n", label, $1, $2, $3, $4, $5, $6, s[1], s[2] }'
+      printf "| %s | the reference'"'"'s lidar-inertial odometry | %.3f | %.3f / %.2f | %.2f | – | %.3f ± %.3f | %.3f ± %.3f | – | – | – | – | – | – |\n", label, $1, $2, $3, $4, $5, $6, s[1], s[2] }'
 }
 reference_row "MulRan 0–107" 0
 reference_row "MulRan 116–165" 116
