@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -46,6 +47,15 @@ double time_ratio(const Dataset& dataset, std::size_t i) {
   const double before = *t1 - *t0, now = *t2 - *t1;
   if (!(before > 0.0 && now > 0.0) || !std::isfinite(now / before)) return 1.0;
   return now / before;
+}
+
+/// How far from the constant-velocity guess scan i can lie, by the stamps of scans i − 2, i − 1 and i
+/// (reachable_departure); ∞ without them.
+double step_reach(const Dataset& dataset, std::size_t i, double max_acceleration) {
+  if (i < 2) return std::numeric_limits<double>::infinity();
+  const auto t0 = dataset.stamp(i - 2), t1 = dataset.stamp(i - 1), t2 = dataset.stamp(i);
+  if (!t0 || !t1 || !t2) return std::numeric_limits<double>::infinity();
+  return reachable_departure(*t1 - *t0, *t2 - *t1, max_acceleration);
 }
 
 /// The odometry poses the guess mode needs (empty unless guess = odometry).
@@ -189,11 +199,11 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
 /// coordinates.
 OdometryStep register_step(StepWorker& worker, const SequenceTrust& trust, const PointCloud& reference,
                            const PointCloud& input, const Eigen::Isometry3d& guess,
-                           const std::vector<Eigen::Isometry3d>& other_priors, bool search,
+                           const std::vector<Eigen::Isometry3d>& other_priors, bool search, double reach,
                            const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed) {
   const StepFrame frame(reference, input);
   OdometryStep step = worker.first_try(frame.reference(), frame.input(), frame.local(guess), seed,
-                                       frame.local(other_priors), search);
+                                       frame.local(other_priors), search, reach);
   trust.check(step.quality);
   worker.recover(step, frame.reference(), frame.input(), frame.local(starts), seed, trust);
   frame.to_coordinates(step);
@@ -252,9 +262,14 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
     // both are priors.
     std::vector<Eigen::Isometry3d> other_priors;
     bool search = false;
+    double reach = std::numeric_limits<double>::infinity();
     if (s.guess == OdometryGuess::constant_velocity) {
       guess = scale_motion(last_motion, time_ratio(dataset, first + k));
       search = !any_trusted;
+      // The velocity is the previous step's when that step is trusted: then the platform's acceleration
+      // bounds how far this step can depart from the guess.
+      if (!steps.empty() && steps.back().trusted())
+        reach = step_reach(dataset, first + k, s.max_acceleration);
       if (s.recover && any_trusted && far_apart(guess, last_motion, s.quality))
         other_priors.push_back(last_motion);
     }
@@ -269,11 +284,12 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
       const PointCloud map = merge_local_map(clouds, poses, s.local_map_max_points, s.local_map_voxel);
       const auto cut = what_both_see(map, last_view, input, input_view, guess, s.common_view);
       steps.push_back(register_step(worker, trust, cut ? cut->first : map, cut ? cut->second : input, guess,
-                                    other_priors, search, recovery_starts(s, guess, last_motion), seeds[k]));
+                                    other_priors, search, reach, recovery_starts(s, guess, last_motion),
+                                    seeds[k]));
     } else {
       const auto cut = what_both_see(window.back(), last_view, input, input_view, guess, s.common_view);
       steps.push_back(register_step(worker, trust, cut ? cut->first : window.back(),
-                                    cut ? cut->second : input, guess, other_priors, search,
+                                    cut ? cut->second : input, guess, other_priors, search, reach,
                                     recovery_starts(s, guess, last_motion), seeds[k]));
     }
     trust.record(steps.back().quality);

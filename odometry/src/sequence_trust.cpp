@@ -1,6 +1,8 @@
 #include "sextant/odometry/sequence_trust.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 #include <fmt/format.h>
@@ -45,6 +47,24 @@ void check_unconfirmed_no_motion(RegistrationQuality& quality, const Eigen::Isom
       "no motion (within {} m and {}°) with fit {:.2f} × the prediction, above the {:.1f} of two scans from "
       "one place, where no motion is known yet or the guess moves: a lidar's rings coincide at no motion",
       tolerance.ambiguity_metres, tolerance.ambiguity_degrees, quality.fit_ratio, fit_factor);
+}
+
+double reachable_departure(double dt_before, double dt, double max_acceleration) {
+  constexpr double kUnknown = std::numeric_limits<double>::infinity();
+  if (!(dt > 0.0 && dt_before > 0.0 && max_acceleration > 0.0)) return kUnknown;
+  const double reach = max_acceleration * dt * 0.5 * (dt + dt_before);
+  return std::isfinite(reach) ? reach : kUnknown;
+}
+
+void check_reachable_motion(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
+                            const Eigen::Isometry3d& guess, double reach, const QualitySettings& tolerance) {
+  const double departure = (relative.translation() - guess.translation()).norm();
+  if (!quality.trusted() || !(departure > reach) || departure <= tolerance.ambiguity_metres) return;
+  quality.trust = Trust::kSuspect;
+  quality.reason = fmt::format(
+      "{:.1f} m from the constant-velocity guess, beyond the {:.1f} m the platform's largest acceleration "
+      "allows in this step",
+      departure, reach);
 }
 
 void SequenceTrust::record(const RegistrationQuality& quality) {

@@ -31,8 +31,10 @@ StepWorker::StepWorker(const OdometrySettings& s)
 
 OdometryStep StepWorker::first_try(const PointCloud& reference, const PointCloud& input,
                                    const Eigen::Isometry3d& guess, std::uint64_t seed,
-                                   const std::vector<Eigen::Isometry3d>& other_priors, bool search) {
+                                   const std::vector<Eigen::Isometry3d>& other_priors, bool search,
+                                   double reach) {
   Rng rng(seed);
+  reach_ = reach;
   const SampledInput sample = sample_input(*sampler_, input, rng);
   motion_unknown_ = search;
   Matcher& matcher = search && recovery_ ? *recovery_ : *matcher_;
@@ -69,7 +71,8 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
   double seconds = step.seconds;
   // The registrations whose only flaw is their fit: converged, enough overlap, every direction
   // constrained. The first registration counts as it was judged on its own (a sequence check may
-  // have flagged an absolutely sound one).
+  // have flagged an absolutely sound one). An answer the platform could not reach stays a candidate
+  // (docs/matcher_defaults.md, "A motion no platform makes": leaving it out chained a pose turned 179°).
   std::vector<OdometryStep> suspects;
   const auto consider = [&](const OdometryStep& candidate, Trust absolute) {
     if (candidate.converged && (absolute == Trust::kSuspect || absolute == Trust::kOk))
@@ -199,6 +202,7 @@ OdometryStep StepWorker::to_step(const PairMatch& m, const PointCloud& reference
   // where no motion is known yet or the guess says the vehicle moves (sequence_trust.hpp).
   if (motion_unknown_ || far_apart(guess, Eigen::Isometry3d::Identity(), settings_.quality))
     check_unconfirmed_no_motion(step.quality, step.relative, settings_.quality);
+  check_reachable_motion(step.quality, step.relative, guess, reach_, settings_.quality);
   if (!step.relative.matrix().allFinite()) {  // never chain NaN: keep the guess, say so
     step.relative = guess;
     step.converged = false;

@@ -2,6 +2,7 @@
 // One odometry step's registrations (odometry.cpp): the first try from the guess, and the recovery of
 // an untrusted step with the wide basin from the guess and the other starts.
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -24,10 +25,12 @@ class StepWorker {
   /// Δt lies far from it), registered too and kept as the result's alternatives, so that two priors
   /// leading to two trusted poses far apart make the step ambiguous. `search`: there is no prior
   /// (no motion known yet), so an answer of no motion needs confirming, and with recovery on the
-  /// first registration is the wide basin's, as `sextant match`'s without --init.
+  /// first registration is the wide basin's, as `sextant match`'s without --init. `reach`: how far
+  /// from the guess the platform could move in this step (reachable_departure; ∞: unknown); every
+  /// answer of the step farther away is not trusted (check_reachable_motion).
   OdometryStep first_try(const PointCloud& reference, const PointCloud& input, const Eigen::Isometry3d& guess,
                          std::uint64_t seed, const std::vector<Eigen::Isometry3d>& other_priors = {},
-                         bool search = false);
+                         bool search = false, double reach = std::numeric_limits<double>::infinity());
 
   /// An untrusted step: the wide basin from each of `starts` (the guess first) until a registration
   /// is trusted; when none is, the step chains one of the registrations whose only flaw is their fit
@@ -69,6 +72,7 @@ class StepWorker {
   /// This step has no motion prior (search): its answers of no motion need confirming
   /// (sequence_trust.hpp, check_unconfirmed_no_motion)
   bool motion_unknown_ = false;
+  double reach_ = std::numeric_limits<double>::infinity();  ///< first_try's `reach`, for this step
   std::vector<Answer> answers_;  ///< this step's answers so far (first_try, recover)
   /// The poses of this step's ambiguous registrations and of the alternatives that made them so
   std::vector<Eigen::Isometry3d> disputed_;

@@ -59,9 +59,10 @@ py::dict metadata_dict(const DatasetMetadata& m) {
 OdometryRun odometry(const py::object& source, const std::string& method, const py::object& preset,
                      const std::string& sampling, const py::object& guess, const std::string& map,
                      std::size_t first, std::size_t scans, std::size_t local_map_scans, double min_range,
-                     std::uint64_t seed, bool recover, const py::object& common_view, const py::object& poses,
-                     const py::object& odometry_poses, const py::object& times, std::uint64_t campus_seed,
-                     int jobs, const py::object& sampler_settings, const py::kwargs& settings) {
+                     double max_acceleration, std::uint64_t seed, bool recover, const py::object& common_view,
+                     const py::object& poses, const py::object& odometry_poses, const py::object& times,
+                     std::uint64_t campus_seed, int jobs, const py::object& sampler_settings,
+                     const py::kwargs& settings) {
   // Arguments first (cheap), then the dataset, as the CLI.
   OdometrySettings s;
   s.map = parse_odometry_map(map, "map");
@@ -76,6 +77,7 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
   s.registration = odometry_registration({method, matcher, sampling, sampler});
   s.local_map_scans = local_map_scans;
   s.min_range = min_range;
+  s.max_acceleration = max_acceleration;
   s.seed = seed;
   s.recover = recover;
   s.common_view = common_view.is_none() ? common_view_by_default(method) : common_view.cast<bool>();
@@ -154,7 +156,9 @@ guess: where each registration starts: "odometry", "constant_velocity", "identit
     when the dataset has it, else constant_velocity (the CLI's default).
 map: "local_map" (the default: the last local_map_scans scans) or "scan" (the previous scan).
 first, scans: the scans first … first + scans − 1 (scans = 0: to the end).
-min_range: drop points closer than this to the sensor [m]. seed: sampler seed (per-step seeds derive
+min_range: drop points closer than this to the sensor [m]. max_acceleration: with the constant-velocity
+    guess and times, the hardest the platform accelerates or brakes [m/s²] (a step farther from the
+    guess than that allows is not trusted; 0: no check). seed: sampler seed (per-step seeds derive
     from it). recover: an untrusted step is registered again with the wide basin (the CLI's default;
     False = --no-recover). common_view: register only what both sensors see from the guess (True,
     --common-view) or the whole scans (False, --whole-scans); None: the CLI's default (True for
@@ -207,7 +211,8 @@ void bind_odometry(py::module_& m) {
   m.def("odometry", &odometry, kOdometryDoc, py::arg("dataset"), py::arg("method") = "mlndt",
         py::arg("preset") = py::none(), py::arg("sampling") = "gbs", py::arg("guess") = py::none(),
         py::arg("map") = "local_map", py::arg("first") = 0, py::arg("scans") = 0,
-        py::arg("local_map_scans") = 5, py::arg("min_range") = 0.0, py::arg("seed") = 1,
+        py::arg("local_map_scans") = 5, py::arg("min_range") = 0.0,
+        py::arg("max_acceleration") = OdometrySettings{}.max_acceleration, py::arg("seed") = 1,
         py::arg("recover") = true, py::arg("common_view") = py::none(), py::arg("poses") = py::none(),
         py::arg("odometry_poses") = py::none(), py::arg("times") = py::none(), py::arg("campus_seed") = 1,
         py::arg("jobs") = 0, py::arg("sampler_settings") = py::none());

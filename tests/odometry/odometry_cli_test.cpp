@@ -239,6 +239,9 @@ TEST(OdometryCli, BadArgumentsAreClearErrors) {
   expect_error(run_cli("odometry " + uos + " --first 3" + out), "past the dataset's 3 scans");
   expect_error(run_cli("odometry " + uos + " --method icp_p2l --preset thesis" + out),
                "presets are settings");
+  const CliRun negative = run_cli("odometry " + uos + " --max-acceleration -1" + out);
+  EXPECT_EQ(negative.exit_code, 2) << negative.output;
+  EXPECT_NE(negative.output.find("--max-acceleration"), std::string::npos) << negative.output;
   EXPECT_FALSE(fs::exists(tmp / "out"));  // nothing written before the arguments are checked
   const CliRun no_out = run_cli("odometry " + uos);
   EXPECT_NE(no_out.exit_code, 0);
@@ -298,6 +301,7 @@ TEST(OdometryCli, QuietAndVerbose) {
   const std::string provenance = read_text(tmp / "q" / "provenance.json");
   EXPECT_NE(provenance.find("\"matcher_resolved\": {"), std::string::npos) << provenance;
   EXPECT_NE(provenance.find("\"step_control\":\"trust_region_last\""), std::string::npos) << provenance;
+  EXPECT_NE(provenance.find("\"max_acceleration\": 9.81"), std::string::npos) << provenance;
   EXPECT_NE(provenance.find("\"sampler_resolved\": {\"cell_size\":1,"), std::string::npos) << provenance;
   const CliRun verbose =
       run_cli("--verbose odometry campus --scans 6 --no-progress --out " + (tmp / "v").string());

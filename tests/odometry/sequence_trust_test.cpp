@@ -3,6 +3,8 @@
 // nothing changes; only trusted steps enter the window.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "sextant/odometry/sequence_trust.hpp"
 
 namespace sextant {
@@ -79,6 +81,43 @@ TEST(SequenceTrust, NoMotionIsTrustedOnlyWithTheFitOfOnePlace) {
   low.reason = "30.0 % of the input matched";
   check_unconfirmed_no_motion(low, moved(0.1, 0.0), tolerance);
   EXPECT_EQ(low.trust, Trust::kLowOverlap);
+  EXPECT_EQ(low.reason, "30.0 % of the input matched");
+}
+
+// A velocity measured over 0.8 s, a step of 1.4 s: their mid-times lie 1.1 s apart, so at 1 g the
+// velocity changes by at most 10.8 m/s and the step's motion by 15.1 m.
+TEST(SequenceTrust, ReachableDepartureFromTheConstantVelocityGuess) {
+  EXPECT_NEAR(reachable_departure(0.8, 1.4, 9.81), 9.81 * 1.4 * 1.1, 1e-12);
+  EXPECT_NEAR(reachable_departure(0.1, 0.1, 9.81), 0.0981, 1e-12) << "10 Hz scans: 10 cm";
+  for (const double unknown : {reachable_departure(0.0, 1.0, 9.81), reachable_departure(1.0, -1.0, 9.81),
+                               reachable_departure(1.0, NAN, 9.81), reachable_departure(1.0, 1.0, 0.0)})
+    EXPECT_TRUE(std::isinf(unknown));
+}
+
+TEST(SequenceTrust, AMotionThePlatformCannotMakeIsNotTrusted) {
+  const QualitySettings tolerance;  // 1 m
+  const auto ahead = [](double x) { return Eigen::Isometry3d(Eigen::Translation3d(x, 0.0, 0.0)); };
+  const Eigen::Isometry3d guess = ahead(-14.1);  // 10 m/s for 1.4 s
+  const double reach = reachable_departure(0.8, 1.4, 9.81);
+  RegistrationQuality backwards = trusted(0.89, 1.26);  // MulRan as 32 rings, seed 5, 31 → 32
+  check_reachable_motion(backwards, ahead(5.04), guess, reach, tolerance);
+  EXPECT_EQ(backwards.trust, Trust::kSuspect);
+  EXPECT_NE(backwards.reason.find("19.1 m from the constant-velocity guess, beyond the 15.1 m"),
+            std::string::npos)
+      << backwards.reason;
+  RegistrationQuality braking = trusted(0.9, 1.1);  // 8 m short of the guess: reachable
+  check_reachable_motion(braking, ahead(-6.1), guess, reach, tolerance);
+  EXPECT_TRUE(braking.trusted()) << braking.reason;
+  RegistrationQuality close = trusted(0.9, 1.1);  // beyond a 10 Hz step's reach, but within 1 m
+  check_reachable_motion(close, ahead(0.5), ahead(0.0), reachable_departure(0.1, 0.1, 9.81), tolerance);
+  EXPECT_TRUE(close.trusted()) << close.reason;
+  RegistrationQuality no_clock = trusted(0.9, 1.1);
+  check_reachable_motion(no_clock, ahead(5.04), guess, reachable_departure(0.0, 1.4, 9.81), tolerance);
+  EXPECT_TRUE(no_clock.trusted()) << no_clock.reason;
+  RegistrationQuality low = trusted(0.3, 1.1);
+  low.trust = Trust::kLowOverlap;
+  low.reason = "30.0 % of the input matched";
+  check_reachable_motion(low, ahead(5.04), guess, reach, tolerance);
   EXPECT_EQ(low.reason, "30.0 % of the input matched");
 }
 

@@ -2,6 +2,7 @@
 // gets the answer the script gives it, so the trust rules are tested on their own.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <map>
 #include <memory>
 #include <utility>
@@ -66,21 +67,29 @@ PointCloud scripted_cloud() {
   return c;
 }
 
-/// The step from the guess 8.6 m forward, whose first registration matches too little, recovered from
-/// the guess and from no motion with `from_guess` and `from_no_motion` as the wide basin's answers.
-OdometryStep recovered(const Scripted& from_guess, const Scripted& from_no_motion) {
-  const std::map<double, Scripted> first{{8.6, {7.16, 0.3, 0.97}}};  // low overlap: recovery runs
-  const std::map<double, Scripted> wide{{8.6, from_guess}, {0.0, from_no_motion}};
+/// A step from `guess` metres forward whose first registration answers `first` (not trusted), recovered
+/// from the guess and from no motion with `from_guess` and `from_no_motion` as the wide basin's answers;
+/// `reach`: how far the platform could depart from the guess (first_try).
+OdometryStep scripted_step(double guess, const Scripted& first, const Scripted& from_guess,
+                           const Scripted& from_no_motion,
+                           double reach = std::numeric_limits<double>::infinity()) {
+  const std::map<double, Scripted> first_script{{guess, first}};
+  const std::map<double, Scripted> wide{{guess, from_guess}, {0.0, from_no_motion}};
   OdometrySettings s;
-  s.registration.matcher.make = [first] { return std::make_unique<ScriptedMatcher>(first); };
+  s.registration.matcher.make = [first_script] { return std::make_unique<ScriptedMatcher>(first_script); };
   s.registration.matcher.make_wide = [wide] { return std::make_unique<ScriptedMatcher>(wide); };
   s.registration.sampler = all_points_sampler_factory();
   odometry_detail::StepWorker worker(s);
   const PointCloud reference = scripted_cloud(), input = scripted_cloud();
-  OdometryStep step = worker.first_try(reference, input, metres_ahead(8.6), 1);
-  EXPECT_FALSE(step.trusted()) << "the script's first registration matches 30 %";
-  worker.recover(step, reference, input, {metres_ahead(8.6), metres_ahead(0.0)}, 1, SequenceTrust());
+  OdometryStep step = worker.first_try(reference, input, metres_ahead(guess), 1, {}, false, reach);
+  EXPECT_FALSE(step.trusted()) << "the script's first registration is not trusted";
+  worker.recover(step, reference, input, {metres_ahead(guess), metres_ahead(0.0)}, 1, SequenceTrust());
   return step;
+}
+
+/// The step from the guess 8.6 m forward, whose first registration matches too little (30 %).
+OdometryStep recovered(const Scripted& from_guess, const Scripted& from_no_motion) {
+  return scripted_step(8.6, {7.16, 0.3, 0.97}, from_guess, from_no_motion);
 }
 
 // The wide basin from the guess finds the right pose (8.16 m) and one 1.01 m short of it (7.15 m),
@@ -102,6 +111,31 @@ TEST(StepWorker, AnUndisputedRecoveryIsTrusted) {
   EXPECT_TRUE(step.trusted()) << step.quality.reason;
   EXPECT_EQ(step.recovery, "wide_basin");
   EXPECT_NEAR(step.relative.translation().x(), 7.165, 1e-12);
+}
+
+/// The step from the guess 14.1 m back (10 m/s for 1.4 s), whose first registration is right but
+/// fits 1.398, above the 1.30 bar.
+OdometryStep corrected(const Scripted& from_guess, double reach) {
+  return scripted_step(-14.1, {-14.01, 0.9, 1.398}, from_guess, {0.0, 0.3, 1.0}, reach);
+}
+
+// MulRan 0–107 read as 32 rings (seed 5, keyframes 31 → 32): the wide basin's answer lay 5 m behind the
+// last scan, 19 m from the guess, fitting better than the right first registration. At 1 g the car could
+// depart 15.1 m from the guess in that step: the answer is not trusted, and neither is the step (it is
+// chained as the least suspect, the best fit). Without a clock (reach ∞) the answer is trusted as
+// before; an answer within reach is trusted.
+TEST(StepWorker, ACorrectionThePlatformCannotReachIsNotTrusted) {
+  const double reach = reachable_departure(0.8, 1.4, 9.81);
+  const OdometryStep backwards = corrected({5.04, 0.886, 1.261}, reach);
+  EXPECT_FALSE(backwards.trusted());
+  EXPECT_EQ(backwards.recovery, "least_suspect");
+  EXPECT_NE(backwards.quality.reason.find("from the constant-velocity guess"), std::string::npos)
+      << backwards.quality.reason;
+  const OdometryStep no_clock = corrected({5.04, 0.886, 1.261}, std::numeric_limits<double>::infinity());
+  EXPECT_TRUE(no_clock.trusted()) << no_clock.quality.reason;
+  const OdometryStep braking = corrected({-6.5, 0.9, 1.2}, reach);
+  EXPECT_TRUE(braking.trusted()) << braking.quality.reason;
+  EXPECT_EQ(braking.recovery, "wide_basin");
 }
 
 }  // namespace

@@ -128,6 +128,8 @@ def test_bad_ranges_and_modes_raise(mulran):
         sextant.odometry(mulran, first=160, scans=10)
     with pytest.raises(sextant.InputError, match="no odometry"):
         sextant.odometry(mulran, guess="odometry", scans=2)
+    with pytest.raises(sextant.InputError, match="max_acceleration must be"):
+        sextant.odometry(mulran, scans=2, max_acceleration=-1.0)
 
 
 def test_bad_input_raises(data_dir, tmp_path):

@@ -43,6 +43,7 @@ struct OdometryOptions : MatcherOptions {
   std::size_t scans = 0;  ///< 0: to the end of the dataset
   std::size_t local_map_scans = 5;
   double min_range = 0.0;
+  double max_acceleration = OdometrySettings{}.max_acceleration;
   std::uint64_t seed = 1;
   std::uint64_t campus_seed = 1;
   int jobs = 0;
@@ -106,6 +107,7 @@ std::string provenance_json(const OdometryOptions& o, const MatcherConfig& confi
                            {"loop_closure", o.loop_closure},
                            {"local_map_scans", s.local_map_scans},
                            {"min_range", json_value(s.min_range)},
+                           {"max_acceleration", json_value(s.max_acceleration)},
                            {"recover", s.recover},
                            {"common_view", s.common_view},
                            {"seed", s.seed},
@@ -150,6 +152,7 @@ int run_odometry_command(const OdometryOptions& o) {
   s.registration = odometry_registration({o.method, config.matcher, o.sampling, config.sampler});
   s.local_map_scans = o.local_map_scans;
   s.min_range = o.min_range;
+  s.max_acceleration = o.max_acceleration;
   s.seed = o.seed;
   s.recover = !o.no_recover;
   s.common_view = o.whole_scans ? false : o.common_view || common_view_by_default(o.method);
@@ -354,6 +357,12 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--min-range", o->min_range, "Drop points closer than this to the sensor [m] (self-hits)")
       ->capture_default_str();
+  cmd->add_option(
+         "--max-acceleration", o->max_acceleration,
+         "With the constant-velocity guess and scan times: the hardest the platform accelerates or "
+         "brakes [m/s²]; a step farther from the guess than that allows is not trusted (0: no check)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
   CLI::Option* common_view = cmd->add_flag(
       "--common-view", o->common_view,
       "Register only what both sensors see from the guess (each scan's band of elevations and range): the "

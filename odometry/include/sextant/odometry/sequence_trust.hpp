@@ -50,4 +50,20 @@ void check_unconfirmed_no_motion(RegistrationQuality& quality, const Eigen::Isom
                                  const QualitySettings& tolerance,
                                  double fit_factor = SequenceTrustSettings{}.fit_factor);
 
+/// How far a platform accelerating at most `max_acceleration` can depart from the constant-velocity
+/// prediction of a step of `dt` seconds, the velocity measured over the step before, of `dt_before`
+/// seconds: their mid-times lie (dt + dt_before) / 2 apart, so the velocity changes by at most a·(dt +
+/// dt_before) / 2 and the step's motion by dt times that [m]. ∞ when a time is unknown or not positive,
+/// or `max_acceleration` is 0.
+double reachable_departure(double dt_before, double dt, double max_acceleration);
+
+/// Marks a trusted `quality` suspect when `relative` lies farther from `guess`, the constant-velocity
+/// prediction, than `reach` (reachable_departure) and than `tolerance`'s ambiguity distance: the
+/// platform could not have made that motion. On MulRan 0–107 read as 32 rings (seed 5, keyframes 31 →
+/// 32, 1.4 s at 10 m/s) the wide basin's answer lay 5 m behind the last scan, 19 m from the guess,
+/// inside a local map where it fit better than the right pose at the map's frontier, and was trusted
+/// (docs/matcher_defaults.md, "A motion no platform makes").
+void check_reachable_motion(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
+                            const Eigen::Isometry3d& guess, double reach, const QualitySettings& tolerance);
+
 }  // namespace sextant
