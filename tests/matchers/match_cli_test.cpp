@@ -272,4 +272,27 @@ TEST(MatchCliConventions, CloudsFarFromTheirOriginAreRegisteredAboutTheReference
       << utm.output;
 }
 
+// A trusted result more than 1 m or 5° from --gt is a wrong registration that passed the checks or a
+// wrong ground truth: the output says so (the result itself, and the exit status, are the matcher's).
+TEST(MatchCliGroundTruth, ATrustedResultFarFromTheGroundTruthIsNamed) {
+  const std::string pair = std::string(SEXTANT_DATA_DIR) + "/velodyne_pair/fast_gicp_251370668.pcd " +
+                           SEXTANT_DATA_DIR + "/velodyne_pair/fast_gicp_251371071.pcd";
+  const std::string wrong = ::testing::TempDir() + "velodyne_gt_3m_off.txt";
+  std::ofstream(wrong)
+      << "0.999941 0.0108432 -0.000635437 3.485657\n-0.0108468 0.999924 -0.00587782 0.10642\n"
+         "0.000571654 0.00588436 0.999983 -0.0131581\n0 0 0 1\n";
+  const std::string check = "check:       trusted, yet more than 1 m or 5° from --gt";
+  const CliRun right = run_cli("match " + kPair + kNearGuess);
+  ASSERT_EQ(right.exit_code, 0) << right.output;
+  EXPECT_EQ(right.output.find(check), std::string::npos) << right.output;
+  const CliRun off = run_cli("match " + pair + kNearGuess + " --gt " + wrong);
+  ASSERT_EQ(off.exit_code, 0) << off.output;
+  EXPECT_NE(off.output.find(check), std::string::npos) << off.output;
+  const CliRun json = run_cli("match " + pair + kNearGuess + " --gt " + wrong + " --json");
+  EXPECT_NE(last_json(json).find("\"trusted_off_ground_truth\": true"), std::string::npos) << json.output;
+  const CliRun no_truth = run_cli("match " + pair + kNearGuess + " --json");
+  EXPECT_NE(last_json(no_truth).find("\"trusted_off_ground_truth\": null"), std::string::npos)
+      << no_truth.output;
+}
+
 }  // namespace

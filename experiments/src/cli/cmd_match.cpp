@@ -31,6 +31,7 @@
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/register_pair.hpp"
+#include "sextant/matchers/registration_quality.hpp"
 #include "sextant/matchers/sampler.hpp"
 #include "sextant/matchers/yaml.hpp"
 
@@ -54,6 +55,14 @@ struct PoseError {
   double cm = 0.0;
   double deg = 0.0;
 };
+
+/// A trusted result more than the trust checks' tolerance (1 m or 5°) from --gt: a wrong registration
+/// that passed the checks, or a wrong ground truth (as `sextant odometry`'s `check:` line).
+bool trusted_off_truth(const RegistrationResult& r, const PoseError& e) {
+  const QualitySettings tolerance;
+  return r.quality.trusted() &&
+         (e.cm > 100.0 * tolerance.ambiguity_metres || e.deg > tolerance.ambiguity_degrees);
+}
 
 /// A guess beyond this is no guess between two scans (PCL's peers abort the process on 1e39) [m].
 constexpr double kMaxGuessMetres = 1e6;
@@ -199,7 +208,8 @@ void print_json(const MatchOptions& o, const PairRegistration& registered, const
       {"fit_ratio", json_value(r.quality.fit_ratio)},
       {"search", search},
       {"error_cm", error ? json_value(error->cm) : Json()},
-      {"error_deg", error ? json_value(error->deg) : Json()}};
+      {"error_deg", error ? json_value(error->deg) : Json()},
+      {"trusted_off_ground_truth", error ? Json(trusted_off_truth(r, *error)) : Json()}};
   std::cout << json_line(j) << "\n";
 }
 
@@ -260,6 +270,10 @@ void print_text(const MatchOptions& o, const PairRegistration& registered, const
             << "time:        " << r.seconds << " s registration, " << m.reference_seconds
             << " s reference model, " << m.sampling_seconds << " s sampling\n";
   if (error) std::cout << "error:       " << error->cm << " cm, " << error->deg << " deg (against --gt)\n";
+  if (error && trusted_off_truth(r, *error))
+    std::cout
+        << "check:       trusted, yet more than 1 m or 5° from --gt: the ground truth or this registration "
+           "is wrong\n";
   if (verbosity() == Verbosity::kVerbose) print_trace(r);
 }
 
