@@ -101,10 +101,10 @@ def variant(name, keep=None, offset=None):
 
 def slipping_steps():
     """The steps where the reference slips sideways more than 0.5 m (`sextant eval --car-slip`)."""
-    with open(os.path.join(out, "reference.kitti.txt"), "w") as f:
+    reference = os.path.join(out, "reference.kitti.txt")
+    with open(reference, "w") as f:
         for row in np.loadtxt(os.path.join(mulran, "poses.txt"))[FIRST:LAST + 1]:
             f.write(" ".join(f"{v:.9g}" for v in row) + "\n")
-    reference = os.path.join(out, "reference.kitti.txt")
     report = subprocess.run([sextant_cli, "eval", reference, reference, "--format", "kitti", "--car-slip", "0.5",
                              "--json"], check=True, capture_output=True, text=True).stdout
     return {step["step"] for step in json.loads(report).get("reference_slip", {}).get("steps", [])}

@@ -39,23 +39,29 @@ std::string dataset_label(const Dataset& dataset) {
   return m.name.empty() ? std::string("<dataset>") : m.name;
 }
 
-/// Δt_i / Δt_{i−1} around scan i (the constant-velocity guess's scale), 1 without usable times.
-double time_ratio(const Dataset& dataset, std::size_t i) {
-  if (i < 2) return 1.0;
+/// The times from scan i − 2 to i − 1 and from i − 1 to i, when the dataset stamps all three.
+struct StepTimes {
+  double before = 0.0, now = 0.0;  ///< [s]
+};
+std::optional<StepTimes> step_times(const Dataset& dataset, std::size_t i) {
+  if (i < 2) return std::nullopt;
   const auto t0 = dataset.stamp(i - 2), t1 = dataset.stamp(i - 1), t2 = dataset.stamp(i);
-  if (!t0 || !t1 || !t2) return 1.0;
-  const double before = *t1 - *t0, now = *t2 - *t1;
-  if (!(before > 0.0 && now > 0.0) || !std::isfinite(now / before)) return 1.0;
-  return now / before;
+  if (!t0 || !t1 || !t2) return std::nullopt;
+  return StepTimes{*t1 - *t0, *t2 - *t1};
 }
 
-/// How far from the constant-velocity guess scan i can lie, by the stamps of scans i − 2, i − 1 and i
-/// (reachable_departure); ∞ without them.
+/// Δt_i / Δt_{i−1} around scan i (the constant-velocity guess's scale), 1 without usable times.
+double time_ratio(const Dataset& dataset, std::size_t i) {
+  const auto t = step_times(dataset, i);
+  if (!t || !(t->before > 0.0 && t->now > 0.0) || !std::isfinite(t->now / t->before)) return 1.0;
+  return t->now / t->before;
+}
+
+/// How far from the constant-velocity guess scan i can lie (reachable_departure); ∞ without times.
 double step_reach(const Dataset& dataset, std::size_t i, double max_acceleration) {
-  if (i < 2) return std::numeric_limits<double>::infinity();
-  const auto t0 = dataset.stamp(i - 2), t1 = dataset.stamp(i - 1), t2 = dataset.stamp(i);
-  if (!t0 || !t1 || !t2) return std::numeric_limits<double>::infinity();
-  return reachable_departure(*t1 - *t0, *t2 - *t1, max_acceleration);
+  const auto t = step_times(dataset, i);
+  return t ? reachable_departure(t->before, t->now, max_acceleration)
+           : std::numeric_limits<double>::infinity();
 }
 
 /// The odometry poses the guess mode needs (empty unless guess = odometry).

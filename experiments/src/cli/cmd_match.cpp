@@ -270,10 +270,13 @@ void print_text(const MatchOptions& o, const PairRegistration& registered, const
             << "time:        " << r.seconds << " s registration, " << m.reference_seconds
             << " s reference model, " << m.sampling_seconds << " s sampling\n";
   if (error) std::cout << "error:       " << error->cm << " cm, " << error->deg << " deg (against --gt)\n";
-  if (error && trusted_off_truth(r, *error))
-    std::cout
-        << "check:       trusted, yet more than 1 m or 5° from --gt: the ground truth or this registration "
-           "is wrong\n";
+  if (error && trusted_off_truth(r, *error)) {
+    const QualitySettings tolerance;
+    std::ostringstream limit;  // without the fixed precision of the lines above
+    limit << tolerance.ambiguity_metres << " m or " << tolerance.ambiguity_degrees << "°";
+    std::cout << "check:       trusted, yet more than " << limit.str()
+              << " from --gt: the ground truth or this registration is wrong\n";
+  }
   if (verbosity() == Verbosity::kVerbose) print_trace(r);
 }
 
