@@ -176,7 +176,8 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
       auto& frame = frames[k - begin];
       frame = std::make_unique<StepFrame>(cut ? cut->first : reference, cut ? cut->second : input);
       StepWorker worker(s);
-      steps[k - 1] = worker.first_try(frame->reference(), frame->input(), frame->local(guess), seeds[k]);
+      steps[k - 1] = worker.first_try(frame->reference(), frame->input(), frame->local(guess), seeds[k], {},
+                                      false, std::numeric_limits<double>::infinity(), frame->sensor_frame());
       counter.tick();
     });
     // The sequence check in sequence order, then the recovery of what is not trusted (independent
@@ -209,7 +210,7 @@ OdometryStep register_step(StepWorker& worker, const SequenceTrust& trust, const
                            const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed) {
   const StepFrame frame(reference, input);
   OdometryStep step = worker.first_try(frame.reference(), frame.input(), frame.local(guess), seed,
-                                       frame.local(other_priors), search, reach);
+                                       frame.local(other_priors), search, reach, frame.sensor_frame());
   trust.check(step.quality);
   worker.recover(step, frame.reference(), frame.input(), frame.local(starts), seed, trust);
   frame.to_coordinates(step);

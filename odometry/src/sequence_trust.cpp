@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include "sextant/core/units.hpp"
+
 namespace sextant {
 namespace {
 
@@ -47,6 +49,37 @@ void check_unconfirmed_no_motion(RegistrationQuality& quality, const Eigen::Isom
       "no motion (within {} m and {}°) with fit {:.2f} × the prediction, above the {:.1f} of two scans from "
       "one place, where no motion is known yet or the guess moves: a lidar's rings coincide at no motion",
       tolerance.ambiguity_metres, tolerance.ambiguity_degrees, quality.fit_ratio, fit_factor);
+}
+
+PointCloud above_horizon(const PointCloud& scan) {
+  std::vector<std::size_t> above;
+  const PointsView points = scan.points();
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (points[i].z() > 0.0f) above.push_back(i);
+  return scan.subset(above);
+}
+
+void check_no_motion_above_horizon(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
+                                   const Eigen::Isometry3d& above, const RegistrationQuality& above_quality,
+                                   const QualitySettings& tolerance) {
+  if (!quality.trusted() || relative.translation().norm() > tolerance.ambiguity_metres) return;
+  const Eigen::Isometry3d apart = relative.inverse() * above;
+  if (above_quality.trust == Trust::kLowOverlap) {
+    quality.trust = Trust::kSuspect;
+    quality.reason = fmt::format(
+        "no translation (within {} m), but only {:.1f} % of the points above the horizon match there or near "
+        "it: "
+        "a lidar's ground rings coincide at no translation whatever the vehicle did",
+        tolerance.ambiguity_metres, 100.0 * above_quality.overlap);
+  } else if (above_quality.trusted() && far_apart(relative, above, tolerance)) {
+    quality.trust = Trust::kSuspect;
+    quality.reason = fmt::format(
+        "no translation (within {} m), but the points above the horizon alone move {:.2f} m and {:.1f}° from "
+        "it: "
+        "a lidar's ground rings coincide at no translation whatever the vehicle did",
+        tolerance.ambiguity_metres, apart.translation().norm(),
+        Eigen::AngleAxisd(apart.linear()).angle() * kDegPerRad);
+  }
 }
 
 double reachable_departure(double dt_before, double dt, double max_acceleration) {

@@ -18,6 +18,8 @@ class StepFrame {
 
   const PointCloud& reference() const { return frame_.moved() ? local_reference_ : reference_; }
   const PointCloud& input() const { return frame_.moved() ? local_input_ : input_; }
+  /// Whether the scans lie in their sensor's frame (a sensor could stand at their origin).
+  bool sensor_frame() const { return !frame_.moved(); }
   Eigen::Isometry3d local(const Eigen::Isometry3d& T) const { return frame_.local(T); }
   std::vector<Eigen::Isometry3d> local(std::vector<Eigen::Isometry3d> transforms) const;
   /// The step's relative pose, guess, first registration and Hessian in the scans' coordinates.

@@ -32,9 +32,10 @@ StepWorker::StepWorker(const OdometrySettings& s)
 OdometryStep StepWorker::first_try(const PointCloud& reference, const PointCloud& input,
                                    const Eigen::Isometry3d& guess, std::uint64_t seed,
                                    const std::vector<Eigen::Isometry3d>& other_priors, bool search,
-                                   double reach) {
+                                   double reach, bool sensor_frame) {
   Rng rng(seed);
   reach_ = reach;
+  sensor_frame_ = sensor_frame;
   const SampledInput sample = sample_input(*sampler_, input, rng);
   motion_unknown_ = search;
   Matcher& matcher = search && recovery_ ? *recovery_ : *matcher_;
@@ -59,6 +60,7 @@ OdometryStep StepWorker::first_try(const PointCloud& reference, const PointCloud
   disputed_.clear();
   remember(m, sample.points);
   OdometryStep step = to_step(m, reference, guess);
+  confirm_no_motion(step, reference, input, matcher);
   step.first_trust = step.quality.trust;
   step.first_relative = step.relative;
   return step;
@@ -121,6 +123,7 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
   for (const Eigen::Isometry3d& start : tries) {
     const PairMatch w = align_sample(*recovery_, sample, start, settings_.quality);
     OdometryStep again = to_step(w, reference, step.guess);
+    confirm_no_motion(again, reference, input, *recovery_);
     seconds += again.seconds;
     // An answer that confirms the first registration stands on its own: the sequence check only asked
     // for a second search. One that lands elsewhere must also pass the sequence check.
@@ -181,6 +184,22 @@ void StepWorker::remember(const PairMatch& m, const PointCloud& sample) {
     if (r.quality.ambiguous && rivals(r.T, r.quality.fit_ratio, other.T, q.fit_ratio, settings_.quality))
       disputed_.push_back(other.T);
   }
+}
+
+void StepWorker::confirm_no_motion(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
+                                   const Matcher& built) {
+  if (!sensor_frame_ || !step.trusted() ||
+      step.relative.translation().norm() > settings_.quality.ambiguity_metres)
+    return;
+  const PointCloud above = above_horizon(input);
+  if (above.empty()) return;
+  if (&reference != matcher_reference_ && (&built == matcher_.get() || !matcher_->share_reference(built)))
+    matcher_->set_reference(reference);
+  matcher_reference_ = &reference;
+  const RegistrationResult r = matcher_->align(above, step.relative);
+  check_no_motion_above_horizon(step.quality, step.relative, r.T,
+                                assess_registration(r, above, settings_.quality), settings_.quality);
+  step.seconds += r.seconds;
 }
 
 OdometryStep StepWorker::to_step(const PairMatch& m, const PointCloud& reference,

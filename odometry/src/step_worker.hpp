@@ -27,10 +27,13 @@ class StepWorker {
   /// (no motion known yet), so an answer of no motion needs confirming, and with recovery on the
   /// first registration is the wide basin's, as `sextant match`'s without --init. `reach`: how far
   /// from the guess the platform could move in this step (reachable_departure; ∞: unknown); every
-  /// answer of the step farther away is not trusted (check_reachable_motion).
+  /// answer of the step farther away is not trusted (check_reachable_motion). `sensor_frame`: the scans
+  /// lie in their sensor's frame (step_frame.hpp), so that an answer of no motion is confirmed by the
+  /// points above the horizon (check_no_motion_above_horizon).
   OdometryStep first_try(const PointCloud& reference, const PointCloud& input, const Eigen::Isometry3d& guess,
                          std::uint64_t seed, const std::vector<Eigen::Isometry3d>& other_priors = {},
-                         bool search = false, double reach = std::numeric_limits<double>::infinity());
+                         bool search = false, double reach = std::numeric_limits<double>::infinity(),
+                         bool sensor_frame = true);
 
   /// An untrusted step: the wide basin from each of `starts` (the guess first) until a registration
   /// is trusted; when none is, the step chains one of the registrations whose only flaw is their fit
@@ -53,6 +56,11 @@ class StepWorker {
 
  private:
   OdometryStep to_step(const PairMatch& m, const PointCloud& reference, const Eigen::Isometry3d& guess) const;
+  /// A trusted answer without translation, in the sensor's frame: the input's points above the horizon
+  /// registered alone from it by `matcher_` (with the reference model of `built`, which registered the
+  /// step), and the answer suspect when they do not confirm it (check_no_motion_above_horizon).
+  void confirm_no_motion(OdometryStep& step, const PointCloud& reference, const PointCloud& sample,
+                         const Matcher& built);
   /// Keeps the answers of `m`, a registration of `sample`: its pose when it converged and at most its
   /// fit is poor, and its alternatives that pass the trust checks.
   void remember(const PairMatch& m, const PointCloud& sample);
@@ -73,6 +81,7 @@ class StepWorker {
   /// (sequence_trust.hpp, check_unconfirmed_no_motion)
   bool motion_unknown_ = false;
   double reach_ = std::numeric_limits<double>::infinity();  ///< first_try's `reach`, for this step
+  bool sensor_frame_ = true;                                ///< first_try's `sensor_frame`, for this step
   std::vector<Answer> answers_;  ///< this step's answers so far (first_try, recover)
   /// The poses of this step's ambiguous registrations and of the alternatives that made them so
   std::vector<Eigen::Isometry3d> disputed_;

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
+#include "sextant/core/units.hpp"
 #include "sextant/odometry/sequence_trust.hpp"
 
 namespace sextant {
@@ -81,6 +83,59 @@ TEST(SequenceTrust, NoMotionIsTrustedOnlyWithTheFitOfOnePlace) {
   low.reason = "30.0 % of the input matched";
   check_unconfirmed_no_motion(low, moved(0.1, 0.0), tolerance);
   EXPECT_EQ(low.trust, Trust::kLowOverlap);
+  EXPECT_EQ(low.reason, "30.0 % of the input matched");
+}
+
+TEST(SequenceTrust, AboveTheHorizonIsWhatLooksUp) {
+  PointCloud scan;
+  for (const float z : {-1.5f, 0.0f, 0.3f, -0.2f, 2.0f}) scan.push_back({10.0f, 1.0f, z});
+  const PointCloud above = above_horizon(scan);
+  ASSERT_EQ(above.size(), 2u);
+  EXPECT_EQ(above.points()[0].z(), 0.3f);
+  EXPECT_EQ(above.points()[1].z(), 2.0f);
+}
+
+// MulRan 0–107 as 16 rings, seed 2, keyframes 57 → 58: the answer 0.11 m fits 1.08 × the prediction, as
+// a stop fits; the points above the horizon alone move 1.89 m from it, trusted. Keyframes 65 → 66: an
+// answer without translation turned 7.1°, where they match 44 % (low overlap). Both are suspect. At a
+// stop they stay (5 cm); an answer that moves (2.4 m) or is already untrusted is left alone, and so is
+// one where the points above the horizon tell nothing (degenerate).
+TEST(SequenceTrust, NoTranslationIsConfirmedByThePointsAboveTheHorizon) {
+  const QualitySettings tolerance;  // 1 m, 5°
+  const auto pose = [](double x, double yaw_deg) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.translation().x() = x;
+    T.linear() = Eigen::AngleAxisd(yaw_deg * kRadPerDeg, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    return T;
+  };
+  const auto with_trust = [](RegistrationQuality q, Trust trust) {
+    q.trust = trust;
+    return q;
+  };
+  RegistrationQuality held = trusted(0.95, 1.08);
+  check_no_motion_above_horizon(held, pose(0.11, 0.8), pose(2.0, 1.6), trusted(0.99, 1.11), tolerance);
+  EXPECT_EQ(held.trust, Trust::kSuspect);
+  EXPECT_NE(held.reason.find("the points above the horizon alone move 1.89 m and 0.8°"), std::string::npos)
+      << held.reason;
+  RegistrationQuality turned = trusted(0.84, 1.20);
+  check_no_motion_above_horizon(turned, pose(0.09, 7.1), pose(1.6, 9.6),
+                                with_trust(trusted(0.44, 1.40), Trust::kLowOverlap), tolerance);
+  EXPECT_EQ(turned.trust, Trust::kSuspect);
+  EXPECT_NE(turned.reason.find("only 44.0 % of the points above the horizon match"), std::string::npos)
+      << turned.reason;
+  RegistrationQuality stop = trusted(0.95, 0.99);
+  check_no_motion_above_horizon(stop, pose(0.05, 0.0), pose(0.10, 0.1), trusted(0.93, 1.01), tolerance);
+  EXPECT_TRUE(stop.trusted()) << stop.reason;
+  RegistrationQuality driving = trusted(0.9, 1.0);
+  check_no_motion_above_horizon(driving, pose(2.4, 0.0), pose(4.0, 0.0), trusted(0.9, 1.0), tolerance);
+  EXPECT_TRUE(driving.trusted()) << driving.reason;
+  RegistrationQuality blind = trusted(0.95, 1.0);
+  check_no_motion_above_horizon(blind, pose(0.1, 0.0), pose(3.0, 0.0),
+                                with_trust(trusted(0.9, 1.0), Trust::kDegenerate), tolerance);
+  EXPECT_TRUE(blind.trusted()) << blind.reason;
+  RegistrationQuality low = with_trust(trusted(0.3, 1.0), Trust::kLowOverlap);
+  low.reason = "30.0 % of the input matched";
+  check_no_motion_above_horizon(low, pose(0.1, 0.0), pose(3.0, 0.0), trusted(0.9, 1.0), tolerance);
   EXPECT_EQ(low.reason, "30.0 % of the input matched");
 }
 

@@ -138,5 +138,41 @@ TEST(StepWorker, ACorrectionThePlatformCannotReachIsNotTrusted) {
   EXPECT_EQ(braking.recovery, "wide_basin");
 }
 
+/// A scan of 100 points, half of them above the sensor's horizon.
+PointCloud scan_above_and_below() {
+  PointCloud c = scripted_cloud();
+  for (std::size_t i = 0; i < c.size(); i += 2) c[i].z() = 1.0f;
+  return c;
+}
+
+/// A step from the guess 0.04 m forward (the chain's last trusted motion), whose first registration
+/// answers 0.11 m at a fit of 1.08, as two scans from one place fit; the points above the horizon,
+/// registered alone from it, answer `above`. `sensor_frame`: the scans lie in their sensor's frame.
+OdometryStep held_by_the_rings(const Scripted& above, bool sensor_frame) {
+  const std::map<double, Scripted> script{{0.04, {0.11, 0.95, 1.08}}, {0.11, above}};
+  OdometrySettings s;
+  s.registration.matcher.make = [script] { return std::make_unique<ScriptedMatcher>(script); };
+  s.registration.sampler = all_points_sampler_factory();
+  s.recover = false;
+  odometry_detail::StepWorker worker(s);
+  const PointCloud reference = scan_above_and_below(), input = scan_above_and_below();
+  return worker.first_try(reference, input, metres_ahead(0.04), 1, {}, false,
+                          std::numeric_limits<double>::infinity(), sensor_frame);
+}
+
+// MulRan 0–107 as 16 rings (seed 2, keyframes 57 → 58: 1.43 m): the rings hold the scan at 0.11 m, and
+// the points above the horizon alone move to 2.0 m. The step is not trusted. At a stop they stay; for
+// scans not in their sensor's frame (a map frame) there is no horizon to look above.
+TEST(StepWorker, AnAnswerTheRingsHoldStillIsConfirmedAboveTheHorizon) {
+  const OdometryStep held = held_by_the_rings({2.0, 0.99, 1.11}, true);
+  EXPECT_FALSE(held.trusted());
+  EXPECT_NE(held.quality.reason.find("points above the horizon alone move 1.89 m"), std::string::npos)
+      << held.quality.reason;
+  const OdometryStep stop = held_by_the_rings({0.13, 0.95, 1.0}, true);
+  EXPECT_TRUE(stop.trusted()) << stop.quality.reason;
+  const OdometryStep map_frame = held_by_the_rings({2.0, 0.99, 1.11}, false);
+  EXPECT_TRUE(map_frame.trusted()) << map_frame.quality.reason;
+}
+
 }  // namespace
 }  // namespace sextant

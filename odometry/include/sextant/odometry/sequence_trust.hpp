@@ -12,6 +12,7 @@
 
 #include <Eigen/Geometry>
 
+#include "sextant/core/point_cloud.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 #include "sextant/matchers/registration_result.hpp"
 
@@ -49,6 +50,23 @@ class SequenceTrust {
 void check_unconfirmed_no_motion(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
                                  const QualitySettings& tolerance,
                                  double fit_factor = SequenceTrustSettings{}.fit_factor);
+
+/// The points of `scan`, in its sensor's frame, above the sensor's horizon (z > 0): the ground's rings
+/// of a level sensor lie below it, and with them the one structure that moves with the sensor.
+PointCloud above_horizon(const PointCloud& scan);
+
+/// For an answer without translation (`relative` within `tolerance`'s ambiguity distance of it; any
+/// rotation): marks a trusted `quality` suspect when the scan's points above the horizon (above_horizon),
+/// registered alone from `relative`, do not confirm it: they end with low overlap (`above_quality`), or
+/// trusted at `above`, farther than the tolerance away. A spinning lidar's ground rings are circles about
+/// the sensor, so they coincide at no translation (and any turn about the vertical) whatever the vehicle
+/// did; where they are most of a sparse scan they hold it there. MulRan 0–107 read as 16 rings stood
+/// still for five keyframes while the car moved 1.4–4.7 m each, fitting 0.94–1.12 × the prediction, as a
+/// real stop fits (docs/matcher_defaults.md, "The ground's rings hold a sparse scan"). At a stop, the
+/// points above the horizon stay where the rest do.
+void check_no_motion_above_horizon(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
+                                   const Eigen::Isometry3d& above, const RegistrationQuality& above_quality,
+                                   const QualitySettings& tolerance);
 
 /// How far a platform accelerating at most `max_acceleration` can depart from the constant-velocity
 /// prediction of a step of `dt` seconds, the velocity measured over the step before, of `dt_before`
