@@ -196,10 +196,21 @@ void StepWorker::confirm_no_motion(OdometryStep& step, const PointCloud& referen
   if (&reference != matcher_reference_ && (&built == matcher_.get() || !matcher_->share_reference(built)))
     matcher_->set_reference(reference);
   matcher_reference_ = &reference;
-  const RegistrationResult r = matcher_->align(above, step.relative);
-  check_no_motion_above_horizon(step.quality, step.relative, r.T,
-                                assess_registration(r, above, settings_.quality), settings_.quality);
-  step.seconds += r.seconds;
+  AboveHorizon said;
+  const RegistrationResult local = matcher_->align(above, step.relative);
+  said.local = local.T;
+  said.local_quality = assess_registration(local, above, settings_.quality);
+  step.seconds += local.seconds;
+  if (!said.telling(step.relative, settings_.quality) && recovery_) {
+    if (&reference != recovery_reference_ && !recovery_->share_reference(*matcher_))
+      recovery_->set_reference(reference);
+    recovery_reference_ = &reference;
+    const RegistrationResult wide = recovery_->align(above, step.relative);
+    said.wide = wide.T;
+    said.wide_quality = assess_registration(wide, above, settings_.quality);
+    step.seconds += wide.seconds;
+  }
+  check_no_motion_above_horizon(step.quality, step.relative, said, settings_.quality);
 }
 
 OdometryStep StepWorker::to_step(const PairMatch& m, const PointCloud& reference,
