@@ -4,7 +4,8 @@
 The MulRan keyframes 0-107 made into the scans of other set-ups, each a folder dataset with times,
 run with `sextant odometry` and no options:
   - 32 rings / 16 rings: every 2nd / 4th of the OS1-64's rings (elevation bands of 0.52 degrees),
-    as a sparser spinning lidar would see the same drive;
+    as a sparser spinning lidar would see the same drive; "16 rings, k on": every 4th ring counted k
+    rings on, another such lidar;
   - 120 degrees ahead: only the points within 60 degrees of the direction of travel (-x here), as a
     forward-looking lidar;
   - map frame, 300 m: every keyframe moved by the reference's pose into its map and 300 m further,
@@ -56,10 +57,11 @@ def euler(alpha, beta, gamma):
     return rx @ ry @ rz
 
 
-def keep_rings(every):
+def keep_rings(every, shift=0):
+    """Every `every`-th ring, counted `shift` rings on."""
     def keep(p):
         elevation = np.degrees(np.arctan2(p[:, 2], np.hypot(p[:, 0], p[:, 1])))
-        return np.floor((elevation + 30.0) / RING_SPACING_DEG + 0.5).astype(int) % every == 0
+        return (np.floor((elevation + 30.0) / RING_SPACING_DEG + 0.5).astype(int) + shift) % every == 0
     return keep
 
 
@@ -149,6 +151,8 @@ print("|---|---|---|---|---|---|---|---|")
 print(variant("the OS1-64 (as recorded)"))
 print(variant("32 rings", keep_rings(2)))
 print(variant("16 rings", keep_rings(4)))
+for shift in (1, 2, 3):
+    print(variant(f"16 rings, {shift} on", keep_rings(4, shift)))
 print(variant("120° ahead", ahead))
 print(variant("map frame, 300 m", offset=300.0))
 print(f"(outputs in {out})")
