@@ -67,18 +67,25 @@ PointCloud scripted_cloud() {
   return c;
 }
 
+/// Odometry settings whose matcher answers by `script` and whose wide basin answers by `wide`, every
+/// point sampled.
+OdometrySettings scripted_settings(const std::map<double, Scripted>& script,
+                                   const std::map<double, Scripted>& wide) {
+  OdometrySettings s;
+  s.registration.matcher.make = [script] { return std::make_unique<ScriptedMatcher>(script); };
+  s.registration.matcher.make_wide = [wide] { return std::make_unique<ScriptedMatcher>(wide); };
+  s.registration.sampler = all_points_sampler_factory();
+  return s;
+}
+
 /// A step from `guess` metres forward whose first registration answers `first` (not trusted), recovered
 /// from the guess and from no motion with `from_guess` and `from_no_motion` as the wide basin's answers;
 /// `reach`: how far the platform could depart from the guess (first_try).
 OdometryStep scripted_step(double guess, const Scripted& first, const Scripted& from_guess,
                            const Scripted& from_no_motion,
                            double reach = std::numeric_limits<double>::infinity()) {
-  const std::map<double, Scripted> first_script{{guess, first}};
-  const std::map<double, Scripted> wide{{guess, from_guess}, {0.0, from_no_motion}};
-  OdometrySettings s;
-  s.registration.matcher.make = [first_script] { return std::make_unique<ScriptedMatcher>(first_script); };
-  s.registration.matcher.make_wide = [wide] { return std::make_unique<ScriptedMatcher>(wide); };
-  s.registration.sampler = all_points_sampler_factory();
+  const OdometrySettings s =
+      scripted_settings({{guess, first}}, {{guess, from_guess}, {0.0, from_no_motion}});
   odometry_detail::StepWorker worker(s);
   const PointCloud reference = scripted_cloud(), input = scripted_cloud();
   OdometryStep step = worker.first_try(reference, input, metres_ahead(guess), 1, {}, false, reach);
@@ -150,12 +157,8 @@ PointCloud scan_above_and_below() {
 /// registered alone from it, answer `above`, and the wide basin's search for them `searched`.
 /// `sensor_frame`: the scans lie in their sensor's frame.
 OdometryStep held_by_the_rings(const Scripted& above, const Scripted& searched, bool sensor_frame = true) {
-  const std::map<double, Scripted> script{{0.04, {0.11, 0.95, 1.08}}, {0.11, above}};
-  const std::map<double, Scripted> wide{{0.11, searched}};
-  OdometrySettings s;
-  s.registration.matcher.make = [script] { return std::make_unique<ScriptedMatcher>(script); };
-  s.registration.matcher.make_wide = [wide] { return std::make_unique<ScriptedMatcher>(wide); };
-  s.registration.sampler = all_points_sampler_factory();
+  const OdometrySettings s =
+      scripted_settings({{0.04, {0.11, 0.95, 1.08}}, {0.11, above}}, {{0.11, searched}});
   odometry_detail::StepWorker worker(s);
   const PointCloud reference = scan_above_and_below(), input = scan_above_and_below();
   return worker.first_try(reference, input, metres_ahead(0.04), 1, {}, false,
