@@ -6,6 +6,7 @@
 #include <Eigen/Cholesky>
 
 #include "sextant/core/rng.hpp"
+#include "sextant/matchers/horizon_check.hpp"
 
 namespace sextant {
 
@@ -40,12 +41,36 @@ PairRegistration register_about_origin(const PointCloud& reference, const PointC
   return out;
 }
 
+/// A trusted answer without translation, for clouds in their sensor's frame, confirmed by the input's
+/// points above the horizon (horizon_check.hpp): registered alone from it, and searched for with the
+/// wide basin where that tells nothing (not with `wide_basin` off).
+void confirm_no_motion(PairRegistration& out, const PointCloud& reference, const PointCloud& input,
+                       const PairRegistrationRequest& request) {
+  RegistrationResult& r = out.match.result;
+  const QualitySettings quality;
+  if (!r.quality.trusted() || !answer_without_translation(r.T, quality)) return;
+  const auto local = request.matcher.make();
+  local->set_reference(reference);
+  AboveHorizon said = register_above_horizon(*local, input, r.T, quality);
+  if (!said.telling(r.T, quality) && request.wide_basin && request.matcher.make_wide) {
+    const auto wide = request.matcher.make_wide();
+    if (!wide->share_reference(*local)) wide->set_reference(reference);
+    search_above_horizon(said, *wide, input, r.T, quality);
+  }
+  check_no_motion_above_horizon(r.quality, r.T, said, quality);
+  r.seconds += said.seconds;
+}
+
 }  // namespace
 
 PairRegistration register_pair(const PointCloud& reference, const PointCloud& input,
                                const PairRegistrationRequest& request) {
   const CentredFrame frame(registration_centre(reference));
-  if (!frame.moved()) return register_about_origin(reference, input, request);
+  if (!frame.moved()) {
+    PairRegistration out = register_about_origin(reference, input, request);
+    confirm_no_motion(out, reference, input, request);
+    return out;
+  }
   PairRegistrationRequest local = request;
   if (request.init) local.init = frame.local(*request.init);
   PairRegistration out = register_about_origin(frame.cloud(reference), frame.cloud(input), local);

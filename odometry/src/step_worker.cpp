@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "sextant/core/rng.hpp"
+#include "sextant/matchers/horizon_check.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 #include "sextant/odometry/sequence_trust.hpp"
 #include "sextant/odometry/suspect_choice.hpp"
@@ -188,29 +189,20 @@ void StepWorker::remember(const PairMatch& m, const PointCloud& sample) {
 
 void StepWorker::confirm_no_motion(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
                                    const Matcher& built) {
-  if (!sensor_frame_ || !step.trusted() ||
-      step.relative.translation().norm() > settings_.quality.ambiguity_metres)
+  if (!sensor_frame_ || !step.trusted() || !answer_without_translation(step.relative, settings_.quality))
     return;
-  const PointCloud above = above_horizon(input);
-  if (above.empty()) return;
   if (&reference != matcher_reference_ && (&built == matcher_.get() || !matcher_->share_reference(built)))
     matcher_->set_reference(reference);
   matcher_reference_ = &reference;
-  AboveHorizon said;
-  const RegistrationResult local = matcher_->align(above, step.relative);
-  said.local = local.T;
-  said.local_quality = assess_registration(local, above, settings_.quality);
-  step.seconds += local.seconds;
+  AboveHorizon said = register_above_horizon(*matcher_, input, step.relative, settings_.quality);
   if (!said.telling(step.relative, settings_.quality) && recovery_) {
     if (&reference != recovery_reference_ && !recovery_->share_reference(*matcher_))
       recovery_->set_reference(reference);
     recovery_reference_ = &reference;
-    const RegistrationResult wide = recovery_->align(above, step.relative);
-    said.wide = wide.T;
-    said.wide_quality = assess_registration(wide, above, settings_.quality);
-    step.seconds += wide.seconds;
+    search_above_horizon(said, *recovery_, input, step.relative, settings_.quality);
   }
   check_no_motion_above_horizon(step.quality, step.relative, said, settings_.quality);
+  step.seconds += said.seconds;
 }
 
 OdometryStep StepWorker::to_step(const PairMatch& m, const PointCloud& reference,

@@ -13,7 +13,6 @@
 #include <vector>
 
 #include "sextant/core/dataset.hpp"
-#include "sextant/core/io/cloud_io.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/core/units.hpp"
@@ -32,70 +31,10 @@ namespace sextant {
 namespace {
 
 using test::kMulran;
-
-/// A reference step that slips sideways more than this cannot judge a step at the 1 m bar (a car
-/// follows arcs: vehicle_slip.hpp) [m].
-constexpr double kReferenceSlip = 0.5;
-
-/// The reference's relative motions of scans first, first + 1, … first + steps and their slip.
-VehicleSlip reference_slip(const Dataset& dataset, std::size_t first, std::size_t steps) {
-  std::vector<Eigen::Isometry3d> poses;
-  for (std::size_t i = first; i <= first + steps; ++i) poses.push_back(*dataset.ground_truth(i));
-  return vehicle_slip(poses);
-}
-
-/// The trusted steps of `r` (scans first, first + 1, …), each expected within 1 m and 5° of the
-/// reference's relative motion where the reference is a car's path; `unjudged` counts the trusted
-/// steps where it is not (its slip above kReferenceSlip).
-std::size_t trusted_steps_expecting_them_right(const Dataset& dataset, const OdometryResult& r,
-                                               std::size_t first, std::size_t* unjudged = nullptr) {
-  const VehicleSlip slip = reference_slip(dataset, first, r.steps.size());
-  std::size_t trusted = 0;
-  for (std::size_t i = 0; i < r.steps.size(); ++i) {
-    if (!r.steps[i].trusted()) continue;
-    ++trusted;
-    if (std::abs(slip.slip[i]) > kReferenceSlip) {
-      if (unjudged) ++*unjudged;
-      continue;
-    }
-    const Eigen::Isometry3d truth =
-        relative(*dataset.ground_truth(first + i), *dataset.ground_truth(first + i + 1));
-    const Eigen::Isometry3d error = relative(truth, r.steps[i].relative);
-    const bool wrong = translation_norm(error) > 1.0 || rotation_angle(error) * kDegPerRad > 5.0;
-    EXPECT_FALSE(wrong) << "step " << first + i << " is " << translation_norm(error)
-                        << " m off and says trusted";
-  }
-  return trusted;
-}
-
-/// The MulRan keyframes `keyframes`, in that order, as a folder dataset in `folder`: links to the
-/// shared scans, their rows of poses.txt and, `with_times`, of times.txt.
-std::unique_ptr<Dataset> mulran_excerpt(const std::filesystem::path& folder,
-                                        const std::vector<std::size_t>& keyframes, bool with_times) {
-  const auto lines_of = [](const std::filesystem::path& file) {
-    std::ifstream in(file);
-    std::vector<std::string> lines;
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
-    return lines;
-  };
-  const auto six_digits = [](std::size_t k) {
-    return std::string(6 - std::to_string(k).size(), '0') + std::to_string(k);
-  };
-  const std::vector<std::string> all_poses = lines_of(kMulran / "poses.txt"),
-                                 all_times = lines_of(kMulran / "times.txt");
-  std::filesystem::create_directories(folder / "scans");
-  std::string poses, times;
-  for (std::size_t n = 0; n < keyframes.size(); ++n) {
-    const std::size_t i = keyframes[n];
-    std::filesystem::create_symlink(kMulran / "scans" / (six_digits(i) + ".pcd"),
-                                    folder / "scans" / (six_digits(n) + ".pcd"));
-    poses += all_poses.at(i) + "\n";
-    times += all_times.at(i) + "\n";
-  }
-  test::write_text(folder / "poses.txt", poses);
-  if (with_times) test::write_text(folder / "times.txt", times);
-  return open_dataset(folder);
-}
+using test::kReferenceSlip;
+using test::mulran_excerpt;
+using test::reference_slip;
+using test::trusted_steps_expecting_them_right;
 
 // Where the reference is not a car's path it cannot judge: the whole excerpt's reference slips more than
 // kReferenceSlip sideways between the stretches (109–116, where the data's README calls it wrong) and on
@@ -174,53 +113,6 @@ TEST(RealSequence, MulranLocalMapIsRightOrSaysSo) {
   EXPECT_EQ(step.recovery, "least_suspect");
   const Eigen::Isometry3d truth = relative(*dataset->ground_truth(33), *dataset->ground_truth(34));
   EXPECT_LT(translation_norm(relative(truth, step.relative)), 2.0);
-}
-
-/// The MulRan keyframes `keyframes` as a 16-ring lidar would see them, a folder dataset with poses and
-/// times in `folder`: every 4th of the OS1-64's rings (elevation bands of 0.52°), as
-/// bench/sensor_variants.py makes them.
-std::unique_ptr<Dataset> mulran_as_16_rings(const std::filesystem::path& folder,
-                                            const std::vector<std::size_t>& keyframes) {
-  const std::filesystem::path links = folder / "links";
-  const auto linked = mulran_excerpt(links, keyframes, true);
-  std::filesystem::create_directories(folder / "scans");
-  for (std::size_t n = 0; n < keyframes.size(); ++n) {
-    const PointCloud scan = linked->scan(n);
-    std::vector<std::size_t> kept;
-    for (std::size_t i = 0; i < scan.size(); ++i) {
-      const Eigen::Vector3f& p = scan.points()[i];
-      const double elevation = std::atan2(p.z(), std::hypot(p.x(), p.y())) * kDegPerRad;
-      if (static_cast<long>(std::floor((elevation + 30.0) / 0.52 + 0.5)) % 4 == 0) kept.push_back(i);
-    }
-    write_cloud(folder / "scans" / (std::to_string(100000 + n) + ".pcd"), scan.subset(kept));
-  }
-  std::filesystem::copy_file(links / "poses.txt", folder / "poses.txt");
-  std::filesystem::copy_file(links / "times.txt", folder / "times.txt");
-  return open_dataset(folder);
-}
-
-// MulRan keyframes 40–62 as 16 rings (3,800 points a scan, most of them the ground's rings, which
-// move with the sensor): with GBS seeds 2 and 3 the chain stood still on keyframes 57–61 while the car
-// moved 1.4–4.7 m per keyframe, each step fitting 0.94–1.12 × the prediction, as a real stop fits, and
-// trusted (2 and 5 steps 1.5–4.5 m off). The points above the horizon, registered alone from those
-// answers, move 1.1–3 m or match too little (check_no_motion_above_horizon): the steps are not trusted.
-TEST(RealSequence, SixteenRingsStandingStillAreNotTrusted) {
-  if (!std::filesystem::is_directory(kMulran)) GTEST_SKIP() << "no " << kMulran;
-  const test::TempDir tmp;
-  std::vector<std::size_t> keyframes;
-  for (std::size_t k = 40; k <= 62; ++k) keyframes.push_back(k);
-  const auto dataset = mulran_as_16_rings(tmp.path() / "16_rings", keyframes);
-  for (const std::uint64_t seed : {2u, 3u}) {
-    OdometrySettings s;  // as `sextant odometry` runs it
-    s.registration = odometry_registration({});
-    s.guess = OdometryGuess::constant_velocity;
-    s.seed = seed;
-    const OdometryResult r = run_odometry(*dataset, s, 0, dataset->size());
-    ASSERT_EQ(r.steps.size(), keyframes.size() - 1);
-    SCOPED_TRACE(seed);
-    trusted_steps_expecting_them_right(*dataset, r, 0);
-    EXPECT_GE(r.untrusted(), 5u) << "the steps the rings hold still say so";
-  }
 }
 
 // Every other keyframe of 0–6 with their times: the car starts from rest, so velocity × Δt of the

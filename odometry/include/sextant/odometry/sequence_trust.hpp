@@ -9,11 +9,9 @@
 // recoveries then run in parallel.
 #include <cstddef>
 #include <deque>
-#include <optional>
 
 #include <Eigen/Geometry>
 
-#include "sextant/core/point_cloud.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 #include "sextant/matchers/registration_result.hpp"
 
@@ -51,38 +49,6 @@ class SequenceTrust {
 void check_unconfirmed_no_motion(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
                                  const QualitySettings& tolerance,
                                  double fit_factor = SequenceTrustSettings{}.fit_factor);
-
-/// The points of `scan`, in its sensor's frame, above the sensor's horizon (z > 0): the ground's rings
-/// of a level sensor lie below it, and with them the one structure that moves with the sensor.
-PointCloud above_horizon(const PointCloud& scan);
-
-/// What the points of a scan above its sensor's horizon (above_horizon) say about an answer: their
-/// registration alone from it, and, where that one tells nothing (telling()), the wide basin's search
-/// for them from it.
-struct AboveHorizon {
-  Eigen::Isometry3d local = Eigen::Isometry3d::Identity();
-  RegistrationQuality local_quality;
-  Eigen::Isometry3d wide = Eigen::Isometry3d::Identity();
-  std::optional<RegistrationQuality> wide_quality;  ///< none: not searched
-  /// Whether the local registration decides for the answer `relative`: it matches too little, is
-  /// trusted, or leaves the answer (farther than `tolerance`) with at most a poor fit.
-  bool telling(const Eigen::Isometry3d& relative, const QualitySettings& tolerance) const;
-};
-
-/// For an answer without translation (`relative` within `tolerance`'s ambiguity distance of it; any
-/// rotation): marks a trusted `quality` suspect when the scan's points above the horizon do not confirm
-/// it. They match too little there (the local registration is low_overlap); or their registration from
-/// it leaves it, farther than the tolerance, converged, with overlap and every direction constrained:
-/// the answer is not where the world's points rest, whatever their fit; or the wide basin's search for
-/// them ends that far away and is trusted, or fits clearly better (beyond ambiguity_fit_band) than they
-/// fit at the answer. A spinning lidar's ground rings are circles about the sensor, so they coincide at
-/// no translation (and any turn about the vertical) whatever the vehicle did; where they are most of a
-/// sparse scan they hold it there. MulRan 0–107 read as 16 rings stood still for five keyframes while
-/// the car moved 1.4–4.7 m each, fitting 0.94–1.12 × the prediction, as a real stop fits
-/// (docs/matcher_defaults.md, "The ground's rings hold a sparse scan"). At a stop the points above the
-/// horizon rest where the rest do.
-void check_no_motion_above_horizon(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
-                                   const AboveHorizon& above, const QualitySettings& tolerance);
 
 /// How far a platform accelerating at most `max_acceleration` can depart from the constant-velocity
 /// prediction of a step of `dt` seconds, the velocity measured over the step before, of `dt_before`

@@ -1,0 +1,66 @@
+#pragma once
+// An answer without translation, confirmed by the points above the horizon (issue 22). A spinning
+// lidar's ground rings are circles about the sensor, so two scans' rings coincide at no translation
+// (and at any turn about the vertical) whatever the vehicle did, and where they are most of a sparse
+// scan they hold a registration there: MulRan 0–107 read as 16 rings stood still for five keyframes
+// while the car moved 1.4–4.7 m each, fitting 0.94–1.12 × the prediction, as a real stop fits, and
+// `sextant match` trusted 16-ring pairs 2–5 m apart at no translation (docs/matcher_defaults.md, "The
+// ground's rings hold a sparse scan"). The points above a level sensor's horizon hold no ground ring:
+// at a stop they rest where the rest of the scan does, and after a drive they leave.
+//
+//   if (r.quality.trusted() && answer_without_translation(r.T, quality)) {
+//     AboveHorizon said = register_above_horizon(*local, input, r.T, quality);
+//     if (!said.telling(r.T, quality)) search_above_horizon(said, *wide, input, r.T, quality);
+//     check_no_motion_above_horizon(r.quality, r.T, said, quality);
+//   }
+#include <optional>
+
+#include <Eigen/Geometry>
+
+#include "sextant/core/point_cloud.hpp"
+#include "sextant/matchers/matcher.hpp"
+#include "sextant/matchers/registration_quality.hpp"
+
+namespace sextant {
+
+/// The points of `scan`, in its sensor's frame, above the sensor's horizon (z > 0).
+PointCloud above_horizon(const PointCloud& scan);
+
+/// Whether `relative` lies within `tolerance`'s ambiguity distance of no translation (any rotation).
+bool answer_without_translation(const Eigen::Isometry3d& relative, const QualitySettings& tolerance);
+
+/// What the points above the horizon say about an answer: their registration alone from it, and,
+/// where that one tells nothing (telling()), the wide basin's search for them from it.
+struct AboveHorizon {
+  Eigen::Isometry3d local = Eigen::Isometry3d::Identity();
+  RegistrationQuality local_quality;
+  Eigen::Isometry3d wide = Eigen::Isometry3d::Identity();
+  std::optional<RegistrationQuality> wide_quality;  ///< none: not searched
+  double seconds = 0.0;                             ///< the registrations' time
+  /// Whether the local registration decides for the answer `relative`: it matches too little, is
+  /// trusted, or leaves the answer (farther than `tolerance`) with at most a poor fit.
+  bool telling(const Eigen::Isometry3d& relative, const QualitySettings& tolerance) const;
+};
+
+/// The points of `input` (in its sensor's frame) above the horizon registered alone from `answer` by
+/// `local`, which holds the reference's model. Not assessed (local_quality.assessed false) when no
+/// point of `input` lies above the horizon.
+AboveHorizon register_above_horizon(Matcher& local, const PointCloud& input, const Eigen::Isometry3d& answer,
+                                    const QualitySettings& tolerance);
+
+/// Where that registration tells nothing (AboveHorizon::telling), the wide basin's search for the same
+/// points from `answer`, by `wide`, which holds the reference's model.
+void search_above_horizon(AboveHorizon& said, Matcher& wide, const PointCloud& input,
+                          const Eigen::Isometry3d& answer, const QualitySettings& tolerance);
+
+/// For an answer without translation (answer_without_translation): marks a trusted `quality` suspect
+/// when the scan's points above the horizon do not confirm it. They match too little there (the local
+/// registration is low_overlap); or their registration from it leaves it, farther than the tolerance,
+/// converged, with overlap and every direction constrained: the answer is not where the world's points
+/// rest, whatever their fit; or the wide basin's search for them ends that far away and is trusted, or
+/// fits clearly better (beyond ambiguity_fit_band) than they fit at the answer. When they tell nothing
+/// (degenerate, not converged, not assessed) the answer stands.
+void check_no_motion_above_horizon(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
+                                   const AboveHorizon& above, const QualitySettings& tolerance);
+
+}  // namespace sextant

@@ -1,0 +1,96 @@
+// An answer without translation, confirmed by the points above the horizon (horizon_check.hpp).
+#include "sextant/matchers/horizon_check.hpp"
+
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "sextant/core/units.hpp"
+
+namespace sextant {
+
+PointCloud above_horizon(const PointCloud& scan) {
+  std::vector<std::size_t> above;
+  const PointsView points = scan.points();
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (points[i].z() > 0.0f) above.push_back(i);
+  return scan.subset(above);
+}
+
+namespace {
+
+/// Converged, with overlap and every direction constrained: at most the fit is poor.
+bool only_its_fit(const RegistrationQuality& q) {
+  return q.trust == Trust::kOk || q.trust == Trust::kSuspect;
+}
+
+}  // namespace
+
+bool answer_without_translation(const Eigen::Isometry3d& relative, const QualitySettings& tolerance) {
+  return relative.translation().norm() <= tolerance.ambiguity_metres;
+}
+
+bool AboveHorizon::telling(const Eigen::Isometry3d& relative, const QualitySettings& tolerance) const {
+  return local_quality.trust == Trust::kLowOverlap || local_quality.trusted() ||
+         (only_its_fit(local_quality) && far_apart(relative, local, tolerance));
+}
+
+AboveHorizon register_above_horizon(Matcher& local, const PointCloud& input, const Eigen::Isometry3d& answer,
+                                    const QualitySettings& tolerance) {
+  AboveHorizon said;
+  const PointCloud above = above_horizon(input);
+  if (above.empty()) return said;
+  const RegistrationResult alone = local.align(above, answer);
+  said.local = alone.T;
+  said.local_quality = assess_registration(alone, above, tolerance);
+  said.seconds = alone.seconds;
+  return said;
+}
+
+void search_above_horizon(AboveHorizon& said, Matcher& wide, const PointCloud& input,
+                          const Eigen::Isometry3d& answer, const QualitySettings& tolerance) {
+  const PointCloud above = above_horizon(input);
+  if (above.empty()) return;
+  const RegistrationResult searched = wide.align(above, answer);
+  said.wide = searched.T;
+  said.wide_quality = assess_registration(searched, above, tolerance);
+  said.seconds += searched.seconds;
+}
+
+void check_no_motion_above_horizon(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
+                                   const AboveHorizon& above, const QualitySettings& tolerance) {
+  if (!quality.trusted() || !answer_without_translation(relative, tolerance) || !above.local_quality.assessed)
+    return;
+  const auto distance = [&](const Eigen::Isometry3d& T) {
+    const Eigen::Isometry3d apart = relative.inverse() * T;
+    return fmt::format("{:.2f} m and {:.1f}°", apart.translation().norm(),
+                       Eigen::AngleAxisd(apart.linear()).angle() * kDegPerRad);
+  };
+  const auto suspect = [&](const std::string& what) {
+    quality.trust = Trust::kSuspect;
+    quality.reason = fmt::format(
+        "no translation (within {} m), but {}: a lidar's ground rings coincide at no translation "
+        "whatever the vehicle did",
+        tolerance.ambiguity_metres, what);
+  };
+  const RegistrationQuality& local = above.local_quality;
+  if (local.trust == Trust::kLowOverlap)
+    return suspect(fmt::format("only {:.1f} % of the points above the horizon match there or near it",
+                               100.0 * local.overlap));
+  if (only_its_fit(local) && far_apart(relative, above.local, tolerance))
+    return suspect(fmt::format("the points above the horizon, registered alone from it, move {}",
+                               distance(above.local)));
+  if (!above.wide_quality || !only_its_fit(*above.wide_quality) ||
+      !far_apart(relative, above.wide, tolerance))
+    return;
+  const RegistrationQuality& wide = *above.wide_quality;
+  if (wide.trusted())
+    return suspect(
+        fmt::format("the points above the horizon, searched for alone, lie {} away", distance(above.wide)));
+  if (only_its_fit(local) && wide.fit_ratio * tolerance.ambiguity_fit_band < local.fit_ratio)
+    suspect(fmt::format("the points above the horizon fit {:.2f} × the prediction {} away and {:.2f} at it",
+                        wide.fit_ratio, distance(above.wide), local.fit_ratio));
+}
+
+}  // namespace sextant
