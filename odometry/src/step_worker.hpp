@@ -28,8 +28,8 @@ class StepWorker {
   /// first registration is the wide basin's, as `sextant match`'s without --init. `reach`: how far
   /// from the guess the platform could move in this step (reachable_departure; ∞: unknown); every
   /// answer of the step farther away is not trusted (check_reachable_motion). `sensor_frame`: the scans
-  /// lie in their sensor's frame (step_frame.hpp), so that an answer of no motion is confirmed by the
-  /// points above the horizon (check_no_motion_above_horizon).
+  /// lie in their sensor's frame (step_frame.hpp), so that an answer without translation is confirmed by
+  /// the points above the horizon (horizon_check.hpp).
   OdometryStep first_try(const PointCloud& reference, const PointCloud& input, const Eigen::Isometry3d& guess,
                          std::uint64_t seed, const std::vector<Eigen::Isometry3d>& other_priors = {},
                          bool search = false, double reach = std::numeric_limits<double>::infinity(),
@@ -58,8 +58,9 @@ class StepWorker {
   OdometryStep to_step(const PairMatch& m, const PointCloud& reference, const Eigen::Isometry3d& guess) const;
   /// A trusted answer without translation, in the sensor's frame: the input's points above the horizon
   /// registered alone from it by `matcher_` (with the reference model of `built`, which registered the
-  /// step), and the answer suspect when they do not confirm it (check_no_motion_above_horizon).
-  void confirm_no_motion(OdometryStep& step, const PointCloud& reference, const PointCloud& sample,
+  /// step), searched for by `recovery_` where that tells nothing, and the answer suspect when they do
+  /// not confirm it (horizon_check.hpp).
+  void confirm_no_motion(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
                          const Matcher& built);
   /// Keeps the answers of `m`, a registration of `sample`: its pose when it converged and at most its
   /// fit is poor, and its alternatives that pass the trust checks.
