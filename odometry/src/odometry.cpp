@@ -27,6 +27,7 @@
 namespace sextant {
 namespace {
 
+using odometry_detail::StepContext;
 using odometry_detail::StepFrame;
 using odometry_detail::StepWorker;
 
@@ -176,8 +177,10 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
       auto& frame = frames[k - begin];
       frame = std::make_unique<StepFrame>(cut ? cut->first : reference, cut ? cut->second : input);
       StepWorker worker(s);
-      steps[k - 1] = worker.first_try(frame->reference(), frame->input(), frame->local(guess), seeds[k], {},
-                                      false, std::numeric_limits<double>::infinity(), frame->sensor_frame());
+      StepContext context;
+      context.sensor_frame = frame->sensor_frame();
+      steps[k - 1] =
+          worker.first_try(frame->reference(), frame->input(), frame->local(guess), seeds[k], context);
       counter.tick();
     });
     // The sequence check in sequence order, then the recovery of what is not trusted (independent
@@ -202,15 +205,16 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
 }
 
 /// One step of the sequential path in its frame (step_frame.hpp): the first try from `guess` (and
-/// the other priors), the sequence check, the recovery from `starts`; the step comes back in the scans'
-/// coordinates.
+/// the context's other priors, in the scans' coordinates), the sequence check, the recovery from
+/// `starts`; the step comes back in the scans' coordinates.
 OdometryStep register_step(StepWorker& worker, const SequenceTrust& trust, const PointCloud& reference,
-                           const PointCloud& input, const Eigen::Isometry3d& guess,
-                           const std::vector<Eigen::Isometry3d>& other_priors, bool search, double reach,
+                           const PointCloud& input, const Eigen::Isometry3d& guess, StepContext context,
                            const std::vector<Eigen::Isometry3d>& starts, std::uint64_t seed) {
   const StepFrame frame(reference, input);
-  OdometryStep step = worker.first_try(frame.reference(), frame.input(), frame.local(guess), seed,
-                                       frame.local(other_priors), search, reach, frame.sensor_frame());
+  context.other_priors = frame.local(std::move(context.other_priors));
+  context.sensor_frame = frame.sensor_frame();
+  OdometryStep step =
+      worker.first_try(frame.reference(), frame.input(), frame.local(guess), seed, std::move(context));
   trust.check(step.quality);
   worker.recover(step, frame.reference(), frame.input(), frame.local(starts), seed, trust);
   frame.to_coordinates(step);
@@ -267,18 +271,16 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
     // registration is to be chained as it comes (--no-recover), where velocity × Δt lies far from
     // the last motion per scan (the vehicle accelerated, or the keyframes follow distance, not time)
     // both are priors.
-    std::vector<Eigen::Isometry3d> other_priors;
-    bool search = false;
-    double reach = std::numeric_limits<double>::infinity();
+    StepContext context;
     if (s.guess == OdometryGuess::constant_velocity) {
       guess = scale_motion(last_motion, time_ratio(dataset, first + k));
-      search = !any_trusted;
+      context.search = !any_trusted;
       // The velocity is the previous step's when that step is trusted: then the platform's acceleration
       // bounds how far this step can depart from the guess.
       if (!steps.empty() && steps.back().trusted())
-        reach = step_reach(dataset, first + k, s.max_acceleration);
+        context.reach = step_reach(dataset, first + k, s.max_acceleration);
       if (s.recover && any_trusted && far_apart(guess, last_motion, s.quality))
-        other_priors.push_back(last_motion);
+        context.other_priors.push_back(last_motion);
     }
     const Eigen::Isometry3d& previous_pose = window_poses.back();
     if (s.map == OdometryMap::local_map && window.size() > 1) {
@@ -291,12 +293,11 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
       const PointCloud map = merge_local_map(clouds, poses, s.local_map_max_points, s.local_map_voxel);
       const auto cut = what_both_see(map, last_view, input, input_view, guess, s.common_view);
       steps.push_back(register_step(worker, trust, cut ? cut->first : map, cut ? cut->second : input, guess,
-                                    other_priors, search, reach, recovery_starts(s, guess, last_motion),
-                                    seeds[k]));
+                                    context, recovery_starts(s, guess, last_motion), seeds[k]));
     } else {
       const auto cut = what_both_see(window.back(), last_view, input, input_view, guess, s.common_view);
       steps.push_back(register_step(worker, trust, cut ? cut->first : window.back(),
-                                    cut ? cut->second : input, guess, other_priors, search, reach,
+                                    cut ? cut->second : input, guess, context,
                                     recovery_starts(s, guess, last_motion), seeds[k]));
     }
     trust.record(steps.back().quality);

@@ -31,22 +31,18 @@ StepWorker::StepWorker(const OdometrySettings& s)
 }
 
 OdometryStep StepWorker::first_try(const PointCloud& reference, const PointCloud& input,
-                                   const Eigen::Isometry3d& guess, std::uint64_t seed,
-                                   const std::vector<Eigen::Isometry3d>& other_priors, bool search,
-                                   double reach, bool sensor_frame) {
+                                   const Eigen::Isometry3d& guess, std::uint64_t seed, StepContext context) {
   Rng rng(seed);
-  reach_ = reach;
-  sensor_frame_ = sensor_frame;
+  context_ = std::move(context);
   const SampledInput sample = sample_input(*sampler_, input, rng);
-  motion_unknown_ = search;
-  Matcher& matcher = search && recovery_ ? *recovery_ : *matcher_;
+  Matcher& matcher = context_.search && recovery_ ? *recovery_ : *matcher_;
   PairMatch m = match_sample(matcher, sample, reference, guess, settings_.quality);
   matcher_reference_ = &matcher == matcher_.get() ? &reference : nullptr;
   recovery_reference_ = &matcher == recovery_.get() ? &reference : nullptr;
   searched_ = &matcher == recovery_.get() && wide_basin_;
   // Every prior the sequence offers is a start; their solutions are the result's alternatives, and
   // two that pass the checks far apart make it ambiguous (registration_quality.hpp).
-  for (const Eigen::Isometry3d& prior : other_priors) {
+  for (const Eigen::Isometry3d& prior : context_.other_priors) {
     PairMatch other = align_sample(matcher, sample, prior, settings_.quality);
     m.result.seconds += other.result.seconds;
     for (RegistrationResult& alternative : other.result.alternatives)
@@ -55,7 +51,7 @@ OdometryStep StepWorker::first_try(const PointCloud& reference, const PointCloud
     other.result.trace.clear();
     m.result.alternatives.push_back(std::move(other.result));
   }
-  if (!other_priors.empty())
+  if (!context_.other_priors.empty())
     m.result.quality = assess_registration(m.result, sample.points, settings_.quality);
   answers_.clear();
   disputed_.clear();
@@ -189,7 +185,8 @@ void StepWorker::remember(const PairMatch& m, const PointCloud& sample) {
 
 void StepWorker::confirm_no_motion(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
                                    const Matcher& built) {
-  if (!sensor_frame_ || !step.trusted() || !answer_without_translation(step.relative, settings_.quality))
+  if (!context_.sensor_frame || !step.trusted() ||
+      !answer_without_translation(step.relative, settings_.quality))
     return;
   if (&reference != matcher_reference_ && (&built == matcher_.get() || !matcher_->share_reference(built)))
     matcher_->set_reference(reference);
@@ -222,9 +219,9 @@ OdometryStep StepWorker::to_step(const PairMatch& m, const PointCloud& reference
   step.quality = m.result.quality;
   // No motion is the answer a lidar's rings always offer: confirmed only by a fit as of one place,
   // where no motion is known yet or the guess says the vehicle moves (sequence_trust.hpp).
-  if (motion_unknown_ || far_apart(guess, Eigen::Isometry3d::Identity(), settings_.quality))
+  if (context_.search || far_apart(guess, Eigen::Isometry3d::Identity(), settings_.quality))
     check_unconfirmed_no_motion(step.quality, step.relative, settings_.quality);
-  check_reachable_motion(step.quality, step.relative, guess, reach_, settings_.quality);
+  check_reachable_motion(step.quality, step.relative, guess, context_.reach, settings_.quality);
   if (!step.relative.matrix().allFinite()) {  // never chain NaN: keep the guess, say so
     step.relative = guess;
     step.converged = false;

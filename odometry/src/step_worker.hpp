@@ -15,25 +15,33 @@
 
 namespace sextant::odometry_detail {
 
+/// What the sequence knows about one step besides its guess (StepWorker::first_try).
+struct StepContext {
+  /// Further starts the sequence offers (constant velocity: the last motion unscaled, where velocity ×
+  /// Δt lies far from it), registered too and kept as the result's alternatives, so that two priors
+  /// leading to two trusted poses far apart make the step ambiguous.
+  std::vector<Eigen::Isometry3d> other_priors;
+  /// There is no prior (no motion known yet): an answer of no motion needs confirming
+  /// (check_unconfirmed_no_motion), and with recovery on the first registration is the wide basin's, as
+  /// `sextant match`'s without --init.
+  bool search = false;
+  /// How far from the guess the platform could move in this step (reachable_departure; ∞: unknown);
+  /// every answer of the step farther away is not trusted (check_reachable_motion).
+  double reach = std::numeric_limits<double>::infinity();
+  /// The scans lie in their sensor's frame (step_frame.hpp), so that an answer without translation is
+  /// confirmed by the points above the horizon (horizon_check.hpp).
+  bool sensor_frame = true;
+};
+
 /// The matcher and sampler of one worker, and the wide-basin matcher it recovers with.
 class StepWorker {
  public:
   explicit StepWorker(const OdometrySettings& s);
 
-  /// The first registration from `guess`, assessed on its own (absolute checks). `other_priors`:
-  /// further starts the sequence offers (constant velocity: the last motion unscaled, where velocity ×
-  /// Δt lies far from it), registered too and kept as the result's alternatives, so that two priors
-  /// leading to two trusted poses far apart make the step ambiguous. `search`: there is no prior
-  /// (no motion known yet), so an answer of no motion needs confirming, and with recovery on the
-  /// first registration is the wide basin's, as `sextant match`'s without --init. `reach`: how far
-  /// from the guess the platform could move in this step (reachable_departure; ∞: unknown); every
-  /// answer of the step farther away is not trusted (check_reachable_motion). `sensor_frame`: the scans
-  /// lie in their sensor's frame (step_frame.hpp), so that an answer without translation is confirmed by
-  /// the points above the horizon (horizon_check.hpp).
+  /// The first registration from `guess`, assessed on its own (absolute checks), with what the sequence
+  /// knows about the step (StepContext).
   OdometryStep first_try(const PointCloud& reference, const PointCloud& input, const Eigen::Isometry3d& guess,
-                         std::uint64_t seed, const std::vector<Eigen::Isometry3d>& other_priors = {},
-                         bool search = false, double reach = std::numeric_limits<double>::infinity(),
-                         bool sensor_frame = true);
+                         std::uint64_t seed, StepContext context = {});
 
   /// An untrusted step: the wide basin from each of `starts` (the guess first) until a registration
   /// is trusted; when none is, the step chains one of the registrations whose only flaw is their fit
@@ -77,12 +85,8 @@ class StepWorker {
   /// matcher itself from the other starts; null when recovery is off.
   std::unique_ptr<Matcher> recovery_;
   bool wide_basin_ = false;
-  bool searched_ = false;  ///< this step's first registration was the wide basin's
-  /// This step has no motion prior (search): its answers of no motion need confirming
-  /// (sequence_trust.hpp, check_unconfirmed_no_motion)
-  bool motion_unknown_ = false;
-  double reach_ = std::numeric_limits<double>::infinity();  ///< first_try's `reach`, for this step
-  bool sensor_frame_ = true;                                ///< first_try's `sensor_frame`, for this step
+  bool searched_ = false;        ///< this step's first registration was the wide basin's
+  StepContext context_;          ///< first_try's, for this step
   std::vector<Answer> answers_;  ///< this step's answers so far (first_try, recover)
   /// The poses of this step's ambiguous registrations and of the alternatives that made them so
   std::vector<Eigen::Isometry3d> disputed_;

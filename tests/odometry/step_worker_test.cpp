@@ -88,7 +88,9 @@ OdometryStep scripted_step(double guess, const Scripted& first, const Scripted& 
       scripted_settings({{guess, first}}, {{guess, from_guess}, {0.0, from_no_motion}});
   odometry_detail::StepWorker worker(s);
   const PointCloud reference = scripted_cloud(), input = scripted_cloud();
-  OdometryStep step = worker.first_try(reference, input, metres_ahead(guess), 1, {}, false, reach);
+  odometry_detail::StepContext context;
+  context.reach = reach;
+  OdometryStep step = worker.first_try(reference, input, metres_ahead(guess), 1, context);
   EXPECT_FALSE(step.trusted()) << "the script's first registration is not trusted";
   worker.recover(step, reference, input, {metres_ahead(guess), metres_ahead(0.0)}, 1, SequenceTrust());
   return step;
@@ -161,8 +163,9 @@ OdometryStep held_by_the_rings(const Scripted& above, const Scripted& searched, 
       scripted_settings({{0.04, {0.11, 0.95, 1.08}}, {0.11, above}}, {{0.11, searched}});
   odometry_detail::StepWorker worker(s);
   const PointCloud reference = scan_above_and_below(), input = scan_above_and_below();
-  return worker.first_try(reference, input, metres_ahead(0.04), 1, {}, false,
-                          std::numeric_limits<double>::infinity(), sensor_frame);
+  odometry_detail::StepContext context;
+  context.sensor_frame = sensor_frame;
+  return worker.first_try(reference, input, metres_ahead(0.04), 1, context);
 }
 
 // MulRan 0–107 as 16 rings (seed 2, keyframes 57 → 58: 1.43 m): the rings hold the scan at 0.11 m, and
