@@ -9,7 +9,13 @@ run with `sextant odometry` and no options:
   - 120 degrees ahead: only the points within 60 degrees of the direction of travel (-x here), as a
     forward-looking lidar;
   - map frame, 300 m: every keyframe moved by the reference's pose into its map and 300 m further,
-    as scans exported in a map frame or georeferenced come.
+    as scans exported in a map frame or georeferenced come;
+  - yaw swinging / yaw alternating: every keyframe turned about its sensor's vertical axis, by 25
+    degrees times sin(2 pi n / 8) or by +-15 degrees from keyframe to keyframe, as a lidar on a
+    robot that turns back and forth sees the drive: the turn rate reverses, and the constant-velocity
+    guess is up to 15 or 60 degrees off;
+  - tilted 10 degrees: every keyframe turned about its sensor's lateral axis, as a lidar mounted
+    pitched, whose ground rings rise above its horizon on one side.
 A step's error is taken where its scan's sensor stands (in the map frame a relative pose is an
 identity whose translation 300 m away would read a thousandth of a degree as centimetres). Prints
 one row per variant, each count per GBS seed in $SEEDS (default 1; `--seed`: the input sample is
@@ -70,7 +76,14 @@ def ahead(p):
     return np.abs(np.abs(azimuth) - 180.0) < 60.0
 
 
-def variant(name, keep=None, offset=None):
+def turned(yaw_deg=0.0, pitch_deg=0.0):
+    """The scan turned about its sensor's vertical axis, then its lateral one, as a 4x4 transform."""
+    T = np.eye(4)
+    T[:3, :3] = euler(0.0, math.radians(pitch_deg), math.radians(yaw_deg))
+    return T
+
+
+def variant(name, keep=None, offset=None, turn=None):
     """Writes the folder, runs the odometry, returns the table row."""
     poses = np.loadtxt(os.path.join(mulran, "poses.txt"))
     times = np.loadtxt(os.path.join(mulran, "times.txt"))
@@ -82,18 +95,20 @@ def variant(name, keep=None, offset=None):
             p = np.asarray(sextant.read_cloud(os.path.join(mulran, "scans", f"{k:06d}.pcd")))[:, :3]
             if keep is not None:
                 p = p[keep(p)]
-            sensor = np.eye(4)
+            sensor = np.eye(4)  # the scan's coordinates as written <- its sensor's frame
             if offset is not None:
                 sensor = matrix(poses[k])
                 sensor[0, 3] += offset
-                p = p @ sensor[:3, :3].T + sensor[:3, 3]
+            if turn is not None:
+                sensor = turn(n)
+            p = p @ sensor[:3, :3].T + sensor[:3, 3]
             sensors.append(sensor)
             sextant.write_cloud(os.path.join(folder, "scans", f"{n:06d}.pcd"), p.astype(np.float32))
-            world = matrix(poses[k]) if offset is None else np.eye(4)  # world <- scan coordinates
+            world = matrix(poses[k]) @ np.linalg.inv(sensor) if offset is None else np.eye(4)  # world <- scan
             f.write(" ".join(f"{v:.9g}" for v in world[:3, :].ravel()) + "\n")
             t.write(f"{times[k]:.9f}\n")
     points = len(sextant.read_cloud(os.path.join(folder, "scans", "000000.pcd")))
-    counts = [run(folder, seed, poses, sensors, offset is not None) for seed in SEEDS]
+    counts = [run(folder, seed, poses, sensors) for seed in SEEDS]
     steps = counts[0][0]
     per_seed = [" / ".join(str(c[k]) for c in counts) for k in range(1, 5)]
     ms = sorted(c[5] for c in counts)[len(counts) // 2]
@@ -112,7 +127,7 @@ def slipping_steps():
     return {step["step"] for step in json.loads(report).get("reference_slip", {}).get("steps", [])}
 
 
-def run(folder, seed, poses, sensors, in_map_frame):
+def run(folder, seed, poses, sensors):
     """One odometry run: steps, wrong, trusted wrong, trusted wrong where the reference slips, untrusted,
     ms per scan."""
     result = f"{folder}.seed{seed}"
@@ -127,8 +142,7 @@ def run(folder, seed, poses, sensors, in_map_frame):
         estimate[:3, :3] = euler(*np.radians([s["roll_deg"], s["pitch_deg"], s["yaw_deg"]]))
         estimate[:3, 3] = [s["x_m"], s["y_m"], s["z_m"]]
         i, j = int(s["from_scan"]), int(s["to_scan"])
-        if in_map_frame:  # the same motion in the frame of the sensors
-            estimate = np.linalg.inv(sensors[i]) @ estimate @ sensors[j]
+        estimate = np.linalg.inv(sensors[i]) @ estimate @ sensors[j]  # the same motion between the sensors
         error = np.linalg.inv(np.linalg.inv(truth[i]) @ truth[j]) @ estimate
         angle = math.degrees(math.acos(max(-1.0, min(1.0, (np.trace(error[:3, :3]) - 1) / 2))))
         off = np.linalg.norm(error[:3, 3]) > 1.0 or angle > 5.0
@@ -155,4 +169,7 @@ for shift in (1, 2, 3):
     print(variant(f"16 rings, {shift} on", keep_rings(4, shift)))
 print(variant("120° ahead", ahead))
 print(variant("map frame, 300 m", offset=300.0))
+print(variant("yaw swinging ±25°", turn=lambda n: turned(yaw_deg=25.0 * math.sin(2.0 * math.pi * n / 8.0))))
+print(variant("yaw alternating ±15°", turn=lambda n: turned(yaw_deg=15.0 if n % 2 else -15.0)))
+print(variant("tilted 10°", turn=lambda n: turned(pitch_deg=10.0)))
 print(f"(outputs in {out})")
