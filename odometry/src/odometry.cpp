@@ -277,8 +277,10 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
       context.search = !any_trusted;
       // The velocity is the previous step's when that step is trusted: then the platform's acceleration
       // bounds how far this step can depart from the guess.
-      if (!steps.empty() && steps.back().trusted())
+      if (!steps.empty() && steps.back().trusted()) {
         context.reach = step_reach(dataset, first + k, s.max_acceleration);
+        context.last_turn = last_motion.linear();
+      }
       if (s.recover && any_trusted && far_apart(guess, last_motion, s.quality))
         context.other_priors.push_back(last_motion);
     }

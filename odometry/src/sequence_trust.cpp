@@ -57,13 +57,18 @@ double reachable_departure(double dt_before, double dt, double max_acceleration)
 }
 
 void check_reachable_motion(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
-                            const Eigen::Isometry3d& guess, double reach, const QualitySettings& tolerance) {
-  const double departure = (relative.translation() - guess.translation()).norm();
+                            const Eigen::Isometry3d& guess, const Eigen::Matrix3d& last_turn, double reach,
+                            const QualitySettings& tolerance) {
+  const Eigen::Vector3d in_platform = guess.translation();
+  const Eigen::Vector3d in_world = last_turn.transpose() * in_platform;
+  const double departure =
+      std::min((relative.translation() - in_platform).norm(), (relative.translation() - in_world).norm());
   if (!quality.trusted() || !(departure > reach) || departure <= tolerance.ambiguity_metres) return;
   quality.trust = Trust::kSuspect;
   quality.reason = fmt::format(
-      "{:.1f} m from the constant-velocity guess, beyond the {:.1f} m the platform's largest acceleration "
-      "allows in this step",
+      "{:.1f} m from the constant-velocity guess (its velocity held in the platform's frame or in the "
+      "world), "
+      "beyond the {:.1f} m the platform's largest acceleration allows in this step",
       departure, reach);
 }
 

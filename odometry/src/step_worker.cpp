@@ -221,7 +221,8 @@ OdometryStep StepWorker::to_step(const PairMatch& m, const PointCloud& reference
   // where no motion is known yet or the guess says the vehicle moves (sequence_trust.hpp).
   if (context_.search || far_apart(guess, Eigen::Isometry3d::Identity(), settings_.quality))
     check_unconfirmed_no_motion(step.quality, step.relative, settings_.quality);
-  check_reachable_motion(step.quality, step.relative, guess, context_.reach, settings_.quality);
+  check_reachable_motion(step.quality, step.relative, guess, context_.last_turn, context_.reach,
+                         settings_.quality);
   if (!step.relative.matrix().allFinite()) {  // never chain NaN: keep the guess, say so
     step.relative = guess;
     step.converged = false;

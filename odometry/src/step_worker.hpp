@@ -28,6 +28,9 @@ struct StepContext {
   /// How far from the guess the platform could move in this step (reachable_departure; ∞: unknown);
   /// every answer of the step farther away is not trusted (check_reachable_motion).
   double reach = std::numeric_limits<double>::infinity();
+  /// The rotation of the last motion, which the guess continues: that velocity held in the world instead
+  /// of the platform's frame is the guess's translation turned back by it (check_reachable_motion).
+  Eigen::Matrix3d last_turn = Eigen::Matrix3d::Identity();
   /// The scans lie in their sensor's frame (step_frame.hpp), so that an answer without translation is
   /// confirmed by the points above the horizon (horizon_check.hpp).
   bool sensor_frame = true;

@@ -157,8 +157,9 @@ guess: where each registration starts: "odometry", "constant_velocity", "identit
 map: "local_map" (the default: the last local_map_scans scans) or "scan" (the previous scan).
 first, scans: the scans first … first + scans − 1 (scans = 0: to the end).
 min_range: drop points closer than this to the sensor [m]. max_acceleration: with the constant-velocity
-    guess and times, the hardest the platform accelerates or brakes [m/s²] (a step farther from the
-    guess than that allows is not trusted; 0: no check). seed: sampler seed (per-step seeds derive
+    guess and times, the hardest the platform accelerates or brakes [m/s²] (a step farther than that
+    allows from the last step's velocity, held in the platform's frame or in the world, is not
+    trusted; 0: no check). seed: sampler seed (per-step seeds derive
     from it). recover: an untrusted step is registered again with the wide basin (the CLI's default;
     False = --no-recover). common_view: register only what both sensors see from the guess (True,
     --common-view) or the whole scans (False, --whole-scans); None: the CLI's default (True for

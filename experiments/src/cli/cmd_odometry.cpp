@@ -357,10 +357,10 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--min-range", o->min_range, "Drop points closer than this to the sensor [m] (self-hits)")
       ->capture_default_str();
-  cmd->add_option(
-         "--max-acceleration", o->max_acceleration,
-         "With the constant-velocity guess and scan times: the hardest the platform accelerates or "
-         "brakes [m/s²]; a step farther from the guess than that allows is not trusted (0: no check)")
+  cmd->add_option("--max-acceleration", o->max_acceleration,
+                  "With the constant-velocity guess and scan times: the hardest the platform accelerates or "
+                  "brakes [m/s²]; a step farther than that allows from the last step's velocity, held in the "
+                  "platform's frame or in the world, is not trusted (0: no check)")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
   CLI::Option* common_view = cmd->add_flag(

@@ -91,8 +91,9 @@ struct OdometrySettings {
   /// chained motion.
   bool recover = true;
   /// With the constant-velocity guess and a clock: the hardest a platform accelerates or brakes. A
-  /// motion that departs from the guess (velocity × Δt) farther than this could in the time (and farther
-  /// than QualitySettings' ambiguity tolerance) is not trusted on the scans' word alone
+  /// motion that departs from the guess (velocity × Δt), and from that velocity held in the world,
+  /// farther than this could in the time (and farther than QualitySettings' ambiguity tolerance) is not
+  /// trusted on the scans' word alone
   /// (check_reachable_motion, sequence_trust.hpp). 1 g: a wheeled vehicle's tyres grip no harder
   /// (friction coefficient ≤ 1) [m/s²]; 0: no such check
   double max_acceleration = 9.81;

@@ -57,13 +57,22 @@ void check_unconfirmed_no_motion(RegistrationQuality& quality, const Eigen::Isom
 /// or `max_acceleration` is 0.
 double reachable_departure(double dt_before, double dt, double max_acceleration);
 
-/// Marks a trusted `quality` suspect when `relative` lies farther from `guess`, the constant-velocity
-/// prediction, than `reach` (reachable_departure) and than `tolerance`'s ambiguity distance: the
-/// platform could not have made that motion. On MulRan 0–107 read as 32 rings (seed 5, keyframes 31 →
-/// 32, 1.4 s at 10 m/s) the wide basin's answer lay 5 m behind the last scan, 19 m from the guess,
-/// inside a local map where it fit better than the right pose at the map's frontier, and was trusted
-/// (docs/matcher_defaults.md, "A motion no platform makes").
+/// Marks a trusted `quality` suspect when `relative` lies farther than `reach` (reachable_departure) and
+/// than `tolerance`'s ambiguity distance from both translations a constant velocity predicts: `guess`'s,
+/// the last motion scaled to this step (the velocity constant in the platform's frame: a car's turns
+/// carry it along), and the same velocity held in the world, `guess`'s translation turned back by
+/// `last_turn`, the rotation of that last motion (step k's displacement in scan k − 1's frame is
+/// R_{k−1}ᵀ v Δt_k, step k − 1's in scan k − 2's R_{k−2}ᵀ v Δt_{k−1}, so a constant v turns it by
+/// (R_{k−2}ᵀ R_{k−1})ᵀ): a lidar that turns back and forth while its platform holds its course, whose
+/// velocity reverses its direction in the sensor's frame with no acceleration at all (MulRan 0–107 with
+/// every keyframe turned ±15° about the vertical in turn: 35 right steps per run departed 1.9–2.6 m from
+/// the guess and were flagged; docs/matcher_defaults.md, "A sensor that turns on its own"). The
+/// platform could not have made a motion far from both. On MulRan 0–107 read as 32 rings (seed 5,
+/// keyframes 31 → 32, 1.4 s at 10 m/s) the wide basin's answer lay 5 m behind the last scan, 19 m from
+/// the guess, inside a local map where it fit better than the right pose at the map's frontier, and was
+/// trusted (docs/matcher_defaults.md, "A motion no platform makes").
 void check_reachable_motion(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
-                            const Eigen::Isometry3d& guess, double reach, const QualitySettings& tolerance);
+                            const Eigen::Isometry3d& guess, const Eigen::Matrix3d& last_turn, double reach,
+                            const QualitySettings& tolerance);
 
 }  // namespace sextant
