@@ -14,8 +14,9 @@ run with `sextant odometry` and no options:
     degrees times sin(2 pi n / 8) or by +-15 degrees from keyframe to keyframe, as a lidar on a
     robot that turns back and forth sees the drive: the turn rate reverses, and the constant-velocity
     guess is up to 15 or 60 degrees off;
-  - tilted 10 degrees: every keyframe turned about its sensor's lateral axis, as a lidar mounted
-    pitched, whose ground rings rise above its horizon on one side.
+  - tilted 10 degrees, on its side, upside down: every keyframe turned about its sensor's lateral axis
+    by 10 degrees or about its longitudinal one by 90 or 180, as lidars mounted pitched, sideways or
+    hanging are: the ground is no longer below the horizon.
 A step's error is taken where its scan's sensor stands (in the map frame a relative pose is an
 identity whose translation 300 m away would read a thousandth of a degree as centimetres). Prints
 one row per variant, each count per GBS seed in $SEEDS (default 1; `--seed`: the input sample is
@@ -76,10 +77,11 @@ def ahead(p):
     return np.abs(np.abs(azimuth) - 180.0) < 60.0
 
 
-def turned(yaw_deg=0.0, pitch_deg=0.0):
-    """The scan turned about its sensor's vertical axis, then its lateral one, as a 4x4 transform."""
+def turned(yaw_deg=0.0, pitch_deg=0.0, roll_deg=0.0):
+    """The scan turned about its sensor's vertical axis, then its lateral one, then its longitudinal one,
+    as a 4x4 transform."""
     T = np.eye(4)
-    T[:3, :3] = euler(0.0, math.radians(pitch_deg), math.radians(yaw_deg))
+    T[:3, :3] = euler(math.radians(roll_deg), math.radians(pitch_deg), math.radians(yaw_deg))
     return T
 
 
@@ -172,4 +174,6 @@ print(variant("map frame, 300 m", offset=300.0))
 print(variant("yaw swinging ±25°", turn=lambda n: turned(yaw_deg=25.0 * math.sin(2.0 * math.pi * n / 8.0))))
 print(variant("yaw alternating ±15°", turn=lambda n: turned(yaw_deg=15.0 if n % 2 else -15.0)))
 print(variant("tilted 10°", turn=lambda n: turned(pitch_deg=10.0)))
+print(variant("on its side", turn=lambda n: turned(roll_deg=90.0)))
+print(variant("upside down", turn=lambda n: turned(roll_deg=180.0)))
 print(f"(outputs in {out})")
