@@ -8,6 +8,7 @@
 
 #include "sextant/core/pose.hpp"
 #include "sextant/core/units.hpp"
+#include "sextant/matchers/horizon_check.hpp"
 #include "sextant/matchers/ndt_score.hpp"
 
 namespace sextant {
@@ -67,6 +68,8 @@ bool WideBasinSettings::valid(std::string* why) const {
     problem = "wide_basin.sample_points must be ≥ 1";
   else if (candidates < 1)
     problem = "wide_basin.candidates must be ≥ 1";
+  else if (horizon_candidates < 0)
+    problem = "wide_basin.horizon_candidates must be ≥ 0 (0: none)";
   else if (prescreen_points < 0)
     problem = "wide_basin.prescreen_points must be ≥ 0 (0: off)";
   else if (prescreen_keep < candidates)
@@ -97,7 +100,6 @@ std::vector<Eigen::Isometry3d> wide_basin_starts(const std::vector<NdtGrid>& lay
   std::vector<Eigen::Isometry3d> starts{initial};
   if (layers.empty() || input.empty()) return starts;
   const NdtGrid& grid = layers[wide_basin_layer(layers, 2.0 * settings.translation_step)];
-  const PointCloud sample = strided_subsample(input, settings.sample_points);
   const int yaws = static_cast<int>(std::floor(settings.yaw_range_deg / settings.yaw_step_deg + 1e-9));
   const int side =
       static_cast<int>(std::floor(settings.translation_range / settings.translation_step + 1e-9));
@@ -106,38 +108,64 @@ std::vector<Eigen::Isometry3d> wide_basin_starts(const std::vector<NdtGrid>& lay
     return hypothesis_pose(initial, h.yaw * settings.yaw_step_deg * kRadPerDeg,
                            h.x * settings.translation_step, h.y * settings.translation_step);
   };
-  // Prescreen every hypothesis with a smaller strided sample when asked, rescore the best.
-  const bool prescreen = settings.prescreen_points > 0 && settings.prescreen_points < settings.sample_points;
-  const PointCloud first_sample = prescreen ? strided_subsample(sample, settings.prescreen_points) : sample;
-  std::vector<Hypothesis> all;
-  all.reserve(static_cast<std::size_t>(settings.hypotheses()));
+  std::vector<Hypothesis> grid_hypotheses;
+  grid_hypotheses.reserve(static_cast<std::size_t>(settings.hypotheses()));
   for (int k = -yaws; k <= yaws; ++k) {
     const double yaw = k * settings.yaw_step_deg;
     if (yaw <= -180.0 + 1e-9 && yaws * settings.yaw_step_deg >= 180.0 - 1e-9) continue;  // = +180°
     for (int i = -side; i <= side; ++i)
-      for (int j = -side; j <= side; ++j) all.push_back(Hypothesis{0.0, k, i, j});
+      for (int j = -side; j <= side; ++j) grid_hypotheses.push_back(Hypothesis{0.0, k, i, j});
   }
-  const auto score_all = [&](const PointCloud& points) {
+  const auto score = [&](std::vector<Hypothesis>& all, const PointCloud& points) {
     threads.for_each(all.size(), [&](std::size_t h) {
       all[h].score = truncated_score(grid, points, pose_of(all[h]), settings.max_distance);
     });
     sort_best_first(all);
   };
-  score_all(first_sample);
+  // Every hypothesis prescreened with a smaller strided sample when asked, the best kept.
+  const PointCloud sample = strided_subsample(input, settings.sample_points);
+  const bool prescreen = settings.prescreen_points > 0 && settings.prescreen_points < settings.sample_points;
   if (prescreen) {
-    all.resize(std::min(all.size(), static_cast<std::size_t>(settings.prescreen_keep)));
-    score_all(sample);
+    score(grid_hypotheses, strided_subsample(sample, settings.prescreen_points));
+    grid_hypotheses.resize(
+        std::min(grid_hypotheses.size(), static_cast<std::size_t>(settings.prescreen_keep)));
   }
-  // Keep hypotheses more than one grid step (in yaw or x or y) from every kept one.
-  std::vector<Hypothesis> kept;
-  for (const Hypothesis& h : all) {
-    if (static_cast<int>(kept.size()) >= settings.candidates) break;
-    const bool near = std::any_of(kept.begin(), kept.end(), [&](const Hypothesis& o) {
-      double dyaw = std::fabs(static_cast<double>(h.yaw - o.yaw));
-      dyaw = std::min(dyaw, std::fabs(full_turn_steps - dyaw));  // yaw wraps around
-      return dyaw <= 1.0 + 1e-9 && std::abs(h.x - o.x) <= 1 && std::abs(h.y - o.y) <= 1;
-    });
-    if (!near) kept.push_back(h);
+  // Those hypotheses scored with `points`, best first.
+  const auto ranked = [&](const PointCloud& points) {
+    std::vector<Hypothesis> all = grid_hypotheses;
+    score(all, points);
+    return all;
+  };
+  // The best `count` of `all`, each more than one grid step (in yaw or x or y) from every better one.
+  const auto distinct_best = [&](const std::vector<Hypothesis>& all, int count) {
+    std::vector<Hypothesis> kept;
+    for (const Hypothesis& h : all) {
+      if (static_cast<int>(kept.size()) >= count) break;
+      const bool near = std::any_of(kept.begin(), kept.end(), [&](const Hypothesis& o) {
+        double dyaw = std::fabs(static_cast<double>(h.yaw - o.yaw));
+        dyaw = std::min(dyaw, std::fabs(full_turn_steps - dyaw));  // yaw wraps around
+        return dyaw <= 1.0 + 1e-9 && std::abs(h.x - o.x) <= 1 && std::abs(h.y - o.y) <= 1;
+      });
+      if (!near) kept.push_back(h);
+    }
+    return kept;
+  };
+  std::vector<Hypothesis> kept = distinct_best(ranked(sample), settings.candidates);
+  // The points above the horizon hold no ground ring (horizon_check.hpp): where the rings lie on each
+  // other, near no translation, these points do not, so they rank the prescreened hypotheses anew.
+  // Their own best are refined too, even next to one of the others: a start a grid step away may end
+  // elsewhere.
+  if (settings.horizon_candidates > 0) {
+    const PointCloud above = strided_subsample(above_horizon(input), settings.sample_points);
+    if (above.size() >=
+        static_cast<std::size_t>(prescreen ? settings.prescreen_points : settings.sample_points)) {
+      const std::vector<Hypothesis> more = distinct_best(ranked(above), settings.horizon_candidates);
+      for (const Hypothesis& h : more)
+        if (std::none_of(kept.begin(), kept.end(), [&](const Hypothesis& o) {
+              return std::tie(h.yaw, h.x, h.y) == std::tie(o.yaw, o.x, o.y);
+            }))
+          kept.push_back(h);
+    }
   }
   for (const Hypothesis& h : kept) starts.push_back(pose_of(h));
   return starts;

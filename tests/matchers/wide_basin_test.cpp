@@ -61,6 +61,10 @@ TEST(WideBasin, SettingsAreOffByDefaultAndValidated) {
   EXPECT_THROW(read_mlndt_settings(YAML::Load("{wide_basin: {yaw_stp: 10}}"), "t"), InputError);
   EXPECT_THROW(read_mlndt_settings(YAML::Load("{wide_basin: {translation_step: 0}}"), "t"), InputError);
   EXPECT_THROW(read_mlndt_settings(YAML::Load("{wide_basin: {candidates: 0}}"), "t"), InputError);
+  EXPECT_EQ(read_mlndt_settings(YAML::Load("{wide_basin: {horizon_candidates: 0}}"), "t")
+                .wide_basin.horizon_candidates,
+            0);
+  EXPECT_THROW(read_mlndt_settings(YAML::Load("{wide_basin: {horizon_candidates: -1}}"), "t"), InputError);
   // fbmlndt forwards the key to its ML-NDT
   EXPECT_NO_THROW(make_matcher("fbmlndt", YAML::Load("{wide_basin: {candidates: 2}}"), "t"));
 }

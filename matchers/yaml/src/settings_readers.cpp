@@ -60,6 +60,7 @@ WideBasinSettings read_wide_basin_settings(const YAML::Node& node, const std::st
   in.read("translation_range", s.translation_range);
   in.read("sample_points", s.sample_points);
   in.read("candidates", s.candidates);
+  in.read("horizon_candidates", s.horizon_candidates);
   in.read("prescreen_points", s.prescreen_points);
   in.read("prescreen_keep", s.prescreen_keep);
   in.read("max_distance", s.max_distance);

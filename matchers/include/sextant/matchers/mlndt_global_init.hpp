@@ -8,16 +8,18 @@
 // at least twice the translation step, so that the nearest hypothesis to the true pose (≤ half a
 // step off in x and y, ≤ half a yaw step in rotation) still puts most points in their own cell or
 // a neighbour (measured in bench_wide_basin: one translation step gave a too narrow score peak). The
-// `candidates` best hypotheses that differ by more than one grid step (plus the initial guess) are
-// refined by ML-NDT: the guess as an ordinary registration, each hypothesis from the layer it was
-// scored at (it is resolved to that layer's cells; the coarser ones pulled real keyframes back to
-// zero motion). The run chosen is MlndtMatcher::align's: one that passes the trust checks, else the
-// lowest final score; the others are the result's alternatives (registration_quality.hpp).
+// `candidates` best hypotheses that differ by more than one grid step, the `horizon_candidates` best
+// by the input's points above the horizon alone (horizon_check.hpp: a lidar's ground rings rank the
+// hypotheses about no translation best), and the initial guess are refined by ML-NDT: the guess as an
+// ordinary registration, each hypothesis from the layer it was scored at (it is resolved to that layer's
+// cells; the coarser ones pulled real keyframes back to zero motion). The run chosen is
+// MlndtMatcher::align's: one that passes the trust checks, else the lowest final score; the others are the
+// result's alternatives (registration_quality.hpp).
 //
 // YAML (key `wide_basin:` of mlndt and fbmlndt; absent = off, the thesis' registration):
 //   wide_basin: {yaw_step_deg: 10, yaw_range_deg: 180, translation_step: 2,
 //                translation_range: 16, sample_points: 512, prescreen_points: 128,
-//                prescreen_keep: 512, candidates: 4, max_distance: 16}
+//                prescreen_keep: 512, candidates: 4, horizon_candidates: 4, max_distance: 16}
 #include <string>
 #include <vector>
 
@@ -39,8 +41,13 @@ struct WideBasinSettings {
   /// Every hypothesis is first scored with this many points (a strided subset of the sample),
   /// the best `prescreen_keep` are rescored with all `sample_points`; 0 scores all with all [count]
   int prescreen_points = 128;
-  int prescreen_keep = 512;    ///< hypotheses rescored after the prescreen [count, ≥ candidates]
-  int candidates = 4;          ///< best hypotheses refined by the full registration [count]
+  int prescreen_keep = 512;  ///< hypotheses rescored after the prescreen [count, ≥ candidates]
+  int candidates = 4;        ///< best hypotheses refined by the full registration [count]
+  /// Further hypotheses refined, the best by the input's points above the horizon alone (z > 0 in the
+  /// input's frame, where a level spinning lidar's ground rings are not), distinct from the others;
+  /// none when fewer than `prescreen_points` (without a prescreen `sample_points`) of the input lie
+  /// there [count, ≥ 0]
+  int horizon_candidates = 4;
   double max_distance = 16.0;  ///< τ of the hypothesis score [Mahalanobis units]
   bool valid(std::string* why) const;
   /// Hypotheses scored per registration.
