@@ -25,15 +25,26 @@ bool only_its_fit(const RegistrationQuality& q) {
   return q.trust == Trust::kOk || q.trust == Trust::kSuspect;
 }
 
+/// Fits clearly worse than the answer's `answer_fit` (beyond the ambiguity band) and worse than the bar,
+/// with no other flaw: at one place every part of a scan fits as the whole does (within the band); where
+/// the ground's rings carry the fit, the points above the horizon do not.
+bool fits_clearly_worse(const RegistrationQuality& above, double answer_fit,
+                        const QualitySettings& tolerance) {
+  return only_its_fit(above) && above.fit_ratio > tolerance.max_fit_ratio &&
+         above.fit_ratio > tolerance.ambiguity_fit_band * answer_fit;
+}
+
 }  // namespace
 
 bool answer_without_translation(const Eigen::Isometry3d& relative, const QualitySettings& tolerance) {
   return relative.translation().norm() <= tolerance.ambiguity_metres;
 }
 
-bool AboveHorizon::telling(const Eigen::Isometry3d& relative, const QualitySettings& tolerance) const {
+bool AboveHorizon::telling(const Eigen::Isometry3d& relative, double answer_fit,
+                           const QualitySettings& tolerance) const {
   return local_quality.trust == Trust::kLowOverlap || local_quality.trusted() ||
-         (only_its_fit(local_quality) && far_apart(relative, local, tolerance));
+         (only_its_fit(local_quality) && far_apart(relative, local, tolerance)) ||
+         fits_clearly_worse(local_quality, answer_fit, tolerance);
 }
 
 AboveHorizon register_above_horizon(Matcher& local, const PointCloud& input, const Eigen::Isometry3d& answer,
@@ -81,16 +92,14 @@ void check_no_motion_above_horizon(RegistrationQuality& quality, const Eigen::Is
   if (only_its_fit(local) && far_apart(relative, above.local, tolerance))
     return suspect(fmt::format("the points above the horizon, registered alone from it, move {}",
                                distance(above.local)));
-  if (!above.wide_quality || !only_its_fit(*above.wide_quality) ||
-      !far_apart(relative, above.wide, tolerance))
-    return;
-  const RegistrationQuality& wide = *above.wide_quality;
-  if (wide.trusted())
+  if (fits_clearly_worse(local, quality.fit_ratio, tolerance))
     return suspect(
+        fmt::format("the points above the horizon fit {:.2f} × the prediction there, clearly worse "
+                    "than the whole scan's {:.2f}",
+                    local.fit_ratio, quality.fit_ratio));
+  if (above.wide_quality && above.wide_quality->trusted() && far_apart(relative, above.wide, tolerance))
+    suspect(
         fmt::format("the points above the horizon, searched for alone, lie {} away", distance(above.wide)));
-  if (only_its_fit(local) && wide.fit_ratio * tolerance.ambiguity_fit_band < local.fit_ratio)
-    suspect(fmt::format("the points above the horizon fit {:.2f} × the prediction {} away and {:.2f} at it",
-                        wide.fit_ratio, distance(above.wide), local.fit_ratio));
 }
 
 }  // namespace sextant

@@ -52,7 +52,7 @@ void confirm_no_motion(PairRegistration& out, const PointCloud& reference, const
   const auto local = request.matcher.make();
   local->set_reference(reference);
   AboveHorizon said = register_above_horizon(*local, input, r.T, quality);
-  if (!said.telling(r.T, quality) && request.wide_basin && request.matcher.make_wide) {
+  if (!said.telling(r.T, r.quality.fit_ratio, quality) && request.wide_basin && request.matcher.make_wide) {
     const auto wide = request.matcher.make_wide();
     if (!wide->share_reference(*local)) wide->set_reference(reference);
     search_above_horizon(said, *wide, input, r.T, quality);

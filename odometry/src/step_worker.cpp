@@ -192,7 +192,7 @@ void StepWorker::confirm_no_motion(OdometryStep& step, const PointCloud& referen
     matcher_->set_reference(reference);
   matcher_reference_ = &reference;
   AboveHorizon said = register_above_horizon(*matcher_, input, step.relative, settings_.quality);
-  if (!said.telling(step.relative, settings_.quality) && recovery_) {
+  if (!said.telling(step.relative, step.quality.fit_ratio, settings_.quality) && recovery_) {
     if (&reference != recovery_reference_ && !recovery_->share_reference(*matcher_))
       recovery_->set_reference(reference);
     recovery_reference_ = &reference;
