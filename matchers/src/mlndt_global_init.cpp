@@ -154,7 +154,8 @@ std::vector<Eigen::Isometry3d> wide_basin_starts(const std::vector<NdtGrid>& lay
   // The points above the horizon hold no ground ring (horizon_check.hpp): where the rings lie on each
   // other, near no translation, these points do not, so they rank the prescreened hypotheses anew.
   // Their own best are refined too, even next to one of the others: a start a grid step away may end
-  // elsewhere.
+  // elsewhere (leaving those out lost a right pair of bench/pairs_from_identity.py and let 156→160
+  // slide 7 m, trusted: its refinement was the alternative that made it ambiguous).
   if (settings.horizon_candidates > 0) {
     const PointCloud above = strided_subsample(above_horizon(input), settings.sample_points);
     if (above.size() >=
