@@ -1,6 +1,7 @@
 // An answer without translation, confirmed by the points above the horizon (horizon_check.hpp).
 #include "sextant/matchers/horizon_check.hpp"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,32 @@ bool fits_clearly_worse(const RegistrationQuality& above, double answer_fit,
          above.fit_ratio > tolerance.ambiguity_fit_band * answer_fit;
 }
 
+/// How far `T` lies from the answer `relative`, for a reason.
+std::string apart(const Eigen::Isometry3d& relative, const Eigen::Isometry3d& T) {
+  const Eigen::Isometry3d d = relative.inverse() * T;
+  return fmt::format("{:.2f} m and {:.1f}°", d.translation().norm(),
+                     Eigen::AngleAxisd(d.linear()).angle() * kDegPerRad);
+}
+
+/// What the points above the horizon, registered alone from the answer `relative` (whose whole scan fits
+/// `answer_fit`), say against it, if anything: they match too little, leave it, or fit clearly worse.
+std::optional<std::string> local_objection(const AboveHorizon& above, const Eigen::Isometry3d& relative,
+                                           double answer_fit, const QualitySettings& tolerance) {
+  const RegistrationQuality& local = above.local_quality;
+  if (local.trust == Trust::kLowOverlap)
+    return fmt::format("only {:.1f} % of the points above the horizon match there or near it",
+                       100.0 * local.overlap);
+  if (only_its_fit(local) && far_apart(relative, above.local, tolerance))
+    return fmt::format("the points above the horizon, registered alone from it, move {}",
+                       apart(relative, above.local));
+  if (fits_clearly_worse(local, answer_fit, tolerance))
+    return fmt::format(
+        "the points above the horizon fit {:.2f} × the prediction there, clearly worse "
+        "than the whole scan's {:.2f}",
+        local.fit_ratio, answer_fit);
+  return std::nullopt;
+}
+
 }  // namespace
 
 bool answer_without_translation(const Eigen::Isometry3d& relative, const QualitySettings& tolerance) {
@@ -42,9 +69,7 @@ bool answer_without_translation(const Eigen::Isometry3d& relative, const Quality
 
 bool AboveHorizon::telling(const Eigen::Isometry3d& relative, double answer_fit,
                            const QualitySettings& tolerance) const {
-  return local_quality.trust == Trust::kLowOverlap || local_quality.trusted() ||
-         (only_its_fit(local_quality) && far_apart(relative, local, tolerance)) ||
-         fits_clearly_worse(local_quality, answer_fit, tolerance);
+  return local_quality.trusted() || local_objection(*this, relative, answer_fit, tolerance).has_value();
 }
 
 AboveHorizon register_above_horizon(Matcher& local, const PointCloud& input, const Eigen::Isometry3d& answer,
@@ -73,11 +98,6 @@ void check_no_motion_above_horizon(RegistrationQuality& quality, const Eigen::Is
                                    const AboveHorizon& above, const QualitySettings& tolerance) {
   if (!quality.trusted() || !answer_without_translation(relative, tolerance) || !above.local_quality.assessed)
     return;
-  const auto distance = [&](const Eigen::Isometry3d& T) {
-    const Eigen::Isometry3d apart = relative.inverse() * T;
-    return fmt::format("{:.2f} m and {:.1f}°", apart.translation().norm(),
-                       Eigen::AngleAxisd(apart.linear()).angle() * kDegPerRad);
-  };
   const auto suspect = [&](const std::string& what) {
     quality.trust = Trust::kSuspect;
     quality.reason = fmt::format(
@@ -85,21 +105,11 @@ void check_no_motion_above_horizon(RegistrationQuality& quality, const Eigen::Is
         "whatever the vehicle did",
         tolerance.ambiguity_metres, what);
   };
-  const RegistrationQuality& local = above.local_quality;
-  if (local.trust == Trust::kLowOverlap)
-    return suspect(fmt::format("only {:.1f} % of the points above the horizon match there or near it",
-                               100.0 * local.overlap));
-  if (only_its_fit(local) && far_apart(relative, above.local, tolerance))
-    return suspect(fmt::format("the points above the horizon, registered alone from it, move {}",
-                               distance(above.local)));
-  if (fits_clearly_worse(local, quality.fit_ratio, tolerance))
-    return suspect(
-        fmt::format("the points above the horizon fit {:.2f} × the prediction there, clearly worse "
-                    "than the whole scan's {:.2f}",
-                    local.fit_ratio, quality.fit_ratio));
+  if (const auto objection = local_objection(above, relative, quality.fit_ratio, tolerance))
+    return suspect(*objection);
   if (above.wide_quality && above.wide_quality->trusted() && far_apart(relative, above.wide, tolerance))
-    suspect(
-        fmt::format("the points above the horizon, searched for alone, lie {} away", distance(above.wide)));
+    suspect(fmt::format("the points above the horizon, searched for alone, lie {} away",
+                        apart(relative, above.wide)));
 }
 
 }  // namespace sextant

@@ -6,11 +6,14 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "sextant/core/dataset.hpp"
+#include "sextant/core/io/cloud_io.hpp"
+#include "sextant/core/io/kitti.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/eval/vehicle_slip.hpp"
@@ -84,6 +87,26 @@ inline std::unique_ptr<Dataset> mulran_excerpt(const std::filesystem::path& fold
   }
   write_text(folder / "poses.txt", poses);
   if (with_times) test::write_text(folder / "times.txt", times);
+  return open_dataset(folder);
+}
+
+/// The MulRan keyframes `keyframes` as another set-up would record them, a folder dataset with poses and
+/// times in `folder`: keyframe n's points `made(scan, n)`, in the frame `frame(n)` moves them to (the
+/// scan's coordinates as written ← the recording sensor's), its pose the reference's moved with them.
+inline std::unique_ptr<Dataset> mulran_made_into(
+    const std::filesystem::path& folder, const std::vector<std::size_t>& keyframes,
+    const std::function<PointCloud(const PointCloud&, std::size_t)>& made,
+    const std::function<Eigen::Isometry3d(std::size_t)>& frame) {
+  const auto linked = mulran_excerpt(folder / "links", keyframes, true);
+  std::filesystem::create_directories(folder / "scans");
+  std::vector<Eigen::Isometry3d> poses;
+  for (std::size_t n = 0; n < keyframes.size(); ++n) {
+    write_cloud(folder / "scans" / (std::to_string(100000 + n) + ".pcd"),
+                made(linked->scan(n), n).transformed(frame(n)));
+    poses.push_back(*linked->ground_truth(n) * frame(n).inverse());
+  }
+  write_kitti_poses(folder / "poses.txt", poses);
+  std::filesystem::copy_file(folder / "links" / "times.txt", folder / "times.txt");
   return open_dataset(folder);
 }
 

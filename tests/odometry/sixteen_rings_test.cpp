@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "sextant/core/dataset.hpp"
-#include "sextant/core/io/cloud_io.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/core/units.hpp"
@@ -44,15 +43,9 @@ PointCloud as_16_rings(const PointCloud& scan) {
 /// `folder`.
 std::unique_ptr<Dataset> mulran_as_16_rings(const std::filesystem::path& folder,
                                             const std::vector<std::size_t>& keyframes) {
-  const std::filesystem::path links = folder / "links";
-  const auto linked = mulran_excerpt(links, keyframes, true);
-  std::filesystem::create_directories(folder / "scans");
-  for (std::size_t n = 0; n < keyframes.size(); ++n) {
-    write_cloud(folder / "scans" / (std::to_string(100000 + n) + ".pcd"), as_16_rings(linked->scan(n)));
-  }
-  std::filesystem::copy_file(links / "poses.txt", folder / "poses.txt");
-  std::filesystem::copy_file(links / "times.txt", folder / "times.txt");
-  return open_dataset(folder);
+  return test::mulran_made_into(
+      folder, keyframes, [](const PointCloud& scan, std::size_t) { return as_16_rings(scan); },
+      [](std::size_t) { return Eigen::Isometry3d::Identity(); });
 }
 
 // MulRan keyframes 40–62 as 16 rings (3,800 points a scan, most of them the ground's rings, which

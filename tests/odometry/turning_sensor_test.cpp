@@ -11,8 +11,6 @@
 #include <vector>
 
 #include "sextant/core/dataset.hpp"
-#include "sextant/core/io/cloud_io.hpp"
-#include "sextant/core/io/kitti.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/odometry/yaml.hpp"
@@ -28,18 +26,12 @@ using test::kMulran;
 /// for even n, a folder dataset with poses (world ← turned scan) and times in `folder`.
 std::unique_ptr<Dataset> mulran_turning(const std::filesystem::path& folder,
                                         const std::vector<std::size_t>& keyframes) {
-  const auto linked = test::mulran_excerpt(folder / "links", keyframes, true);
-  std::filesystem::create_directories(folder / "scans");
-  std::vector<Eigen::Isometry3d> poses;
-  for (std::size_t n = 0; n < keyframes.size(); ++n) {
-    const double yaw = (n % 2 ? 15.0 : -15.0) / kDegPerRad;
-    const Eigen::Isometry3d turn(Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()));
-    write_cloud(folder / "scans" / (std::to_string(100000 + n) + ".pcd"), linked->scan(n).transformed(turn));
-    poses.push_back(*linked->ground_truth(n) * turn.inverse());
-  }
-  write_kitti_poses(folder / "poses.txt", poses);
-  std::filesystem::copy_file(folder / "links" / "times.txt", folder / "times.txt");
-  return open_dataset(folder);
+  return test::mulran_made_into(
+      folder, keyframes, [](const PointCloud& scan, std::size_t) { return scan; },
+      [](std::size_t n) {
+        return Eigen::Isometry3d(
+            Eigen::AngleAxisd((n % 2 ? 15.0 : -15.0) / kDegPerRad, Eigen::Vector3d::UnitZ()));
+      });
 }
 
 // Keyframes 16–30, 4–6 m and 0.5 s apart: the guess lies 30° of direction off each step, 1.9–2.6 m away,
