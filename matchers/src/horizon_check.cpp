@@ -1,4 +1,4 @@
-// An answer without translation, confirmed by the points above the horizon (horizon_check.hpp).
+// Answers confirmed by the points above the horizon (horizon_check.hpp).
 #include "sextant/matchers/horizon_check.hpp"
 
 #include <optional>
@@ -42,6 +42,18 @@ std::string apart(const Eigen::Isometry3d& relative, const Eigen::Isometry3d& T)
                      Eigen::AngleAxisd(d.linear()).angle() * kDegPerRad);
 }
 
+/// Whether the points above the horizon, registered alone from the answer `relative`, leave it: converged,
+/// with overlap and every direction constrained, farther than the tolerance.
+bool leaves(const AboveHorizon& above, const Eigen::Isometry3d& relative, const QualitySettings& tolerance) {
+  return only_its_fit(above.local_quality) && far_apart(relative, above.local, tolerance);
+}
+
+/// The reason of an answer the points above the horizon leave (leaves()).
+std::string moved(const AboveHorizon& above, const Eigen::Isometry3d& relative) {
+  return fmt::format("the points above the horizon, registered alone from it, move {}",
+                     apart(relative, above.local));
+}
+
 /// What the points above the horizon, registered alone from the answer `relative` (whose whole scan fits
 /// `answer_fit`), say against it, if anything: they match too little, leave it, or fit clearly worse.
 std::optional<std::string> local_objection(const AboveHorizon& above, const Eigen::Isometry3d& relative,
@@ -50,9 +62,7 @@ std::optional<std::string> local_objection(const AboveHorizon& above, const Eige
   if (local.trust == Trust::kLowOverlap)
     return fmt::format("only {:.1f} % of the points above the horizon match there or near it",
                        100.0 * local.overlap);
-  if (only_its_fit(local) && far_apart(relative, above.local, tolerance))
-    return fmt::format("the points above the horizon, registered alone from it, move {}",
-                       apart(relative, above.local));
+  if (leaves(above, relative, tolerance)) return moved(above, relative);
   if (fits_clearly_worse(local, answer_fit, tolerance))
     return fmt::format(
         "the points above the horizon fit {:.2f} × the prediction there, clearly worse "
@@ -70,6 +80,13 @@ bool answer_without_translation(const Eigen::Isometry3d& relative, const Quality
 bool AboveHorizon::telling(const Eigen::Isometry3d& relative, double answer_fit,
                            const QualitySettings& tolerance) const {
   return local_quality.trusted() || local_objection(*this, relative, answer_fit, tolerance).has_value();
+}
+
+std::optional<Eigen::Isometry3d> AboveHorizon::elsewhere(const Eigen::Isometry3d& relative,
+                                                         const QualitySettings& tolerance) const {
+  if (wide_quality && wide_quality->trusted() && far_apart(relative, wide, tolerance)) return wide;
+  if (leaves(*this, relative, tolerance)) return local;
+  return std::nullopt;
 }
 
 AboveHorizon register_above_horizon(Matcher& local, const PointCloud& input, const Eigen::Isometry3d& answer,
@@ -110,6 +127,16 @@ void check_no_motion_above_horizon(RegistrationQuality& quality, const Eigen::Is
   if (above.wide_quality && above.wide_quality->trusted() && far_apart(relative, above.wide, tolerance))
     suspect(fmt::format("the points above the horizon, searched for alone, lie {} away",
                         apart(relative, above.wide)));
+}
+
+void check_motion_above_horizon(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
+                                const AboveHorizon& above, const QualitySettings& tolerance) {
+  if (!quality.trusted() || !above.local_quality.assessed || !leaves(above, relative, tolerance)) return;
+  quality.trust = Trust::kSuspect;
+  quality.reason = fmt::format(
+      "{}, and nothing else bounds this answer: at a right one every part of a scan "
+      "rests where the whole does",
+      moved(above, relative));
 }
 
 }  // namespace sextant

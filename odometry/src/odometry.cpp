@@ -284,6 +284,8 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
       if (s.recover && any_trusted && far_apart(guess, last_motion, s.quality))
         context.other_priors.push_back(last_motion);
     }
+    // An odometer's guess is a prior of its own; the platform's reach bounds a step after a trusted one.
+    context.unbounded = s.guess != OdometryGuess::odometry && !std::isfinite(context.reach);
     const Eigen::Isometry3d& previous_pose = window_poses.back();
     if (s.map == OdometryMap::local_map && window.size() > 1) {
       std::vector<const PointCloud*> clouds;

@@ -55,9 +55,11 @@ OdometryStep StepWorker::first_try(const PointCloud& reference, const PointCloud
     m.result.quality = assess_registration(m.result, sample.points, settings_.quality);
   answers_.clear();
   disputed_.clear();
-  remember(m, sample.points);
+  refuted_.clear();
+  elsewhere_.clear();
   OdometryStep step = to_step(m, reference, guess);
-  confirm_no_motion(step, reference, input, matcher);
+  confirm_above_horizon(step, reference, input, matcher);
+  remember(m, sample.points);
   step.first_trust = step.quality.trust;
   step.first_relative = step.relative;
   return step;
@@ -103,6 +105,11 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
   for (const Eigen::Isometry3d& start : starts)
     if ((wide_basin_ && !searched_) || !start.isApprox(step.guess, 1e-12))  // else tried already
       tries.push_back(start);
+  // Where the points above the horizon rest, away from an answer they refuted (first_try): the whole
+  // scan registered from there by the local matcher (which holds the reference's model since), as
+  // well: the search from there would find the refuted answer again.
+  const std::size_t searches = tries.size();
+  tries.insert(tries.end(), elsewhere_.begin(), elsewhere_.end());
   // One sample for every start (the first try's: the same seed) and one reference model: the first
   // try's when the recovery matcher builds the same one.
   SampledInput sample;
@@ -117,10 +124,12 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
     seconds += sample.seconds +
                std::chrono::duration<double>(std::chrono::steady_clock::now() - model_start).count();
   }
-  for (const Eigen::Isometry3d& start : tries) {
-    const PairMatch w = align_sample(*recovery_, sample, start, settings_.quality);
+  for (std::size_t i = 0; i < tries.size(); ++i) {
+    Matcher& matcher = i < searches ? *recovery_ : *matcher_;
+    PairMatch w = align_sample(matcher, sample, tries[i], settings_.quality);
+    drop_refuted(w, sample.points);
     OdometryStep again = to_step(w, reference, step.guess);
-    confirm_no_motion(again, reference, input, *recovery_);
+    confirm_above_horizon(again, reference, input, matcher);
     seconds += again.seconds;
     // An answer that confirms the first registration stands on its own: the sequence check only asked
     // for a second search. One that lands elsewhere must also pass the sequence check.
@@ -170,12 +179,12 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
 void StepWorker::remember(const PairMatch& m, const PointCloud& sample) {
   const RegistrationResult& r = m.result;
   const Trust trust = r.quality.trust;
-  if (r.converged && (trust == Trust::kOk || trust == Trust::kSuspect))  // at most its fit is poor
-    answers_.push_back({r.T, r.quality.fit_ratio});
+  const bool only_its_fit = r.converged && (trust == Trust::kOk || trust == Trust::kSuspect);
+  if (only_its_fit && !refuted(r.T)) answers_.push_back({r.T, r.quality.fit_ratio});
   if (r.quality.ambiguous) disputed_.push_back(r.T);
   for (const RegistrationResult& other : r.alternatives) {
     const RegistrationQuality q = assess_registration(other, sample, settings_.quality);
-    if (!q.trusted()) continue;
+    if (!q.trusted() || refuted(other.T)) continue;
     answers_.push_back({other.T, q.fit_ratio});
     // The alternatives that make `r` ambiguous are in dispute with it.
     if (r.quality.ambiguous && rivals(r.T, r.quality.fit_ratio, other.T, q.fit_ratio, settings_.quality))
@@ -183,23 +192,44 @@ void StepWorker::remember(const PairMatch& m, const PointCloud& sample) {
   }
 }
 
-void StepWorker::confirm_no_motion(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
-                                   const Matcher& built) {
-  if (!context_.sensor_frame || !step.trusted() ||
-      !answer_without_translation(step.relative, settings_.quality))
-    return;
+bool StepWorker::refuted(const Eigen::Isometry3d& pose) const {
+  return std::any_of(refuted_.begin(), refuted_.end(),
+                     [&](const Eigen::Isometry3d& r) { return !far_apart(pose, r, settings_.quality); });
+}
+
+void StepWorker::drop_refuted(PairMatch& m, const PointCloud& sample) const {
+  std::vector<RegistrationResult>& alternatives = m.result.alternatives;
+  const auto end = std::remove_if(alternatives.begin(), alternatives.end(),
+                                  [&](const RegistrationResult& a) { return refuted(a.T); });
+  if (end == alternatives.end()) return;
+  alternatives.erase(end, alternatives.end());
+  m.result.quality = assess_registration(m.result, sample, settings_.quality);
+}
+
+void StepWorker::confirm_above_horizon(OdometryStep& step, const PointCloud& reference,
+                                       const PointCloud& input, const Matcher& built) {
+  if (!context_.sensor_frame || !step.trusted()) return;
+  const bool without_translation = answer_without_translation(step.relative, settings_.quality);
+  if (!without_translation && !context_.unbounded) return;
   if (&reference != matcher_reference_ && (&built == matcher_.get() || !matcher_->share_reference(built)))
     matcher_->set_reference(reference);
   matcher_reference_ = &reference;
   AboveHorizon said = register_above_horizon(*matcher_, input, step.relative, settings_.quality);
-  if (!said.telling(step.relative, step.quality.fit_ratio, settings_.quality) && recovery_) {
+  if (without_translation && !said.telling(step.relative, step.quality.fit_ratio, settings_.quality) &&
+      recovery_) {
     if (&reference != recovery_reference_ && !recovery_->share_reference(*matcher_))
       recovery_->set_reference(reference);
     recovery_reference_ = &reference;
     search_above_horizon(said, *recovery_, input, step.relative, settings_.quality);
   }
-  check_no_motion_above_horizon(step.quality, step.relative, said, settings_.quality);
+  if (without_translation)
+    check_no_motion_above_horizon(step.quality, step.relative, said, settings_.quality);
+  else
+    check_motion_above_horizon(step.quality, step.relative, said, settings_.quality);
   step.seconds += said.seconds;
+  if (step.trusted()) return;
+  refuted_.push_back(step.relative);
+  if (const auto there = said.elsewhere(step.relative, settings_.quality)) elsewhere_.push_back(*there);
 }
 
 OdometryStep StepWorker::to_step(const PairMatch& m, const PointCloud& reference,

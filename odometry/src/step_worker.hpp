@@ -31,8 +31,11 @@ struct StepContext {
   /// The rotation of the last motion, which the guess continues: that velocity held in the world instead
   /// of the platform's frame is the guess's translation turned back by it (check_reachable_motion).
   Eigen::Matrix3d last_turn = Eigen::Matrix3d::Identity();
-  /// The scans lie in their sensor's frame (step_frame.hpp), so that an answer without translation is
-  /// confirmed by the points above the horizon (horizon_check.hpp).
+  /// Nothing bounds an answer that moves: no odometer's guess, and no trusted velocity just before it
+  /// (`reach` unknown), so that the points above the horizon confirm it (check_motion_above_horizon).
+  bool unbounded = false;
+  /// The scans lie in their sensor's frame (step_frame.hpp), so that an answer without translation, and
+  /// an unbounded one, is confirmed by the points above the horizon (horizon_check.hpp).
   bool sensor_frame = true;
 };
 
@@ -67,14 +70,20 @@ class StepWorker {
 
  private:
   OdometryStep to_step(const PairMatch& m, const PointCloud& reference, const Eigen::Isometry3d& guess) const;
-  /// A trusted answer without translation, in the sensor's frame: the input's points above the horizon
-  /// registered alone from it by `matcher_` (with the reference model of `built`, which registered the
-  /// step), searched for by `recovery_` where that tells nothing, and the answer suspect when they do
-  /// not confirm it (horizon_check.hpp).
-  void confirm_no_motion(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
-                         const Matcher& built);
+  /// A trusted answer in the sensor's frame, without translation or unbounded (StepContext): the input's
+  /// points above the horizon registered alone from it by `matcher_` (with the reference model of `built`,
+  /// which registered the step), for no translation searched for by `recovery_` where that tells nothing, and
+  /// the answer suspect when they do not confirm it (horizon_check.hpp). A refuted answer is no answer of the
+  /// step (remember), and where those points rest instead the recovery starts too.
+  void confirm_above_horizon(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
+                             const Matcher& built);
+  /// Whether `pose` lies within the ambiguity tolerance of an answer its points above the horizon refuted.
+  bool refuted(const Eigen::Isometry3d& pose) const;
+  /// Drops the alternatives of `m` (a registration of `sample`) that lie at a refuted answer, and assesses
+  /// it again without them: a refuted answer cannot make another ambiguous.
+  void drop_refuted(PairMatch& m, const PointCloud& sample) const;
   /// Keeps the answers of `m`, a registration of `sample`: its pose when it converged and at most its
-  /// fit is poor, and its alternatives that pass the trust checks.
+  /// fit is poor, and its alternatives that pass the trust checks; none at a refuted answer.
   void remember(const PairMatch& m, const PointCloud& sample);
 
   /// A pose one registration of this step reached, with its fit ratio.
@@ -93,6 +102,8 @@ class StepWorker {
   std::vector<Answer> answers_;  ///< this step's answers so far (first_try, recover)
   /// The poses of this step's ambiguous registrations and of the alternatives that made them so
   std::vector<Eigen::Isometry3d> disputed_;
+  std::vector<Eigen::Isometry3d> refuted_;    ///< this step's answers its points above the horizon refuted
+  std::vector<Eigen::Isometry3d> elsewhere_;  ///< where those points rest instead (recovery starts)
   std::unique_ptr<Sampler> sampler_;
   const OdometrySettings& settings_;
   const PointCloud* matcher_reference_ = nullptr;   ///< what `matcher_` was last given (its model's source)

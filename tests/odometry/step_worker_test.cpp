@@ -1,5 +1,5 @@
-// One odometry step's recovery (odometry/src/step_worker.hpp) with a scripted matcher: each start
-// gets the answer the script gives it, so the trust rules are tested on their own.
+// One odometry step's recovery (odometry/src/step_worker.hpp) with a scripted matcher
+// (sextant_test/scripted_matcher.hpp), so the trust rules are tested on their own.
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -10,62 +10,17 @@
 #include "sextant/core/pose.hpp"
 #include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/odometry/sequence_trust.hpp"
+#include "sextant_test/scripted_matcher.hpp"
 #include "step_worker.hpp"
 
 namespace sextant {
 namespace {
 
-/// A pose `x` metres ahead.
-Eigen::Isometry3d metres_ahead(double x) {
-  return Eigen::Isometry3d(Eigen::Translation3d(x, 0.0, 0.0));
-}
-
-/// A converged registration at `T` that matched `overlap` of the input and fits `fit` × the
-/// prediction, every direction equally constrained.
-RegistrationResult scripted_answer(const Eigen::Isometry3d& T, std::size_t points, double overlap,
-                                   double fit) {
-  RegistrationResult r;
-  r.T = T;
-  r.converged = true;
-  r.why = Termination::kConverged;
-  r.H = Matrix6d::Identity();
-  r.input_points = points;
-  r.matched_points = static_cast<std::size_t>(overlap * static_cast<double>(points));
-  r.predicted_matched_score = 3.0;
-  r.mean_matched_score = 3.0 * fit;
-  return r;
-}
-
-/// What a registration from a start (keyed by its forward metres) answers: the pose, its overlap and
-/// fit, and optionally a second solution the same registration reached (an alternative).
-struct Scripted {
-  double x = 0.0, overlap = 0.9, fit = 1.0;
-  double alternative_x = 0.0, alternative_fit = 0.0;  ///< alternative_fit 0: none
-};
-
-class ScriptedMatcher final : public Matcher {
- public:
-  explicit ScriptedMatcher(std::map<double, Scripted> script) : script_(std::move(script)) {}
-  std::string name() const override { return "scripted"; }
-  void set_reference(const PointCloud& /*reference*/) override {}
-  RegistrationResult align(const PointCloud& input, const Eigen::Isometry3d& initial) override {
-    const Scripted& s = script_.at(initial.translation().x());
-    RegistrationResult r = scripted_answer(metres_ahead(s.x), input.size(), s.overlap, s.fit);
-    if (s.alternative_fit > 0.0)
-      r.alternatives.push_back(
-          scripted_answer(metres_ahead(s.alternative_x), input.size(), s.overlap, s.alternative_fit));
-    return r;
-  }
-
- private:
-  std::map<double, Scripted> script_;
-};
-
-PointCloud scripted_cloud() {
-  PointCloud c;
-  for (int i = 0; i < 100; ++i) c.push_back({static_cast<float>(i % 10), static_cast<float>(i / 10), 0.f});
-  return c;
-}
+using test::metres_ahead;
+using test::scan_above_and_below;
+using test::Scripted;
+using test::scripted_cloud;
+using test::ScriptedMatcher;
 
 /// Odometry settings whose matcher answers by `script` and whose wide basin answers by `wide`, every
 /// point sampled.
@@ -147,13 +102,6 @@ TEST(StepWorker, ACorrectionThePlatformCannotReachIsNotTrusted) {
   EXPECT_EQ(braking.recovery, "wide_basin");
 }
 
-/// A scan of 100 points, half of them above the sensor's horizon.
-PointCloud scan_above_and_below() {
-  PointCloud c = scripted_cloud();
-  for (std::size_t i = 0; i < c.size(); i += 2) c[i].z() = 1.0f;
-  return c;
-}
-
 /// A step from the guess 0.04 m forward (the chain's last trusted motion), whose first registration
 /// answers 0.11 m at a fit of `answer_fit` (1.08: as two scans from one place fit); the points above the
 /// horizon, registered alone from it, answer `above`, and the wide basin's search for them `searched`.
@@ -195,6 +143,42 @@ TEST(StepWorker, AnAnswerTheRingsHoldStillIsConfirmedAboveTheHorizon) {
   EXPECT_TRUE(stop.trusted()) << stop.quality.reason;
   const OdometryStep map_frame = held_by_the_rings({2.0, 0.99, 1.11}, nowhere, false);
   EXPECT_TRUE(map_frame.trusted()) << map_frame.quality.reason;
+}
+
+/// A step that nothing bounds (`unbounded`) from no motion, searched for: the wide basin answers 2.37 m
+/// (overlap 0.56, fit 1.21); the points above the horizon, registered alone from it, answer `above`.
+/// From 4.02 m the whole scan answers 4.09 m (fit 1.25), with the search's answer again as an alternative
+/// (2.41 m, fit 1.21), and from 4.09 m its points above the horizon stay.
+OdometryStep short_of_the_motion(const Scripted& above, bool unbounded = true) {
+  const std::map<double, Scripted> local{
+      {2.37, above}, {4.02, {4.09, 0.67, 1.25, 2.41, 1.21}}, {4.09, {4.13, 0.88, 0.98}}};
+  const OdometrySettings s = scripted_settings(local, {{0.0, {2.37, 0.56, 1.21}}});
+  odometry_detail::StepWorker worker(s);
+  const PointCloud reference = scan_above_and_below(), input = scan_above_and_below();
+  odometry_detail::StepContext context;
+  context.search = true;
+  context.unbounded = unbounded;
+  OdometryStep step = worker.first_try(reference, input, metres_ahead(0.0), 1, context);
+  worker.recover(step, reference, input, {metres_ahead(0.0)}, 1, SequenceTrust());
+  return step;
+}
+
+// MulRan keyframes 13 → 14 as 16 rings, the first step: the search ended 2.37 m on where the car moved
+// 4.0 m; the points above the horizon move on to 4.02 m, so the answer is refuted, and the whole scan
+// registered from there (4.09 m) is trusted: the refuted answer, reached again as its alternative, does
+// not make it ambiguous. Where they stay, or where the platform's reach bounds the step, the first
+// answer stands.
+TEST(StepWorker, AnAnswerNothingBoundsRestsWhereItsPointsAboveTheHorizonRest) {
+  const OdometryStep moved_on = short_of_the_motion({4.02, 0.88, 0.98});
+  EXPECT_EQ(moved_on.first_trust, Trust::kSuspect);
+  EXPECT_TRUE(moved_on.trusted()) << moved_on.quality.reason;
+  EXPECT_NEAR(moved_on.relative.translation().x(), 4.09, 1e-12);
+  const OdometryStep stays = short_of_the_motion({2.45, 0.88, 0.98});
+  EXPECT_EQ(stays.first_trust, Trust::kOk);
+  EXPECT_NEAR(stays.relative.translation().x(), 2.37, 1e-12);
+  const OdometryStep bounded = short_of_the_motion({4.02, 0.88, 0.98}, false);
+  EXPECT_EQ(bounded.first_trust, Trust::kOk);
+  EXPECT_NEAR(bounded.relative.translation().x(), 2.37, 1e-12);
 }
 
 }  // namespace

@@ -7,8 +7,8 @@
 //     basin from the same guess (same sampler seed); the retry replaces the first result only when
 //     it is trusted;
 //   - settings that hold their own `wide_basin:` map always search with it.
-//   - a trusted answer without translation is confirmed by the input's points above the horizon
-//     (horizon_check.hpp), for clouds in their sensor's frame.
+//   - a trusted answer is confirmed by the input's points above the horizon (horizon_check.hpp), for
+//     clouds in their sensor's frame: nothing else bounds a pair's answer.
 // Matchers without a wide basin (ICP, the PCL peers) register once, from the guess or the identity.
 // Clouds far from the origin of their coordinates are registered about the middle of the reference
 // (registration_centre.hpp), and the result is brought back to the clouds' coordinates: 5,400 km
