@@ -21,9 +21,9 @@ struct StepContext {
   /// Δt lies far from it), registered too and kept as the result's alternatives, so that two priors
   /// leading to two trusted poses far apart make the step ambiguous.
   std::vector<Eigen::Isometry3d> other_priors;
-  /// There is no prior (no motion known yet): an answer of no motion needs confirming
-  /// (check_unconfirmed_no_motion), and with recovery on the first registration is the wide basin's, as
-  /// `sextant match`'s without --init.
+  /// There is no prior (no motion known yet, or the motion the guess continues is not the last step's):
+  /// an answer of no motion needs confirming (check_unconfirmed_no_motion), and with recovery on the first
+  /// registration is the wide basin's, as `sextant match`'s without --init.
   bool search = false;
   /// How far from the guess the platform could move in this step (reachable_departure; ∞: unknown);
   /// every answer of the step farther away is not trusted (check_reachable_motion).

@@ -104,15 +104,15 @@ TEST(RealSequence, MulranLocalMapIsRightOrSaysSo) {
   ASSERT_EQ(r.steps.size(), count - 1);
   const std::size_t trusted = trusted_steps_expecting_them_right(*dataset, r, first);
   EXPECT_GE(trusted, count / 2) << "most steps of a drive are registered and believed";
-  // Keyframes 33→34 (13.7 m along a straight road): no registration is trusted and their fits lie
-  // within 1.38–1.46 × of each other. The lowest fit is a wide-basin pose 21 m off, running
-  // backwards; within the band of about-equal fits the one nearest the constant-velocity guess is
-  // chained (suspect_choice.hpp), 1.4 m off, and the step says so.
-  const OdometryStep& step = r.steps[33 - first];
-  EXPECT_FALSE(step.trusted());
-  EXPECT_EQ(step.recovery, "least_suspect");
-  const Eigen::Isometry3d truth = relative(*dataset->ground_truth(33), *dataset->ground_truth(34));
-  EXPECT_LT(translation_norm(relative(truth, step.relative)), 2.0);
+  // Keyframes 33→34 and 34→35 (13.7 and 10.0 m along a straight road), where the reference slips
+  // sideways 1.1 and 1.2 m, as a car cannot (trusted_steps_expecting_them_right leaves them unjudged).
+  // After an untrusted step the next one searches, and two searches agree on both: 9.8 and 9.5 m/s,
+  // between the 10.1 and 9.2 m/s of the steps around them (the reference: 10.5 and 11.1 m/s). Neither
+  // may lie 2 m from the reference (once a wide-basin pose 21 m off, running backwards, fitted best).
+  for (const std::size_t k : {33u, 34u}) {
+    const Eigen::Isometry3d truth = relative(*dataset->ground_truth(k), *dataset->ground_truth(k + 1));
+    EXPECT_LT(translation_norm(relative(truth, r.steps[k - first].relative)), 2.0) << "step " << k;
+  }
 }
 
 // Every other keyframe of 0–6 with their times: the car starts from rest, so velocity × Δt of the
