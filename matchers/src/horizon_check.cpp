@@ -129,14 +129,25 @@ void check_no_motion_above_horizon(RegistrationQuality& quality, const Eigen::Is
                         apart(relative, above.wide)));
 }
 
+void register_whole_from_there(AboveHorizon& said, Matcher& local, const PointCloud& sample,
+                               const Eigen::Isometry3d& relative, const QualitySettings& tolerance) {
+  if (!said.local_quality.assessed || !leaves(said, relative, tolerance)) return;
+  const RegistrationResult from_there = local.align(sample, said.local);
+  said.seconds += from_there.seconds;
+  if (from_there.converged) said.whole = from_there.T;
+}
+
 void check_motion_above_horizon(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
                                 const AboveHorizon& above, const QualitySettings& tolerance) {
-  if (!quality.trusted() || !above.local_quality.assessed || !leaves(above, relative, tolerance)) return;
+  if (!quality.trusted() || !above.local_quality.assessed || !leaves(above, relative, tolerance) ||
+      !above.whole || !far_apart(relative, *above.whole, tolerance))
+    return;
   quality.trust = Trust::kSuspect;
   quality.reason = fmt::format(
-      "{}, and nothing else bounds this answer: at a right one every part of a scan "
-      "rests where the whole does",
-      moved(above, relative));
+      "{}, and the whole scan registered from there ends {} away; nothing else bounds this answer: at a "
+      "right "
+      "one every part of a scan rests where the whole does",
+      moved(above, relative), apart(relative, *above.whole));
 }
 
 }  // namespace sextant

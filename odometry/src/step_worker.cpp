@@ -58,7 +58,7 @@ OdometryStep StepWorker::first_try(const PointCloud& reference, const PointCloud
   refuted_.clear();
   elsewhere_.clear();
   OdometryStep step = to_step(m, reference, guess);
-  confirm_above_horizon(step, reference, input, matcher);
+  confirm_above_horizon(step, reference, input, sample.points, matcher);
   remember(m, sample.points);
   step.first_trust = step.quality.trust;
   step.first_relative = step.relative;
@@ -129,7 +129,7 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
     PairMatch w = align_sample(matcher, sample, tries[i], settings_.quality);
     drop_refuted(w, sample.points);
     OdometryStep again = to_step(w, reference, step.guess);
-    confirm_above_horizon(again, reference, input, matcher);
+    confirm_above_horizon(again, reference, input, sample.points, matcher);
     seconds += again.seconds;
     // An answer that confirms the first registration stands on its own: the sequence check only asked
     // for a second search. One that lands elsewhere must also pass the sequence check.
@@ -207,7 +207,8 @@ void StepWorker::drop_refuted(PairMatch& m, const PointCloud& sample) const {
 }
 
 void StepWorker::confirm_above_horizon(OdometryStep& step, const PointCloud& reference,
-                                       const PointCloud& input, const Matcher& built) {
+                                       const PointCloud& input, const PointCloud& sample,
+                                       const Matcher& built) {
   if (!context_.sensor_frame || !step.trusted()) return;
   const bool without_translation = answer_without_translation(step.relative, settings_.quality);
   if (!without_translation && !context_.unbounded) return;
@@ -222,10 +223,12 @@ void StepWorker::confirm_above_horizon(OdometryStep& step, const PointCloud& ref
     recovery_reference_ = &reference;
     search_above_horizon(said, *recovery_, input, step.relative, settings_.quality);
   }
-  if (without_translation)
+  if (without_translation) {
     check_no_motion_above_horizon(step.quality, step.relative, said, settings_.quality);
-  else
+  } else {
+    register_whole_from_there(said, *matcher_, sample, step.relative, settings_.quality);
     check_motion_above_horizon(step.quality, step.relative, said, settings_.quality);
+  }
   step.seconds += said.seconds;
   if (step.trusted()) return;
   refuted_.push_back(step.relative);

@@ -72,11 +72,12 @@ class StepWorker {
   OdometryStep to_step(const PairMatch& m, const PointCloud& reference, const Eigen::Isometry3d& guess) const;
   /// A trusted answer in the sensor's frame, without translation or unbounded (StepContext): the input's
   /// points above the horizon registered alone from it by `matcher_` (with the reference model of `built`,
-  /// which registered the step), for no translation searched for by `recovery_` where that tells nothing, and
-  /// the answer suspect when they do not confirm it (horizon_check.hpp). A refuted answer is no answer of the
-  /// step (remember), and where those points rest instead the recovery starts too.
+  /// which registered the step), for no translation searched for by `recovery_` where that tells nothing,
+  /// for one that moves followed by the whole scan's `sample` from where they rest, and the answer suspect
+  /// when they do not confirm it (horizon_check.hpp). A refuted answer is no answer of the step (remember),
+  /// and where those points rest instead the recovery starts too.
   void confirm_above_horizon(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
-                             const Matcher& built);
+                             const PointCloud& sample, const Matcher& built);
   /// Whether `pose` lies within the ambiguity tolerance of an answer its points above the horizon refuted.
   bool refuted(const Eigen::Isometry3d& pose) const;
   /// Drops the alternatives of `m` (a registration of `sample`) that lie at a refuted answer, and assesses

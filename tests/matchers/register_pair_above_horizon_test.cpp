@@ -17,12 +17,14 @@ using test::Scripted;
 using test::ScriptedMatcher;
 
 /// A pair registered without a guess: the wide basin's search answers 2.37 m (overlap 0.56, fit 1.21)
-/// and the input's points above the horizon, registered alone from there, answer `above`.
+/// and the input's points above the horizon, registered alone from there, answer `above`; the whole scan
+/// from 4.02 m ends at 4.09 m, from 3.6 m back at 2.40 m.
 PairRegistration searched_short_of_the_motion(const Scripted& above) {
   PairRegistrationRequest request;
   request.matcher.name = "scripted";
   request.matcher.make = [above] {
-    return std::make_unique<ScriptedMatcher>(std::map<double, Scripted>{{2.37, above}});
+    return std::make_unique<ScriptedMatcher>(
+        std::map<double, Scripted>{{2.37, above}, {4.02, {4.09, 0.67, 1.25}}, {3.6, {2.40, 0.56, 1.21}}});
   };
   request.matcher.make_wide = [] {
     return std::make_unique<ScriptedMatcher>(std::map<double, Scripted>{{0.0, {2.37, 0.56, 1.21}}});
@@ -32,7 +34,8 @@ PairRegistration searched_short_of_the_motion(const Scripted& above) {
 }
 
 // MulRan keyframes 13 → 14 as 16 rings: an answer 2.37 m on where the car moved 4.0 m, whose points above
-// the horizon move on 1.65 m, is not trusted; where they stay (or match too little to say), it is.
+// the horizon move on 1.65 m and the whole scan from there ends at 4.09 m, is not trusted; where they
+// stay, match too little to say, or the whole scan comes back from where they rest, it is.
 TEST(RegisterPair, AnAnswerThePointsAboveTheHorizonLeaveIsNotTrusted) {
   const PairRegistration moved_on = searched_short_of_the_motion({4.02, 0.88, 0.98});
   EXPECT_EQ(moved_on.match.result.quality.trust, Trust::kSuspect);
@@ -41,6 +44,7 @@ TEST(RegisterPair, AnAnswerThePointsAboveTheHorizonLeaveIsNotTrusted) {
       << moved_on.match.result.quality.reason;
   EXPECT_TRUE(searched_short_of_the_motion({2.45, 0.88, 0.98}).match.result.quality.trusted());
   EXPECT_TRUE(searched_short_of_the_motion({4.02, 0.3, 0.98}).match.result.quality.trusted());
+  EXPECT_TRUE(searched_short_of_the_motion({3.6, 0.88, 0.98}).match.result.quality.trusted());
 }
 
 }  // namespace
