@@ -145,8 +145,7 @@ void check_motion_above_horizon(RegistrationQuality& quality, const Eigen::Isome
   quality.trust = Trust::kSuspect;
   quality.reason = fmt::format(
       "{}, and the whole scan registered from there ends {} away; nothing else bounds this answer: at a "
-      "right "
-      "one every part of a scan rests where the whole does",
+      "right one every part of a scan rests where the whole does",
       moved(above, relative), apart(relative, *above.whole));
 }
 

@@ -1,15 +1,14 @@
 #pragma once
 // An answer without translation, and one that nothing else bounds, confirmed by the points above the
-// horizon (issue 22). A spinning
-// lidar's ground rings are circles about the sensor, so two scans' rings coincide at no translation
-// (and at any turn about the vertical) whatever the vehicle did, and where they are most of a sparse
-// scan they hold a registration there: MulRan 0–107 read as 16 rings stood still for five keyframes
-// while the car moved 1.4–4.7 m each, fitting 0.94–1.12 × the prediction, as a real stop fits, and
-// `sextant match` trusted 16-ring pairs 2–5 m apart at no translation (docs/matcher_defaults.md, "The
-// ground's rings hold a sparse scan"). The points above a level sensor's horizon hold no ground ring:
-// at a stop they rest where the rest of the scan does, and after a drive they leave. The rings also
-// hold a registration short of the motion: an answer with translation that nothing else bounds (a
-// pair; an odometry step with no trusted velocity before it) must rest where those points rest too.
+// horizon (issue 22). A spinning lidar's ground rings are circles about the sensor, so two scans' rings
+// coincide at no translation (and at any turn about the vertical) whatever the vehicle did, and where
+// they are most of a sparse scan they hold a registration there: MulRan 0–107 read as 16 rings stood still
+// for five keyframes while the car moved 1.4–4.7 m each, fitting 0.94–1.12 × the prediction, as a real stop
+// fits, and `sextant match` trusted 16-ring pairs 2–5 m apart at no translation (docs/matcher_defaults.md,
+// "The ground's rings hold a sparse scan"). The points above a level sensor's horizon hold no ground ring: at
+// a stop they rest where the rest of the scan does, and after a drive they leave. The rings also hold a
+// registration short of the motion: an answer with translation that nothing else bounds (a pair; an odometry
+// step with no trusted velocity before it) must rest where those points rest too.
 //
 //   if (r.quality.trusted() && answer_without_translation(r.T, quality)) {
 //     AboveHorizon said = register_above_horizon(*local, input, r.T, quality);
