@@ -42,13 +42,7 @@ std::string apart(const Eigen::Isometry3d& relative, const Eigen::Isometry3d& T)
                      Eigen::AngleAxisd(d.linear()).angle() * kDegPerRad);
 }
 
-/// Whether the points above the horizon, registered alone from the answer `relative`, leave it: converged,
-/// with overlap and every direction constrained, farther than the tolerance.
-bool leaves(const AboveHorizon& above, const Eigen::Isometry3d& relative, const QualitySettings& tolerance) {
-  return only_its_fit(above.local_quality) && far_apart(relative, above.local, tolerance);
-}
-
-/// The reason of an answer the points above the horizon leave (leaves()).
+/// The reason of an answer the points above the horizon leave (AboveHorizon::leaves).
 std::string moved(const AboveHorizon& above, const Eigen::Isometry3d& relative) {
   return fmt::format("the points above the horizon, registered alone from it, move {}",
                      apart(relative, above.local));
@@ -62,7 +56,7 @@ std::optional<std::string> local_objection(const AboveHorizon& above, const Eige
   if (local.trust == Trust::kLowOverlap)
     return fmt::format("only {:.1f} % of the points above the horizon match there or near it",
                        100.0 * local.overlap);
-  if (leaves(above, relative, tolerance)) return moved(above, relative);
+  if (above.leaves(relative, tolerance)) return moved(above, relative);
   if (fits_clearly_worse(local, answer_fit, tolerance))
     return fmt::format(
         "the points above the horizon fit {:.2f} × the prediction there, clearly worse "
@@ -82,10 +76,14 @@ bool AboveHorizon::telling(const Eigen::Isometry3d& relative, double answer_fit,
   return local_quality.trusted() || local_objection(*this, relative, answer_fit, tolerance).has_value();
 }
 
+bool AboveHorizon::leaves(const Eigen::Isometry3d& relative, const QualitySettings& tolerance) const {
+  return local_quality.assessed && only_its_fit(local_quality) && far_apart(relative, local, tolerance);
+}
+
 std::optional<Eigen::Isometry3d> AboveHorizon::elsewhere(const Eigen::Isometry3d& relative,
                                                          const QualitySettings& tolerance) const {
   if (wide_quality && wide_quality->trusted() && far_apart(relative, wide, tolerance)) return wide;
-  if (leaves(*this, relative, tolerance)) return local;
+  if (leaves(relative, tolerance)) return local;
   return std::nullopt;
 }
 
@@ -131,7 +129,7 @@ void check_no_motion_above_horizon(RegistrationQuality& quality, const Eigen::Is
 
 void register_whole_from_there(AboveHorizon& said, Matcher& local, const PointCloud& sample,
                                const Eigen::Isometry3d& relative, const QualitySettings& tolerance) {
-  if (!said.local_quality.assessed || !leaves(said, relative, tolerance)) return;
+  if (!said.leaves(relative, tolerance)) return;
   const RegistrationResult from_there = local.align(sample, said.local);
   said.seconds += from_there.seconds;
   if (from_there.converged) said.whole = from_there.T;
@@ -139,8 +137,8 @@ void register_whole_from_there(AboveHorizon& said, Matcher& local, const PointCl
 
 void check_motion_above_horizon(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
                                 const AboveHorizon& above, const QualitySettings& tolerance) {
-  if (!quality.trusted() || !above.local_quality.assessed || !leaves(above, relative, tolerance) ||
-      !above.whole || !far_apart(relative, *above.whole, tolerance))
+  if (!quality.trusted() || !above.leaves(relative, tolerance) || !above.whole ||
+      !far_apart(relative, *above.whole, tolerance))
     return;
   quality.trust = Trust::kSuspect;
   quality.reason = fmt::format(

@@ -59,9 +59,11 @@ void confirm_above_horizon(PairRegistration& out, const PointCloud& reference, c
   if (!local->share_reference(built)) local->set_reference(reference);
   AboveHorizon said = register_above_horizon(*local, input, r.T, quality);
   if (!answer_without_translation(r.T, quality)) {
-    const auto sampler = request.sampler();
-    Rng rng(request.seed);  // the registration's sample
-    register_whole_from_there(said, *local, sample_input(*sampler, input, rng).points, r.T, quality);
+    if (said.leaves(r.T, quality)) {  // only then is the registration's sample needed again
+      const auto sampler = request.sampler();
+      Rng rng(request.seed);
+      register_whole_from_there(said, *local, sample_input(*sampler, input, rng).points, r.T, quality);
+    }
     check_motion_above_horizon(r.quality, r.T, said, quality);
   } else {
     if (!said.telling(r.T, r.quality.fit_ratio, quality) && request.wide_basin && request.matcher.make_wide) {

@@ -48,6 +48,9 @@ struct AboveHorizon {
   /// `tolerance`) with at most a poor fit, or stays and fits clearly worse than the whole scan
   /// (check_no_motion_above_horizon).
   bool telling(const Eigen::Isometry3d& relative, double answer_fit, const QualitySettings& tolerance) const;
+  /// Whether their registration alone from the answer `relative` leaves it: assessed, converged, with
+  /// overlap and every direction constrained, farther than `tolerance`.
+  bool leaves(const Eigen::Isometry3d& relative, const QualitySettings& tolerance) const;
   /// Where they rest away from the answer `relative` (farther than `tolerance`), if they say so: the wide
   /// basin's search for them, trusted; else their local registration, converged with overlap and every
   /// direction constrained. A start for another registration of the whole scan.
@@ -80,9 +83,9 @@ void search_above_horizon(AboveHorizon& said, Matcher& wide, const PointCloud& i
 void check_no_motion_above_horizon(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
                                    const AboveHorizon& above, const QualitySettings& tolerance);
 
-/// Where the points above the horizon leave the answer `relative` (converged, with overlap and every
-/// direction constrained, farther than `tolerance`), the whole scan's `sample` registered from where they
-/// rest by `local`, which holds the reference's model: AboveHorizon::whole.
+/// Where the points above the horizon leave the answer `relative` (AboveHorizon::leaves), the whole scan's
+/// `sample` registered from where they rest by `local`, which holds the reference's model:
+/// AboveHorizon::whole.
 void register_whole_from_there(AboveHorizon& said, Matcher& local, const PointCloud& sample,
                                const Eigen::Isometry3d& relative, const QualitySettings& tolerance);
 
