@@ -1,0 +1,99 @@
+#!/usr/bin/env python3
+"""Where MulRan 0-107's pitch bias lives (issue 22): each step's pitch against the reference
+(`poses.txt`, FAST-LIO2 odometry with a loop-closing pose graph over its keyframes) for the
+reference's own lidar-inertial odometry (`lio_odometry_poses.txt`, before that pose graph) and for
+a `sextant odometry` run over the same keyframes, binned by the time between the keyframes and by
+the length of the step. Then the KITTI-style drift of both on the ground plane (x, y and yaw only,
+segments of 100-800 m along the reference), which leaves that pitch out.
+
+A bias of the scans or of a registration accrues with the motion (metres) or, for an odometry that
+runs at the lidar's 10 Hz between keyframes, with the frames in between (seconds). A correction
+that a pose graph spreads evenly over its edges accrues per keyframe: the same in every bin.
+
+  bench/reference_pitch.py [path/to/mulran_riverside02] [odometry folder (--first 0 --scans 108)]
+"""
+import os
+import sys
+
+import numpy as np
+
+mulran = sys.argv[1] if len(sys.argv) > 1 else "../shared/data/mulran_riverside02"
+run = sys.argv[2] if len(sys.argv) > 2 else None
+FIRST, SCANS = 0, 108  # the stretch whose reference holds (../shared/data/README.md)
+
+
+def poses(path, rows):
+    """KITTI rows (3x4, world <- keyframe) as 4x4 matrices."""
+    table = np.loadtxt(path)[rows]
+    out = np.tile(np.eye(4), (len(table), 1, 1))
+    out[:, :3, :] = table.reshape(-1, 3, 4)
+    return out
+
+
+def step_pitch_errors(reference, estimate):
+    """The pitch [deg] of each step's error, inv(reference motion) * estimated motion."""
+    errors = []
+    for k in range(len(reference) - 1):
+        truth = np.linalg.inv(reference[k]) @ reference[k + 1]
+        moved = np.linalg.inv(estimate[k]) @ estimate[k + 1]
+        error = np.linalg.inv(truth) @ moved
+        errors.append(np.degrees(np.arcsin(-error[2, 0])))
+    return np.array(errors)
+
+
+def on_ground_plane(pose):
+    """The pose with its x, y and yaw only."""
+    flat = np.eye(4)
+    yaw = np.arctan2(pose[1, 0], pose[0, 0])
+    flat[:2, :2] = [[np.cos(yaw), -np.sin(yaw)], [np.sin(yaw), np.cos(yaw)]]
+    flat[:2, 3] = pose[:2, 3]
+    return flat
+
+
+def drift_percent(reference, estimate):
+    """KITTI-style drift: the translation error of every segment of 100-800 m over its length."""
+    along = np.concatenate([[0], np.cumsum(np.linalg.norm(np.diff(reference[:, :3, 3], axis=0), axis=1))])
+    ratios = []
+    for length in range(100, 900, 100):
+        for start in range(len(reference)):
+            end = np.searchsorted(along, along[start] + length, side="right")
+            if end >= len(reference):
+                break
+            truth = np.linalg.inv(reference[start]) @ reference[end]
+            moved = np.linalg.inv(estimate[start]) @ estimate[end]
+            ratios.append(np.linalg.norm((np.linalg.inv(truth) @ moved)[:3, 3]) / length)
+    return 100 * np.mean(ratios)
+
+
+def table(title, bins, values, rows):
+    print(f"| {title} | steps | " + " | ".join(name for name, _ in rows) + " |")
+    print("|---|---|" + "---|" * len(rows))
+    for low, high in zip(bins[:-1], bins[1:]):
+        chosen = (values >= low) & (values < high)
+        n = int(chosen.sum())
+        cells = []
+        for _, errors in rows:
+            e = errors[chosen]
+            spread = e.std(ddof=1) / np.sqrt(n) if n > 1 else float("nan")
+            cells.append(f"{e.mean():.3f} ± {spread:.3f}")
+        print(f"| {low:g}–{high:g} | {n} | " + " | ".join(cells) + " |")
+    print()
+
+
+stretch = slice(FIRST, FIRST + SCANS)
+reference = poses(os.path.join(mulran, "poses.txt"), stretch)
+estimates = [("lidar-inertial odometry", poses(os.path.join(mulran, "lio_odometry_poses.txt"), stretch))]
+if run:
+    estimates.append(("sextant odometry", poses(os.path.join(run, "trajectory.kitti.txt"), slice(None))))
+rows = [(f"{name} [°]", step_pitch_errors(reference, estimate)) for name, estimate in estimates]
+times = np.loadtxt(os.path.join(mulran, "times.txt"))[stretch]
+seconds = np.diff(times)
+metres = np.linalg.norm(np.diff(reference[:, :3, 3], axis=0), axis=1)
+print("Pitch of each step against the reference, mean ± standard error per bin\n")
+table("time between keyframes [s]", [0, 0.35, 0.6, 1.5, 30], seconds, rows)
+table("step length [m]", [0, 2, 5, 8, 15], metres, rows)
+flat_reference = np.array([on_ground_plane(pose) for pose in reference])
+for name, estimate in estimates:
+    flat = np.array([on_ground_plane(pose) for pose in estimate])
+    print(f"{name}: drift {drift_percent(reference, estimate):.2f} %, "
+          f"on the ground plane {drift_percent(flat_reference, flat):.2f} %")
