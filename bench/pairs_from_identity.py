@@ -23,7 +23,6 @@ seed = int(sys.argv[3]) if len(sys.argv) > 3 else 1
 import sextant  # noqa: E402  (the module built beside the CLI)
 
 STRETCHES = [(0, 107), (116, 165)]
-SLIPPING = {33, 34}  # the reference slips sideways 0.7-1.2 m on 33 -> 34 and 34 -> 35
 
 
 def matrix(row):
@@ -33,6 +32,11 @@ def matrix(row):
 
 
 poses = [matrix(row) for row in np.loadtxt(os.path.join(mulran, "poses.txt"))]
+# The steps k -> k + 1 where the reference slips sideways more than 0.5 m, as no car can
+# (sextant.metrics.vehicle_slip, `sextant eval --car-slip 0.5`): 33 -> 34 and 34 -> 35.
+SLIPPING = {first + k for first, last in STRETCHES
+            for k, slip in enumerate(sextant.metrics.vehicle_slip(np.array(poses[first:last + 1]))["slip"])
+            if abs(slip) > 0.5}
 scans = {}
 
 

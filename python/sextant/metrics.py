@@ -1,4 +1,5 @@
-"""Trajectory metrics over N×4×4 pose arrays: ate, rpe, kitti_drift, wulf, kuemmerle.
+"""Trajectory metrics over N×4×4 pose arrays: ate, rpe, kitti_drift, wulf, kuemmerle; and
+vehicle_slip, whether a reference is a car's path.
 
 The C++ library's eval/trajectory_metrics.hpp (the extension's submodule sextant._sextant.metrics),
 importable as ``sextant.metrics`` or ``from sextant.metrics import ate``. Each takes
@@ -11,5 +12,6 @@ rpe = _metrics.rpe
 kitti_drift = _metrics.kitti_drift
 wulf = _metrics.wulf
 kuemmerle = _metrics.kuemmerle
+vehicle_slip = _metrics.vehicle_slip
 
-__all__ = ["ate", "rpe", "kitti_drift", "wulf", "kuemmerle"]
+__all__ = ["ate", "rpe", "kitti_drift", "wulf", "kuemmerle", "vehicle_slip"]

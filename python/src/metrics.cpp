@@ -1,6 +1,7 @@
 // sextant.metrics: the trajectory metrics of eval/trajectory_metrics.hpp (ATE, RPE, KITTI drift,
-// Wulf, Kümmerle) over N×4×4 pose arrays, returning dicts of floats and per-pose error arrays. A
-// metric whose inputs fail the library's checks (lengths, too few poses, non-finite) raises.
+// Wulf, Kümmerle) over N×4×4 pose arrays, returning dicts of floats and per-pose error arrays, and
+// whether a reference is a car's path (eval/vehicle_slip.hpp). A metric whose inputs fail the
+// library's checks (lengths, too few poses, non-finite) raises.
 #include <cmath>
 #include <limits>
 #include <string>
@@ -12,6 +13,7 @@
 #include "bindings.hpp"
 #include "sextant/eval/trajectory_evaluation.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
+#include "sextant/eval/vehicle_slip.hpp"
 
 namespace sextant::python {
 namespace {
@@ -182,6 +184,15 @@ py::dict kuemmerle(const py::object& reference, const py::object& estimate, cons
   return d;
 }
 
+py::dict car_slip(const py::object& poses, double min_chord) {
+  if (!(min_chord > 0.0)) throw py::value_error("vehicle_slip: min_chord must be positive");
+  const VehicleSlip s = vehicle_slip(read_poses(poses, "poses"), min_chord);
+  py::dict d;
+  d["mounting"] = s.mounting;
+  d["slip"] = vector_array(s.slip);
+  return d;
+}
+
 }  // namespace
 
 void bind_metrics(py::module_& m) {
@@ -235,6 +246,15 @@ void bind_metrics(py::module_& m) {
               "or (i, j, reference_motion 4×4) with the reference displacement given (reference may then be "
               "None). Returns translation_rms (m), rotation_rms (rad) and the per-relation errors.",
               py::arg("reference"), py::arg("estimate"), py::arg("relations") = py::none());
+  metrics.def(
+      "vehicle_slip", &car_slip,
+      "Whether `poses` (N×4×4, world ← sensor, z up) are a car's path, as `sextant eval --car-slip`: "
+      "a car follows an arc over one step, whose chord leaves the start heading at half the heading "
+      "change. Returns mounting, the car's axis of travel in the sensor frame as a yaw (rad; NaN when "
+      "no step moves `min_chord` metres), and slip, per step k (pose k to k + 1) the chord's signed "
+      "component across that arc (m, left positive; NaN when the mounting is unknown). A reference "
+      "step that slips far more than a car can is no reference for that step.",
+      py::arg("poses"), py::arg("min_chord") = 0.5);
 }
 
 }  // namespace sextant::python

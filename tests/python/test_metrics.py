@@ -148,3 +148,28 @@ def test_bad_input_raises():
         metrics.ate(reference, reference, alignment="affine")
     with pytest.raises(ValueError, match="unit"):
         metrics.rpe(reference, reference, unit="furlongs")
+
+
+def test_vehicle_slip_finds_the_step_no_car_drives():
+    """A car on arcs of changing curvature, its sensor mounted turned 0.3 rad against its axis: every
+    step slips 0; the path moved 1.2 m to the left from step 5 on makes step 5 slip +1.2 m."""
+    mounting, chord = -0.3, 4.0
+    heading, position, poses = 0.0, np.zeros(2), []
+    for k in range(12):
+        poses.append(sextant.pose_to_matrix(position[0], position[1], 0, 0, 0, heading - mounting))
+        turn = 0.08 * np.sin(k / 2)
+        position = position + chord * np.array([np.cos(heading + turn / 2), np.sin(heading + turn / 2)])
+        heading += turn
+    poses = np.array(poses)
+    arcs = metrics.vehicle_slip(poses)
+    assert arcs["mounting"] == pytest.approx(mounting, abs=1e-9)
+    np.testing.assert_allclose(arcs["slip"], 0.0, atol=1e-9)
+
+    moved = poses.copy()
+    step_heading = np.arctan2(poses[6, 1, 3] - poses[5, 1, 3], poses[6, 0, 3] - poses[5, 0, 3])
+    moved[6:, :2, 3] += 1.2 * np.array([-np.sin(step_heading), np.cos(step_heading)])  # to the left
+    slipped = metrics.vehicle_slip(moved)
+    assert slipped["slip"][5] == pytest.approx(1.2, abs=1e-9)
+    np.testing.assert_allclose(np.delete(slipped["slip"], 5), 0.0, atol=1e-9)
+    with pytest.raises(ValueError):
+        metrics.vehicle_slip(poses, min_chord=0.0)
