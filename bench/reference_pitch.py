@@ -3,14 +3,15 @@
 (`poses.txt`, FAST-LIO2 odometry with a loop-closing pose graph over its keyframes) for the
 reference's own lidar-inertial odometry (`lio_odometry_poses.txt`, before that pose graph) and for
 a `sextant odometry` run over the same keyframes, binned by the time between the keyframes and by
-the length of the step. Then the KITTI-style drift of both on the ground plane (x, y and yaw only,
-segments of 100-800 m along the reference), which leaves that pitch out.
+the length of the step. Then the KITTI drift of both (sextant.metrics.kitti_drift, as `sextant eval`),
+in 3D and on the ground plane (x, y and yaw only), which leaves that pitch out.
 
 A bias of the scans or of a registration accrues with the motion (metres) or, for an odometry that
 runs at the lidar's 10 Hz between keyframes, with the frames in between (seconds). A correction
 that a pose graph spreads evenly over its edges accrues per keyframe: the same in every bin.
 
   bench/reference_pitch.py [path/to/mulran_riverside02] [odometry folder (--first 0 --scans 108)]
+      [build/python]
 """
 import os
 import sys
@@ -18,7 +19,10 @@ import sys
 import numpy as np
 
 mulran = sys.argv[1] if len(sys.argv) > 1 else "../shared/data/mulran_riverside02"
-run = sys.argv[2] if len(sys.argv) > 2 else None
+run = sys.argv[2] if len(sys.argv) > 2 and sys.argv[2] != "-" else None
+sys.path.insert(0, sys.argv[3] if len(sys.argv) > 3 else "build/python")
+import sextant  # noqa: E402  (the module built beside the CLI)
+
 FIRST, SCANS = 0, 108  # the stretch whose reference holds (../shared/data/README.md)
 
 
@@ -48,21 +52,6 @@ def on_ground_plane(pose):
     flat[:2, :2] = [[np.cos(yaw), -np.sin(yaw)], [np.sin(yaw), np.cos(yaw)]]
     flat[:2, 3] = pose[:2, 3]
     return flat
-
-
-def drift_percent(reference, estimate):
-    """KITTI-style drift: the translation error of every segment of 100-800 m over its length."""
-    along = np.concatenate([[0], np.cumsum(np.linalg.norm(np.diff(reference[:, :3, 3], axis=0), axis=1))])
-    ratios = []
-    for length in range(100, 900, 100):
-        for start in range(len(reference)):
-            end = np.searchsorted(along, along[start] + length, side="right")
-            if end >= len(reference):
-                break
-            truth = np.linalg.inv(reference[start]) @ reference[end]
-            moved = np.linalg.inv(estimate[start]) @ estimate[end]
-            ratios.append(np.linalg.norm((np.linalg.inv(truth) @ moved)[:3, 3]) / length)
-    return 100 * np.mean(ratios)
 
 
 def table(title, bins, values, rows):
@@ -95,5 +84,6 @@ table("step length [m]", [0, 2, 5, 8, 15], metres, rows)
 flat_reference = np.array([on_ground_plane(pose) for pose in reference])
 for name, estimate in estimates:
     flat = np.array([on_ground_plane(pose) for pose in estimate])
-    print(f"{name}: drift {drift_percent(reference, estimate):.2f} %, "
-          f"on the ground plane {drift_percent(flat_reference, flat):.2f} %")
+    drift = sextant.metrics.kitti_drift(reference, estimate)["translation"]
+    flat_drift = sextant.metrics.kitti_drift(flat_reference, flat)["translation"]
+    print(f"{name}: KITTI drift {100 * drift:.2f} %, on the ground plane {100 * flat_drift:.2f} %")
