@@ -4,7 +4,8 @@
 reference's own lidar-inertial odometry (`lio_odometry_poses.txt`, before that pose graph) and for
 a `sextant odometry` run over the same keyframes, binned by the time between the keyframes and by
 the length of the step. Then the KITTI drift of both (sextant.metrics.kitti_drift, as `sextant eval`),
-in 3D and on the ground plane (x, y and yaw only), which leaves that pitch out.
+in 3D and on the ground plane (sextant.metrics.on_ground_plane: x, y and heading only, as
+`sextant eval --ground-plane`), which leaves that pitch out.
 
 A bias of the scans or of a registration accrues with the motion (metres) or, for an odometry that
 runs at the lidar's 10 Hz between keyframes, with the frames in between (seconds). A correction
@@ -45,15 +46,6 @@ def step_pitch_errors(reference, estimate):
     return np.array(errors)
 
 
-def on_ground_plane(pose):
-    """The pose with its x, y and yaw only."""
-    flat = np.eye(4)
-    yaw = np.arctan2(pose[1, 0], pose[0, 0])
-    flat[:2, :2] = [[np.cos(yaw), -np.sin(yaw)], [np.sin(yaw), np.cos(yaw)]]
-    flat[:2, 3] = pose[:2, 3]
-    return flat
-
-
 def table(title, bins, values, rows):
     print(f"| {title} | steps | " + " | ".join(name for name, _ in rows) + " |")
     print("|---|---|" + "---|" * len(rows))
@@ -81,9 +73,8 @@ metres = np.linalg.norm(np.diff(reference[:, :3, 3], axis=0), axis=1)
 print("Pitch of each step against the reference, mean ± standard error per bin\n")
 table("time between keyframes [s]", [0, 0.35, 0.6, 1.5, 30], seconds, rows)
 table("step length [m]", [0, 2, 5, 8, 15], metres, rows)
-flat_reference = np.array([on_ground_plane(pose) for pose in reference])
+flat_reference = sextant.metrics.on_ground_plane(reference)
 for name, estimate in estimates:
-    flat = np.array([on_ground_plane(pose) for pose in estimate])
     drift = sextant.metrics.kitti_drift(reference, estimate)["translation"]
-    flat_drift = sextant.metrics.kitti_drift(flat_reference, flat)["translation"]
+    flat_drift = sextant.metrics.kitti_drift(flat_reference, sextant.metrics.on_ground_plane(estimate))["translation"]
     print(f"{name}: KITTI drift {100 * drift:.2f} %, on the ground plane {100 * flat_drift:.2f} %")

@@ -3,7 +3,8 @@
 # campus and the two trustworthy stretches of the shared MulRan Riverside02 excerpt (0–107 and
 # 116–165; its reference is wrong in between, see ../shared/data/README.md), then the same scans
 # with PCL's GICP (`--method pcl_gicp --map scan --no-recover --whole-scans`: a plain GICP loop) as the baseline
-# row. Prints one table: ATE, RPE, KITTI drift, the signed mean pitch error per step and the
+# row. Prints one table: ATE, RPE, KITTI drift (in 3D and on the ground plane: x, y and heading
+# only, `sextant eval --ground-plane`), the signed mean pitch error per step and the
 # motions' scale error, each with its standard error (`sextant eval`), for MulRan the KITTI drift against the reference's own
 # lidar-inertial odometry as well (`lio_odometry_poses.txt`, FAST-LIO2 before its pose graph: how
 # far the reference's two versions lie apart bounds what the reference can judge), time per scan
@@ -23,6 +24,12 @@ cd "$(dirname "$0")/.."
 source bench/sequence_common.sh "$@"
 
 # "<scale error> <its standard error>" in percent from `sextant eval --json` (RpeResult::scale_error).
+# The KITTI drift [%] of an estimate on the ground plane (`sextant eval --ground-plane`: x, y and heading
+# only), which leaves out a height or pitch the reference cannot be trusted with.
+ground_drift_of() {  # ground_drift_of <reference> <estimate>
+  "$sextant" eval "$1" "$2" --ground-plane --json | sed -E 's/.*"drift_percent": ([-0-9.eE+]+|null).*/\1/'
+}
+
 scale_of() {
   sed -E 's/.*"scale_percent": ([^,]*), "scale_percent_standard_error": ([^,]*),.*/\1 \2/' <<<"$1"
 }
@@ -60,18 +67,19 @@ run() {  # run <id> <label> <row> <method> <dataset> <second reference (KITTI) o
       -v registration="$registration" -v pitch="$pitch" -v scale="$scale" -v second="$second_drift" \
       -v ate="$(field "$m" estimate ate_m)" -v rpe="$(field "$m" estimate rpe_m)" \
       -v rpedeg="$(field "$m" estimate rpe_deg)" -v drift="$(field "$m" estimate drift_percent)" \
+      -v ground="$(ground_drift_of "$dir/groundtruth.tum" "$dir/trajectory.tum")" \
       -v untrusted="$(top "$m" untrusted)" -v recovered="$(top "$m" recovered)" \
       -v nc="$(top "$m" not_converged)" -v off="$off" 'BEGIN {
         split(pitch, p, " ")
         split(scale, s, " ")
         second = second == "-" ? "–" : sprintf("%.2f", second)
-        printf "| %s | %s | %.3f | %.3f / %.2f | %.2f | %s | %.3f ± %.3f | %.3f ± %.3f | %.1f | %.1f | %d | %d | %d | %s |\n", label,
-               method, ate, rpe, rpedeg, drift, second, p[1], p[2], s[1], s[2], 1000 * secs / steps,
+        printf "| %s | %s | %.3f | %.3f / %.2f | %.2f | %.2f | %s | %.3f ± %.3f | %.3f ± %.3f | %.1f | %.1f | %d | %d | %d | %s |\n", label,
+               method, ate, rpe, rpedeg, drift, ground, second, p[1], p[2], s[1], s[2], 1000 * secs / steps,
                1000 * registration / steps, nc, untrusted, recovered, off }'
 }
 
-echo "| sequence | method | ATE [m] | RPE per step [m / °] | KITTI drift [%] | drift against the reference's lidar-inertial odometry [%] | pitch bias per step [°] | motion scale error [%] | ms per scan | registration ms per scan | not converged | untrusted | recovered | trusted > 1 m or 5° off |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| sequence | method | ATE [m] | RPE per step [m / °] | KITTI drift [%] | on the ground plane [%] | drift against the reference's lidar-inertial odometry [%] | pitch bias per step [°] | motion scale error [%] | ms per scan | registration ms per scan | not converged | untrusted | recovered | trusted > 1 m or 5° off |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 # A MulRan stretch's rows of the reference and of its lidar-inertial odometry (KITTI files).
 stretch() {  # stretch <first scan> <scans>: writes $out/{reference,lio_odometry}_<first>.txt
   local rows="$(($1 + 1)),$(($1 + $2))p"
@@ -100,8 +108,9 @@ reference_row() {  # reference_row <label> <first scan of the stretch>
   local accuracy
   accuracy=$("$sextant" eval "$out/reference_$2.txt" "$out/lio_odometry_$2.txt" --format kitti --json)
   sed -E 's/.*"summary": \{[^}]*"ate_m": ([^,]*),[^}]*"rpe_m": ([^,]*), "rpe_deg": ([^,]*),[^}]*"drift_percent": ([^,]*),.*"rotation_deg": \[[^,]*, ([^,]*),.*"rotation_deg_standard_error": \[[^,]*, ([^,]*),.*/\1 \2 \3 \4 \5 \6/' <<<"$accuracy" |
-    awk -v label="$1" -v scale="$(scale_of "$accuracy")" '{ split(scale, s, " ")
-      printf "| %s | the reference'"'"'s lidar-inertial odometry | %.3f | %.3f / %.2f | %.2f | – | %.3f ± %.3f | %.3f ± %.3f | – | – | – | – | – | – |\n", label, $1, $2, $3, $4, $5, $6, s[1], s[2] }'
+    awk -v label="$1" -v scale="$(scale_of "$accuracy")" \
+        -v ground="$(ground_drift_of "$out/reference_$2.txt" "$out/lio_odometry_$2.txt")" '{ split(scale, s, " ")
+      printf "| %s | the reference'"'"'s lidar-inertial odometry | %.3f | %.3f / %.2f | %.2f | %.2f | – | %.3f ± %.3f | %.3f ± %.3f | – | – | – | – | – | – |\n", label, $1, $2, $3, $4, ground, $5, $6, s[1], s[2] }'
 }
 reference_row "MulRan 0–107" 0
 reference_row "MulRan 116–165" 116

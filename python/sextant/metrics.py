@@ -1,5 +1,6 @@
 """Trajectory metrics over N×4×4 pose arrays: ate, rpe, kitti_drift, wulf, kuemmerle; and
-vehicle_slip, whether a reference is a car's path.
+vehicle_slip, whether a reference is a car's path; on_ground_plane, poses without height,
+roll or pitch.
 
 The C++ library's eval/trajectory_metrics.hpp (the extension's submodule sextant._sextant.metrics),
 importable as ``sextant.metrics`` or ``from sextant.metrics import ate``. Each takes
@@ -13,5 +14,6 @@ kitti_drift = _metrics.kitti_drift
 wulf = _metrics.wulf
 kuemmerle = _metrics.kuemmerle
 vehicle_slip = _metrics.vehicle_slip
+on_ground_plane = _metrics.on_ground_plane
 
-__all__ = ["ate", "rpe", "kitti_drift", "wulf", "kuemmerle", "vehicle_slip"]
+__all__ = ["ate", "rpe", "kitti_drift", "wulf", "kuemmerle", "vehicle_slip", "on_ground_plane"]

@@ -1,6 +1,7 @@
 // sextant.metrics: the trajectory metrics of eval/trajectory_metrics.hpp (ATE, RPE, KITTI drift,
 // Wulf, Kümmerle) over N×4×4 pose arrays, returning dicts of floats and per-pose error arrays, and
-// whether a reference is a car's path (eval/vehicle_slip.hpp). A metric whose inputs fail the
+// whether a reference is a car's path (eval/vehicle_slip.hpp), and poses on the ground plane
+// (eval/ground_plane.hpp). A metric whose inputs fail the
 // library's checks (lengths, too few poses, non-finite) raises.
 #include <cmath>
 #include <limits>
@@ -11,6 +12,7 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
+#include "sextant/eval/ground_plane.hpp"
 #include "sextant/eval/trajectory_evaluation.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
 #include "sextant/eval/vehicle_slip.hpp"
@@ -193,6 +195,10 @@ py::dict car_slip(const py::object& poses, double min_chord) {
   return d;
 }
 
+py::array_t<double> flat(const py::object& poses) {
+  return poses_array(on_ground_plane(read_poses(poses, "poses")));
+}
+
 }  // namespace
 
 void bind_metrics(py::module_& m) {
@@ -255,6 +261,12 @@ void bind_metrics(py::module_& m) {
       "component across that arc (m, left positive; NaN when the mounting is unknown). A reference "
       "step that slips far more than a car can is no reference for that step.",
       py::arg("poses"), py::arg("min_chord") = 0.5);
+  metrics.def(
+      "on_ground_plane", &flat,
+      "`poses` (N×4×4, world ← body, z up) with their x, y and heading only: no height, roll or pitch. "
+      "Any metric of both trajectories so projected judges the motion over the ground alone, as "
+      "`sextant eval --ground-plane` (for a reference whose height and tilt cannot be trusted).",
+      py::arg("poses"));
 }
 
 }  // namespace sextant::python

@@ -142,6 +142,43 @@ TEST(EvalCli, ListsTheReferenceStepsACarCannotMake) {
   EXPECT_EQ(run_cli("eval " + files).output.find("slip"), std::string::npos);
 }
 
+// --ground-plane: an estimate of a 300 m straight drive that pitches up 0.0115° a step (a height drift
+// and nothing else) drifts over 0.5 % in 3D and less than a tenth of that on the ground plane; the text
+// and the JSON say the trajectories were projected.
+TEST(EvalCli, OnTheGroundPlaneAPitchDriftLeavesNoDrift) {
+  test::TempDir tmp;
+  Trajectory ref, est;
+  Eigen::Isometry3d climbing = Eigen::Isometry3d::Identity();
+  for (int i = 0; i <= 300; ++i) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.translation() = Eigen::Vector3d(i, 0.0, 0.0);
+    ref.push_back({double(i), T});
+    est.push_back({double(i), climbing});
+    Eigen::Isometry3d step(Eigen::AngleAxisd(-0.0002, Eigen::Vector3d::UnitY()));  // nose up
+    step.translation() = Eigen::Vector3d(1.0, 0.0, 0.0);
+    climbing = climbing * step;
+  }
+  write_kitti_trajectory(tmp / "ref.txt", ref);
+  write_kitti_trajectory(tmp / "est.txt", est);
+  const std::string files = (tmp / "ref.txt").string() + " " + (tmp / "est.txt").string();
+  const auto drift = [](const std::string& json) {
+    const auto at = json.find("\"drift_percent\": ");
+    return at == std::string::npos ? -1.0 : std::stod(json.substr(at + 17));
+  };
+  const test::CliRun in_3d = run_cli("eval " + files + " --json");
+  ASSERT_EQ(in_3d.exit_code, 0) << in_3d.output;
+  EXPECT_NE(in_3d.output.find("\"ground_plane\": false"), std::string::npos) << in_3d.output;
+  const test::CliRun flat = run_cli("eval " + files + " --ground-plane --json");
+  ASSERT_EQ(flat.exit_code, 0) << flat.output;
+  EXPECT_NE(flat.output.find("\"ground_plane\": true"), std::string::npos) << flat.output;
+  EXPECT_GT(drift(in_3d.output), 0.5) << in_3d.output;
+  EXPECT_GE(drift(flat.output), 0.0) << flat.output;
+  EXPECT_LT(drift(flat.output), 0.1 * drift(in_3d.output)) << flat.output;
+  EXPECT_NE(run_cli("eval " + files + " --ground-plane").output.find("projected: both onto the ground plane"),
+            std::string::npos);
+  EXPECT_EQ(run_cli("eval " + files).output.find("projected:"), std::string::npos);
+}
+
 TEST(EvalCli, BadInputIsAClearError) {
   test::TempDir tmp;
   Trajectory a, b;

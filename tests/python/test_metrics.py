@@ -173,3 +173,13 @@ def test_vehicle_slip_finds_the_step_no_car_drives():
     np.testing.assert_allclose(np.delete(slipped["slip"], 5), 0.0, atol=1e-9)
     with pytest.raises(ValueError):
         metrics.vehicle_slip(poses, min_chord=0.0)
+
+
+def test_on_ground_plane_keeps_x_y_and_heading():
+    pose = sextant.pose_to_matrix(4.0, -2.5, 3.0, 0.2, -0.1, 0.7)
+    flat = metrics.on_ground_plane(np.array([pose, np.eye(4)]))
+    assert flat.shape == (2, 4, 4)
+    np.testing.assert_allclose(flat[0, :3, 3], [4.0, -2.5, 0.0], atol=1e-15)
+    heading = np.arctan2(pose[1, 0], pose[0, 0])
+    np.testing.assert_allclose(flat[0], sextant.pose_to_matrix(4.0, -2.5, 0, 0, 0, heading), atol=1e-15)
+    np.testing.assert_allclose(flat[1], np.eye(4), atol=0)

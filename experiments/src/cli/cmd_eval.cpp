@@ -1,8 +1,8 @@
 // `sextant eval REFERENCE ESTIMATE [--format auto|tum|kitti] [--max-diff S] [--align se3|sim3|origin|none]
-// [--delta N] [--delta-unit frames|m] [--json] [--plot DIR] [--car-slip M]`: the accuracy of a trajectory one
-// already has (evo_ape / evo_rpe's job, plus KITTI drift, Wulf and Kümmerle). TUM files pair by timestamp,
-// KITTI files (no time) by index. For `sextant odometry`'s own files, with the defaults, it prints the
-// very line odometry printed (both go through evaluate_trajectory).
+// [--delta N] [--delta-unit frames|m] [--ground-plane] [--json] [--plot DIR] [--car-slip M]`: the accuracy of
+// a trajectory one already has (evo_ape / evo_rpe's job, plus KITTI drift, Wulf and Kümmerle). TUM files pair
+// by timestamp, KITTI files (no time) by index. For `sextant odometry`'s own files, with the defaults, it
+// prints the very line odometry printed (both go through evaluate_trajectory).
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -18,6 +18,7 @@
 #include "sextant/core/io/trajectory_io.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/eval/alignment_roll.hpp"
+#include "sextant/eval/ground_plane.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/trajectory_evaluation.hpp"
 #include "sextant/eval/vehicle_slip.hpp"
@@ -36,6 +37,7 @@ struct EvalOptions {
   std::string align = "se3";
   double delta = 1.0;
   std::string delta_unit = "frames";
+  bool ground_plane = false;  ///< every metric on x, y and heading only (ground_plane.hpp)
   bool json = false;
   std::string plot;
   double car_slip = 0.0;  ///< > 0: list the reference's steps that slip sideways more than this [m]
@@ -152,9 +154,13 @@ int run_eval(const EvalOptions& o) {
   // Pair by time when both files have it (TUM); KITTI files have none: by index.
   const bool by_stamp =
       reference.format == TrajectoryFormat::kTum && estimate.format == TrajectoryFormat::kTum;
-  const AssociatedPoses pairs = by_stamp ? associate_by_stamp(estimate.poses, reference.poses, o.max_diff)
-                                         : associate_by_index(estimate.poses, reference.poses);
+  AssociatedPoses pairs = by_stamp ? associate_by_stamp(estimate.poses, reference.poses, o.max_diff)
+                                   : associate_by_index(estimate.poses, reference.poses);
   if (!pairs.status.ok) throw InputError(o.estimate, "", pairs.status.message);
+  if (o.ground_plane) {
+    pairs.estimate = on_ground_plane(pairs.estimate);
+    pairs.reference = on_ground_plane(pairs.reference);
+  }
   const TrajectoryEvaluation e = evaluate_trajectory(pairs.estimate, pairs.reference, settings);
   if (!e.status.ok) throw InputError(o.estimate, "", e.status.message);
   const TrajectoryAccuracy a = trajectory_accuracy(e);
@@ -176,6 +182,7 @@ int run_eval(const EvalOptions& o) {
               {"estimate", o.estimate},
               {"pairs", pairs.estimate.size()},
               {"associated_by", by_stamp ? "stamp" : "index"},
+              {"ground_plane", o.ground_plane},
               {"unmatched_estimate", pairs.unmatched_estimate},
               {"unmatched_reference", pairs.unmatched_reference},
               {"largest_stamp_difference_s", json_value(pairs.largest_difference)},
@@ -223,6 +230,8 @@ int run_eval(const EvalOptions& o) {
   } else {
     std::cout << "paired:    " << pairs.estimate.size() << " by index (KITTI files have no time)\n";
   }
+  if (o.ground_plane)
+    std::cout << "projected: both onto the ground plane (x, y and heading; no height, roll or pitch)\n";
   std::cout << "alignment: " << o.align;
   if (settings.alignment != Alignment::none) {
     std::cout << " (translation " << fixed(e.ate.alignment.translation.norm(), 3) << " m";
@@ -296,6 +305,10 @@ void add_eval_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--delta-unit", o->delta_unit, "Unit of --delta: frames, or m along the reference's path")
       ->check(CLI::IsMember({"frames", "m"}))
       ->capture_default_str();
+  cmd->add_flag(
+      "--ground-plane", o->ground_plane,
+      "Every metric on the ground plane: both trajectories' x, y and heading, without height, roll or "
+      "pitch (for a reference whose height and tilt cannot be trusted)");
   cmd->add_flag("--json", o->json, "Print the results as one JSON object");
   cmd->add_option("--car-slip", o->car_slip,
                   "The reference is a car's: list its steps that slip sideways more than this [m] (a car "

@@ -1,0 +1,24 @@
+// A trajectory on the ground plane (ground_plane.hpp).
+#include "sextant/eval/ground_plane.hpp"
+
+#include <cmath>
+
+namespace sextant {
+
+Eigen::Isometry3d on_ground_plane(const Eigen::Isometry3d& pose) {
+  const Eigen::Matrix3d& R = pose.linear();
+  const double heading = std::atan2(R(1, 0), R(0, 0));  // atan2(0, 0) = 0
+  Eigen::Isometry3d flat = Eigen::Isometry3d::Identity();
+  flat.linear() = Eigen::AngleAxisd(heading, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  flat.translation() = Eigen::Vector3d(pose.translation().x(), pose.translation().y(), 0.0);
+  return flat;
+}
+
+std::vector<Eigen::Isometry3d> on_ground_plane(const std::vector<Eigen::Isometry3d>& poses) {
+  std::vector<Eigen::Isometry3d> flat;
+  flat.reserve(poses.size());
+  for (const Eigen::Isometry3d& pose : poses) flat.push_back(on_ground_plane(pose));
+  return flat;
+}
+
+}  // namespace sextant
