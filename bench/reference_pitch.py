@@ -4,8 +4,8 @@
 reference's own lidar-inertial odometry (`lio_odometry_poses.txt`, before that pose graph) and for
 a `sextant odometry` run over the same keyframes, binned by the time between the keyframes and by
 the length of the step. Then the KITTI drift of both (sextant.metrics.kitti_drift, as `sextant eval`),
-in 3D and on the ground plane (sextant.metrics.on_ground_plane: x, y and heading only, as
-`sextant eval --ground-plane`), which leaves that pitch out.
+in 3D and on the ground plane (aligned, then sextant.metrics.on_ground_plane: x, y and heading
+only, as `sextant eval --ground-plane`), which leaves that pitch out.
 
 A bias of the scans or of a registration accrues with the motion (metres) or, for an odometry that
 runs at the lidar's 10 Hz between keyframes, with the frames in between (seconds). A correction
@@ -73,8 +73,19 @@ metres = np.linalg.norm(np.diff(reference[:, :3, 3], axis=0), axis=1)
 print("Pitch of each step against the reference, mean ± standard error per bin\n")
 table("time between keyframes [s]", [0, 0.35, 0.6, 1.5, 30], seconds, rows)
 table("step length [m]", [0, 2, 5, 8, 15], metres, rows)
+def aligned(estimate):
+    """The estimate aligned onto the reference (the ATE's SE(3) alignment), as `sextant eval` aligns it
+    before it projects both onto the ground plane."""
+    alignment = sextant.metrics.ate(reference, estimate)["alignment"]
+    onto = np.eye(4)
+    onto[:3, :3] = alignment["rotation"]
+    onto[:3, 3] = alignment["translation"]
+    return onto @ estimate
+
+
 flat_reference = sextant.metrics.on_ground_plane(reference)
 for name, estimate in estimates:
     drift = sextant.metrics.kitti_drift(reference, estimate)["translation"]
-    flat_drift = sextant.metrics.kitti_drift(flat_reference, sextant.metrics.on_ground_plane(estimate))["translation"]
+    flat = sextant.metrics.on_ground_plane(aligned(estimate))
+    flat_drift = sextant.metrics.kitti_drift(flat_reference, flat)["translation"]
     print(f"{name}: KITTI drift {100 * drift:.2f} %, on the ground plane {100 * flat_drift:.2f} %")

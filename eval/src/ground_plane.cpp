@@ -21,4 +21,11 @@ std::vector<Eigen::Isometry3d> on_ground_plane(const std::vector<Eigen::Isometry
   return flat;
 }
 
+TrajectoryEvaluation evaluate_on_ground_plane(const PoseList& estimate, const PoseList& reference,
+                                              const TrajectoryEvaluationSettings& settings) {
+  const TrajectoryEvaluation in_3d = evaluate_trajectory(estimate, reference, settings);
+  if (!in_3d.status.ok) return in_3d;
+  return evaluate_trajectory(on_ground_plane(in_3d.aligned_estimate), on_ground_plane(reference), settings);
+}
+
 }  // namespace sextant

@@ -265,7 +265,9 @@ void bind_metrics(py::module_& m) {
       "on_ground_plane", &flat,
       "`poses` (N×4×4, world ← body, z up) with their x, y and heading only: no height, roll or pitch. "
       "Any metric of both trajectories so projected judges the motion over the ground alone, as "
-      "`sextant eval --ground-plane` (for a reference whose height and tilt cannot be trusted).",
+      "`sextant eval --ground-plane` (for a reference whose height and tilt cannot be trusted). Each "
+      "trajectory is projected in its own world frame: align the estimate onto the reference first "
+      "(`ate`'s alignment) when their frames differ.",
       py::arg("poses"));
 }
 

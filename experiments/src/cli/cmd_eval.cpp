@@ -154,14 +154,12 @@ int run_eval(const EvalOptions& o) {
   // Pair by time when both files have it (TUM); KITTI files have none: by index.
   const bool by_stamp =
       reference.format == TrajectoryFormat::kTum && estimate.format == TrajectoryFormat::kTum;
-  AssociatedPoses pairs = by_stamp ? associate_by_stamp(estimate.poses, reference.poses, o.max_diff)
-                                   : associate_by_index(estimate.poses, reference.poses);
+  const AssociatedPoses pairs = by_stamp ? associate_by_stamp(estimate.poses, reference.poses, o.max_diff)
+                                         : associate_by_index(estimate.poses, reference.poses);
   if (!pairs.status.ok) throw InputError(o.estimate, "", pairs.status.message);
-  if (o.ground_plane) {
-    pairs.estimate = on_ground_plane(pairs.estimate);
-    pairs.reference = on_ground_plane(pairs.reference);
-  }
-  const TrajectoryEvaluation e = evaluate_trajectory(pairs.estimate, pairs.reference, settings);
+  const TrajectoryEvaluation e = o.ground_plane
+                                     ? evaluate_on_ground_plane(pairs.estimate, pairs.reference, settings)
+                                     : evaluate_trajectory(pairs.estimate, pairs.reference, settings);
   if (!e.status.ok) throw InputError(o.estimate, "", e.status.message);
   const TrajectoryAccuracy a = trajectory_accuracy(e);
   const std::string per =
@@ -231,7 +229,8 @@ int run_eval(const EvalOptions& o) {
     std::cout << "paired:    " << pairs.estimate.size() << " by index (KITTI files have no time)\n";
   }
   if (o.ground_plane)
-    std::cout << "projected: both onto the ground plane (x, y and heading; no height, roll or pitch)\n";
+    std::cout << "projected: both onto the ground plane after the alignment (x, y and heading; no height, "
+                 "roll or pitch)\n";
   std::cout << "alignment: " << o.align;
   if (settings.alignment != Alignment::none) {
     std::cout << " (translation " << fixed(e.ate.alignment.translation.norm(), 3) << " m";
@@ -307,8 +306,8 @@ void add_eval_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_flag(
       "--ground-plane", o->ground_plane,
-      "Every metric on the ground plane: both trajectories' x, y and heading, without height, roll or "
-      "pitch (for a reference whose height and tilt cannot be trusted)");
+      "Every metric on the ground plane: the estimate aligned (--align), then both trajectories' x, y and "
+      "heading, without height, roll or pitch (for a reference whose height and tilt cannot be trusted)");
   cmd->add_flag("--json", o->json, "Print the results as one JSON object");
   cmd->add_option("--car-slip", o->car_slip,
                   "The reference is a car's: list its steps that slip sideways more than this [m] (a car "
