@@ -19,9 +19,10 @@
 namespace sextant {
 
 /// `pose` (world ← body, z up) with its translation's x and y and the heading of its x axis in the
-/// horizontal plane (atan2(R₁₀, R₀₀), the yaw of eq. (3.8)'s decomposition when roll and pitch are
-/// small); z = 0 and no roll or pitch. An x axis pointing straight up or down has no heading: the
-/// result is then the yaw of 0.
+/// horizontal plane (atan2(R₁₀, R₀₀), the yaw of a yaw–pitch–roll decomposition R = Rz·Ry·Rx; the
+/// thesis' eq. (3.8) composes Rx·Ry·Rz, whose yaw differs once roll and pitch are not small); z = 0 and
+/// no roll or pitch. An x axis pointing straight up or down has no heading: the result is then the yaw
+/// of 0.
 Eigen::Isometry3d on_ground_plane(const Eigen::Isometry3d& pose);
 
 /// Every pose of `poses` on the ground plane, in order.
