@@ -25,7 +25,15 @@ TrajectoryEvaluation evaluate_on_ground_plane(const PoseList& estimate, const Po
                                               const TrajectoryEvaluationSettings& settings) {
   const TrajectoryEvaluation in_3d = evaluate_trajectory(estimate, reference, settings);
   if (!in_3d.status.ok) return in_3d;
-  return evaluate_trajectory(on_ground_plane(in_3d.aligned_estimate), on_ground_plane(reference), settings);
+  // Aligned once, in 3D, then projected (evo's order): a second alignment on the plane would change
+  // the ATE only, and the alignment reported is the one that was applied.
+  TrajectoryEvaluationSettings projected = settings;
+  projected.alignment = Alignment::none;
+  TrajectoryEvaluation flat =
+      evaluate_trajectory(on_ground_plane(in_3d.aligned_estimate), on_ground_plane(reference), projected);
+  flat.ate.alignment = in_3d.ate.alignment;
+  flat.ate.roll_from_orientations = in_3d.ate.roll_from_orientations;
+  return flat;
 }
 
 }  // namespace sextant

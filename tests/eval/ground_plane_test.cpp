@@ -54,8 +54,8 @@ TEST(GroundPlane, AnEstimateThatErrsOnlyInPitchHasNoDriftOnTheGroundPlane) {
 }
 
 // An estimate right in 3D but in a world frame pitched 8° (a lidar-inertial odometry's drift before the
-// stretch): aligned first, it has no drift on the ground plane; projected in its own frame it would be
-// 1 − cos 8° ≈ 1 % short.
+// stretch): aligned first, it has no drift on the ground plane, and the alignment reported is the one
+// applied in 3D, which undoes the tilt; projected in its own frame it would be 1 − cos 8° ≈ 1 % short.
 TEST(GroundPlane, TheEstimateIsAlignedBeforeItIsProjected) {
   const std::vector<Eigen::Isometry3d> reference = drive(0.0, 0.0);
   const Eigen::Isometry3d tilt = pose(5.0, -3.0, 40.0, 0.0, 8.0 * M_PI / 180.0, 0.0);
@@ -66,6 +66,9 @@ TEST(GroundPlane, TheEstimateIsAlignedBeforeItIsProjected) {
   ASSERT_TRUE(aligned.status.ok) << aligned.status.message;
   EXPECT_LT(aligned.drift.translation, 1e-9);
   EXPECT_LT(aligned.ate.translation.rms, 1e-9);
+  EXPECT_TRUE(aligned.ate.alignment.rotation.isApprox(tilt.linear().transpose(), 1e-9))
+      << aligned.ate.alignment.rotation;
+  EXPECT_NEAR(aligned.ate.alignment.translation.norm(), tilt.translation().norm(), 1e-6);
   settings.alignment = Alignment::none;
   const TrajectoryEvaluation own_frames = evaluate_on_ground_plane(tilted, reference, settings);
   ASSERT_TRUE(own_frames.status.ok) << own_frames.status.message;

@@ -306,8 +306,8 @@ void add_eval_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_flag(
       "--ground-plane", o->ground_plane,
-      "Every metric on the ground plane: the estimate aligned (--align), then both trajectories' x, y and "
-      "heading, without height, roll or pitch (for a reference whose height and tilt cannot be trusted)");
+      "Every metric on the ground plane: the estimate aligned in 3D (--align), then both trajectories' x, y "
+      "and heading, without height, roll or pitch (for a reference whose height and tilt cannot be trusted)");
   cmd->add_flag("--json", o->json, "Print the results as one JSON object");
   cmd->add_option("--car-slip", o->car_slip,
                   "The reference is a car's: list its steps that slip sideways more than this [m] (a car "

@@ -28,8 +28,9 @@ Eigen::Isometry3d on_ground_plane(const Eigen::Isometry3d& pose);
 /// Every pose of `poses` on the ground plane, in order.
 std::vector<Eigen::Isometry3d> on_ground_plane(const std::vector<Eigen::Isometry3d>& poses);
 
-/// evaluate_trajectory on the ground plane: `estimate` aligned onto `reference` by settings.alignment
-/// (as evaluate_trajectory aligns it), then both on the ground plane, then every metric there.
+/// evaluate_trajectory on the ground plane: `estimate` aligned onto `reference` in 3D by
+/// settings.alignment (as evaluate_trajectory aligns it), then both on the ground plane, then every
+/// metric there without a second alignment. The result's `ate.alignment` is the 3D one.
 TrajectoryEvaluation evaluate_on_ground_plane(const PoseList& estimate, const PoseList& reference,
                                               const TrajectoryEvaluationSettings& settings);
 
