@@ -129,11 +129,15 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
     PairMatch w = align_sample(matcher, sample, tries[i], settings_.quality);
     drop_refuted(w, sample.points);
     OdometryStep again = to_step(w, reference, step.guess);
-    confirm_above_horizon(again, reference, input, sample.points, matcher);
-    seconds += again.seconds;
     // An answer that confirms the first registration stands on its own: the sequence check only asked
-    // for a second search. One that lands elsewhere must also pass the sequence check.
-    if (far_apart(again.relative, step.first_relative, quality)) sequence.check(again.quality);
+    // for a second search. One that lands elsewhere must also pass the sequence check. A sound first
+    // registration the sequence doubted, found again, is confirmed by the points above the horizon as
+    // an unbounded answer is: a search scores the same rings that held the first one.
+    const bool elsewhere = far_apart(again.relative, step.first_relative, quality);
+    const bool doubted_again = !elsewhere && step.first_trust == Trust::kOk;
+    confirm_above_horizon(again, reference, input, sample.points, matcher, doubted_again);
+    seconds += again.seconds;
+    if (elsewhere) sequence.check(again.quality);
     const bool disputed = again.trusted() && (second_answer(again) || lands_on_dispute(again));
     remember(w, sample.points);
     if (disputed) {
@@ -208,10 +212,10 @@ void StepWorker::drop_refuted(PairMatch& m, const PointCloud& sample) const {
 
 void StepWorker::confirm_above_horizon(OdometryStep& step, const PointCloud& reference,
                                        const PointCloud& input, const PointCloud& sample,
-                                       const Matcher& built) {
+                                       const Matcher& built, bool doubted) {
   if (!context_.sensor_frame || !step.trusted()) return;
   const bool without_translation = answer_without_translation(step.relative, settings_.quality);
-  if (!without_translation && !context_.unbounded) return;
+  if (!without_translation && !context_.unbounded && !doubted) return;
   if (&reference != matcher_reference_ && (&built == matcher_.get() || !matcher_->share_reference(built)))
     matcher_->set_reference(reference);
   matcher_reference_ = &reference;
