@@ -30,10 +30,16 @@ void SequenceTrust::check(RegistrationQuality& quality) const {
     quality.reason =
         fmt::format("{:.1f} % of the input matched, below {:.0f} % of the last trusted steps' {:.1f} %",
                     100.0 * quality.overlap, 100.0 * settings_.overlap_factor, 100.0 * overlap);
-  } else if (fit > 0.0 && quality.fit_ratio > settings_.fit_factor * fit) {
+  } else if (fit > 0.0 && quality.fit_ratio > settings_.fit_factor * fit &&
+             quality.fit_ratio > settings_.fit_factor) {
+    // Within fit_factor of what a right pose predicts, a fit is that of a right pose, however much
+    // better its neighbours fitted (scans that fit better than predicted: the synthetic campus, 0.85).
     quality.trust = Trust::kSuspect;
-    quality.reason = fmt::format("fit {:.2f} × the prediction, above {:.1f} × the last trusted steps' {:.2f}",
-                                 quality.fit_ratio, settings_.fit_factor, fit);
+    quality.reason = fmt::format(
+        "fit {:.2f} × the prediction, above {:.1f} × the last trusted steps' {:.2f} and above the {:.1f} of "
+        "a "
+        "right pose",
+        quality.fit_ratio, settings_.fit_factor, fit, settings_.fit_factor);
   }
 }
 

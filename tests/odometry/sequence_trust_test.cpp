@@ -36,6 +36,21 @@ TEST(SequenceTrust, FlagsAStepOutOfItsSequencesRange) {
   EXPECT_NE(poor.reason.find("fit 1.20"), std::string::npos) << poor.reason;
 }
 
+// Scans that fit better than the Gaussians predict (the synthetic campus: 0.8–0.9 × the prediction): a
+// step fitting 1.0 is 1.18 × its neighbours' median but fits as a right pose does, within the check's
+// 1.1 of the prediction, and stays trusted; one fitting 1.15 is above both and is suspect.
+TEST(SequenceTrust, AFitAsGoodAsARightPosesIsNotSuspectForItsNeighbours) {
+  SequenceTrust sequence;
+  for (const double fit : {0.84, 0.85, 0.86, 0.85}) sequence.record(trusted(0.9, fit));
+  RegistrationQuality predicted = trusted(0.9, 1.0);
+  sequence.check(predicted);
+  EXPECT_TRUE(predicted.trusted()) << predicted.reason;
+  RegistrationQuality worse = trusted(0.9, 1.15);
+  sequence.check(worse);
+  EXPECT_EQ(worse.trust, Trust::kSuspect);
+  EXPECT_NE(worse.reason.find("fit 1.15"), std::string::npos) << worse.reason;
+}
+
 TEST(SequenceTrust, WindowForgetsOldSteps) {
   SequenceTrustSettings settings;
   settings.window = 3;

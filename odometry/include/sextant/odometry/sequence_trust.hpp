@@ -21,13 +21,16 @@ struct SequenceTrustSettings {
   std::size_t window = 10;      ///< trusted steps the medians are taken over [count]
   std::size_t min_history = 3;  ///< no relative check before this many trusted steps [count]
   double overlap_factor = 0.9;  ///< suspect below this × the median overlap [ratio]
-  double fit_factor = 1.1;      ///< suspect above this × the median fit ratio [ratio]
+  /// suspect above this × the median fit ratio, when also above this × a right pose's prediction [ratio]
+  double fit_factor = 1.1;
 };
 
 class SequenceTrust {
  public:
   explicit SequenceTrust(SequenceTrustSettings settings = {}) : settings_(settings) {}
-  /// Marks a trusted `quality` suspect (with the reason) when it falls out of the sequence's range.
+  /// Marks a trusted `quality` suspect (with the reason) when it falls out of the sequence's range: an
+  /// overlap below overlap_factor × the window's median, or a fit above fit_factor × its median that is
+  /// also above fit_factor × the prediction (a fit within it is a right pose's, the window's no matter).
   void check(RegistrationQuality& quality) const;
   /// Adds a trusted step to the window (untrusted ones are ignored).
   void record(const RegistrationQuality& quality);
