@@ -36,9 +36,8 @@ void SequenceTrust::check(RegistrationQuality& quality) const {
     // better its neighbours fitted (scans that fit better than predicted: the synthetic campus, 0.85).
     quality.trust = Trust::kSuspect;
     quality.reason = fmt::format(
-        "fit {:.2f} × the prediction, above {:.1f} × the last trusted steps' {:.2f} and above the {:.1f} of "
-        "a "
-        "right pose",
+        "fit {:.2f} × the prediction, above {:.1f} × the last trusted steps' {:.2f} and above the "
+        "{:.1f} of a right pose",
         quality.fit_ratio, settings_.fit_factor, fit, settings_.fit_factor);
   }
 }
