@@ -50,6 +50,23 @@ std::unique_ptr<Dataset> mulran_as_16_rings(const std::filesystem::path& folder,
       [](std::size_t) { return Eigen::Isometry3d::Identity(); });
 }
 
+/// Keyframes `first` to `last`, both included.
+std::vector<std::size_t> keyframes_from(std::size_t first, std::size_t last) {
+  std::vector<std::size_t> keyframes;
+  for (std::size_t k = first; k <= last; ++k) keyframes.push_back(k);
+  return keyframes;
+}
+
+/// Odometry over the whole of `dataset` as `sextant odometry` runs it on a folder with times (the
+/// constant-velocity guess), with GBS seed `seed`.
+OdometryResult odometry_as_run(const Dataset& dataset, std::uint64_t seed) {
+  OdometrySettings s;
+  s.registration = odometry_registration({});
+  s.guess = OdometryGuess::constant_velocity;
+  s.seed = seed;
+  return run_odometry(dataset, s, 0, dataset.size());
+}
+
 // MulRan keyframes 40–62 as 16 rings (3,800 points a scan, most of them the ground's rings, which
 // move with the sensor): with GBS seeds 2 and 3 the chain stood still on keyframes 57–61 while the car
 // moved 1.4–4.7 m per keyframe, each step fitting 0.94–1.12 × the prediction, as a real stop fits, and
@@ -62,15 +79,10 @@ std::unique_ptr<Dataset> mulran_as_16_rings(const std::filesystem::path& folder,
 TEST(SixteenRings, StandingStillIsNotTrusted) {
   if (!std::filesystem::is_directory(kMulran)) GTEST_SKIP() << "no " << kMulran;
   const test::TempDir tmp;
-  std::vector<std::size_t> keyframes;
-  for (std::size_t k = 40; k <= 62; ++k) keyframes.push_back(k);
+  const std::vector<std::size_t> keyframes = keyframes_from(40, 62);
   const auto dataset = mulran_as_16_rings(tmp.path() / "16_rings", keyframes);
   for (const std::uint64_t seed : {2u, 3u}) {
-    OdometrySettings s;  // as `sextant odometry` runs it
-    s.registration = odometry_registration({});
-    s.guess = OdometryGuess::constant_velocity;
-    s.seed = seed;
-    const OdometryResult r = run_odometry(*dataset, s, 0, dataset->size());
+    const OdometryResult r = odometry_as_run(*dataset, seed);
     ASSERT_EQ(r.steps.size(), keyframes.size() - 1);
     SCOPED_TRACE(seed);
     trusted_steps_expecting_them_right(*dataset, r, 0);
@@ -88,11 +100,7 @@ TEST(SixteenRings, AFirstStepRestsWhereItsPointsAboveTheHorizonRest) {
   const test::TempDir tmp;
   const auto dataset = mulran_as_16_rings(tmp.path() / "16_rings", {13, 14});
   for (const std::uint64_t seed : {1u, 2u, 3u}) {
-    OdometrySettings s;  // as `sextant odometry` runs it
-    s.registration = odometry_registration({});
-    s.guess = OdometryGuess::constant_velocity;
-    s.seed = seed;
-    const OdometryResult r = run_odometry(*dataset, s, 0, dataset->size());
+    const OdometryResult r = odometry_as_run(*dataset, seed);
     ASSERT_EQ(r.steps.size(), 1u);
     SCOPED_TRACE(seed);
     EXPECT_EQ(trusted_steps_expecting_them_right(*dataset, r, 0), 1u) << r.steps[0].quality.reason;
@@ -108,14 +116,9 @@ TEST(SixteenRings, AFirstStepRestsWhereItsPointsAboveTheHorizonRest) {
 TEST(SixteenRings, AfterAnUntrustedStepTheNextOneSearches) {
   if (!std::filesystem::is_directory(kMulran)) GTEST_SKIP() << "no " << kMulran;
   const test::TempDir tmp;
-  std::vector<std::size_t> keyframes;
-  for (std::size_t k = 70; k <= 107; ++k) keyframes.push_back(k);
+  const std::vector<std::size_t> keyframes = keyframes_from(70, 107);
   const auto dataset = mulran_as_16_rings(tmp.path() / "16_rings_3_on", keyframes, 3);
-  OdometrySettings s;  // as `sextant odometry` runs it
-  s.registration = odometry_registration({});
-  s.guess = OdometryGuess::constant_velocity;
-  s.seed = 4;
-  const OdometryResult r = run_odometry(*dataset, s, 0, dataset->size());
+  const OdometryResult r = odometry_as_run(*dataset, 4);
   ASSERT_EQ(r.steps.size(), keyframes.size() - 1);
   trusted_steps_expecting_them_right(*dataset, r, 0);
   EXPECT_GE(r.untrusted(), 5u) << "the steps the rings hold short say so";
@@ -130,14 +133,9 @@ TEST(SixteenRings, AfterAnUntrustedStepTheNextOneSearches) {
 TEST(SixteenRings, ADoubtedStepTheSearchFindsAgainRestsWhereItsPointsAboveTheHorizonRest) {
   if (!std::filesystem::is_directory(kMulran)) GTEST_SKIP() << "no " << kMulran;
   const test::TempDir tmp;
-  std::vector<std::size_t> keyframes;
-  for (std::size_t k = 0; k <= 56; ++k) keyframes.push_back(k);
+  const std::vector<std::size_t> keyframes = keyframes_from(0, 56);
   const auto dataset = mulran_as_16_rings(tmp.path() / "16_rings_2_on", keyframes, 2);
-  OdometrySettings s;  // as `sextant odometry` runs it
-  s.registration = odometry_registration({});
-  s.guess = OdometryGuess::constant_velocity;
-  s.seed = 1;
-  const OdometryResult r = run_odometry(*dataset, s, 0, dataset->size());
+  const OdometryResult r = odometry_as_run(*dataset, 1);
   ASSERT_EQ(r.steps.size(), keyframes.size() - 1);
   trusted_steps_expecting_them_right(*dataset, r, 0);
   const OdometryStep& doubted = r.steps[55];
