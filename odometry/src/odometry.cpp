@@ -151,10 +151,19 @@ std::vector<SensorView> views_of(const std::vector<PointCloud>& scans, bool comm
 /// kChunk at a time, in parallel. Per-step seeds make the result independent of the thread count.
 std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometrySettings& s, std::size_t first,
                                          std::size_t count, const std::vector<Eigen::Isometry3d>& odometry,
-                                         const std::vector<std::uint64_t>& seeds, StepCounter& counter) {
+                                         const std::vector<std::uint64_t>& seeds, StepCounter& counter,
+                                         OdometryResult& result) {
   std::vector<OdometryStep> steps(count - 1);
   SequenceTrust trust;
   PointCloud previous = load_sequence_scan(dataset, first, s.min_range);
+  result.sensor = resolve_sensor(s.sensor, previous);
+  // The odometry tells the typical step before any registration: the median of its increments.
+  MotionScale scale(count);
+  for (std::size_t k = 1; k < count; ++k) scale.record(relative(odometry[k - 1], odometry[k]));
+  result.typical_step = scale.typical_step();
+  StepContext defaults;
+  defaults.rings = result.sensor.kind == SensorKind::spinning;
+  defaults.quality = platform_tolerance(s.quality, s.platform, result.typical_step);
   SensorView previous_view = s.common_view ? sensor_view(previous) : SensorView{};
   for (std::size_t begin = 1; begin < count; begin += kChunk) {
     const std::size_t end = std::min(count, begin + kChunk);
@@ -177,7 +186,7 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
       auto& frame = frames[k - begin];
       frame = std::make_unique<StepFrame>(cut ? cut->first : reference, cut ? cut->second : input);
       StepWorker worker(s);
-      StepContext context;
+      StepContext context = defaults;
       context.sensor_frame = frame->sensor_frame();
       steps[k - 1] =
           worker.first_try(frame->reference(), frame->input(), frame->local(guess), seeds[k], context);
@@ -195,12 +204,16 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
       const std::size_t k = untrusted[u];
       const StepFrame& frame = *frames[k - begin];
       StepWorker worker(s);
+      StepContext context = defaults;
+      context.sensor_frame = frame.sensor_frame();
+      worker.set_context(std::move(context));
       worker.recover(steps[k - 1], frame.reference(), frame.input(), {steps[k - 1].guess}, seeds[k], trust);
     });
     for (std::size_t k = begin; k < end; ++k) frames[k - begin]->to_coordinates(steps[k - 1]);
     previous = std::move(chunk.back());
     previous_view = views.back();
   }
+  result.tolerance = defaults.quality;
   return steps;
 }
 
@@ -237,9 +250,11 @@ struct WaitOnExit {
 std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const OdometrySettings& s,
                                            std::size_t first, std::size_t count,
                                            const std::vector<Eigen::Isometry3d>& odometry,
-                                           const std::vector<std::uint64_t>& seeds, StepCounter& counter) {
+                                           const std::vector<std::uint64_t>& seeds, StepCounter& counter,
+                                           OdometryResult& result) {
   StepWorker worker(s);
   SequenceTrust trust;
+  MotionScale scale;  // the platform's typical step, from its trusted steps
   // The motion constant velocity continues: the last trusted one; with --no-recover the last chained
   // one, as a plain chain continues it (its trust is counted, not acted on).
   Eigen::Isometry3d last_motion = Eigen::Isometry3d::Identity();
@@ -256,6 +271,7 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
   window.emplace_back();
   load(0, window.back(), last_view);
   window_poses.push_back(Eigen::Isometry3d::Identity());
+  result.sensor = resolve_sensor(s.sensor, window.back());
   PointCloud next;
   if (count > 1) load(1, next, next_view);
   for (std::size_t k = 1; k < count; ++k) {
@@ -275,6 +291,8 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
     // the last motion per scan (the vehicle accelerated, or the keyframes follow distance, not time)
     // both are priors.
     StepContext context;
+    context.rings = result.sensor.kind == SensorKind::spinning;
+    context.quality = platform_tolerance(s.quality, s.platform, scale.typical_step());
     if (s.guess == OdometryGuess::constant_velocity) {
       guess = scale_motion(last_motion, time_ratio(dataset, first + k));
       context.search = !any_trusted || (s.recover && !steps.back().trusted());
@@ -284,7 +302,7 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
         context.reach = step_reach(dataset, first + k, s.max_acceleration);
         context.last_turn = last_motion.linear();
       }
-      if (s.recover && any_trusted && far_apart(guess, last_motion, s.quality))
+      if (s.recover && any_trusted && far_apart(guess, last_motion, context.quality))
         context.other_priors.push_back(last_motion);
     }
     // An odometer's guess is a prior of its own; the platform's reach bounds a step after a trusted one.
@@ -308,6 +326,7 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
                                     recovery_starts(s, guess, last_motion), seeds[k]));
     }
     trust.record(steps.back().quality);
+    if (steps.back().trusted()) scale.record(steps.back().relative);
     if (steps.back().trusted() || !s.recover) last_motion = steps.back().relative;
     any_trusted = any_trusted || steps.back().trusted();
     // An untrusted step places its scan by a registration we do not believe: the older scans of the
@@ -325,6 +344,8 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
     counter.tick();
     prefetch.wait();
   }
+  result.typical_step = scale.typical_step();
+  result.tolerance = platform_tolerance(s.quality, s.platform, result.typical_step);
   return steps;
 }
 
@@ -379,8 +400,12 @@ OdometryResult run_odometry(const Dataset& dataset, const OdometrySettings& sett
   if (count > 1) {
     const bool independent =
         settings.parallel && settings.guess == OdometryGuess::odometry && settings.map == OdometryMap::scan;
-    result.steps = independent ? parallel_steps(dataset, settings, first, count, odometry, seeds, counter)
-                               : sequential_steps(dataset, settings, first, count, odometry, seeds, counter);
+    result.steps = independent
+                       ? parallel_steps(dataset, settings, first, count, odometry, seeds, counter, result)
+                       : sequential_steps(dataset, settings, first, count, odometry, seeds, counter, result);
+  } else {
+    result.sensor = resolve_sensor(settings.sensor, load_sequence_scan(dataset, first, settings.min_range));
+    result.tolerance = platform_tolerance(settings.quality, settings.platform, std::nullopt);
   }
   result.poses.push_back(start_pose(dataset, settings, first));
   for (const OdometryStep& step : result.steps) result.poses.push_back(result.poses.back() * step.relative);

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -37,12 +38,20 @@ struct StepContext {
   /// The scans lie in their sensor's frame (step_frame.hpp), so that an answer without translation, and
   /// an unbounded one, is confirmed by the points above the horizon (horizon_check.hpp).
   bool sensor_frame = true;
+  /// The sensor draws rings (a spinning lidar, sensor_kind.hpp): an answer without translation needs
+  /// confirming (check_unconfirmed_no_motion), and the points above the horizon are asked (`sensor_frame`)
+  bool rings = true;
+  /// The step's checks, with the platform's tolerance (platform_tolerance)
+  QualitySettings quality;
 };
 
 /// The matcher and sampler of one worker, and the wide-basin matcher it recovers with.
 class StepWorker {
  public:
   explicit StepWorker(const OdometrySettings& s);
+
+  /// What the sequence knows about the next step, for a recover() without a first_try on this worker.
+  void set_context(StepContext context) { context_ = std::move(context); }
 
   /// The first registration from `guess`, assessed on its own (absolute checks), with what the sequence
   /// knows about the step (StepContext).

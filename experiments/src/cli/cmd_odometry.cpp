@@ -38,7 +38,9 @@ struct OdometryOptions : MatcherOptions {
   std::string poses;  ///< ground truth for a scan folder: TUM or KITTI file (default: poses.txt beside it)
   std::string guess;  ///< empty: odometry when the dataset has it, else constant_velocity
   std::string map = "local_map";
-  std::string loop_closure;  ///< empty: none; proximity, descriptor or both
+  std::string loop_closure;       ///< empty: none; proximity, descriptor or both
+  std::string sensor = "auto";    ///< auto, spinning, solid_state
+  std::string platform = "auto";  ///< auto, car, handheld
   std::size_t first = 0;
   std::size_t scans = 0;  ///< 0: to the end of the dataset
   std::size_t local_map_scans = 5;
@@ -78,46 +80,57 @@ std::string yes_no(bool b) {
 }
 
 std::string provenance_json(const OdometryOptions& o, const MatcherConfig& config, const YAML::Node& resolved,
-                            const DatasetMetadata& meta, const OdometrySettings& s, std::size_t scans,
-                            const std::string& start, double seconds) {
+                            const DatasetMetadata& meta, const OdometrySettings& s,
+                            const OdometryResult& result, std::size_t scans, const std::string& start,
+                            double seconds) {
   const GitState git = current_git_state();
   const bool sampler = config.sampler.IsDefined() && !config.sampler.IsNull();
-  const Json provenance = {{"command", "odometry"},
-                           {"dataset",
-                            {{"argument", o.dataset},
-                             {"name", meta.name},
-                             {"format", meta.format},
-                             {"path", meta.path.string()},
-                             {"scans", meta.scan_count},
-                             {"campus_seed", o.campus_seed},
-                             {"poses", o.poses}}},
-                           {"first", o.first},
-                           {"scans", scans},
-                           {"method", o.method},
-                           {"preset", o.preset},
-                           {"solver", o.solver},
-                           {"sampling", o.sampling},
-                           {"config_file", o.config},
-                           {"matcher_settings", yaml_to_json(config.matcher)},
-                           {"sampler_settings", sampler ? yaml_to_json(config.sampler) : Json()},
-                           {"matcher_resolved", yaml_to_json(resolved["matcher"])},
-                           {"sampler_resolved", yaml_to_json(resolved["sampler"])},
-                           {"guess", to_string(s.guess)},
-                           {"map", to_string(s.map)},
-                           {"loop_closure", o.loop_closure},
-                           {"local_map_scans", s.local_map_scans},
-                           {"min_range", json_value(s.min_range)},
-                           {"max_acceleration", json_value(s.max_acceleration)},
-                           {"recover", s.recover},
-                           {"common_view", s.common_view},
-                           {"seed", s.seed},
-                           {"jobs", o.jobs},
-                           {"git", {{"sha", git.sha}, {"dirty", git.dirty}, {"source", git.source}}},
-                           {"libraries", Json::parse(library_versions_json())},
-                           {"host", host_name()},
-                           {"start", start},
-                           {"end", iso_time_now()},
-                           {"seconds", json_value(seconds)}};
+  const Json provenance = {
+      {"command", "odometry"},
+      {"dataset",
+       {{"argument", o.dataset},
+        {"name", meta.name},
+        {"format", meta.format},
+        {"path", meta.path.string()},
+        {"scans", meta.scan_count},
+        {"campus_seed", o.campus_seed},
+        {"poses", o.poses}}},
+      {"first", o.first},
+      {"scans", scans},
+      {"method", o.method},
+      {"preset", o.preset},
+      {"solver", o.solver},
+      {"sampling", o.sampling},
+      {"config_file", o.config},
+      {"matcher_settings", yaml_to_json(config.matcher)},
+      {"sampler_settings", sampler ? yaml_to_json(config.sampler) : Json()},
+      {"matcher_resolved", yaml_to_json(resolved["matcher"])},
+      {"sampler_resolved", yaml_to_json(resolved["sampler"])},
+      {"guess", to_string(s.guess)},
+      {"map", to_string(s.map)},
+      {"loop_closure", o.loop_closure},
+      {"local_map_scans", s.local_map_scans},
+      {"min_range", json_value(s.min_range)},
+      {"max_acceleration", json_value(s.max_acceleration)},
+      {"sensor",
+       {{"declared", to_string(s.sensor)},
+        {"used", to_string(result.sensor.kind)},
+        {"azimuth_coverage", json_value(result.sensor.azimuth_coverage)}}},
+      {"platform",
+       {{"declared", to_string(s.platform)},
+        {"typical_step_m", result.typical_step ? json_value(*result.typical_step) : Json()},
+        {"tolerance_m", json_value(result.tolerance.ambiguity_metres)},
+        {"tolerance_deg", json_value(result.tolerance.ambiguity_degrees)}}},
+      {"recover", s.recover},
+      {"common_view", s.common_view},
+      {"seed", s.seed},
+      {"jobs", o.jobs},
+      {"git", {{"sha", git.sha}, {"dirty", git.dirty}, {"source", git.source}}},
+      {"libraries", Json::parse(library_versions_json())},
+      {"host", host_name()},
+      {"start", start},
+      {"end", iso_time_now()},
+      {"seconds", json_value(seconds)}};
   return json_lines(provenance,
                     {"matcher_settings", "sampler_settings", "matcher_resolved", "sampler_resolved"});
 }
@@ -132,6 +145,27 @@ void print_steps(const OdometryResult& result, std::size_t first) {
               << (st.quality.reason.empty() ? "" : " (" + st.quality.reason + ")")
               << (st.recovery.empty() ? "" : ", recovery " + st.recovery) << "\n";
   }
+}
+
+/// The sensor and platform the checks assumed, and why (printed after the run, recorded in provenance).
+std::string sensor_line(const OdometrySettings& s, const OdometryResult& r) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(0) << to_string(r.sensor.kind)
+      << (s.sensor == SensorKind::automatic ? " (measured: the first scan covers "
+                                            : " (declared; the first scan covers ")
+      << 100.0 * r.sensor.azimuth_coverage << " % of the azimuth circle)"
+      << (r.sensor.kind == SensorKind::spinning ? "" : ", no ring or horizon checks") << "; platform "
+      << to_string(s.platform) << std::setprecision(2);
+  if (s.platform == Platform::automatic) {
+    out << ", typical step ";
+    if (r.typical_step)
+      out << *r.typical_step << " m";
+    else
+      out << "unknown";
+  }
+  out << ": a wrong step is one more than " << r.tolerance.ambiguity_metres << " m or "
+      << std::setprecision(1) << r.tolerance.ambiguity_degrees << "° off";
+  return out.str();
 }
 
 int run_odometry_command(const OdometryOptions& o) {
@@ -155,6 +189,8 @@ int run_odometry_command(const OdometryOptions& o) {
   s.max_acceleration = o.max_acceleration;
   s.seed = o.seed;
   s.recover = !o.no_recover;
+  s.sensor = parse_sensor_kind(o.sensor, "--sensor");
+  s.platform = parse_platform(o.platform, "--platform");
   s.common_view = o.whole_scans ? false : o.common_view || common_view_by_default(o.method);
   if (const std::string why = s.problem(); !why.empty()) throw InputError("arguments", "", why);
   std::optional<LoopCandidateSource> loop_source;
@@ -217,6 +253,7 @@ int run_odometry_command(const OdometryOptions& o) {
       run_odometry(*dataset, s, o.first, scans, [&](std::size_t, std::size_t) { progress->tick(); });
   progress->finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (!quiet) std::cout << "sensor:   " << sensor_line(s, result) << "\n";
   std::optional<OdometryLoopClosure> loops;
   if (loop_source) loops = close_odometry_loops(*dataset, o.first, scans, result, s, *loop_source);
   const std::vector<Eigen::Isometry3d>& poses = loops ? loops->closing.poses : result.poses;
@@ -230,7 +267,7 @@ int run_odometry_command(const OdometryOptions& o) {
   std::string estimate_problem, odometry_problem;  // why an accuracy could not be computed
   if (truth && scans >= 2) {
     estimate_accuracy = trajectory_accuracy(poses, *truth, &estimate_problem);
-    counts.trusted_off_reference = trusted_steps_off_reference(result, *truth);
+    counts.trusted_off_reference = trusted_steps_off_reference(result, *truth, result.tolerance);
     if (const auto odometry = odometry_of(*dataset, o.first, scans))
       odometry_accuracy = trajectory_accuracy(*odometry, *truth, &odometry_problem);
   }
@@ -265,7 +302,7 @@ int run_odometry_command(const OdometryOptions& o) {
   write_metrics_json(out / "metrics.json", estimate_accuracy, odometry_accuracy, scans, counts, seconds,
                      loop_summary);
   write_file_atomically(out / "provenance.json",
-                        provenance_json(o, config, resolved, meta, s, scans, start, seconds));
+                        provenance_json(o, config, resolved, meta, s, result, scans, start, seconds));
 
   std::cout << std::fixed << std::setprecision(1) << "registered " << result.steps.size() << " pairs in "
             << seconds << " s (" << std::setprecision(3)
@@ -301,7 +338,7 @@ int run_odometry_command(const OdometryOptions& o) {
                                       : "no accuracy: " + odometry_problem)
                 << " (the dataset's)\n";
     if (counts.trusted_off_reference) {
-      const std::string off = off_reference_warning(*counts.trusted_off_reference, o.first);
+      const std::string off = off_reference_warning(*counts.trusted_off_reference, o.first, result.tolerance);
       if (!off.empty()) std::cout << "check:    " << off << "\n";
     }
   }
@@ -371,6 +408,17 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--whole-scans", o->whole_scans,
                 "Register the whole scans: the default for every method but mlndt")
       ->excludes(common_view);
+  cmd->add_option(
+         "--sensor", o->sensor,
+         "The lidar: spinning (rings over 360°: the checks of an answer without translation and of "
+         "the points above the horizon apply), solid_state (a fixed field of view, no rings: they do "
+         "not), or auto (measured: spinning when the first scan covers at least half of the azimuth "
+         "circle)")
+      ->capture_default_str();
+  cmd->add_option("--platform", o->platform,
+                  "What carries it, which sets the size of a wrong step: car (1 m or 5°), handheld (0.3 m or "
+                  "3°), or auto (the median of the last trusted steps' lengths, between the two)")
+      ->capture_default_str();
   cmd->add_option("--first", o->first, "First scan index")->capture_default_str();
   cmd->add_option("--scans", o->scans, "Number of scans (0: to the end)")->capture_default_str();
   cmd->add_option("--seed", o->seed, "Seed of the samplers' random choices")->capture_default_str();

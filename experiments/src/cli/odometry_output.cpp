@@ -112,9 +112,9 @@ void write_steps_csv(const std::filesystem::path& file, std::size_t first, const
 }
 
 std::vector<std::size_t> trusted_steps_off_reference(const OdometryResult& result,
-                                                     const std::vector<Eigen::Isometry3d>& truth) {
+                                                     const std::vector<Eigen::Isometry3d>& truth,
+                                                     const QualitySettings& tolerance) {
   std::vector<std::size_t> off;
-  const QualitySettings tolerance;
   for (std::size_t i = 0; i < result.steps.size() && i + 1 < truth.size(); ++i)
     if (result.steps[i].trusted() &&
         far_apart(result.steps[i].relative, relative(truth[i], truth[i + 1]), tolerance))
@@ -122,9 +122,9 @@ std::vector<std::size_t> trusted_steps_off_reference(const OdometryResult& resul
   return off;
 }
 
-std::string off_reference_warning(const std::vector<std::size_t>& steps, std::size_t first) {
+std::string off_reference_warning(const std::vector<std::size_t>& steps, std::size_t first,
+                                  const QualitySettings& tolerance) {
   if (steps.empty()) return "";
-  const QualitySettings tolerance;
   std::ostringstream out;
   out << steps.size() << " trusted step" << (steps.size() == 1 ? " lies" : "s lie") << " more than "
       << tolerance.ambiguity_metres << " m or " << tolerance.ambiguity_degrees

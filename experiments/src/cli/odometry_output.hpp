@@ -41,20 +41,23 @@ void write_steps_csv(const std::filesystem::path& file, std::size_t first, const
 struct OdometryCounts {
   std::size_t not_converged = 0, untrusted = 0, recovered = 0;
   /// With ground truth: the steps (indices) whose chained motion is trusted and yet more than the
-  /// trust checks' tolerance (1 m or 5°) from the ground truth's: a wrong registration that passed the
+  /// run's tolerance (OdometryResult::tolerance: a car's 1 m or 5°, less for a slower platform) from the
+  /// ground truth's: a wrong registration that passed the
   /// checks, or a wrong reference (MulRan Riverside02's between keyframes 107 and 116). Nothing
   /// without ground truth.
   std::optional<std::vector<std::size_t>> trusted_off_reference;
 };
 
-/// The trusted steps of `result` more than QualitySettings' ambiguity tolerance from `truth`'s
-/// relative motions (OdometryCounts::trusted_off_reference).
+/// The trusted steps of `result` more than `tolerance`'s ambiguity distance from `truth`'s relative
+/// motions (OdometryCounts::trusted_off_reference).
 std::vector<std::size_t> trusted_steps_off_reference(const OdometryResult& result,
-                                                     const std::vector<Eigen::Isometry3d>& truth);
+                                                     const std::vector<Eigen::Isometry3d>& truth,
+                                                     const QualitySettings& tolerance);
 
 /// "3 trusted steps lie more than 1 m or 5° from the reference's motion (scans 107→108, 108→109,
 /// 110→111): ..." for the console; empty when there are none.
-std::string off_reference_warning(const std::vector<std::size_t>& steps, std::size_t first);
+std::string off_reference_warning(const std::vector<std::size_t>& steps, std::size_t first,
+                                  const QualitySettings& tolerance);
 
 /// With --loop-closure: what closing the loops did, and the chained trajectory's accuracy before.
 struct LoopClosureSummary {

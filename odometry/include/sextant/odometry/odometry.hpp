@@ -25,6 +25,8 @@
 #include "sextant/core/pose.hpp"
 #include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/matchers/registration_quality.hpp"
+#include "sextant/matchers/sensor_kind.hpp"
+#include "sextant/odometry/platform.hpp"
 
 namespace sextant {
 
@@ -97,6 +99,14 @@ struct OdometrySettings {
   /// (check_reachable_motion, sequence_trust.hpp). 1 g: a wheeled vehicle's tyres grip no harder
   /// (friction coefficient ≤ 1) [m/s²]; 0: no such check
   double max_acceleration = 9.81;
+  /// The lidar (sensor_kind.hpp): the checks that rest on a spinning lidar's rings (no motion
+  /// unconfirmed, the points above the horizon) apply only to a spinning one; automatic: measured on
+  /// the first scan
+  SensorKind sensor = SensorKind::automatic;
+  /// What carries it (platform.hpp): the size of a wrong step, and of "no motion"; automatic: the
+  /// sequence's typical step decides
+  Platform platform = Platform::automatic;
+  /// The checks of every registration; its ambiguity tolerance is a car's, which `platform` scales
   QualitySettings quality;
 
   /// Empty when valid, else what is wrong.
@@ -137,6 +147,11 @@ struct OdometryStep {
 
 struct OdometryResult {
   std::vector<Eigen::Isometry3d> poses;  ///< world ← scan first + i, i = 0 … count − 1
+  SensorDetection sensor;                ///< the sensor the checks assumed, and what was measured
+  std::optional<double> typical_step;    ///< the sequence's last typical step (MotionScale) [m]
+  /// The size of a wrong step at the end of the run (platform_tolerance): what a step off the
+  /// reference by more than this is
+  QualitySettings tolerance;
   std::vector<OdometryStep> steps;  ///< count − 1 registrations; steps[i] links poses[i] and poses[i + 1]
   std::size_t untrusted() const;    ///< steps whose chained motion is not trusted
   std::size_t recovered() const;    ///< steps recovered (wide basin, or restart)

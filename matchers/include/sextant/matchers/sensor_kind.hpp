@@ -1,0 +1,46 @@
+#pragma once
+// Which kind of lidar took a scan (issue 62). Some trust checks rest on a property of one kind: a
+// spinning lidar's ground rings are circles about the sensor, so two of its scans coincide at no
+// translation whatever the platform did, and the points above its horizon hold no ring
+// (horizon_check.hpp, check_unconfirmed_no_motion in sequence_trust.hpp). A solid-state lidar (a
+// rosette or other non-repetitive pattern over a field of view of some tens of degrees) draws no
+// rings: two of its scans from one place do not repeat each other's points, and nothing holds a
+// registration at no motion. Those checks apply only where the sensor spins, declared or measured:
+// a spinning lidar sees the whole azimuth circle, a solid-state one a sector of it.
+#include <string>
+
+#include "sextant/core/point_cloud.hpp"
+
+namespace sextant {
+
+enum class SensorKind {
+  automatic,    ///< measured from the data (detect_sensor)
+  spinning,     ///< a rotating multi-beam lidar (rings, 360° of azimuth)
+  solid_state,  ///< a fixed field of view, no rings (e.g. a Livox's rosette)
+};
+
+/// "auto" | "spinning" | "solid_state"; InputError(`what`) naming the choices otherwise.
+SensorKind parse_sensor_kind(const std::string& text, const std::string& what = "sensor");
+std::string to_string(SensorKind kind);
+
+/// What detect_sensor measured, and what it concluded.
+struct SensorDetection {
+  SensorKind kind = SensorKind::spinning;
+  /// The fraction of the azimuth circle the scan covers: of kAzimuthSectors equal sectors about the
+  /// sensor's vertical, those holding at least 1/20 of an even share of the scan's points
+  double azimuth_coverage = 1.0;
+};
+
+/// Sectors of the azimuth circle detect_sensor counts (5° each).
+inline constexpr int kAzimuthSectors = 72;
+
+/// The kind of sensor of a scan in its own frame: spinning when its points cover at least half of
+/// the azimuth circle, solid_state otherwise. A spinning lidar covers all of it but what its platform
+/// and the nearest walls hide; a solid-state one its field of view, well under half. An empty scan is
+/// taken as spinning with coverage 0 (no evidence either way: the checks of the kind that has them).
+SensorDetection detect_sensor(const PointCloud& scan);
+
+/// `declared` unless it is automatic, else what detect_sensor says of `scan`.
+SensorDetection resolve_sensor(SensorKind declared, const PointCloud& scan);
+
+}  // namespace sextant
