@@ -248,11 +248,8 @@ RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Iso
     }
   }
   RegistrationResult best = std::move(results[chosen]);
-  // Each alternative is refined as the chosen one is: two poses are told apart at the precision of
-  // the stage that ends them, not at the pyramid's (on sparse scans the coarse runs stop tenths of a
-  // metre apart in one basin of the precision stage).
   for (std::size_t k = 0; k < results.size(); ++k)
-    if (k != chosen) add_alternative(best, refine(input, std::move(results[k])));
+    if (k != chosen) add_alternative(best, std::move(results[k]));
   best.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return refine(input, std::move(best));
 }

@@ -68,6 +68,7 @@ RegistrationResult MlndtMatcher::refine(const PointCloud& input, RegistrationRes
   // pose: the trust checks (registration_quality.hpp) were measured there. H is the finest grids',
   // whose minimum the pose is (R = H⁻¹, eq. 3.50).
   const ScoreEvaluation at = last_layer_at(input, r.T);
+  coarse.before_precision = coarse.T;
   coarse.T = r.T;
   coarse.H = r.H;
   coarse.constraint_hessian = at.hessian;

@@ -84,7 +84,9 @@ PairRegistration register_pair(const PointCloud& reference, const PointCloud& in
   std::unique_ptr<Matcher> used;
   if (!frame.moved()) {
     PairRegistration out = register_about_origin(reference, input, request, used);
-    confirm_above_horizon(out, reference, input, request, *used);
+    out.sensor = resolve_sensor(request.sensor, input);
+    if (out.sensor->kind == SensorKind::spinning)
+      confirm_above_horizon(out, reference, input, request, *used);
     return out;
   }
   PairRegistrationRequest local = request;
@@ -93,7 +95,12 @@ PairRegistration register_pair(const PointCloud& reference, const PointCloud& in
   out.centre = frame.centre();
   RegistrationResult& r = out.match.result;
   r.T = frame.coordinates(r.T);
-  for (RegistrationResult& alternative : r.alternatives) alternative.T = frame.coordinates(alternative.T);
+  for (RegistrationResult& alternative : r.alternatives) {
+    alternative.T = frame.coordinates(alternative.T);
+    if (alternative.before_precision)
+      alternative.before_precision = frame.coordinates(*alternative.before_precision);
+  }
+  if (r.before_precision) r.before_precision = frame.coordinates(*r.before_precision);
   return out;
 }
 

@@ -128,10 +128,13 @@ RegistrationQuality assess_registration(const RegistrationResult& result, const 
                                         const QualitySettings& settings) {
   RegistrationQuality q = assess_alone(result, input, settings);
   if (!q.trusted()) return q;
+  // Solutions are told apart where the pyramid ended them (before_precision): at one stage's precision.
+  const Eigen::Isometry3d mine = result.before_precision.value_or(result.T);
   for (const RegistrationResult& other : result.alternatives) {
     const RegistrationQuality alone = assess_alone(other, input, settings);
-    if (!alone.trusted() || !rivals(result.T, q.fit_ratio, other.T, alone.fit_ratio, settings)) continue;
-    const Eigen::Isometry3d d = relative(result.T, other.T);
+    const Eigen::Isometry3d theirs = other.before_precision.value_or(other.T);
+    if (!alone.trusted() || !rivals(mine, q.fit_ratio, theirs, alone.fit_ratio, settings)) continue;
+    const Eigen::Isometry3d d = relative(mine, theirs);
     q.trust = Trust::kSuspect;
     q.ambiguous = true;
     q.reason = fmt::format(

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "sextant/core/units.hpp"
@@ -51,6 +52,12 @@ PointCloud seen(const PointCloud& cloud, const SensorView& view, const Eigen::Is
   const Eigen::Vector3f t = to_sensor.translation().cast<float>();
   const float range2 = static_cast<float>(view.max_range * view.max_range);
   const float low = static_cast<float>(view.min_slope), high = static_cast<float>(view.max_slope);
+  // In the sector: the horizontal direction's component along the sector's centre at least cos(half
+  // width) × its length, the elevation test's form (at_least).
+  const bool whole_circle = view.azimuth_half_width >= kPi;
+  const float cx = static_cast<float>(std::cos(view.azimuth_centre)),
+              cy = static_cast<float>(std::sin(view.azimuth_centre)),
+              cos_half = static_cast<float>(std::cos(std::min(view.azimuth_half_width, kPi)));
   const bool open_below = view.min_slope == -std::numeric_limits<double>::infinity(),
              open_above = view.max_slope == std::numeric_limits<double>::infinity();
   const PointsView points = cloud.points();
@@ -67,7 +74,8 @@ PointCloud seen(const PointCloud& cloud, const SensorView& view, const Eigen::Is
     const bool in_range = horizontal2 + z * z <= range2;  // NaN fails it
     const bool above = at_least(z, low, horizontal2, open_below);
     const bool below = at_least(-z, -high, horizontal2, open_above);
-    sees[i] = static_cast<std::uint8_t>(in_range & above & below);
+    const bool in_sector = at_least(x * cx + y * cy, cos_half, horizontal2, whole_circle);
+    sees[i] = static_cast<std::uint8_t>(in_range & above & below & in_sector);
   }
   PointCloud out;
   compact(points, sees, out.mutable_points());
@@ -80,15 +88,43 @@ PointCloud seen(const PointCloud& cloud, const SensorView& view, const Eigen::Is
 bool SensorView::sees(const Eigen::Vector3d& p) const {
   constexpr double kInfinity = std::numeric_limits<double>::infinity();
   const double horizontal = std::sqrt(p.x() * p.x() + p.y() * p.y());
+  const bool in_sector =
+      azimuth_half_width >= kPi || p.x() * std::cos(azimuth_centre) + p.y() * std::sin(azimuth_centre) >=
+                                       std::cos(azimuth_half_width) * horizontal;
   return p.squaredNorm() <= max_range * max_range &&
          (min_slope == -kInfinity || p.z() >= min_slope * horizontal) &&
-         (max_slope == kInfinity || p.z() <= max_slope * horizontal);
+         (max_slope == kInfinity || p.z() <= max_slope * horizontal) && in_sector;
 }
 
-SensorView sensor_view(const PointCloud& scan) {
+namespace {
+
+/// Sets `view`'s sector from the azimuths of a scan's points (sensor_view): the circle less its largest
+/// gap between neighbouring azimuths, when that gap is more than half the circle, widened by kMargin on
+/// each side.
+void set_sector(SensorView& view, std::vector<double> azimuths) {
+  if (azimuths.size() < 2) return;
+  std::sort(azimuths.begin(), azimuths.end());
+  double gap = azimuths.front() + 2.0 * kPi - azimuths.back();  // across ±π
+  double gap_end = azimuths.front();
+  for (std::size_t i = 1; i < azimuths.size(); ++i)
+    if (azimuths[i] - azimuths[i - 1] > gap) {
+      gap = azimuths[i] - azimuths[i - 1];
+      gap_end = azimuths[i];
+    }
+  if (!(gap > kPi)) return;  // a spinning lidar's view: the whole circle
+  const double width = 2.0 * kPi - gap;
+  view.azimuth_centre = gap_end + 0.5 * width;
+  view.azimuth_half_width = 0.5 * width + kMargin;
+}
+
+}  // namespace
+
+SensorView sensor_view(const PointCloud& scan, SensorKind sensor) {
   SensorView view;
   view.min_slope = std::numeric_limits<double>::infinity();
   view.max_slope = -std::numeric_limits<double>::infinity();
+  std::vector<double> azimuths;
+  azimuths.reserve(scan.size());
   for (const Eigen::Vector3f& q : scan.points()) {
     const Eigen::Vector3d p = q.cast<double>();
     if (!p.allFinite()) continue;
@@ -97,8 +133,10 @@ SensorView sensor_view(const PointCloud& scan) {
     if (!(horizontal > 0.0)) continue;
     view.min_slope = std::min(view.min_slope, p.z() / horizontal);
     view.max_slope = std::max(view.max_slope, p.z() / horizontal);
+    azimuths.push_back(std::atan2(p.y(), p.x()));
   }
   if (!(view.min_slope <= view.max_slope)) return view;  // no point off the vertical: sees nothing
+  if (sensor == SensorKind::solid_state) set_sector(view, std::move(azimuths));
   // The band widened by kMargin on each side, open where it reaches straight down or up.
   const double low = std::atan(view.min_slope) - kMargin, high = std::atan(view.max_slope) + kMargin;
   view.min_slope = low <= -kHalfTurn ? -std::numeric_limits<double>::infinity() : std::tan(low);

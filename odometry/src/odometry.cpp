@@ -140,10 +140,11 @@ std::optional<std::pair<PointCloud, PointCloud>> what_both_see(
 
 /// The view of each scan where the steps cut to what both sensors see (default views otherwise,
 /// which nothing reads).
-std::vector<SensorView> views_of(const std::vector<PointCloud>& scans, bool common_view) {
+std::vector<SensorView> views_of(const std::vector<PointCloud>& scans, bool common_view, SensorKind sensor) {
   std::vector<SensorView> views(scans.size());
   if (common_view)
-    tbb::parallel_for(std::size_t{0}, views.size(), [&](std::size_t k) { views[k] = sensor_view(scans[k]); });
+    tbb::parallel_for(std::size_t{0}, views.size(),
+                      [&](std::size_t k) { views[k] = sensor_view(scans[k], sensor); });
   return views;
 }
 
@@ -164,14 +165,14 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
   StepContext defaults;
   defaults.rings = result.sensor.kind == SensorKind::spinning;
   defaults.quality = platform_tolerance(s.quality, s.platform, result.typical_step);
-  SensorView previous_view = s.common_view ? sensor_view(previous) : SensorView{};
+  SensorView previous_view = s.common_view ? sensor_view(previous, result.sensor.kind) : SensorView{};
   for (std::size_t begin = 1; begin < count; begin += kChunk) {
     const std::size_t end = std::min(count, begin + kChunk);
     std::vector<PointCloud> chunk(end - begin);
     tbb::parallel_for(begin, end, [&](std::size_t k) {
       chunk[k - begin] = load_sequence_scan(dataset, first + k, s.min_range);
     });
-    const std::vector<SensorView> views = views_of(chunk, s.common_view);
+    const std::vector<SensorView> views = views_of(chunk, s.common_view, result.sensor.kind);
     // Each step's clouds cut to what both sensors see (with common_view) and its frame, until its
     // recovery is done (step_frame.hpp).
     std::vector<std::optional<std::pair<PointCloud, PointCloud>>> seen(end - begin);
@@ -265,13 +266,13 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
   // A scan and its sensor's view (where the steps cut to what both sensors see), loaded ahead.
   const auto load = [&](std::size_t k, PointCloud& scan, SensorView& view) {
     scan = load_sequence_scan(dataset, first + k, s.min_range);
-    if (s.common_view) view = sensor_view(scan);
+    if (s.common_view) view = sensor_view(scan, result.sensor.kind);
   };
   SensorView last_view, next_view;  // of window.back() and of `next`
-  window.emplace_back();
-  load(0, window.back(), last_view);
+  window.push_back(load_sequence_scan(dataset, first, s.min_range));
   window_poses.push_back(Eigen::Isometry3d::Identity());
   result.sensor = resolve_sensor(s.sensor, window.back());
+  if (s.common_view) last_view = sensor_view(window.back(), result.sensor.kind);
   PointCloud next;
   if (count > 1) load(1, next, next_view);
   for (std::size_t k = 1; k < count; ++k) {

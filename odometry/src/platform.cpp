@@ -30,7 +30,7 @@ QualitySettings platform_tolerance(const QualitySettings& base, Platform platfor
   const double low_deg = std::min(kHandheldToleranceDegrees, base.ambiguity_degrees);
   if (platform == Platform::car || (platform == Platform::automatic && !typical_step)) return q;
   const double metres =
-      platform == Platform::handheld ? low_m : std::clamp(*typical_step, low_m, base.ambiguity_metres);
+      platform == Platform::handheld ? low_m : std::clamp(0.5 * *typical_step, low_m, base.ambiguity_metres);
   const double span = base.ambiguity_metres - low_m;
   const double along = span > 0.0 ? (metres - low_m) / span : 1.0;
   q.ambiguity_metres = metres;

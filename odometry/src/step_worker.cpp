@@ -53,6 +53,7 @@ OdometryStep StepWorker::first_try(const PointCloud& reference, const PointCloud
   }
   if (!context_.other_priors.empty())
     m.result.quality = assess_registration(m.result, sample.points, context_.quality);
+  settle_rivals(local(reference, matcher), sample, m);
   answers_.clear();
   disputed_.clear();
   refuted_.clear();
@@ -128,6 +129,7 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
     Matcher& matcher = i < searches ? *recovery_ : *matcher_;
     PairMatch w = align_sample(matcher, sample, tries[i], context_.quality);
     drop_refuted(w, sample.points);
+    settle_rivals(local(reference, matcher), sample, w);
     OdometryStep again = to_step(w, reference, step.guess);
     // An answer that confirms the first registration stands on its own: the sequence check only asked
     // for a second search. One that lands elsewhere must also pass the sequence check. A sound first
@@ -196,6 +198,30 @@ void StepWorker::remember(const PairMatch& m, const PointCloud& sample) {
   }
 }
 
+Matcher& StepWorker::local(const PointCloud& reference, const Matcher& built) {
+  if (&reference != matcher_reference_ && (&built == matcher_.get() || !matcher_->share_reference(built)))
+    matcher_->set_reference(reference);
+  matcher_reference_ = &reference;
+  return *matcher_;
+}
+
+void StepWorker::settle_rivals(Matcher& matcher, const SampledInput& sample, PairMatch& m) const {
+  if (!m.result.quality.ambiguous) return;
+  const QualitySettings& quality = context_.quality;
+  std::vector<RegistrationResult>& alternatives = m.result.alternatives;
+  const std::size_t before = alternatives.size();
+  alternatives.erase(std::remove_if(alternatives.begin(), alternatives.end(),
+                                    [&](const RegistrationResult& rival) {
+                                      if (!far_apart(rival.T, m.result.T, quality)) return false;
+                                      const PairMatch again = align_sample(matcher, sample, rival.T, quality);
+                                      m.result.seconds += again.result.seconds;
+                                      return again.result.converged &&
+                                             !far_apart(again.result.T, m.result.T, quality);
+                                    }),
+                     alternatives.end());
+  if (alternatives.size() != before) m.result.quality = assess_registration(m.result, sample.points, quality);
+}
+
 bool StepWorker::refuted(const Eigen::Isometry3d& pose) const {
   return std::any_of(refuted_.begin(), refuted_.end(),
                      [&](const Eigen::Isometry3d& r) { return !far_apart(pose, r, context_.quality); });
@@ -216,10 +242,7 @@ void StepWorker::confirm_above_horizon(OdometryStep& step, const PointCloud& ref
   if (!context_.sensor_frame || !context_.rings || !step.trusted()) return;
   const bool without_translation = answer_without_translation(step.relative, context_.quality);
   if (!without_translation && !context_.unbounded && !doubted) return;
-  if (&reference != matcher_reference_ && (&built == matcher_.get() || !matcher_->share_reference(built)))
-    matcher_->set_reference(reference);
-  matcher_reference_ = &reference;
-  AboveHorizon said = register_above_horizon(*matcher_, input, step.relative, context_.quality);
+  AboveHorizon said = register_above_horizon(local(reference, built), input, step.relative, context_.quality);
   if (without_translation && !said.telling(step.relative, step.quality.fit_ratio, context_.quality) &&
       recovery_) {
     if (&reference != recovery_reference_ && !recovery_->share_reference(*matcher_))

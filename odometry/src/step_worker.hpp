@@ -90,6 +90,15 @@ class StepWorker {
   /// and where those points rest instead the recovery starts too.
   void confirm_above_horizon(OdometryStep& step, const PointCloud& reference, const PointCloud& input,
                              const PointCloud& sample, const Matcher& built, bool doubted = false);
+  /// An ambiguous first registration `m` (of `sample`, by `matcher`): each rival registered again from
+  /// where it ended; one the registration brings back within the tolerance of `m`'s pose was no second
+  /// minimum, and is dropped (then `m` is assessed again). A rival of the pyramid may have stopped where
+  /// its coarsest cells no longer tell poses apart, tenths of a metre from the answer on a sparse scan,
+  /// and only the chosen pose went through the precision stage; two answers are two when each is where
+  /// the registration ends.
+  void settle_rivals(Matcher& matcher, const SampledInput& sample, PairMatch& m) const;
+  /// `matcher_` holding the model of `reference` (shared from `built`, which holds it, where it can be).
+  Matcher& local(const PointCloud& reference, const Matcher& built);
   /// Whether `pose` lies within the ambiguity tolerance of an answer its points above the horizon refuted.
   bool refuted(const Eigen::Isometry3d& pose) const;
   /// Drops the alternatives of `m` (a registration of `sample`) that lie at a refuted answer, and assesses

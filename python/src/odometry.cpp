@@ -29,6 +29,8 @@ namespace {
 struct OdometryRun {
   py::object poses, relative, hessians, ground_truth, steps, dataset;
   std::string guess, map;
+  std::string sensor;        ///< the lidar the checks assumed (declared, or measured)
+  double tolerance_m = 0.0;  ///< the size of a wrong step the run ended with (platform_tolerance)
   std::size_t first = 0, scans = 0, not_converged = 0, untrusted = 0, recovered = 0;
   double seconds = 0.0;
 };
@@ -62,7 +64,7 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
                      double max_acceleration, std::uint64_t seed, bool recover, const py::object& common_view,
                      const py::object& poses, const py::object& odometry_poses, const py::object& times,
                      std::uint64_t campus_seed, int jobs, const py::object& sampler_settings,
-                     const py::kwargs& settings) {
+                     const std::string& sensor, const std::string& platform, const py::kwargs& settings) {
   // Arguments first (cheap), then the dataset, as the CLI.
   OdometrySettings s;
   s.map = parse_odometry_map(map, "map");
@@ -80,6 +82,8 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
   s.max_acceleration = max_acceleration;
   s.seed = seed;
   s.recover = recover;
+  s.sensor = parse_sensor_kind(sensor, "sensor");
+  s.platform = parse_platform(platform, "platform");
   s.common_view = common_view.is_none() ? common_view_by_default(method) : common_view.cast<bool>();
   if (const std::string why = s.problem(); !why.empty()) throw InputError("arguments", "", why);
   if (jobs < 0) throw py::value_error("jobs: expected 0 (all cores) or a positive number of threads");
@@ -136,6 +140,8 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
   run.dataset = metadata_dict(meta);
   run.guess = to_string(s.guess);
   run.map = to_string(s.map);
+  run.sensor = to_string(result.sensor.kind);
+  run.tolerance_m = result.tolerance.ambiguity_metres;
   run.first = first;
   run.scans = count;
   for (const OdometryStep& step : result.steps) run.not_converged += step.converged ? 0 : 1;
@@ -164,6 +170,9 @@ min_range: drop points closer than this to the sensor [m]. max_acceleration: wit
     False = --no-recover). common_view: register only what both sensors see from the guess (True,
     --common-view) or the whole scans (False, --whole-scans); None: the CLI's default (True for
     mlndt). jobs: worker threads (0: all cores).
+sensor: "spinning", "solid_state" or "auto" (the CLI's --sensor: the ring and horizon checks apply to a
+    spinning lidar only; auto measures the first scan). platform: "car", "handheld" or "auto" (the CLI's
+    --platform: the size of a wrong step, 1 m or 5°, 0.3 m or 3°, or the typical step's between them).
 poses: ground truth. For a folder of scans: a TUM or KITTI file (the CLI's --poses); for a list: an
     N×4×4 array (world ← scan). odometry_poses (N×4×4) and times (N seconds): a list's odometry and
     clock.
@@ -199,6 +208,13 @@ void bind_odometry(py::module_& m) {
           "the dataset's metadata: name, format, path, scans, has_odometry, has_ground_truth, notes")
       .def_readonly("guess", &OdometryRun::guess, "the guess mode used")
       .def_readonly("map", &OdometryRun::map, "the map mode used")
+      .def_readonly("sensor", &OdometryRun::sensor,
+                    "the lidar the checks assumed: 'spinning' or 'solid_state' (declared, or measured on the "
+                    "first scan)")
+      .def_readonly(
+          "tolerance_m", &OdometryRun::tolerance_m,
+          "a step more than this from the truth is wrong (the platform's size of a wrong step at the "
+          "end of the run) [m]")
       .def_readonly("first", &OdometryRun::first, "the first scan's index")
       .def_readonly("scans", &OdometryRun::scans, "number of scans (poses)")
       .def_readonly("not_converged", &OdometryRun::not_converged, "steps whose registration did not converge")
@@ -216,7 +232,8 @@ void bind_odometry(py::module_& m) {
         py::arg("max_acceleration") = OdometrySettings{}.max_acceleration, py::arg("seed") = 1,
         py::arg("recover") = true, py::arg("common_view") = py::none(), py::arg("poses") = py::none(),
         py::arg("odometry_poses") = py::none(), py::arg("times") = py::none(), py::arg("campus_seed") = 1,
-        py::arg("jobs") = 0, py::arg("sampler_settings") = py::none());
+        py::arg("jobs") = 0, py::arg("sampler_settings") = py::none(), py::arg("sensor") = "auto",
+        py::arg("platform") = "auto");
 }
 
 }  // namespace sextant::python

@@ -19,8 +19,10 @@ using test::ScriptedMatcher;
 /// A pair registered without a guess: the wide basin's search answers 2.37 m (overlap 0.56, fit 1.21)
 /// and the input's points above the horizon, registered alone from there, answer `above`; the whole scan
 /// from 4.02 m ends at 4.09 m, from 3.6 m back at 2.40 m.
-PairRegistration searched_short_of_the_motion(const Scripted& above) {
+PairRegistration searched_short_of_the_motion(const Scripted& above,
+                                              SensorKind sensor = SensorKind::spinning) {
   PairRegistrationRequest request;
+  request.sensor = sensor;  // a few points that stand for a spinning lidar's scan
   request.matcher.name = "scripted";
   request.matcher.make = [above] {
     return std::make_unique<ScriptedMatcher>(
@@ -45,6 +47,18 @@ TEST(RegisterPair, AnAnswerThePointsAboveTheHorizonLeaveIsNotTrusted) {
   EXPECT_TRUE(searched_short_of_the_motion({2.45, 0.88, 0.98}).match.result.quality.trusted());
   EXPECT_TRUE(searched_short_of_the_motion({4.02, 0.3, 0.98}).match.result.quality.trusted());
   EXPECT_TRUE(searched_short_of_the_motion({3.6, 0.88, 0.98}).match.result.quality.trusted());
+}
+
+// A solid-state lidar draws no rings that could hold the answer short: its points above the horizon are
+// not asked, and the search's answer stands as the checks judged it.
+TEST(RegisterPair, ASolidStateLidarsAnswerIsNotAskedAboveTheHorizon) {
+  const PairRegistration solid = searched_short_of_the_motion({4.02, 0.88, 0.98}, SensorKind::solid_state);
+  EXPECT_TRUE(solid.match.result.quality.trusted()) << solid.match.result.quality.reason;
+  ASSERT_TRUE(solid.sensor.has_value());
+  EXPECT_EQ(solid.sensor->kind, SensorKind::solid_state);
+  const PairRegistration measured = searched_short_of_the_motion({4.02, 0.88, 0.98}, SensorKind::automatic);
+  ASSERT_TRUE(measured.sensor.has_value());
+  EXPECT_EQ(measured.sensor->kind, detect_sensor(test::scan_above_and_below()).kind);
 }
 
 }  // namespace

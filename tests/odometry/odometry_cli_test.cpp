@@ -203,7 +203,8 @@ TEST(OdometryCli, SyntheticKittiSequenceFolder) {
 
 // A trusted step far from the reference's motion is either a wrong registration that passed the checks
 // or a wrong reference (MulRan Riverside02 between keyframes 107 and 116): the run says which steps,
-// on the console and in metrics.json. Here the reference jumps 3 m between scans 5 and 6.
+// on the console and in metrics.json. Here the reference jumps 3 m between scans 5 and 6. The steps are
+// 0.9 m long, so a wrong one is one more than half of that off (platform.hpp), 0.45 m or 3.4°.
 TEST(OdometryCli, TrustedStepsFarFromTheReferenceAreNamed) {
   TempDir tmp;
   const fs::path folder = tmp / "sequences" / "07";
@@ -212,9 +213,14 @@ TEST(OdometryCli, TrustedStepsFarFromTheReferenceAreNamed) {
   write_kitti_poses(folder / "poses.txt", camera);
   const CliRun r = run_cli("odometry " + folder.string() + " --no-progress --out " + (tmp / "out").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("check:    1 trusted step lies more than 1 m or 5° from the reference's motion "
-                          "(scans 5→6): the reference or this registration is wrong there"),
-            std::string::npos)
+  EXPECT_NE(
+      r.output.find("platform auto, typical step 0.90 m: a wrong step is one more than 0.45 m or 3.4° off"),
+      std::string::npos)
+      << r.output;
+  EXPECT_NE(
+      r.output.find("check:    1 trusted step lies more than 0.45 m or 3.4° from the reference's motion "
+                    "(scans 5→6): the reference or this registration is wrong there"),
+      std::string::npos)
       << r.output;
   const std::string metrics = read_text(tmp / "out" / "metrics.json");
   EXPECT_NE(metrics.find("\"trusted_off_reference\": [5]"), std::string::npos) << metrics;
@@ -357,6 +363,45 @@ TEST(OdometryCli, CommonViewIsMlndtsDefaultAndEitherFlagOverridesIt) {
       run_cli("odometry campus --scans 3 --common-view --whole-scans --out " + (tmp / "both").string());
   EXPECT_EQ(both.exit_code, 2) << both.output;
   EXPECT_NE(both.output.find("excludes"), std::string::npos) << both.output;
+}
+
+// --sensor and --platform: what the run assumed is printed and recorded, declared or measured; an unknown
+// name is refused before anything is read.
+TEST(OdometryCli, TheSensorAndPlatformAreSaidAndRecorded) {
+  TempDir tmp;
+  const fs::path folder = tmp / "sequences" / "07";
+  write_kitti_sequence(folder, 6);
+  const CliRun measured =
+      run_cli("odometry " + folder.string() + " --no-progress --out " + (tmp / "a").string());
+  ASSERT_EQ(measured.exit_code, 0) << measured.output;
+  EXPECT_NE(measured.output.find("sensor:   spinning (measured: the first scan covers 100 % of the azimuth"),
+            std::string::npos)
+      << measured.output;
+  const std::string auto_provenance = read_text(tmp / "a" / "provenance.json");
+  EXPECT_NE(auto_provenance.find("\"declared\": \"auto\", \"used\": \"spinning\""), std::string::npos)
+      << auto_provenance;
+  const CliRun declared = run_cli("odometry " + folder.string() +
+                                  " --sensor solid_state --platform handheld "
+                                  "--no-progress --out " +
+                                  (tmp / "b").string());
+  ASSERT_EQ(declared.exit_code, 0) << declared.output;
+  EXPECT_NE(
+      declared.output.find("sensor:   solid_state (declared; the first scan covers 100 % of the azimuth "
+                           "circle), no ring or horizon checks; platform handheld: a wrong step is one "
+                           "more than 0.30 m or 3.0° off"),
+      std::string::npos)
+      << declared.output;
+  const std::string provenance = read_text(tmp / "b" / "provenance.json");
+  EXPECT_NE(provenance.find("\"declared\": \"solid_state\", \"used\": \"solid_state\""), std::string::npos)
+      << provenance;
+  EXPECT_NE(provenance.find("\"declared\": \"handheld\""), std::string::npos) << provenance;
+  EXPECT_NE(provenance.find("\"tolerance_m\": 0.3"), std::string::npos) << provenance;
+  const CliRun wrong =
+      run_cli("odometry " + folder.string() + " --sensor mems --out " + (tmp / "c").string());
+  EXPECT_NE(wrong.exit_code, 0);
+  EXPECT_NE(wrong.output.find("--sensor"), std::string::npos) << wrong.output;
+  EXPECT_NE(wrong.output.find("solid_state"), std::string::npos) << wrong.output;
+  EXPECT_FALSE(fs::exists(tmp / "c" / "trajectory.tum"));
 }
 
 }  // namespace

@@ -42,7 +42,8 @@ struct MatchOptions : MatcherOptions {
   std::string reference, input;
   std::string init;  ///< "x,y,z,alpha,beta,gamma" [m, deg]
   std::string gt, out;
-  std::string view;  ///< an HTML page with both clouds before and after, in 3D
+  std::string view;             ///< an HTML page with both clouds before and after, in 3D
+  std::string sensor = "auto";  ///< auto, spinning, solid_state
   std::uint64_t seed = 1;
   int jobs = 0;  ///< the registration's threads (0: all cores); the result is the same for any count
   bool json = false;
@@ -207,6 +208,7 @@ void print_json(const MatchOptions& o, const PairRegistration& registered, const
       {"constraint_ratio", json_value(r.quality.constraint_ratio)},
       {"fit_ratio", json_value(r.quality.fit_ratio)},
       {"search", search},
+      {"sensor", registered.sensor ? Json(to_string(registered.sensor->kind)) : Json()},
       {"error_cm", error ? json_value(error->cm) : Json()},
       {"error_deg", error ? json_value(error->deg) : Json()},
       {"trusted_off_ground_truth", error ? Json(trusted_off_truth(r, *error)) : Json()}};
@@ -225,6 +227,16 @@ void print_trace(const RegistrationResult& r) {
 std::string centre_text(const Eigen::Vector3d& c) {
   std::ostringstream out;
   out << std::fixed << std::setprecision(3) << c.x() << ", " << c.y() << ", " << c.z();
+  return out.str();
+}
+
+/// "solid_state (measured: the input covers 21 % of the azimuth circle; no horizon check)".
+std::string sensor_text(const SensorDetection& sensor, const std::string& declared) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(0) << to_string(sensor.kind)
+      << (declared == "auto" ? " (measured: " : " (declared; ") << "the input covers "
+      << 100.0 * sensor.azimuth_coverage << " % of the azimuth circle"
+      << (sensor.kind == SensorKind::spinning ? ")" : "; no horizon check)");
   return out.str();
 }
 
@@ -256,6 +268,7 @@ void print_text(const MatchOptions& o, const PairRegistration& registered, const
             << " deg\n"
             << "result:      " << r.summary() << "\n"
             << "search:      " << search << "\n"
+            << (registered.sensor ? "sensor:      " + sensor_text(*registered.sensor, o.sensor) + "\n" : "")
             << (registered.centre.isZero()
                     ? ""
                     : "centre:      " + centre_text(registered.centre) +
@@ -310,6 +323,7 @@ int run_match(MatchOptions o) {
   if (!o.init.empty()) request.init = initial;
   request.wide_basin = !o.no_wide_basin;
   request.seed = o.seed;
+  request.sensor = parse_sensor_kind(o.sensor, "--sensor");
   const PairRegistration registered = register_pair(reference, input, request);
   const PairMatch& m = registered.match;
   std::string search = registered.search;
@@ -366,6 +380,11 @@ void add_match_command(CLI::App& app, int& exit_code) {
                   "Write a self-contained HTML page showing both clouds before and after the registration in "
                   "3D (rotate, zoom, toggle)");
   cmd->add_option("--seed", o->seed, "Seed of the sampler's random choices")->capture_default_str();
+  cmd->add_option("--sensor", o->sensor,
+                  "The lidar: spinning (a trusted answer is confirmed by the points above the horizon), "
+                  "solid_state (no rings: it is not), or auto (spinning when the input covers at least half "
+                  "of the azimuth circle)")
+      ->capture_default_str();
   cmd->add_option("--jobs,-j", o->jobs,
                   "Threads of the registration (0 = all; the result is the same for any)")
       ->check(CLI::NonNegativeNumber);

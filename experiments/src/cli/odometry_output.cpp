@@ -127,7 +127,7 @@ std::string off_reference_warning(const std::vector<std::size_t>& steps, std::si
   if (steps.empty()) return "";
   std::ostringstream out;
   out << steps.size() << " trusted step" << (steps.size() == 1 ? " lies" : "s lie") << " more than "
-      << tolerance.ambiguity_metres << " m or " << tolerance.ambiguity_degrees
+      << std::setprecision(2) << tolerance.ambiguity_metres << " m or " << tolerance.ambiguity_degrees
       << "° from the reference's motion (scans ";
   constexpr std::size_t kListed = 8;
   for (std::size_t k = 0; k < std::min(steps.size(), kListed); ++k)

@@ -8,7 +8,8 @@
 //     it is trusted;
 //   - settings that hold their own `wide_basin:` map always search with it.
 //   - a trusted answer is confirmed by the input's points above the horizon (horizon_check.hpp), for
-//     clouds in their sensor's frame: nothing else bounds a pair's answer.
+//     clouds in their sensor's frame taken by a spinning lidar (sensor_kind.hpp: declared, or measured
+//     on the input): nothing else bounds a pair's answer, and a solid-state lidar draws no rings.
 // Matchers without a wide basin (ICP, the PCL peers) register once, from the guess or the identity.
 // Clouds far from the origin of their coordinates are registered about the middle of the reference
 // (registration_centre.hpp), and the result is brought back to the clouds' coordinates: 5,400 km
@@ -23,6 +24,7 @@
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/matchers/registration_centre.hpp"
+#include "sextant/matchers/sensor_kind.hpp"
 
 namespace sextant {
 
@@ -33,6 +35,7 @@ struct PairRegistrationRequest {
   std::optional<Eigen::Isometry3d> init;  ///< p_reference ≈ init · p_input; none: the identity, searched
   bool wide_basin = true;                 ///< false: no search without a guess, no retry with one
   std::uint64_t seed = 1;                 ///< the sampler's random choices
+  SensorKind sensor = SensorKind::automatic;  ///< the lidar; automatic: measured on the input
 };
 
 struct PairRegistration {
@@ -42,6 +45,9 @@ struct PairRegistration {
   /// ", <trust>: the wide basin found no trusted pose either" after a retry.
   std::string search;
   bool searched_without_guess = false;  ///< no guess: the wide basin searched (callers name their switch)
+  /// The lidar the horizon check assumed (declared, or measured on the input; none for clouds not in
+  /// their sensor's frame, which are not checked above the horizon)
+  std::optional<SensorDetection> sensor;
   /// The point the registration turned about, in the clouds' coordinates (zero: their origin). The
   /// transforms are in the clouds' coordinates; the Hessian (and the covariance from it) is that of
   /// the pose about this point.

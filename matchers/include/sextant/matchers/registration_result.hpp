@@ -2,6 +2,7 @@
 // What every matcher returns (docs/design.md, "Module contracts"). A diverged registration is a
 // result with converged = false and a reason, never an exception.
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -84,6 +85,11 @@ struct RegistrationResult {
   /// refine_first's other run (each without trace or alternatives of its own). assess_registration
   /// calls the result ambiguous (suspect) when one of them passes the same checks far from it.
   std::vector<RegistrationResult> alternatives;
+  /// Where the pyramid ended before ML-NDT's precision stage moved the pose to T (none: no such stage
+  /// ran). The alternatives end where the pyramid ends, so assess_registration tells them apart from
+  /// this pose: two poses compared at one stage's precision, not the precision stage's step (tenths of
+  /// a metre on a sparse solid-state scan) taken for a second answer.
+  std::optional<Eigen::Isometry3d> before_precision;
 
   /// One line: "converged after 12 iterations (converged), score …, 1234 matched, 0.012 s[; fallback: …]".
   std::string summary() const;

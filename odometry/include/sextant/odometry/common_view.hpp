@@ -13,23 +13,32 @@
 #include <Eigen/Geometry>
 
 #include "sextant/core/point_cloud.hpp"
+#include "sextant/core/units.hpp"
+#include "sextant/matchers/sensor_kind.hpp"
 
 namespace sextant {
 
 /// A sensor's view, from its own points: the band of elevations (as slopes z / √(x² + y²), the
-/// tangents of the lowest and highest elevation; ∓∞ where the band reaches straight down or up) and
+/// tangents of the lowest and highest elevation; ∓∞ where the band reaches straight down or up), the
+/// sector of azimuths (a solid-state lidar's field of view; the whole circle for a spinning one) and
 /// the farthest range.
 struct SensorView {
   double min_slope = -1.0, max_slope = 1.0;  ///< tan of the lowest and highest elevation seen
   double max_range = 0.0;                    ///< [m]
+  /// The sector of azimuths about the sensor's vertical: the directions within `azimuth_half_width` of
+  /// `azimuth_centre`; the whole circle when the half width is π or more [rad]
+  double azimuth_centre = 0.0, azimuth_half_width = kPi;
   /// Whether a point in the sensor's frame lies in the view (false for a non-finite point).
   bool sees(const Eigen::Vector3d& p) const;
 };
 
 /// The view of a scan in its own sensor frame: the extremes of its points' elevations, widened by 1°
 /// on each side, and of their ranges (points straight above or below the sensor are left out of the
-/// band). A scan without a point off the vertical sees nothing.
-SensorView sensor_view(const PointCloud& scan);
+/// band). A spinning lidar sees the whole circle of azimuths; a solid-state one (`sensor`,
+/// sensor_kind.hpp) its field of view: the circle less the largest gap between the scan's azimuths,
+/// widened by 1° on each side, when that gap is more than half the circle (the whole circle otherwise).
+/// A scan without a point off the vertical sees nothing.
+SensorView sensor_view(const PointCloud& scan, SensorKind sensor = SensorKind::spinning);
 
 /// The points of `reference` (in the frame of the sensor with `reference_view`) that the input's
 /// sensor sees from `guess` (reference ← input), and those of `input` (in its sensor's frame) that

@@ -4,9 +4,10 @@
 // catch, and "no motion" means within it (check_unconfirmed_no_motion, answer_without_translation). On
 // a car whose keyframes lie metres apart that is a fraction of a step; on a person who walks 0.2 m
 // per keyframe it is five steps: every right step is then "no motion", and an answer two steps off is
-// within the tolerance of the right one. The tolerance follows the platform's own motion instead: the
-// median length of its last trusted steps, between the bar of a sequence carried on foot (0.3 m or 3°)
-// and a car's (1 m or 5°), the degrees following the metres on the line between the two.
+// within the tolerance of the right one. The tolerance follows the platform's own motion instead: half
+// the median length of its last trusted steps (two answers farther apart disagree on the motion by more
+// than half of it), between the bar of a sequence carried on foot (0.3 m or 3°) and a car's (1 m or 5°),
+// the degrees following the metres on the line between the two.
 #include <cstddef>
 #include <deque>
 #include <optional>
@@ -19,7 +20,7 @@
 namespace sextant {
 
 enum class Platform {
-  automatic,  ///< the tolerance follows the sequence's typical step (MotionScale)
+  automatic,  ///< the tolerance follows the sequence's typical step (MotionScale): half of it
   car,        ///< a car's tolerance, whatever the steps: QualitySettings' 1 m or 5°
   handheld,   ///< carried on foot: 0.3 m or 3°, whatever the steps
 };
@@ -32,7 +33,7 @@ std::string to_string(Platform platform);
 inline constexpr double kHandheldToleranceMetres = 0.3, kHandheldToleranceDegrees = 3.0;
 
 /// `base` with its ambiguity tolerance for `platform`: a car's is base's; a handheld one's the
-/// handheld bar (never above base's); automatic, `typical_step` metres clamped to [handheld bar, base]
+/// handheld bar (never above base's); automatic, half the `typical_step` clamped to [handheld bar, base]
 /// and the degrees on the line between the two bars, base's while the typical step is unknown.
 QualitySettings platform_tolerance(const QualitySettings& base, Platform platform,
                                    std::optional<double> typical_step);
