@@ -214,7 +214,7 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
     previous = std::move(chunk.back());
     previous_view = views.back();
   }
-  result.tolerance = defaults.quality;
+  result.tolerance = *defaults.quality;
   return steps;
 }
 
@@ -303,7 +303,7 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
         context.reach = step_reach(dataset, first + k, s.max_acceleration);
         context.last_turn = last_motion.linear();
       }
-      if (s.recover && any_trusted && far_apart(guess, last_motion, context.quality))
+      if (s.recover && any_trusted && far_apart(guess, last_motion, *context.quality))
         context.other_priors.push_back(last_motion);
     }
     // An odometer's guess is a prior of its own; the platform's reach bounds a step after a trusted one.

@@ -36,14 +36,14 @@ OdometryStep StepWorker::first_try(const PointCloud& reference, const PointCloud
   context_ = std::move(context);
   const SampledInput sample = sample_input(*sampler_, input, rng);
   Matcher& matcher = context_.search && recovery_ ? *recovery_ : *matcher_;
-  PairMatch m = match_sample(matcher, sample, reference, guess, context_.quality);
+  PairMatch m = match_sample(matcher, sample, reference, guess, quality());
   matcher_reference_ = &matcher == matcher_.get() ? &reference : nullptr;
   recovery_reference_ = &matcher == recovery_.get() ? &reference : nullptr;
   searched_ = &matcher == recovery_.get() && wide_basin_;
   // Every prior the sequence offers is a start; their solutions are the result's alternatives, and
   // two that pass the checks far apart make it ambiguous (registration_quality.hpp).
   for (const Eigen::Isometry3d& prior : context_.other_priors) {
-    PairMatch other = align_sample(matcher, sample, prior, context_.quality);
+    PairMatch other = align_sample(matcher, sample, prior, quality());
     m.result.seconds += other.result.seconds;
     for (RegistrationResult& alternative : other.result.alternatives)
       m.result.alternatives.push_back(std::move(alternative));
@@ -52,7 +52,7 @@ OdometryStep StepWorker::first_try(const PointCloud& reference, const PointCloud
     m.result.alternatives.push_back(std::move(other.result));
   }
   if (!context_.other_priors.empty())
-    m.result.quality = assess_registration(m.result, sample.points, context_.quality);
+    m.result.quality = assess_registration(m.result, sample.points, quality());
   settle_rivals(local(reference, matcher), sample, m);
   answers_.clear();
   disputed_.clear();
@@ -86,7 +86,7 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
   // ambiguity band); about as good, it is a second answer, and with two the scans cannot tell which
   // is right (MulRan keyframes 2 apart: the wide basin slid 11 m along the road from a right first
   // try, both trusted).
-  const QualitySettings& quality = context_.quality;
+  const QualitySettings& quality = this->quality();
   const auto second_answer = [&](const OdometryStep& again) {
     return std::any_of(answers_.begin(), answers_.end(), [&](const Answer& a) {
       return rivals(again.relative, again.quality.fit_ratio, a.relative, a.fit_ratio, quality);
@@ -127,7 +127,7 @@ void StepWorker::recover(OdometryStep& step, const PointCloud& reference, const 
   }
   for (std::size_t i = 0; i < tries.size(); ++i) {
     Matcher& matcher = i < searches ? *recovery_ : *matcher_;
-    PairMatch w = align_sample(matcher, sample, tries[i], context_.quality);
+    PairMatch w = align_sample(matcher, sample, tries[i], quality);
     drop_refuted(w, sample.points);
     settle_rivals(local(reference, matcher), sample, w);
     OdometryStep again = to_step(w, reference, step.guess);
@@ -189,11 +189,11 @@ void StepWorker::remember(const PairMatch& m, const PointCloud& sample) {
   if (only_its_fit && !refuted(r.T)) answers_.push_back({r.T, r.quality.fit_ratio});
   if (r.quality.ambiguous) disputed_.push_back(r.T);
   for (const RegistrationResult& other : r.alternatives) {
-    const RegistrationQuality q = assess_registration(other, sample, context_.quality);
+    const RegistrationQuality q = assess_registration(other, sample, quality());
     if (!q.trusted() || refuted(other.T)) continue;
     answers_.push_back({other.T, q.fit_ratio});
     // The alternatives that make `r` ambiguous are in dispute with it.
-    if (r.quality.ambiguous && rivals(r.T, r.quality.fit_ratio, other.T, q.fit_ratio, context_.quality))
+    if (r.quality.ambiguous && rivals(r.T, r.quality.fit_ratio, other.T, q.fit_ratio, quality()))
       disputed_.push_back(other.T);
   }
 }
@@ -207,7 +207,7 @@ Matcher& StepWorker::local(const PointCloud& reference, const Matcher& built) {
 
 void StepWorker::settle_rivals(Matcher& matcher, const SampledInput& sample, PairMatch& m) const {
   if (!m.result.quality.ambiguous) return;
-  const QualitySettings& quality = context_.quality;
+  const QualitySettings& quality = this->quality();
   std::vector<RegistrationResult>& alternatives = m.result.alternatives;
   const std::size_t before = alternatives.size();
   alternatives.erase(std::remove_if(alternatives.begin(), alternatives.end(),
@@ -224,7 +224,7 @@ void StepWorker::settle_rivals(Matcher& matcher, const SampledInput& sample, Pai
 
 bool StepWorker::refuted(const Eigen::Isometry3d& pose) const {
   return std::any_of(refuted_.begin(), refuted_.end(),
-                     [&](const Eigen::Isometry3d& r) { return !far_apart(pose, r, context_.quality); });
+                     [&](const Eigen::Isometry3d& r) { return !far_apart(pose, r, quality()); });
 }
 
 void StepWorker::drop_refuted(PairMatch& m, const PointCloud& sample) const {
@@ -233,33 +233,33 @@ void StepWorker::drop_refuted(PairMatch& m, const PointCloud& sample) const {
                                   [&](const RegistrationResult& a) { return refuted(a.T); });
   if (end == alternatives.end()) return;
   alternatives.erase(end, alternatives.end());
-  m.result.quality = assess_registration(m.result, sample, context_.quality);
+  m.result.quality = assess_registration(m.result, sample, quality());
 }
 
 void StepWorker::confirm_above_horizon(OdometryStep& step, const PointCloud& reference,
                                        const PointCloud& input, const PointCloud& sample,
                                        const Matcher& built, bool doubted) {
   if (!context_.sensor_frame || !context_.rings || !step.trusted()) return;
-  const bool without_translation = answer_without_translation(step.relative, context_.quality);
+  const bool without_translation = answer_without_translation(step.relative, quality());
   if (!without_translation && !context_.unbounded && !doubted) return;
-  AboveHorizon said = register_above_horizon(local(reference, built), input, step.relative, context_.quality);
-  if (without_translation && !said.telling(step.relative, step.quality.fit_ratio, context_.quality) &&
+  AboveHorizon said = register_above_horizon(local(reference, built), input, step.relative, quality());
+  if (without_translation && !said.telling(step.relative, step.quality.fit_ratio, quality()) &&
       recovery_) {
     if (&reference != recovery_reference_ && !recovery_->share_reference(*matcher_))
       recovery_->set_reference(reference);
     recovery_reference_ = &reference;
-    search_above_horizon(said, *recovery_, input, step.relative, context_.quality);
+    search_above_horizon(said, *recovery_, input, step.relative, quality());
   }
   if (without_translation) {
-    check_no_motion_above_horizon(step.quality, step.relative, said, context_.quality);
+    check_no_motion_above_horizon(step.quality, step.relative, said, quality());
   } else {
-    register_whole_from_there(said, *matcher_, sample, step.relative, context_.quality);
-    check_motion_above_horizon(step.quality, step.relative, said, context_.quality);
+    register_whole_from_there(said, *matcher_, sample, step.relative, quality());
+    check_motion_above_horizon(step.quality, step.relative, said, quality());
   }
   step.seconds += said.seconds;
   if (step.trusted()) return;
   refuted_.push_back(step.relative);
-  if (const auto there = said.elsewhere(step.relative, context_.quality)) elsewhere_.push_back(*there);
+  if (const auto there = said.elsewhere(step.relative, quality())) elsewhere_.push_back(*there);
 }
 
 OdometryStep StepWorker::to_step(const PairMatch& m, const PointCloud& reference,
@@ -280,10 +280,10 @@ OdometryStep StepWorker::to_step(const PairMatch& m, const PointCloud& reference
   // No motion is the answer a lidar's rings always offer: confirmed only by a fit as of one place,
   // where no motion is known yet or the guess says the vehicle moves (sequence_trust.hpp).
   if (context_.rings &&
-      (context_.search || far_apart(guess, Eigen::Isometry3d::Identity(), context_.quality)))
-    check_unconfirmed_no_motion(step.quality, step.relative, context_.quality);
+      (context_.search || far_apart(guess, Eigen::Isometry3d::Identity(), quality())))
+    check_unconfirmed_no_motion(step.quality, step.relative, quality());
   check_reachable_motion(step.quality, step.relative, guess, context_.last_turn, context_.reach,
-                         context_.quality);
+                         quality());
   if (!step.relative.matrix().allFinite()) {  // never chain NaN: keep the guess, say so
     step.relative = guess;
     step.converged = false;

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -41,8 +42,8 @@ struct StepContext {
   /// The sensor draws rings (a spinning lidar, sensor_kind.hpp): an answer without translation needs
   /// confirming (check_unconfirmed_no_motion), and the points above the horizon are asked (`sensor_frame`)
   bool rings = true;
-  /// The step's checks, with the platform's tolerance (platform_tolerance)
-  QualitySettings quality;
+  /// The step's checks, with the platform's tolerance (platform_tolerance); unset: OdometrySettings'
+  std::optional<QualitySettings> quality;
 };
 
 /// The matcher and sampler of one worker, and the wide-basin matcher it recovers with.
@@ -113,6 +114,9 @@ class StepWorker {
     Eigen::Isometry3d relative;
     double fit_ratio = 0.0;
   };
+
+  /// The checks of this step (StepContext::quality).
+  const QualitySettings& quality() const { return context_.quality ? *context_.quality : settings_.quality; }
 
   std::unique_ptr<Matcher> matcher_;
   /// What recovers an untrusted step: the matcher with its wide basin (mlndt, fbmlndt), else the

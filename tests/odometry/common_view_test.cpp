@@ -140,5 +140,58 @@ TEST(CommonView, TheCutKeepsWhatTheViewSees) {
   }
 }
 
+// A solid-state lidar sees its field of view: the circle less the largest gap between its azimuths,
+// widened by a degree on each side; a spinning lidar (or a solid-state one whose gaps are all under half
+// the circle) sees all of it.
+TEST(CommonView, ASolidStateScanSeesItsFieldOfView) {
+  PointCloud avia;  // 70° wide, centred 10° left of x, wrapping nothing
+  for (int a = -25; a <= 45; ++a)
+    for (const double e : {-30.0, 0.0, 30.0}) avia.push_back(polar(20.0, e, a));
+  const SensorView view = sensor_view(avia, SensorKind::solid_state);
+  EXPECT_NEAR(view.azimuth_centre, 10.0 * kRadPerDeg, 1e-6);
+  EXPECT_NEAR(view.azimuth_half_width, 36.0 * kRadPerDeg, 1e-6);
+  EXPECT_TRUE(view.sees(polar(19.0, 0.0, 45.5).cast<double>()));
+  EXPECT_FALSE(view.sees(polar(19.0, 0.0, 46.5).cast<double>()));
+  EXPECT_FALSE(view.sees(polar(19.0, 0.0, -26.5).cast<double>()));
+  EXPECT_FALSE(view.sees(polar(19.0, 0.0, 190.0).cast<double>())) << "behind the sensor";
+  EXPECT_TRUE(sensor_view(avia).sees(polar(19.0, 0.0, 190.0).cast<double>())) << "a spinning lidar's view";
+  // Across ±180°: a sensor looking backwards.
+  PointCloud backwards;
+  for (int a = 150; a <= 210; ++a) backwards.push_back(polar(20.0, 0.0, a));
+  const SensorView back = sensor_view(backwards, SensorKind::solid_state);
+  EXPECT_TRUE(back.sees(polar(19.0, 0.0, 180.0).cast<double>()));
+  EXPECT_TRUE(back.sees(polar(19.0, 0.0, -155.0).cast<double>()));
+  EXPECT_FALSE(back.sees(polar(19.0, 0.0, 0.0).cast<double>()));
+  // Gaps all under half the circle: the whole of it.
+  PointCloud wide;
+  for (int a = -110; a <= 110; a += 2) wide.push_back(polar(20.0, 0.0, a));
+  EXPECT_GE(sensor_view(wide, SensorKind::solid_state).azimuth_half_width, kPi);
+}
+
+// The cut keeps exactly what a field of view sees, from a turned and shifted guess.
+TEST(CommonView, TheCutKeepsWhatAFieldOfViewSees) {
+  Rng rng(11);
+  PointCloud cloud;
+  for (int i = 0; i < 20000; ++i)
+    cloud.push_back(Eigen::Vector3f(static_cast<float>(rng.uniform(-60.0, 60.0)),
+                                    static_cast<float>(rng.uniform(-60.0, 60.0)),
+                                    static_cast<float>(rng.uniform(-30.0, 30.0))));
+  Eigen::Isometry3d guess = Eigen::Isometry3d::Identity();
+  guess.linear() = Eigen::AngleAxisd(0.4, Eigen::Vector3d(0.1, 0.2, 1.0).normalized()).toRotationMatrix();
+  guess.translation() = Eigen::Vector3d(-3.0, 2.0, 0.2);
+  for (const auto& [centre, half] : {std::pair{0.2, 0.6}, std::pair{3.0, 0.3}, std::pair{-1.5, 2.0}}) {
+    SCOPED_TRACE(std::to_string(centre) + " ± " + std::to_string(half));
+    SensorView view;
+    view.min_slope = -0.8, view.max_slope = 0.8, view.max_range = 55.0;
+    view.azimuth_centre = centre, view.azimuth_half_width = half;
+    std::size_t expected = 0;
+    for (const Eigen::Vector3f& p : cloud.points()) expected += view.sees(guess.inverse() * p.cast<double>());
+    const PointCloud reference = common_view(cloud, SensorView{}, PointCloud(), view, guess).first;
+    ASSERT_EQ(reference.size(), expected);
+    EXPECT_GT(expected, 0u);
+    EXPECT_LT(expected, cloud.size() / 2);
+  }
+}
+
 }  // namespace
 }  // namespace sextant

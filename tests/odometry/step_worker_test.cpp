@@ -35,12 +35,14 @@ OdometrySettings scripted_settings(const std::map<double, Scripted>& script,
 
 /// A step from `guess` metres forward whose first registration answers `first` (not trusted), recovered
 /// from the guess and from no motion with `from_guess` and `from_no_motion` as the wide basin's answers;
-/// `reach`: how far the platform could depart from the guess (first_try).
+/// `reach`: how far the platform could depart from the guess (first_try); `from_rivals`: what the
+/// registration answers from where a rival ended (StepWorker::settle_rivals).
 OdometryStep scripted_step(double guess, const Scripted& first, const Scripted& from_guess,
                            const Scripted& from_no_motion,
-                           double reach = std::numeric_limits<double>::infinity()) {
-  const OdometrySettings s =
-      scripted_settings({{guess, first}}, {{guess, from_guess}, {0.0, from_no_motion}});
+                           double reach = std::numeric_limits<double>::infinity(),
+                           std::map<double, Scripted> from_rivals = {}) {
+  from_rivals.emplace(guess, first);
+  const OdometrySettings s = scripted_settings(from_rivals, {{guess, from_guess}, {0.0, from_no_motion}});
   odometry_detail::StepWorker worker(s);
   const PointCloud reference = scripted_cloud(), input = scripted_cloud();
   odometry_detail::StepContext context;
@@ -51,9 +53,11 @@ OdometryStep scripted_step(double guess, const Scripted& first, const Scripted& 
   return step;
 }
 
-/// The step from the guess 8.6 m forward, whose first registration matches too little (30 %).
+/// The step from the guess 8.6 m forward, whose first registration matches too little (30 %); the
+/// registration from 7.15 m, where a rival ends, stays there.
 OdometryStep recovered(const Scripted& from_guess, const Scripted& from_no_motion) {
-  return scripted_step(8.6, {7.16, 0.3, 0.97}, from_guess, from_no_motion);
+  return scripted_step(8.6, {7.16, 0.3, 0.97}, from_guess, from_no_motion,
+                       std::numeric_limits<double>::infinity(), {{7.15, {7.15, 0.9, 0.97}}});
 }
 
 // The wide basin from the guess finds the right pose (8.16 m) and one 1.01 m short of it (7.15 m),
@@ -66,6 +70,42 @@ TEST(StepWorker, ReachingADisputedPoseAgainDoesNotSettleTheDispute) {
   EXPECT_FALSE(step.trusted());
   EXPECT_NE(step.quality.reason.find("ambiguous"), std::string::npos) << step.quality.reason;
   EXPECT_EQ(step.recovery, "least_suspect");
+}
+
+// A rival is a second answer only where the registration ends: the first registration ends at 5.0 m with
+// a rival 1.5 m on that fits about as well (ambiguous); registered again from the rival, it comes back
+// to 5.05 m, so the rival was no second minimum (a pyramid's run stopped where its coarse cells stop
+// telling poses apart), and the answer stands. Where the registration from the rival stays there, the
+// two remain two answers and the step is not trusted.
+TEST(StepWorker, ARivalTheRegistrationBringsBackIsNoSecondAnswer) {
+  const auto first_try = [](const Scripted& from_rival) {
+    const OdometrySettings s =
+        scripted_settings({{5.0, {5.0, 0.9, 1.0, 6.5, 1.02}}, {6.5, from_rival}}, {{5.0, {5.0, 0.9, 1.0}}});
+    odometry_detail::StepWorker worker(s);
+    odometry_detail::StepContext context;
+    context.quality = s.quality;
+    const PointCloud reference = scripted_cloud(), input = scripted_cloud();
+    return worker.first_try(reference, input, metres_ahead(5.0), 1, context);
+  };
+  const OdometryStep settled = first_try({5.05, 0.9, 1.0});
+  EXPECT_TRUE(settled.trusted()) << settled.quality.reason;
+  EXPECT_NEAR(settled.relative.translation().x(), 5.0, 1e-12);
+  const OdometryStep two = first_try({6.5, 0.9, 1.02});
+  EXPECT_FALSE(two.trusted());
+  EXPECT_TRUE(two.quality.ambiguous) << two.quality.reason;
+  // A platform whose wrong step is 0.3 m: the rival brought back 5 cm away is still the same answer, one
+  // brought back 0.4 m away is not.
+  const auto walking = [](double back_to) {
+    const OdometrySettings s = scripted_settings({{0.2, {0.2, 0.9, 1.0, 0.7, 1.02}}, {0.7, {back_to, 0.9, 1.0}}},
+                                                 {{0.2, {0.2, 0.9, 1.0}}});
+    odometry_detail::StepWorker worker(s);
+    odometry_detail::StepContext context;
+    context.quality = platform_tolerance(s.quality, Platform::handheld, std::nullopt);
+    const PointCloud reference = scripted_cloud(), input = scripted_cloud();
+    return worker.first_try(reference, input, metres_ahead(0.2), 1, context);
+  };
+  EXPECT_TRUE(walking(0.25).trusted());
+  EXPECT_FALSE(walking(0.6).trusted());
 }
 
 // The control: without the dispute (the wide basin from the guess finds the short pose alone, with too
