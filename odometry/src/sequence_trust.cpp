@@ -77,6 +77,17 @@ void check_reachable_motion(RegistrationQuality& quality, const Eigen::Isometry3
       departure, reach);
 }
 
+double fit_bar(double max_fit_ratio, std::optional<double> median_fit) {
+  return median_fit && *median_fit > 1.0 ? max_fit_ratio * *median_fit : max_fit_ratio;
+}
+
+std::optional<double> SequenceTrust::median_fit() const {
+  if (trusted_.size() < settings_.min_history) return std::nullopt;
+  const double fit = median_of(trusted_, [](const RegistrationQuality& q) { return q.fit_ratio; });
+  if (!(fit > 0.0)) return std::nullopt;
+  return fit;
+}
+
 void SequenceTrust::record(const RegistrationQuality& quality) {
   if (!quality.trusted()) return;
   trusted_.push_back(quality);

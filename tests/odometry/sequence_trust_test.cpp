@@ -62,6 +62,43 @@ TEST(SequenceTrust, WindowForgetsOldSteps) {
   EXPECT_TRUE(q.trusted()) << q.reason;
 }
 
+// The fit bar in the sequence's units: its trusted steps' median fit, from the third on, raises the
+// absolute bar of 1.3 by that factor where the right steps fit worse than predicted, and never lowers it.
+TEST(SequenceTrust, TheFitBarFollowsTheFitOfTheTrustedSteps) {
+  SequenceTrust sequence;
+  EXPECT_FALSE(sequence.median_fit()) << "no history";
+  sequence.record(trusted(0.9, 1.12));
+  sequence.record(trusted(0.9, 1.08));
+  EXPECT_FALSE(sequence.median_fit()) << "fewer than min_history";
+  RegistrationQuality untrusted = trusted(0.9, 1.6);
+  untrusted.trust = Trust::kSuspect;
+  sequence.record(untrusted);  // ignored
+  sequence.record(trusted(0.9, 1.10));
+  ASSERT_TRUE(sequence.median_fit());
+  EXPECT_DOUBLE_EQ(*sequence.median_fit(), 1.10);
+  EXPECT_NEAR(fit_bar(1.3, sequence.median_fit()), 1.43, 1e-12);
+  EXPECT_DOUBLE_EQ(fit_bar(1.3, std::nullopt), 1.3);
+  EXPECT_DOUBLE_EQ(fit_bar(1.3, 0.85), 1.3) << "a scene that fits better than predicted keeps the bar";
+  // With the bar, a right step of a sparse sensor (1.35) passes the absolute check and a slid one (1.6,
+  // 1.45 × its neighbours) does not.
+  QualitySettings quality;
+  quality.max_fit_ratio = fit_bar(quality.max_fit_ratio, sequence.median_fit());
+  RegistrationResult r;
+  r.converged = true;
+  r.why = Termination::kConverged;
+  r.H = Matrix6d::Identity();
+  r.input_points = 100;
+  r.matched_points = 90;
+  r.predicted_matched_score = 3.0;
+  PointCloud input;
+  input.push_back(Eigen::Vector3f(10.0f, 0.0f, 0.0f));
+  r.mean_matched_score = 3.0 * 1.35;
+  EXPECT_TRUE(assess_registration(r, input, quality).trusted());
+  EXPECT_FALSE(assess_registration(r, input, QualitySettings{}).trusted()) << "above the plain 1.3";
+  r.mean_matched_score = 3.0 * 1.6;
+  EXPECT_EQ(assess_registration(r, input, quality).trust, Trust::kSuspect);
+}
+
 // No motion is what a lidar's rings always offer: without a trusted motion to confirm it, an answer
 // within the ambiguity distance of no motion is believed only when it fits as two scans from one
 // place do (fit ≤ 1.1 × the prediction). Moving answers, good fits and untrusted steps are left as they are.
