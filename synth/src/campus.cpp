@@ -66,8 +66,12 @@ Campus generate_campus(const CampusSettings& settings, std::uint64_t seed) {
       start_leg_length(settings.world, settings.trajectory) + settings.world.road_half_width;
   auto world = std::make_shared<World>(build_world(settings.world, clearance, world_rng));
   Rng route_rng(mix(seed, kRoute));
-  for (const RoutePoint& p : sample_route(settings.world, settings.trajectory, route_rng))
-    campus.ground_truth.push_back(ground_following_pose(*world, settings.trajectory, p));
+  for (const RoutePoint& p : sample_route(settings.world, settings.trajectory, route_rng)) {
+    Eigen::Isometry3d pose = ground_following_pose(*world, settings.trajectory, p);
+    if (settings.trajectory.platform == "handheld")
+      pose.linear() = pose.linear() * handheld_sway(settings.trajectory, campus.ground_truth.size());
+    campus.ground_truth.push_back(pose);
+  }
   campus.world = std::move(world);
   for (std::size_t i = 0; i < campus.ground_truth.size(); ++i)
     campus.stamps.push_back(static_cast<double>(i) * settings.trajectory.scan_period);

@@ -158,4 +158,18 @@ Eigen::Isometry3d ground_following_pose(const World& world, const TrajectorySett
   return T;
 }
 
+Eigen::Matrix3d handheld_sway(const TrajectorySettings& trajectory, std::size_t index) {
+  if (trajectory.platform != "handheld") return Eigen::Matrix3d::Identity();
+  const double i = static_cast<double>(index);
+  const double yaw =
+      trajectory.look_around_deg * kRadPerDeg * std::sin(2.0 * kPi * i / trajectory.look_around_scans);
+  const double sway = trajectory.sway_deg * kRadPerDeg;
+  const double roll = sway * std::sin(2.0 * kPi * i / 5.3),
+               pitch = sway * std::sin(2.0 * kPi * i / 7.1 + 1.0);
+  return (Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()) *
+          Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitY()) *
+          Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitX()))
+      .toRotationMatrix();
+}
+
 }  // namespace sextant::synth

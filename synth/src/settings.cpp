@@ -77,6 +77,10 @@ bool TrajectorySettings::valid(std::string* why) const {
   c.require(track > 0.0, "track must be positive");
   c.require(scan_period > 0.0, "scan_period must be positive");
   c.require(lateral_wander >= 0.0 && lateral_wander <= 2.0, "lateral_wander must be in [0, 2] m");
+  c.require(platform == "car" || platform == "handheld", "platform must be car or handheld");
+  c.require(sway_deg >= 0.0 && sway_deg <= 30.0, "sway_deg must be in [0, 30]");
+  c.require(look_around_deg >= 0.0 && look_around_deg <= 90.0, "look_around_deg must be in [0, 90]");
+  c.require(look_around_scans >= 2.0, "look_around_scans must be at least 2");
   return c.ok();
 }
 
@@ -94,6 +98,10 @@ bool SensorSettings::valid(std::string* why) const {
   c.require(body_length >= 0.0, "body_length must not be negative");
   c.require(body_width >= 0.0, "body_width must not be negative");
   c.require(body_top < 0.0, "body_top must be below the scanner (negative)");
+  c.require(pattern == "spinning" || pattern == "rosette", "pattern must be spinning or rosette");
+  c.require(rosette_rays >= 1, "rosette_rays must be at least 1");
+  c.require(fov_horizontal_deg > 0.0 && fov_horizontal_deg < 180.0, "fov_horizontal_deg must be in (0, 180)");
+  c.require(fov_vertical_deg > 0.0 && fov_vertical_deg < 180.0, "fov_vertical_deg must be in (0, 180)");
   return c.ok();
 }
 

@@ -31,4 +31,11 @@ std::vector<RoutePoint> sample_route(const WorldSettings& world, const Trajector
 Eigen::Isometry3d ground_following_pose(const World& world, const TrajectorySettings& trajectory,
                                         const RoutePoint& point);
 
+/// The sensor's turn, for a hand-held platform, at scan `index` of the route: a yaw swing of
+/// look_around_deg about the heading with a period of look_around_scans (the person looks around: at most
+/// 2π · look_around_deg / look_around_scans per scan, 11° with the defaults), and a sway in roll and
+/// pitch of sway_deg over periods of 5.3 and 7.1 scans (the gait), applied in the sensor's frame. The
+/// identity for a car.
+Eigen::Matrix3d handheld_sway(const TrajectorySettings& trajectory, std::size_t index);
+
 }  // namespace sextant::synth

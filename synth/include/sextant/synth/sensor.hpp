@@ -1,7 +1,9 @@
 #pragma once
 // The simulated 3D laser: a 2D scanner whose scan plane is vertical, rotated about the
 // vertical axis (yaw scan) as on the thesis' robot. Rays converge at the rotation axis, so
-// the density is high near the vehicle and falls with range (thesis figs 2.3–2.5).
+// the density is high near the vehicle and falls with range (thesis figs 2.3–2.5). Or
+// (SensorSettings::pattern "rosette") a solid-state lidar: a non-repetitive rosette over a fixed
+// field of view, another part of it at every scan (issue 62).
 #include <cstdint>
 #include <vector>
 

@@ -42,6 +42,13 @@ struct TrajectorySettings {
   double track = 0.8;            ///< distance used to sample the ground for roll [m]
   double scan_period = 10.0;     ///< time between stop-and-go scans [s]
   double lateral_wander = 0.6;   ///< amplitude of the slow sideways wander on the road [m]
+  /// "car": the sensor stands level on the terrain, facing the way it goes; "handheld": carried on foot,
+  /// it sways in roll and pitch and looks around in yaw about the way it goes (a person's gait and gaze:
+  /// handheld_sway in route.hpp)
+  std::string platform = "car";
+  double sway_deg = 3.0;            ///< handheld: amplitude of the roll and pitch sway [deg]
+  double look_around_deg = 40.0;    ///< handheld: amplitude of the yaw swing about the heading [deg]
+  double look_around_scans = 23.0;  ///< handheld: period of that swing [scans]
 
   bool valid(std::string* why) const;
 };
@@ -57,6 +64,13 @@ struct SensorSettings {
   double body_length = 1.0;   ///< vehicle body below the scanner, causing self-hits [m]
   double body_width = 0.7;    ///< [m]
   double body_top = -0.5;     ///< body top relative to the scanner [m]
+  /// "spinning": the scan lines above, turned about the vertical; "rosette": a solid-state lidar's
+  /// non-repetitive rosette over a fixed field of view facing x (a Livox Avia's, by default), which
+  /// draws another part of the rosette at every scan (simulate_scan)
+  std::string pattern = "spinning";
+  int rosette_rays = 6000;           ///< rosette: rays per scan [-]
+  double fov_horizontal_deg = 70.4;  ///< rosette: field of view about the vertical [deg]
+  double fov_vertical_deg = 77.2;    ///< rosette: field of view in elevation [deg]
 
   bool valid(std::string* why) const;
 };

@@ -42,6 +42,10 @@ void visit(TrajectorySettings& s, Visitor&& v) {
   v("track", s.track);
   v("scan_period", s.scan_period);
   v("lateral_wander", s.lateral_wander);
+  v("platform", s.platform);
+  v("sway_deg", s.sway_deg);
+  v("look_around_deg", s.look_around_deg);
+  v("look_around_scans", s.look_around_scans);
 }
 
 template <class Visitor>
@@ -56,6 +60,10 @@ void visit(SensorSettings& s, Visitor&& v) {
   v("body_length", s.body_length);
   v("body_width", s.body_width);
   v("body_top", s.body_top);
+  v("pattern", s.pattern);
+  v("rosette_rays", s.rosette_rays);
+  v("fov_horizontal_deg", s.fov_horizontal_deg);
+  v("fov_vertical_deg", s.fov_vertical_deg);
 }
 
 template <class Visitor>
