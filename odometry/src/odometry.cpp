@@ -294,10 +294,10 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
     StepContext context;
     context.rings = result.sensor.kind == SensorKind::spinning;
     context.quality = platform_tolerance(s.quality, s.platform, scale.typical_step());
-    // The fit bar measured on right poses that fit about as predicted: a sensor whose right steps fit
-    // worse (sparse cells: a Gaussian estimated from a few points predicts new ones poorly) has it raised
-    // by the median fit of its trusted steps, never lowered (fit_bar).
-    context.quality->max_fit_ratio = fit_bar(s.quality.max_fit_ratio, trust.median_fit());
+    // The fit bar was measured on spinning lidars, whose right poses fit about as predicted; another
+    // sensor's is in the units of its own right steps: raised by the median fit of its trusted steps,
+    // never lowered (fit_bar).
+    if (!context.rings) context.quality->max_fit_ratio = fit_bar(s.quality.max_fit_ratio, trust.median_fit());
     if (s.guess == OdometryGuess::constant_velocity) {
       guess = scale_motion(last_motion, time_ratio(dataset, first + k));
       context.search = !any_trusted || (s.recover && !steps.back().trusted());

@@ -132,6 +132,18 @@ def test_bad_ranges_and_modes_raise(mulran):
         sextant.odometry(mulran, scans=2, max_acceleration=-1.0)
 
 
+def test_the_sensor_and_platform_are_measured_or_declared(python_run, mulran):
+    assert python_run.sensor == "spinning"  # MulRan's OS1-64 covers most of the azimuth circle
+    assert python_run.tolerance_m == pytest.approx(1.0)  # keyframes metres apart: a car's
+    declared = sextant.odometry(mulran, scans=3, sensor="solid_state", platform="handheld")
+    assert declared.sensor == "solid_state"
+    assert declared.tolerance_m == pytest.approx(0.3)
+    with pytest.raises(sextant.InputError, match="unknown sensor 'mems'"):
+        sextant.odometry(mulran, scans=2, sensor="mems")
+    with pytest.raises(sextant.InputError, match="unknown platform 'drone'"):
+        sextant.odometry(mulran, scans=2, platform="drone")
+
+
 def test_bad_input_raises(data_dir, tmp_path):
     cloud = sextant.read_cloud(data_dir / "velodyne_pair" / "fast_gicp_251370668.pcd")
     with pytest.raises(sextant.InputError, match="unknown map mode"):
