@@ -48,7 +48,7 @@ SensorDetection detect_sensor(const PointCloud& scan) {
   int covered = 0;
   for (const std::size_t c : counts) covered += static_cast<double>(c) >= enough ? 1 : 0;
   d.azimuth_coverage = static_cast<double>(covered) / kAzimuthSectors;
-  d.kind = d.azimuth_coverage >= 0.5 ? SensorKind::spinning : SensorKind::solid_state;
+  d.kind = d.azimuth_coverage >= kSpinningCoverage ? SensorKind::spinning : SensorKind::solid_state;
   return d;
 }
 

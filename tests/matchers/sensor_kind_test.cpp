@@ -33,11 +33,13 @@ TEST(SensorKind, AWholeCircleIsSpinningAndASectorSolidState) {
   const SensorDetection avia = detect_sensor(sector(-35, 35, 400));  // a 70° field of view
   EXPECT_EQ(avia.kind, SensorKind::solid_state);
   EXPECT_NEAR(avia.azimuth_coverage, 70.0 / 360.0, 1.5 / kAzimuthSectors);
-  // A spinning lidar whose rear third the platform hides still covers more than half.
+  // A spinning lidar whose rear third the platform hides, and a rotating 2D scanner's half circle.
   EXPECT_EQ(detect_sensor(sector(-120, 120, 1200)).kind, SensorKind::spinning);
-  // Half the circle is the line: a 170° sector is not a spinning lidar, a 190° one is.
-  EXPECT_EQ(detect_sensor(sector(-85, 85, 900)).kind, SensorKind::solid_state);
-  EXPECT_EQ(detect_sensor(sector(-95, 95, 900)).kind, SensorKind::spinning);
+  EXPECT_EQ(detect_sensor(sector(-90, 90, 900)).kind, SensorKind::spinning);
+  // The widest solid-state views (120°) are solid-state; the line lies at 40 % (144°).
+  EXPECT_EQ(detect_sensor(sector(-60, 60, 900)).kind, SensorKind::solid_state);
+  EXPECT_EQ(detect_sensor(sector(-65, 65, 900)).kind, SensorKind::solid_state);
+  EXPECT_EQ(detect_sensor(sector(-80, 80, 900)).kind, SensorKind::spinning);
 }
 
 TEST(SensorKind, AFewStrayReturnsDoNotMakeASectorSeen) {

@@ -382,7 +382,7 @@ void add_match_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--seed", o->seed, "Seed of the sampler's random choices")->capture_default_str();
   cmd->add_option("--sensor", o->sensor,
                   "The lidar: spinning (a trusted answer is confirmed by the points above the horizon), "
-                  "solid_state (no rings: it is not), or auto (spinning when the input covers at least half "
+                  "solid_state (no rings: it is not), or auto (spinning when the input covers at least 40 % "
                   "of the azimuth circle)")
       ->capture_default_str();
   cmd->add_option("--jobs,-j", o->jobs,

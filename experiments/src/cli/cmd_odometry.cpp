@@ -412,7 +412,7 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
          "--sensor", o->sensor,
          "The lidar: spinning (rings over 360°: the checks of an answer without translation and of "
          "the points above the horizon apply), solid_state (a fixed field of view, no rings: they do "
-         "not), or auto (measured: spinning when the first scan covers at least half of the azimuth "
+         "not), or auto (measured: spinning when the first scan covers at least 40 % of the azimuth "
          "circle)")
       ->capture_default_str();
   cmd->add_option("--platform", o->platform,

@@ -33,10 +33,15 @@ struct SensorDetection {
 
 /// Sectors of the azimuth circle detect_sensor counts (5° each).
 inline constexpr int kAzimuthSectors = 72;
+/// The line between the two kinds: between a third of the circle (the widest solid-state view) and half
+/// of it (the narrowest rotating scanner) [fraction]
+inline constexpr double kSpinningCoverage = 0.4;
 
-/// The kind of sensor of a scan in its own frame: spinning when its points cover at least half of
-/// the azimuth circle, solid_state otherwise. A spinning lidar covers all of it but what its platform
-/// and the nearest walls hide; a solid-state one its field of view, well under half. An empty scan is
+/// The kind of sensor of a scan in its own frame: spinning when its points cover at least
+/// kSpinningCoverage of the azimuth circle, solid_state otherwise. A spinning lidar covers all of it but
+/// what its platform and the nearest walls hide (MulRan's OS1-64: 82 %), a rotating 2D scanner at least
+/// half (3DTK's rotating SICK: 50 %); a solid-state one its field of view, at most about 120° (a third:
+/// the Livox Avia's 70°, 21 %). An empty scan is
 /// taken as spinning with coverage 0 (no evidence either way: the checks of the kind that has them).
 SensorDetection detect_sensor(const PointCloud& scan);
 
