@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include <tuple>
@@ -113,17 +114,31 @@ TEST(CommonView, APlanarScannerSeesItsPlaneFromASlightlyTiltedGuess) {
 
 // The cut (single precision, no root) keeps exactly the points SensorView::sees keeps, for bands
 // closed, open below, open above and open both ways, from a turned and shifted guess.
-TEST(CommonView, TheCutKeepsWhatTheViewSees) {
-  constexpr double kInf = std::numeric_limits<double>::infinity();
-  Rng rng(7);
+/// 20,000 points spread over a box 120 × 120 × 60 m about the origin.
+PointCloud random_box(std::uint64_t seed) {
+  Rng rng(seed);
   PointCloud cloud;
   for (int i = 0; i < 20000; ++i)
     cloud.push_back(Eigen::Vector3f(static_cast<float>(rng.uniform(-60.0, 60.0)),
                                     static_cast<float>(rng.uniform(-60.0, 60.0)),
                                     static_cast<float>(rng.uniform(-30.0, 30.0))));
+  return cloud;
+}
+
+/// A guess turned `angle` about a tilted axis and shifted by `shift`.
+Eigen::Isometry3d turned_and_shifted(double angle, const Eigen::Vector3d& axis,
+                                     const Eigen::Vector3d& shift) {
   Eigen::Isometry3d guess = Eigen::Isometry3d::Identity();
-  guess.linear() = Eigen::AngleAxisd(0.3, Eigen::Vector3d(0.2, -0.1, 1.0).normalized()).toRotationMatrix();
-  guess.translation() = Eigen::Vector3d(4.0, -2.0, 0.5);
+  guess.linear() = Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+  guess.translation() = shift;
+  return guess;
+}
+
+TEST(CommonView, TheCutKeepsWhatTheViewSees) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const PointCloud cloud = random_box(7);
+  const Eigen::Isometry3d guess =
+      turned_and_shifted(0.3, Eigen::Vector3d(0.2, -0.1, 1.0), Eigen::Vector3d(4.0, -2.0, 0.5));
   for (const auto& [low, high] : {std::pair{-0.3, 0.4}, std::pair{-kInf, 0.2}, std::pair{-0.1, kInf},
                                   std::pair{-kInf, kInf}, std::pair{0.1, 0.5}, std::pair{-0.6, -0.2}}) {
     SCOPED_TRACE(std::to_string(low) + " … " + std::to_string(high));
@@ -170,15 +185,9 @@ TEST(CommonView, ASolidStateScanSeesItsFieldOfView) {
 
 // The cut keeps exactly what a field of view sees, from a turned and shifted guess.
 TEST(CommonView, TheCutKeepsWhatAFieldOfViewSees) {
-  Rng rng(11);
-  PointCloud cloud;
-  for (int i = 0; i < 20000; ++i)
-    cloud.push_back(Eigen::Vector3f(static_cast<float>(rng.uniform(-60.0, 60.0)),
-                                    static_cast<float>(rng.uniform(-60.0, 60.0)),
-                                    static_cast<float>(rng.uniform(-30.0, 30.0))));
-  Eigen::Isometry3d guess = Eigen::Isometry3d::Identity();
-  guess.linear() = Eigen::AngleAxisd(0.4, Eigen::Vector3d(0.1, 0.2, 1.0).normalized()).toRotationMatrix();
-  guess.translation() = Eigen::Vector3d(-3.0, 2.0, 0.2);
+  const PointCloud cloud = random_box(11);
+  const Eigen::Isometry3d guess =
+      turned_and_shifted(0.4, Eigen::Vector3d(0.1, 0.2, 1.0), Eigen::Vector3d(-3.0, 2.0, 0.2));
   for (const auto& [centre, half] : {std::pair{0.2, 0.6}, std::pair{3.0, 0.3}, std::pair{-1.5, 2.0}}) {
     SCOPED_TRACE(std::to_string(centre) + " ± " + std::to_string(half));
     SensorView view;
