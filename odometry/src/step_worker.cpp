@@ -243,8 +243,7 @@ void StepWorker::confirm_above_horizon(OdometryStep& step, const PointCloud& ref
   const bool without_translation = answer_without_translation(step.relative, quality());
   if (!without_translation && !context_.unbounded && !doubted) return;
   AboveHorizon said = register_above_horizon(local(reference, built), input, step.relative, quality());
-  if (without_translation && !said.telling(step.relative, step.quality.fit_ratio, quality()) &&
-      recovery_) {
+  if (without_translation && !said.telling(step.relative, step.quality.fit_ratio, quality()) && recovery_) {
     if (&reference != recovery_reference_ && !recovery_->share_reference(*matcher_))
       recovery_->set_reference(reference);
     recovery_reference_ = &reference;
@@ -279,11 +278,9 @@ OdometryStep StepWorker::to_step(const PairMatch& m, const PointCloud& reference
   step.quality = m.result.quality;
   // No motion is the answer a lidar's rings always offer: confirmed only by a fit as of one place,
   // where no motion is known yet or the guess says the vehicle moves (sequence_trust.hpp).
-  if (context_.rings &&
-      (context_.search || far_apart(guess, Eigen::Isometry3d::Identity(), quality())))
+  if (context_.rings && (context_.search || far_apart(guess, Eigen::Isometry3d::Identity(), quality())))
     check_unconfirmed_no_motion(step.quality, step.relative, quality());
-  check_reachable_motion(step.quality, step.relative, guess, context_.last_turn, context_.reach,
-                         quality());
+  check_reachable_motion(step.quality, step.relative, guess, context_.last_turn, context_.reach, quality());
   if (!step.relative.matrix().allFinite()) {  // never chain NaN: keep the guess, say so
     step.relative = guess;
     step.converged = false;

@@ -96,8 +96,8 @@ TEST(StepWorker, ARivalTheRegistrationBringsBackIsNoSecondAnswer) {
   // A platform whose wrong step is 0.3 m: the rival brought back 5 cm away is still the same answer, one
   // brought back 0.4 m away is not.
   const auto walking = [](double back_to) {
-    const OdometrySettings s = scripted_settings({{0.2, {0.2, 0.9, 1.0, 0.7, 1.02}}, {0.7, {back_to, 0.9, 1.0}}},
-                                                 {{0.2, {0.2, 0.9, 1.0}}});
+    const OdometrySettings s = scripted_settings(
+        {{0.2, {0.2, 0.9, 1.0, 0.7, 1.02}}, {0.7, {back_to, 0.9, 1.0}}}, {{0.2, {0.2, 0.9, 1.0}}});
     odometry_detail::StepWorker worker(s);
     odometry_detail::StepContext context;
     context.quality = platform_tolerance(s.quality, Platform::handheld, std::nullopt);
