@@ -9,6 +9,7 @@
 #include "run_memo.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/matchers/registration_quality.hpp"
+#include "sextant/matchers/sensor_kind.hpp"
 
 namespace sextant {
 
@@ -216,26 +217,42 @@ RegistrationResult MlndtMatcher::align(const PointCloud& input, const Eigen::Iso
   if (!precision_layers().empty()) optimizer.epsilon *= kPyramidTolerance;
   // A run this input already made on this model (run_memo.hpp) is not made again.
   runs_->keep_only(model_, input);
-  std::vector<const RegistrationResult*> known(runs.size());
-  for (std::size_t k = 0; k < runs.size(); ++k)
-    known[k] = runs_->find(runs[k].first->stage_label(0), runs[k].second);
-  reused_runs_ = static_cast<int>(runs.size() - std::count(known.begin(), known.end(), nullptr));
-  std::vector<RegistrationResult> results(runs.size());
-  threads_->for_each(runs.size(), [&](std::size_t k) {
-    results[k] = known[k] ? *known[k] : optimize(*runs[k].first, runs[k].second, optimizer);
-  });
-  for (std::size_t k = 0; k < runs.size(); ++k)
-    if (!known[k]) runs_->add(runs[k].first->stage_label(0), runs[k].second, results[k]);
+  reused_runs_ = 0;
+  std::vector<RegistrationResult> results;
+  std::vector<bool> passes;
+  const QualitySettings checks;
+  const auto make_runs = [&](std::size_t from) {
+    std::vector<const RegistrationResult*> known(runs.size() - from);
+    for (std::size_t k = from; k < runs.size(); ++k)
+      known[k - from] = runs_->find(runs[k].first->stage_label(0), runs[k].second);
+    reused_runs_ += static_cast<int>(known.size() - std::count(known.begin(), known.end(), nullptr));
+    results.resize(runs.size());
+    threads_->for_each(known.size(), [&](std::size_t i) {
+      const std::size_t k = from + i;
+      results[k] = known[i] ? *known[i] : optimize(*runs[k].first, runs[k].second, optimizer);
+    });
+    for (std::size_t k = from; k < runs.size(); ++k) {
+      if (!known[k - from]) runs_->add(runs[k].first->stage_label(0), runs[k].second, results[k]);
+      passes.push_back(assess_registration(results[k], input, checks).trusted());
+    }
+  };
+  make_runs(0);
+  // Tilted starts (mlndt_global_init.hpp) only when no run passes the trust checks, and for a narrow
+  // view: a view all around brings its own tilt back (sensor_kind.hpp).
+  if (settings_.wide_basin.enabled && std::none_of(passes.begin(), passes.end(), [](bool p) { return p; }) &&
+      detect_sensor(input).kind == SensorKind::solid_state) {
+    const std::size_t level = runs.size();
+    for (const Eigen::Isometry3d& T :
+         wide_basin_tilted_starts(layers, input, initial, settings_.wide_basin, *threads_))
+      runs.emplace_back(&hypothesis, T);
+    if (runs.size() > level) make_runs(level);
+  }
   // A run that passes the trust checks (registration_quality.hpp, default thresholds) wins over one
   // that does not; among equals the lowest final score (same input, same last layer: the scores
   // compare directly), the first of equals. The score alone let the coarse layers' pose win from the
   // reference pose of sparse keyframes (MulRan 164→165: 8 m back to zero motion, fit 1.41, where the
   // unmatched penalty rewards a pose whose lidar rings coincide with the reference's) over the last
   // layer's, which stayed and passes. The others stay as alternatives (ambiguity).
-  const QualitySettings checks;
-  std::vector<bool> passes(results.size());
-  for (std::size_t k = 0; k < results.size(); ++k)
-    passes[k] = assess_registration(results[k], input, checks).trusted();
   std::size_t chosen = 0;
   bool have = false;
   for (std::size_t k = 0; k < results.size(); ++k) {

@@ -58,6 +58,9 @@ WideBasinSettings read_wide_basin_settings(const YAML::Node& node, const std::st
   in.read("yaw_range_deg", s.yaw_range_deg);
   in.read("translation_step", s.translation_step);
   in.read("translation_range", s.translation_range);
+  in.read("tilt_step_deg", s.tilt_step_deg);
+  in.read("tilt_range_deg", s.tilt_range_deg);
+  in.read("tilt_candidates", s.tilt_candidates);
   in.read("sample_points", s.sample_points);
   in.read("candidates", s.candidates);
   in.read("horizon_candidates", s.horizon_candidates);
