@@ -21,11 +21,10 @@
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/time_lag.hpp"
 #include "sextant/eval/verdict.hpp"
-#include "sextant/filters/room_sim_2d.hpp"
-#include "sextant/filters/yaml.hpp"
 #include "sextant/matchers/yaml.hpp"
 #include "simulation/layouts/layouts.hpp"
 #include "simulation/room.hpp"
+#include "simulation/room_sim_2d_settings.hpp"
 #include "simulation/row_keys.hpp"
 
 namespace sextant {

@@ -5,8 +5,8 @@
 
 #include "sextant/experiments/report_model.hpp"
 #include "sextant/experiments/run_row.hpp"
-#include "sextant/filters/room_sim_2d.hpp"
 #include "sextant/matchers/matcher.hpp"
+#include "simulation/room_sim_2d.hpp"
 
 namespace sextant {
 

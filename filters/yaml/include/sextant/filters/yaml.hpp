@@ -14,7 +14,6 @@
 #include "sextant/core/registry.hpp"
 #include "sextant/filters/filter.hpp"
 #include "sextant/filters/plane_slam.hpp"
-#include "sextant/filters/room_sim_2d.hpp"
 
 namespace sextant {
 
@@ -34,11 +33,5 @@ std::unique_ptr<Filter> make_filter(const std::string& name, std::shared_ptr<con
 /// field names of PlaneSlamSettings. The filter's keys are checked now; filter_factory builds it
 /// with them.
 PlaneSlamSettings read_plane_slam_settings(const YAML::Node& node, const std::string& file);
-
-/// Keys: the field names of RoomSim2dSettings.
-RoomSim2dSettings read_room_sim_2d_settings(const YAML::Node& node, const std::string& file);
-
-/// room_sim_matcher_settings() as ML-NDT's YAML keys: `dof: [x, y, yaw]` and three layers.
-YAML::Node room_sim_matcher_defaults();
 
 }  // namespace sextant

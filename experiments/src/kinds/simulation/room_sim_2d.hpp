@@ -9,7 +9,7 @@
 // with R = inverse of the matcher's Hessian restricted to x, y, yaw (eq. 3.50), fed to
 // AckermannScanMatchingEkf (eqs. 3.48–3.52).
 //
-//   RoomSim2dSettings s;                      // or read_room_sim_2d_settings (filters/yaml.hpp)
+//   RoomSim2dSettings s;                      // or read_room_sim_2d_settings (room_sim_2d_settings.hpp)
 //   MlndtMatcher matcher(room_sim_matcher_settings());
 //   Rng rng(seed);
 //   RoomSim2dRun run = run_room_sim_2d(s, *matcher, rng);
@@ -65,7 +65,7 @@ struct RoomSim2dSettings {
 
 /// The ML-NDT settings the simulation needs by default: the library's defaults with x, y, yaw free
 /// and three layers (the fourth layer's cells hold too few points of a few hundred beams); as YAML:
-/// room_sim_matcher_defaults() of filters/yaml.hpp.
+/// room_sim_matcher_defaults() of room_sim_2d_settings.hpp.
 MlndtSettings room_sim_matcher_settings();
 
 /// One range scan at `pose` (x, y, heading) in the sensor frame, points with z = 0. Beams with

@@ -9,9 +9,8 @@
 
 #include "sextant/core/error.hpp"
 #include "sextant/core/pose.hpp"
-#include "sextant/filters/room_sim_2d.hpp"
-#include "sextant/filters/yaml.hpp"
 #include "sextant/matchers/yaml.hpp"
+#include "simulation/room_sim_2d_settings.hpp"
 
 namespace sextant {
 namespace {

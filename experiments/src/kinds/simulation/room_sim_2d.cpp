@@ -1,4 +1,4 @@
-#include "sextant/filters/room_sim_2d.hpp"
+#include "simulation/room_sim_2d.hpp"
 
 #include <algorithm>
 #include <chrono>
