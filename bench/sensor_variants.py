@@ -26,7 +26,7 @@ and the median time per scan. Steps where the reference itself slips sideways mo
 (`sextant eval --car-slip 0.5`: a car cannot; keyframes 33->34 and 34->35) cannot judge at the 1 m
 bar: their trusted wrong steps are counted apart, as bench/variants.sh does.
 
-  [SEEDS="1 2 3 4 5"] bench/sensor_variants.py [build/experiments/sextant]
+  [SEEDS="1 2 3 4 5"] bench/sensor_variants.py [build/app/sextant]
       [path/to/mulran_riverside02] [output folder] [build/python]
 """
 import json
@@ -37,7 +37,7 @@ import sys
 
 import numpy as np
 
-sextant_cli = sys.argv[1] if len(sys.argv) > 1 else "build/experiments/sextant"
+sextant_cli = sys.argv[1] if len(sys.argv) > 1 else "build/app/sextant"
 mulran = sys.argv[2] if len(sys.argv) > 2 else "../shared/data/mulran_riverside02"
 out = sys.argv[3] if len(sys.argv) > 3 else "sensor_variants"
 sys.path.insert(0, sys.argv[4] if len(sys.argv) > 4 else "build/python")

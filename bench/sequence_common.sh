@@ -2,7 +2,7 @@
 # Shared by the real-sequence benchmarks (sequences.sh, sequence_settings.sh): their arguments,
 # checked — [sextant binary] [MulRan folder] [output folder] — and the reading of metrics.json.
 # Sourced from the repository's root with "$@".
-sextant=${1:-build/experiments/sextant}
+sextant=${1:-build/app/sextant}
 mulran=${2:-../shared/data/mulran_riverside02}
 out=${3:-$(mktemp -d)}
 mkdir -p "$out"

@@ -4,7 +4,7 @@
 # changed at a time. Prints, per setting and sequence, the KITTI drift, the ATE, the untrusted steps and
 # the steps more than 1 m or 5° off the reference that say they are trusted (the issue's bar: none).
 #
-#   bench/sequence_settings.sh [build/experiments/sextant] [path/to/mulran_riverside02] [output folder]
+#   bench/sequence_settings.sh [build/app/sextant] [path/to/mulran_riverside02] [output folder]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=bench/sequence_common.sh

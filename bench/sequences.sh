@@ -15,7 +15,7 @@
 # 0.5 m, which a car cannot, counted apart, as bench/variants.sh does). Two last rows score that
 # odometry against the reference.
 #
-#   bench/sequences.sh [build/experiments/sextant] [path/to/mulran_riverside02] [output folder]
+#   bench/sequences.sh [build/app/sextant] [path/to/mulran_riverside02] [output folder]
 #
 # With AVIA=path/to/livox_avia_hkumb (default ../shared/data/livox_avia_hkumb, skipped when absent) the
 # solid-state walk runs too (issue 62): a Livox Avia carried on foot, whose wrong steps are those more

@@ -6,7 +6,7 @@ every 5th k of the first 50 scans. Prints per sensor, axis and angle how many pa
 say trusted, and the mean registration time, searched with the wide basin from the guess (`wide_basin: {}`)
 and with its tilted starts off (`wide_basin: {tilt_candidates: 0}`: yaw x x/y only).
 
-  bench/tilted_guesses.py [build/experiments/sextant] [build/python] [output folder]
+  bench/tilted_guesses.py [build/app/sextant] [build/python] [output folder]
 """
 import os
 import subprocess
@@ -15,7 +15,7 @@ import tempfile
 
 import numpy as np
 
-sextant_cli = sys.argv[1] if len(sys.argv) > 1 else "build/experiments/sextant"
+sextant_cli = sys.argv[1] if len(sys.argv) > 1 else "build/app/sextant"
 sys.path.insert(0, sys.argv[2] if len(sys.argv) > 2 else "build/python")
 out = sys.argv[3] if len(sys.argv) > 3 else tempfile.mkdtemp(prefix="tilted_guesses.")
 import sextant  # noqa: E402  (the module built beside the CLI)

@@ -10,7 +10,7 @@
 # slips sideways more than 0.5 m (`sextant eval --car-slip`: a car cannot; MulRan keyframes 33→34
 # and 34→35) cannot judge at the 1 m bar: its trusted wrong steps are counted apart.
 #
-#   [SEEDS="1 2 3 4 5"] bench/variants.sh [build/experiments/sextant] [path/to/mulran_riverside02] [output folder]
+#   [SEEDS="1 2 3 4 5"] bench/variants.sh [build/app/sextant] [path/to/mulran_riverside02] [output folder]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 # shellcheck source=bench/sequence_common.sh

@@ -5,7 +5,7 @@ find_package(yaml-cpp REQUIRED)
 find_package(fmt REQUIRED)
 find_package(TBB REQUIRED)
 find_package(CLI11 REQUIRED)
-# JSON of the result rows, provenance and metrics (experiments/json.hpp).
+# JSON of the result rows, provenance and metrics (pipeline/json.hpp).
 find_package(nlohmann_json 3.2 REQUIRED)
 find_package(Ceres REQUIRED)
 

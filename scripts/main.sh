@@ -8,4 +8,4 @@ profile="--quick"
 # The Python module (python/, SEXTANT_PYTHON) is built too: pybind11, NumPy and Debian's python3 headers.
 SEXTANT_EXTRA_PACKAGES="python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest \
 ${SEXTANT_EXTRA_PACKAGES:-}" scripts/setup.sh -DSEXTANT_PYTHON=ON
-./build/experiments/sextant reproduce $profile --results results --report report
+./build/app/sextant reproduce $profile --results results --report report

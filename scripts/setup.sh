@@ -9,7 +9,7 @@ packages=(build-essential cmake pkg-config git
           libeigen3-dev libceres-dev libpcl-dev libgeographiclib-dev libyaml-cpp-dev libtbb-dev
           libcli11-dev libfmt-dev libbenchmark-dev libgtest-dev libopenmpi-dev
           libboost-math-dev  # χ², normal, Student-t and binomial distributions (core/chi_square, eval/)
-          nlohmann-json3-dev  # JSON of the result rows, provenance and metrics (experiments/json.hpp)
+          nlohmann-json3-dev  # JSON of the result rows, provenance and metrics (pipeline/json.hpp)
           libnanoflann-dev  # bench/bench_kd_tree.cpp measures ICP's k-d tree against it
           libjs-three)  # three.js for the 3D views (eval/cloud_view.hpp), read at run time
 # Further packages a caller needs (scripts/test.sh: chromium, which renders the report in the tests;

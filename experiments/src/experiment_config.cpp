@@ -7,7 +7,8 @@
 
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
-#include "sextant/experiments/json.hpp"
+#include "sextant/pipeline/json.hpp"
+#include "sextant/pipeline/yaml_json.hpp"
 
 namespace sextant {
 namespace {

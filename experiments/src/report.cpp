@@ -17,10 +17,11 @@
 #include "sextant/eval/html_report.hpp"
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/table.hpp"
-#include "sextant/experiments/json.hpp"
-#include "sextant/experiments/provenance.hpp"
 #include "sextant/experiments/run_kind.hpp"
 #include "sextant/experiments/runner.hpp"
+#include "sextant/pipeline/json.hpp"
+#include "sextant/pipeline/provenance.hpp"
+#include "sextant/pipeline/yaml_json.hpp"
 
 namespace sextant {
 namespace {

@@ -4,8 +4,9 @@
 #include <stdexcept>
 
 #include "sextant/core/error.hpp"
-#include "sextant/experiments/json.hpp"
 #include "sextant/experiments/run_kind.hpp"
+#include "sextant/pipeline/json.hpp"
+#include "sextant/pipeline/yaml_json.hpp"
 
 namespace sextant {
 

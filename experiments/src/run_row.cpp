@@ -9,7 +9,7 @@
 
 #include "sextant/core/atomic_file.hpp"
 #include "sextant/core/units.hpp"
-#include "sextant/experiments/json.hpp"
+#include "sextant/pipeline/json.hpp"
 
 namespace sextant {
 namespace {

@@ -18,10 +18,11 @@
 #include "sextant/core/log.hpp"
 #include "sextant/core/progress.hpp"
 #include "sextant/core/settings_reader.hpp"
-#include "sextant/experiments/json.hpp"
-#include "sextant/experiments/provenance.hpp"
 #include "sextant/experiments/run_kind.hpp"
 #include "sextant/experiments/run_row.hpp"
+#include "sextant/pipeline/json.hpp"
+#include "sextant/pipeline/provenance.hpp"
+#include "sextant/pipeline/yaml_json.hpp"
 
 namespace sextant {
 namespace {

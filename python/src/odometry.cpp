@@ -20,6 +20,8 @@
 #include "sextant/matchers/yaml.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/odometry/yaml.hpp"
+#include "sextant/pipeline/odometry_output.hpp"
+#include "sextant/pipeline/odometry_request.hpp"
 #include "steps_table.hpp"
 
 namespace sextant::python {
@@ -34,17 +36,6 @@ struct OdometryRun {
   std::size_t first = 0, scans = 0, not_converged = 0, untrusted = 0, recovered = 0;
   double seconds = 0.0;
 };
-
-std::optional<std::vector<Eigen::Isometry3d>> ground_truth_of(const Dataset& dataset, std::size_t first,
-                                                              std::size_t count) {
-  std::vector<Eigen::Isometry3d> poses;
-  for (std::size_t i = first; i < first + count; ++i) {
-    const auto p = dataset.ground_truth(i);
-    if (!p) return std::nullopt;
-    poses.push_back(*p);
-  }
-  return poses;
-}
 
 py::dict metadata_dict(const DatasetMetadata& m) {
   py::dict d;
@@ -65,49 +56,38 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
                      const py::object& poses, const py::object& odometry_poses, const py::object& times,
                      std::uint64_t campus_seed, int jobs, const py::object& sampler_settings,
                      const std::string& sensor, const std::string& platform, const py::kwargs& settings) {
-  // Arguments first (cheap), then the dataset, as the CLI.
-  OdometrySettings s;
-  s.map = parse_odometry_map(map, "map");
-  std::optional<OdometryGuess> guess_mode;
-  if (!guess.is_none()) guess_mode = parse_odometry_guess(guess.cast<std::string>(), "guess");
+  // Arguments first (cheap), then the dataset, as the CLI (odometry_request.hpp).
   const YAML::Node matcher = matcher_settings(method, preset.is_none() ? "" : preset.cast<std::string>(),
                                               yaml_map_from_kwargs(settings, "odometry() setting"), nullptr);
   const YAML::Node sampler =
       sampler_settings.is_none() ? YAML::Node() : yaml_from_python(sampler_settings, "sampler_settings");
   (void)make_matcher(method, matcher, "odometry() settings");  // unknown names and bad settings stop here
   (void)make_sampler(sampling, sampler, "odometry() sampler settings");
-  s.registration = odometry_registration({method, matcher, sampling, sampler});
-  s.local_map_scans = local_map_scans;
-  s.min_range = min_range;
-  s.max_acceleration = max_acceleration;
-  s.seed = seed;
-  s.recover = recover;
-  s.sensor = parse_sensor_kind(sensor, "sensor");
-  s.platform = parse_platform(platform, "platform");
-  s.common_view = common_view.is_none() ? common_view_by_default(method) : common_view.cast<bool>();
-  if (const std::string why = s.problem(); !why.empty()) throw InputError("arguments", "", why);
+  OdometryRequest request;
+  request.method = method;
+  request.registration = odometry_registration({method, matcher, sampling, sampler});
+  if (!guess.is_none()) request.guess = guess.cast<std::string>();
+  request.map = map;
+  request.sensor = sensor;
+  request.platform = platform;
+  if (!common_view.is_none()) request.common_view = common_view.cast<bool>();
+  request.first = first;
+  request.scans = scans;
+  request.local_map_scans = local_map_scans;
+  request.min_range = min_range;
+  request.max_acceleration = max_acceleration;
+  request.seed = seed;
+  request.recover = recover;
+  OdometrySettings checked = odometry_settings(request, Face::python);
   if (jobs < 0) throw py::value_error("jobs: expected 0 (all cores) or a positive number of threads");
 
   const std::unique_ptr<Dataset> dataset =
       open_odometry_dataset(source, poses, odometry_poses, times, campus_seed);
   const DatasetMetadata& meta = dataset->metadata();
-  if (first >= dataset->size())
-    throw InputError(
-        "first", "",
-        std::to_string(first) + " is past the dataset's " + std::to_string(dataset->size()) + " scans");
-  const std::size_t count = scans == 0 ? dataset->size() - first : scans;
-  if (count > dataset->size() - first)
-    throw InputError("scans", "",
-                     "scans " + std::to_string(first) + "–" + std::to_string(first + count - 1) +
-                         " go past the dataset's " + std::to_string(dataset->size()) + " scans");
-  if (guess_mode == OdometryGuess::odometry && !meta.has_odometry)
-    throw InputError(
-        meta.path.empty() ? meta.name : meta.path.string(), "",
-        "this " + meta.format +
-            " dataset has no odometry, which guess='odometry' needs; use guess='constant_velocity' "
-            "(or 'identity')");
-  s.guess =
-      guess_mode.value_or(meta.has_odometry ? OdometryGuess::odometry : OdometryGuess::constant_velocity);
+  const OdometryPlan plan = plan_odometry(std::move(checked), request, *dataset,
+                                          meta.path.empty() ? meta.name : meta.path.string(), Face::python);
+  const OdometrySettings& s = plan.settings;
+  const std::size_t count = plan.scans;
 
   OdometryResult result;
   std::optional<std::vector<Eigen::Isometry3d>> truth;
@@ -136,7 +116,7 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
       for (int j = 0; j < 6; ++j) h(static_cast<py::ssize_t>(k), i, j) = result.steps[k].hessian(i, j);
   run.hessians = std::move(hessians);
   run.ground_truth = truth ? py::object(poses_array(*truth)) : py::object(py::none());
-  run.steps = steps_table(result, first, truth);
+  run.steps = steps_columns(result, first, truth);
   run.dataset = metadata_dict(meta);
   run.guess = to_string(s.guess);
   run.map = to_string(s.map);

@@ -11,40 +11,18 @@
 #include "arrays.hpp"
 #include "memory_dataset.hpp"
 #include "sextant/core/error.hpp"
-#include "sextant/synth/campus.hpp"
+#include "sextant/pipeline/dataset_argument.hpp"
 
 namespace sextant::python {
 namespace {
 
-namespace fs = std::filesystem;
-
-/// A folder (open_dataset, or open_scan_folder with a poses file, as --poses) or the campus.
+/// A folder or the campus (dataset_argument.hpp), with a poses file for a folder of scans.
 std::unique_ptr<Dataset> open_folder(const std::string& name, const py::object& poses,
                                      std::uint64_t campus_seed) {
-  if (name == "campus" || name == "synthetic") {
-    if (!poses.is_none()) throw py::value_error("poses: the campus brings its own ground truth");
-    const py::gil_scoped_release release;
-    return std::make_unique<synth::CampusDataset>(
-        synth::generate_campus(synth::CampusSettings{}, campus_seed));
-  }
-  const fs::path folder(name);
-  if (!fs::exists(folder))
-    throw InputError(name, "",
-                     "no such dataset folder (expected a folder of scans, a uos folder, a KITTI sequence "
-                     "folder, or 'campus')");
-  if (!fs::is_directory(folder))
-    throw InputError(name, "",
-                     "is a file, expected a dataset folder (a folder of scans, uos or KITTI) or 'campus'");
   std::optional<std::string> poses_file;
   if (!poses.is_none()) poses_file = py::module_::import("os").attr("fspath")(poses).cast<std::string>();
   const py::gil_scoped_release release;
-  std::unique_ptr<Dataset> dataset = open_dataset(folder);
-  if (!poses_file) return dataset;
-  if (dataset->metadata().format != "folder")
-    throw InputError("poses", "",
-                     "only for a plain folder of scans: this " + dataset->metadata().format +
-                         " folder brings its own poses");
-  return open_scan_folder(folder, *poses_file);
+  return open_dataset_argument(name, poses_file, campus_seed, Face::python);
 }
 
 /// A list of clouds (arrays or paths) with optional ground truth, odometry and times.

@@ -38,7 +38,7 @@ source "$cluster/env"
 
 # The README's commands, verbatim: the `sextant slurm` lines of the block after the marker.
 mapfile -t commands < <(awk '/<!-- slurm-test:/ {on = 1; next} on && /^```$/ && seen {exit}
-                             on && /^```/ {seen = 1; next} on && /^build\/experiments\/sextant slurm / {print}' \
+                             on && /^```/ {seen = 1; next} on && /^build\/app\/sextant slurm / {print}' \
   "$source_dir/README.md")
 ((${#commands[@]} == 2)) || fail "expected 2 'sextant slurm' lines in README.md's cluster block, found ${#commands[@]}"
 submit_line=${commands[0]}
@@ -47,8 +47,8 @@ resume_line=${commands[1]}
 
 # The README runs from the source folder after the build: the same layout, with this build's binary.
 work="$tmp/work"
-mkdir -p "$work/build/experiments"
-ln -s "$(realpath "$sextant")" "$work/build/experiments/sextant"
+mkdir -p "$work/build/app"
+ln -s "$(realpath "$sextant")" "$work/build/app/sextant"
 ln -s "$source_dir/experiments" "$work/experiments"
 ln -s "$source_dir/data" "$work/data"
 cd "$work"
@@ -95,7 +95,7 @@ out=$(eval "$submit_line") || fail "submit: $out"
 echo "$out"
 array=$(job_id array "$out")
 # The resume command it prints is the README's resume line (with this binary's path).
-grep -qxF "resume:  $(realpath "$sextant") ${resume_line#build/experiments/sextant }" <<<"$out" ||
+grep -qxF "resume:  $(realpath "$sextant") ${resume_line#build/app/sextant }" <<<"$out" ||
   fail "the printed resume command is not the README's resume line"
 merge=$(job_id merge "$out")
 [[ -n $array && -n $merge ]] || fail "no job ids in the output"

@@ -4,8 +4,9 @@
 #include <gtest/gtest.h>
 
 #include "sextant/core/error.hpp"
-#include "sextant/experiments/json.hpp"
 #include "sextant/experiments/run_plan.hpp"
+#include "sextant/pipeline/json.hpp"
+#include "sextant/pipeline/yaml_json.hpp"
 #include "test_helpers.hpp"
 
 namespace sextant {

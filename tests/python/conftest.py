@@ -23,12 +23,12 @@ def data_dir():
 @pytest.fixture(scope="session")
 def sextant_binary():
     """The `sextant` CLI: SEXTANT_BINARY, else the one of the build tree the module comes from
-    (<build>/python/sextant → <build>/experiments/sextant); tests comparing against it skip without."""
+    (<build>/python/sextant → <build>/app/sextant); tests comparing against it skip without."""
     path = os.environ.get("SEXTANT_BINARY")
     if not path:
         import sextant
 
-        beside = pathlib.Path(sextant.__file__).resolve().parents[2] / "experiments" / "sextant"
+        beside = pathlib.Path(sextant.__file__).resolve().parents[2] / "app" / "sextant"
         if not beside.is_file():
             pytest.skip("no `sextant` CLI: set SEXTANT_BINARY (ctest sets it to the built one)")
         path = str(beside)

@@ -13,7 +13,7 @@ documented=$(sed -n "/^$begin\$/,/^$end\$/p" "$src/docs/experiments.md" | sed '1
 if [ "$generated" != "$documented" ]; then
   echo "docs/experiments.md: the experiment table differs from 'sextant info experiments --markdown':"
   diff <(echo "$documented") <(echo "$generated") || true
-  echo "regenerate it: build/experiments/sextant info experiments --markdown"
+  echo "regenerate it: build/app/sextant info experiments --markdown"
   exit 1
 fi
 echo "docs/experiments.md: experiment table matches the configs ($(echo "$generated" | wc -l) lines)"

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs every command of the README (the `build/experiments/sextant …` and `PYTHONPATH=… python3 …`
+# Runs every command of the README (the `build/app/sextant …` and `PYTHONPATH=… python3 …`
 # lines of its bash blocks) in order, as a user would from the source folder after the build: in a
 # scratch folder whose build/, data/, docs/, experiments/ and python/ point at this build and
 # source tree. Each must exit 0. Two kinds are not run here, and the test says so: the `sextant
@@ -17,7 +17,7 @@ for d in data docs experiments python; do ln -s "$source_dir/$d" "$work/$d"; don
 cd "$work"
 
 mapfile -t commands < <(awk '/^```bash/ {inside = 1; next} /^```/ {inside = 0} inside' "$source_dir/README.md" |
-  grep -E '^(build/experiments/sextant|PYTHONPATH=)')
+  grep -E '^(build/app/sextant|PYTHONPATH=)')
 ((${#commands[@]} >= 8)) || { echo "readme: expected at least 8 commands in README.md, found ${#commands[@]}" >&2; exit 1; }
 ran=0
 for line in "${commands[@]}"; do

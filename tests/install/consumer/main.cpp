@@ -9,7 +9,6 @@
 #include "sextant/core/yaml.hpp"
 #include "sextant/eval/statistics.hpp"
 #include "sextant/eval/yaml.hpp"
-#include "sextant/experiments/provenance.hpp"
 #include "sextant/features/extraction.hpp"
 #include "sextant/features/yaml.hpp"
 #include "sextant/filters/plane_slam.hpp"
@@ -18,6 +17,7 @@
 #include "sextant/matchers/yaml.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/odometry/yaml.hpp"
+#include "sextant/pipeline/provenance.hpp"
 #include "sextant/posegraph/pose_graph.hpp"
 #include "sextant/posegraph/yaml.hpp"
 #include "sextant/synth/settings.hpp"
@@ -45,7 +45,7 @@ int main() {
   sextant::robust_loss_from_string("huber", &known);
   check(known, "posegraph: robust loss name");
   check(sextant::synth::WorldSettings{}.valid(&why), "synth: default world");
-  check(!sextant::sextant_version().empty(), "experiments: version " + sextant::sextant_version());
+  check(!sextant::sextant_version().empty(), "pipeline: version " + sextant::sextant_version());
   // The YAML targets: one reader of each.
   const YAML::Node node = YAML::Load("{layers: 3}");
   check(sextant::read_mlndt_settings(node, "consumer").pyramid.layers == 3, "matchers_yaml: layers");

@@ -1,12 +1,12 @@
-#include "trajectory_accuracy.hpp"
+#include "sextant/pipeline/trajectory_accuracy.hpp"
 
 #include <iomanip>
 #include <sstream>
 
 #include "sextant/core/units.hpp"
-#include "sextant/experiments/json.hpp"
+#include "sextant/pipeline/json.hpp"
 
-namespace sextant::cli {
+namespace sextant {
 
 TrajectoryAccuracy trajectory_accuracy(const TrajectoryEvaluation& e) {
   TrajectoryAccuracy a;
@@ -58,4 +58,4 @@ Json accuracy_json(const TrajectoryAccuracy& a) {
           {"drift_deg_per_100m", drift ? json_value(a.drift_deg_per_100m) : Json()}};
 }
 
-}  // namespace sextant::cli
+}  // namespace sextant

@@ -1,4 +1,4 @@
-#include "odometry_output.hpp"
+#include "sextant/pipeline/odometry_output.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,10 +10,11 @@
 #include "sextant/core/io/trajectory_io.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
-#include "sextant/experiments/json.hpp"
 #include "sextant/matchers/registration_quality.hpp"
+#include "sextant/pipeline/json.hpp"
+#include "sextant/pipeline/steps_table.hpp"
 
-namespace sextant::cli {
+namespace sextant {
 namespace {
 
 Trajectory stamped(const Dataset& dataset, std::size_t first, const std::vector<Eigen::Isometry3d>& poses) {
@@ -69,46 +70,9 @@ void write_trajectories(const std::filesystem::path& out, const Dataset& dataset
   write_kitti_trajectory(out / "groundtruth.kitti.txt", kitti_frame(dataset, reference));
 }
 
-std::string csv_free_text(std::string text) {
-  for (char& c : text)
-    if (c == ',' || c == '"') c = ';';
-  return text;
-}
-
 void write_steps_csv(const std::filesystem::path& file, std::size_t first, const OdometryResult& result,
                      const std::optional<std::vector<Eigen::Isometry3d>>& truth) {
-  std::ostringstream out;
-  out << "step,from_scan,to_scan,x_m,y_m,z_m,roll_deg,pitch_deg,yaw_deg,guess_x_m,guess_y_m,guess_yaw_deg,"
-         "converged,iterations,score,matched_points,reference_points,seconds,error_m,error_deg,status,"
-         "trust,first_trust,recovery,overlap,constraint_ratio,fit_ratio,trust_reason,fallback,"
-         "first_x_m,first_y_m,first_z_m,first_roll_deg,first_pitch_deg,first_yaw_deg,first_error_m,"
-         "first_error_deg\n";
-  out << std::setprecision(9);
-  for (std::size_t i = 0; i < result.steps.size(); ++i) {
-    const OdometryStep& s = result.steps[i];
-    const Pose6 p = to_pose6(s.relative);
-    const Pose6 g = to_pose6(s.guess);
-    out << i << "," << first + i << "," << first + i + 1 << "," << p.x << "," << p.y << "," << p.z << ","
-        << p.alpha * kDegPerRad << "," << p.beta * kDegPerRad << "," << p.gamma * kDegPerRad << "," << g.x
-        << "," << g.y << "," << g.gamma * kDegPerRad << "," << (s.converged ? 1 : 0) << "," << s.iterations
-        << "," << s.score << "," << s.matched_points << "," << s.reference_points << "," << s.seconds << ",";
-    const auto write_error = [&](const Eigen::Isometry3d& motion) {
-      if (!truth) return void(out << ",");
-      const Eigen::Isometry3d E = relative(relative((*truth)[i], (*truth)[i + 1]), motion);
-      out << translation_norm(E) << "," << rotation_angle(E) * kDegPerRad;
-    };
-    write_error(s.relative);
-    out << "," << s.status << "," << to_string(s.quality.trust) << "," << to_string(s.first_trust) << ","
-        << s.recovery << "," << s.quality.overlap << "," << s.quality.constraint_ratio << ","
-        << s.quality.fit_ratio << "," << csv_free_text(s.quality.reason) << "," << csv_free_text(s.fallback);
-    // The first registration's own pose (what the scans said before any recovery replaced it).
-    const Pose6 f = to_pose6(s.first_relative);
-    out << "," << f.x << "," << f.y << "," << f.z << "," << f.alpha * kDegPerRad << "," << f.beta * kDegPerRad
-        << "," << f.gamma * kDegPerRad << ",";
-    write_error(s.first_relative);
-    out << "\n";
-  }
-  write_file_atomically(file, out.str());
+  write_file_atomically(file, steps_csv(steps_table(result, first, truth)));
 }
 
 std::vector<std::size_t> trusted_steps_off_reference(const OdometryResult& result,
@@ -166,4 +130,4 @@ void write_metrics_json(const std::filesystem::path& file, const std::optional<T
   write_file_atomically(file, json_line(metrics) + "\n");
 }
 
-}  // namespace sextant::cli
+}  // namespace sextant

@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "sextant/experiments/provenance.hpp"
+#include "sextant/pipeline/provenance.hpp"
 
 namespace sextant::cli {
 namespace {

@@ -1,8 +1,8 @@
 #pragma once
 // JSON for result rows, provenance and metrics, by nlohmann::json (Debian's nlohmann-json3-dev):
 // escaping and number formatting that round-trips (the shortest text that reads back to the same
-// double) come from it; what is ours is the layout of our files and the canonical form of a YAML
-// node used to hash a run's resolved config.
+// double) come from it; what is ours is the layout of our files (YAML nodes as JSON: yaml_json.hpp,
+// Sextant::pipeline_yaml).
 //
 //   Json row = {{"key", key}, {"values", {{"rmse", 0.25}}}};
 //   out << json_line(row);             // {"key": "…", "values": {"rmse": 0.25}}
@@ -11,7 +11,6 @@
 #include <set>
 #include <string>
 
-#include <yaml-cpp/yaml.h>
 #include <nlohmann/json.hpp>
 
 namespace sextant {
@@ -19,6 +18,12 @@ namespace sextant {
 /// A JSON value whose objects keep their keys in insertion order (the order our files list them).
 using Json = nlohmann::ordered_json;
 
+/// `value` as compact text without whitespace; bytes that are not UTF-8 become U+FFFD instead of
+/// throwing.
+template <class J>
+std::string json_compact(const J& value) {
+  return value.dump(-1, ' ', false, J::error_handler_t::replace);
+}
 /// `text` as a JSON string literal, quotes included.
 std::string json_string(const std::string& text);
 /// A double as a JSON number that reads back to the same value; NaN and ±Inf become null.
@@ -32,13 +37,6 @@ std::string json_line(const Json& value);
 /// one line (json_line, or compact without whitespace for the keys in `compact`, the configs);
 /// ends with a newline. The layout of provenance.json.
 std::string json_lines(const Json& object, const std::set<std::string>& compact = {});
-/// A YAML node as canonical JSON: maps sorted by key, no whitespace, every scalar a string.
-/// Two nodes with the same content give the same text whatever their layout in the file.
-std::string canonical_json(const YAML::Node& node);
-/// A YAML node as ordinary JSON (numbers and booleans unquoted when the scalar is one).
-Json yaml_to_json(const YAML::Node& node);
-/// yaml_to_json(node), compact: no whitespace.
-std::string to_json(const YAML::Node& node);
 /// FNV-1a 64-bit hash of `text` (stable across platforms and runs).
 std::uint64_t stable_hash(const std::string& text);
 /// 16 lowercase hex digits.

@@ -10,10 +10,6 @@
 
 #include <CLI/CLI.hpp>
 
-namespace sextant {
-class Dataset;
-}
-
 namespace sextant::cli {
 
 /// Exit status of every subcommand (README, "Exit status").
@@ -34,12 +30,6 @@ std::string version_line();
 
 /// Runs a subcommand body: an exception becomes "sextant: error: <message>" on stderr and exit code 1.
 int guarded(const std::function<int()>& body);
-
-/// Whether a dataset argument names the built-in synthetic campus ("campus" or "synthetic") rather
-/// than a folder (`odometry`, `info`).
-bool names_builtin_campus(const std::string& dataset);
-/// The built-in synthetic campus generated from `seed` (its scans are cast when read).
-std::unique_ptr<Dataset> open_builtin_campus(std::uint64_t seed);
 
 /// ./experiments when it exists, else the source tree's experiments/ (`reproduce`, `slurm reproduce`).
 std::filesystem::path default_experiments_folder();

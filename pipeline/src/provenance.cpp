@@ -1,4 +1,4 @@
-#include "sextant/experiments/provenance.hpp"
+#include "sextant/pipeline/provenance.hpp"
 
 #include <unistd.h>
 
@@ -11,7 +11,7 @@
 #include <Eigen/Core>
 #include <boost/version.hpp>
 
-#include "sextant/experiments/json.hpp"
+#include "sextant/pipeline/json.hpp"
 
 #include "sextant_build_info.hpp"
 

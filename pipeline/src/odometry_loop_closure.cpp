@@ -1,4 +1,4 @@
-#include "odometry_loop_closure.hpp"
+#include "sextant/pipeline/odometry_loop_closure.hpp"
 
 #include <chrono>
 #include <iomanip>
@@ -6,12 +6,13 @@
 
 #include <tbb/parallel_for.h>
 
-#include "odometry_output.hpp"
 #include "sextant/core/atomic_file.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/matchers/register_pair.hpp"
+#include "sextant/pipeline/odometry_output.hpp"
+#include "sextant/pipeline/steps_table.hpp"
 
-namespace sextant::cli {
+namespace sextant {
 namespace {
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
@@ -118,4 +119,4 @@ void write_loop_closures_csv(const std::filesystem::path& file, std::size_t firs
   write_file_atomically(file, out.str());
 }
 
-}  // namespace sextant::cli
+}  // namespace sextant

@@ -12,9 +12,9 @@
 
 #include "sextant/core/dataset.hpp"
 #include "sextant/odometry/odometry.hpp"
-#include "trajectory_accuracy.hpp"
+#include "sextant/pipeline/trajectory_accuracy.hpp"
 
-namespace sextant::cli {
+namespace sextant {
 
 /// The poses of scans first … first + count − 1 with the dataset's ground truth, or nothing when
 /// any of them lacks it.
@@ -31,8 +31,7 @@ void write_trajectories(const std::filesystem::path& out, const Dataset& dataset
                         const std::vector<Eigen::Isometry3d>& poses,
                         const std::optional<std::vector<Eigen::Isometry3d>>& truth);
 
-/// steps.csv: one line per registration (relative pose, guess, convergence, time, error vs truth,
-/// trust before and after recovery, the recovery used, the quality measures).
+/// steps.csv: one line per registration, the columns of steps_table.hpp.
 void write_steps_csv(const std::filesystem::path& file, std::size_t first, const OdometryResult& result,
                      const std::optional<std::vector<Eigen::Isometry3d>>& truth);
 
@@ -77,7 +76,4 @@ void write_metrics_json(const std::filesystem::path& file, const std::optional<T
                         const OdometryCounts& counts, double seconds,
                         const std::optional<LoopClosureSummary>& loops = std::nullopt);
 
-/// Free text in a CSV field: no commas or quotes inside.
-std::string csv_free_text(std::string text);
-
-}  // namespace sextant::cli
+}  // namespace sextant

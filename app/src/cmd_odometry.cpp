@@ -16,165 +16,33 @@
 
 #include "commands.hpp"
 #include "matcher_options.hpp"
-#include "odometry_loop_closure.hpp"
-#include "odometry_output.hpp"
+#include "odometry_report.hpp"
 #include "sextant/core/atomic_file.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/progress.hpp"
-#include "sextant/experiments/json.hpp"
-#include "sextant/experiments/provenance.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/sampler.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/odometry/yaml.hpp"
+#include "sextant/pipeline/dataset_argument.hpp"
+#include "sextant/pipeline/json.hpp"
+#include "sextant/pipeline/odometry_loop_closure.hpp"
+#include "sextant/pipeline/odometry_output.hpp"
+#include "sextant/pipeline/odometry_request.hpp"
+#include "sextant/pipeline/provenance.hpp"
 
 namespace sextant::cli {
 namespace {
 
 namespace fs = std::filesystem;
 
-struct OdometryOptions : MatcherOptions {
-  std::string dataset, out;
-  std::string poses;  ///< ground truth for a scan folder: TUM or KITTI file (default: poses.txt beside it)
-  std::string guess;  ///< empty: odometry when the dataset has it, else constant_velocity
-  std::string map = "local_map";
-  std::string loop_closure;       ///< empty: none; proximity, descriptor or both
-  std::string sensor = "auto";    ///< auto, spinning, solid_state
-  std::string platform = "auto";  ///< auto, car, handheld
-  std::size_t first = 0;
-  std::size_t scans = 0;  ///< 0: to the end of the dataset
-  std::size_t local_map_scans = 5;
-  double min_range = 0.0;
-  double max_acceleration = OdometrySettings{}.max_acceleration;
-  std::uint64_t seed = 1;
-  std::uint64_t campus_seed = 1;
-  int jobs = 0;
-  bool no_progress = false;
-  bool no_recover = false;
-  bool common_view = false;  ///< --common-view: whatever the method
-  bool whole_scans = false;  ///< --whole-scans: whatever the method
-  bool print_config = false;
-};
-
-std::unique_ptr<Dataset> open_cli_dataset(const OdometryOptions& o) {
-  if (names_builtin_campus(o.dataset)) return open_builtin_campus(o.campus_seed);
-  const fs::path folder(o.dataset);
-  if (!fs::exists(folder))
-    throw InputError(o.dataset, "",
-                     "no such dataset folder (expected a folder of scans, a uos folder, a KITTI sequence "
-                     "folder, or 'campus')");
-  if (!fs::is_directory(folder))
-    throw InputError(o.dataset, "",
-                     "is a file, expected a dataset folder (a folder of scans, uos or KITTI) or 'campus'");
-  std::unique_ptr<Dataset> dataset = open_dataset(folder);
-  if (o.poses.empty()) return dataset;
-  if (dataset->metadata().format != "folder")
-    throw InputError("--poses", "",
-                     "only for a plain folder of scans: this " + dataset->metadata().format +
-                         " folder brings its own poses");
-  return open_scan_folder(folder, o.poses);
-}
-
 std::string yes_no(bool b) {
   return b ? "yes" : "no";
-}
-
-std::string provenance_json(const OdometryOptions& o, const MatcherConfig& config, const YAML::Node& resolved,
-                            const DatasetMetadata& meta, const OdometrySettings& s,
-                            const OdometryResult& result, std::size_t scans, const std::string& start,
-                            double seconds) {
-  const GitState git = current_git_state();
-  const bool sampler = config.sampler.IsDefined() && !config.sampler.IsNull();
-  const Json provenance = {
-      {"command", "odometry"},
-      {"dataset",
-       {{"argument", o.dataset},
-        {"name", meta.name},
-        {"format", meta.format},
-        {"path", meta.path.string()},
-        {"scans", meta.scan_count},
-        {"campus_seed", o.campus_seed},
-        {"poses", o.poses}}},
-      {"first", o.first},
-      {"scans", scans},
-      {"method", o.method},
-      {"preset", o.preset},
-      {"solver", o.solver},
-      {"sampling", o.sampling},
-      {"config_file", o.config},
-      {"matcher_settings", yaml_to_json(config.matcher)},
-      {"sampler_settings", sampler ? yaml_to_json(config.sampler) : Json()},
-      {"matcher_resolved", yaml_to_json(resolved["matcher"])},
-      {"sampler_resolved", yaml_to_json(resolved["sampler"])},
-      {"guess", to_string(s.guess)},
-      {"map", to_string(s.map)},
-      {"loop_closure", o.loop_closure},
-      {"local_map_scans", s.local_map_scans},
-      {"min_range", json_value(s.min_range)},
-      {"max_acceleration", json_value(s.max_acceleration)},
-      {"sensor",
-       {{"declared", to_string(s.sensor)},
-        {"used", to_string(result.sensor.kind)},
-        {"azimuth_coverage", json_value(result.sensor.azimuth_coverage)}}},
-      {"platform",
-       {{"declared", to_string(s.platform)},
-        {"typical_step_m", result.typical_step ? json_value(*result.typical_step) : Json()},
-        {"tolerance_m", json_value(result.tolerance.ambiguity_metres)},
-        {"tolerance_deg", json_value(result.tolerance.ambiguity_degrees)}}},
-      {"recover", s.recover},
-      {"common_view", s.common_view},
-      {"seed", s.seed},
-      {"jobs", o.jobs},
-      {"git", {{"sha", git.sha}, {"dirty", git.dirty}, {"source", git.source}}},
-      {"libraries", Json::parse(library_versions_json())},
-      {"host", host_name()},
-      {"start", start},
-      {"end", iso_time_now()},
-      {"seconds", json_value(seconds)}};
-  return json_lines(provenance,
-                    {"matcher_settings", "sampler_settings", "matcher_resolved", "sampler_resolved"});
-}
-
-/// -v: one line per registration (steps.csv has every column).
-void print_steps(const OdometryResult& result, std::size_t first) {
-  for (std::size_t k = 0; k < result.steps.size(); ++k) {
-    const OdometryStep& st = result.steps[k];
-    std::cout << "step " << k << " (scans " << first + k << "→" << first + k + 1
-              << "): " << (st.converged ? "converged" : "not converged") << ", " << st.iterations
-              << " iterations, trust " << to_string(st.quality.trust)
-              << (st.quality.reason.empty() ? "" : " (" + st.quality.reason + ")")
-              << (st.recovery.empty() ? "" : ", recovery " + st.recovery) << "\n";
-  }
-}
-
-/// The sensor and platform the checks assumed, and why (printed after the run, recorded in provenance).
-std::string sensor_line(const OdometrySettings& s, const OdometryResult& r) {
-  std::ostringstream out;
-  out << std::fixed << std::setprecision(0) << to_string(r.sensor.kind)
-      << (s.sensor == SensorKind::automatic ? " (measured: the first scan covers "
-                                            : " (declared; the first scan covers ")
-      << 100.0 * r.sensor.azimuth_coverage << " % of the azimuth circle)"
-      << (r.sensor.kind == SensorKind::spinning ? "" : ", no ring or horizon checks") << "; platform "
-      << to_string(s.platform) << std::setprecision(2);
-  if (s.platform == Platform::automatic) {
-    out << ", typical step ";
-    if (r.typical_step)
-      out << *r.typical_step << " m";
-    else
-      out << "unknown";
-  }
-  out << ": a wrong step is one more than " << r.tolerance.ambiguity_metres << " m or "
-      << std::setprecision(1) << r.tolerance.ambiguity_degrees << "° off";
-  return out.str();
 }
 
 int run_odometry_command(const OdometryOptions& o) {
   const std::string start = iso_time_now();
   // Arguments first (cheap), then the dataset.
-  OdometrySettings s;
-  s.map = parse_odometry_map(o.map, "--map");
-  std::optional<OdometryGuess> guess;
-  if (!o.guess.empty()) guess = parse_odometry_guess(o.guess, "--guess");
   const MatcherConfig config = read_matcher_config(o);
   const std::string where = o.config.empty() ? "matcher settings (--method, --preset, --solver)" : o.config;
   // Unknown names and bad settings stop here; `resolved` is every setting they run with.
@@ -183,16 +51,23 @@ int run_odometry_command(const OdometryOptions& o) {
     std::cout << YAML::Dump(resolved) << "\n";
     return 0;
   }
-  s.registration = odometry_registration({o.method, config.matcher, o.sampling, config.sampler});
-  s.local_map_scans = o.local_map_scans;
-  s.min_range = o.min_range;
-  s.max_acceleration = o.max_acceleration;
-  s.seed = o.seed;
-  s.recover = !o.no_recover;
-  s.sensor = parse_sensor_kind(o.sensor, "--sensor");
-  s.platform = parse_platform(o.platform, "--platform");
-  s.common_view = o.whole_scans ? false : o.common_view || common_view_by_default(o.method);
-  if (const std::string why = s.problem(); !why.empty()) throw InputError("arguments", "", why);
+  OdometryRequest request;
+  request.method = o.method;
+  request.registration = odometry_registration({o.method, config.matcher, o.sampling, config.sampler});
+  request.guess = o.guess;
+  request.map = o.map;
+  request.sensor = o.sensor;
+  request.platform = o.platform;
+  if (o.whole_scans) request.common_view = false;
+  if (o.common_view) request.common_view = true;
+  request.first = o.first;
+  request.scans = o.scans;
+  request.local_map_scans = o.local_map_scans;
+  request.min_range = o.min_range;
+  request.max_acceleration = o.max_acceleration;
+  request.seed = o.seed;
+  request.recover = !o.no_recover;
+  OdometrySettings settings = odometry_settings(request, Face::cli);
   std::optional<LoopCandidateSource> loop_source;
   if (!o.loop_closure.empty()) {
     bool ok = false;
@@ -205,23 +80,13 @@ int run_odometry_command(const OdometryOptions& o) {
   if (o.jobs > 0)
     threads.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(o.jobs));
 
-  const std::unique_ptr<Dataset> dataset = open_cli_dataset(o);
+  const std::unique_ptr<Dataset> dataset =
+      open_dataset_argument(o.dataset, o.poses.empty() ? std::nullopt : std::optional<std::string>(o.poses),
+                            o.campus_seed, Face::cli);
   const DatasetMetadata& meta = dataset->metadata();
-  if (o.first >= dataset->size())
-    throw InputError(
-        "--first", "",
-        std::to_string(o.first) + " is past the dataset's " + std::to_string(dataset->size()) + " scans");
-  const std::size_t scans = o.scans == 0 ? dataset->size() - o.first : o.scans;
-  if (scans > dataset->size() - o.first)
-    throw InputError("--scans", "",
-                     "scans " + std::to_string(o.first) + "–" + std::to_string(o.first + scans - 1) +
-                         " go past the dataset's " + std::to_string(dataset->size()) + " scans");
-  if (guess == OdometryGuess::odometry && !meta.has_odometry)
-    throw InputError(o.dataset, "",
-                     "this " + meta.format +
-                         " dataset has no odometry, which --guess odometry needs; use --guess "
-                         "constant_velocity (or identity)");
-  s.guess = guess.value_or(meta.has_odometry ? OdometryGuess::odometry : OdometryGuess::constant_velocity);
+  const OdometryPlan plan = plan_odometry(std::move(settings), request, *dataset, o.dataset, Face::cli);
+  const OdometrySettings& s = plan.settings;
+  const std::size_t scans = plan.scans;
 
   const bool quiet = verbosity() == Verbosity::kQuiet;
   if (!quiet)

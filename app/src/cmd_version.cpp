@@ -2,7 +2,7 @@
 #include <iostream>
 
 #include "commands.hpp"
-#include "sextant/experiments/provenance.hpp"
+#include "sextant/pipeline/provenance.hpp"
 
 namespace sextant::cli {
 

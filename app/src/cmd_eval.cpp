@@ -22,8 +22,8 @@
 #include "sextant/eval/plots.hpp"
 #include "sextant/eval/trajectory_evaluation.hpp"
 #include "sextant/eval/vehicle_slip.hpp"
-#include "sextant/experiments/json.hpp"
-#include "trajectory_accuracy.hpp"
+#include "sextant/pipeline/json.hpp"
+#include "sextant/pipeline/trajectory_accuracy.hpp"
 
 namespace sextant::cli {
 namespace {

@@ -9,6 +9,7 @@
 #include "sextant/core/dataset.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/cloud_io.hpp"
+#include "sextant/pipeline/dataset_argument.hpp"
 
 namespace sextant::cli {
 namespace {

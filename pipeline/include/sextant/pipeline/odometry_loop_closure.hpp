@@ -16,7 +16,7 @@
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/posegraph/loop_closing.hpp"
 
-namespace sextant::cli {
+namespace sextant {
 
 struct OdometryLoopClosure {
   LoopClosingResult closing;
@@ -50,4 +50,4 @@ void write_loop_closures_csv(const std::filesystem::path& file, std::size_t firs
                              const OdometryLoopClosure& closure,
                              const std::optional<std::vector<Eigen::Isometry3d>>& truth);
 
-}  // namespace sextant::cli
+}  // namespace sextant

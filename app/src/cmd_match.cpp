@@ -27,13 +27,13 @@
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/eval/cloud_view.hpp"
-#include "sextant/experiments/json.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/register_pair.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 #include "sextant/matchers/sampler.hpp"
 #include "sextant/matchers/yaml.hpp"
+#include "sextant/pipeline/json.hpp"
 
 namespace sextant::cli {
 namespace {

@@ -9,9 +9,9 @@
 #include <Eigen/Geometry>
 
 #include "sextant/eval/trajectory_evaluation.hpp"
-#include "sextant/experiments/json.hpp"
+#include "sextant/pipeline/json.hpp"
 
-namespace sextant::cli {
+namespace sextant {
 
 /// Accuracy of a trajectory against the ground truth (translations in m, rotations in rad).
 struct TrajectoryAccuracy {
@@ -36,4 +36,4 @@ std::string accuracy_line(const TrajectoryAccuracy& a, const std::string& rpe_pe
 /// "drift_deg_per_100m": …} (drift null without segments).
 Json accuracy_json(const TrajectoryAccuracy& a);
 
-}  // namespace sextant::cli
+}  // namespace sextant
