@@ -6,16 +6,13 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/matchers/matcher.hpp"
+#include "sextant/matchers/matcher_traits.hpp"
 #include "sextant/matchers/optimizer.hpp"
 #include "sextant/matchers/sampler.hpp"
 #include "sextant/matchers/yaml.hpp"
 
 namespace sextant::cli {
 namespace {
-
-bool ndt_family(const std::string& method) {
-  return method == "mlndt" || method == "fbmlndt";
-}
 
 /// Appends "prefix.key value" for every scalar of `given` that `defaults` lacks or holds differently,
 /// and "prefix.key" for every key of `defaults` that `given` lacks. `threads` never changes a result
@@ -49,10 +46,10 @@ MatcherConfig read_matcher_config(const MatcherOptions& o) {
   }
   if (!config.matcher.IsDefined() || config.matcher.IsNull())
     config.matcher = YAML::Node(YAML::NodeType::Map);
-  if (!o.preset.empty() && !ndt_family(o.method))
+  if (!o.preset.empty() && !matcher_traits(o.method).has_presets)
     throw InputError("--preset", "", "presets are settings of mlndt and fbmlndt, not of '" + o.method + "'");
   // The --config file's own `preset:` wins over --preset; its other keys override the preset's.
-  if (ndt_family(o.method) && config.matcher.IsMap() && !config.matcher["preset"].IsDefined())
+  if (matcher_traits(o.method).has_presets && config.matcher.IsMap() && !config.matcher["preset"].IsDefined())
     config.matcher["preset"] = o.preset.empty() ? "default" : o.preset;
   if (!o.preset.empty()) {
     const std::vector<std::string> names = mlndt_preset_names();
@@ -64,7 +61,7 @@ MatcherConfig read_matcher_config(const MatcherOptions& o) {
   }
   if (!o.solver.empty()) {
     SolverKind kind;
-    if (!ndt_family(o.method))
+    if (!matcher_traits(o.method).has_presets)
       throw InputError("--solver", "",
                        "a solver is a setting of mlndt and fbmlndt, not of '" + o.method + "'");
     if (!solver_from_name(o.solver, kind))
@@ -114,8 +111,9 @@ std::string uncalibrated_trust_note(const std::vector<std::string>& differences)
 
 std::string describe_matcher(const MatcherOptions& o) {
   return o.method +
-         (ndt_family(o.method) ? " (preset " + (o.preset.empty() ? std::string("default") : o.preset) + ")"
-                               : "") +
+         (matcher_traits(o.method).has_presets
+              ? " (preset " + (o.preset.empty() ? std::string("default") : o.preset) + ")"
+              : "") +
          (o.solver.empty() ? "" : " (solver " + o.solver + ")");
 }
 

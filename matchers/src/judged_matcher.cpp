@@ -3,6 +3,8 @@
 
 #include <utility>
 
+#include "sextant/matchers/matcher_traits.hpp"
+
 namespace sextant {
 namespace {
 
@@ -35,12 +37,8 @@ RegistrationResult JudgedMatcher::align(const PointCloud& input, const Eigen::Is
   return r;
 }
 
-bool judges_itself(const std::string& name) {
-  return name == "mlndt" || name == "fbmlndt";
-}
-
 std::unique_ptr<Matcher> judged(std::unique_ptr<Matcher> matcher) {
-  if (!matcher || judges_itself(matcher->name())) return matcher;
+  if (!matcher || matcher_traits(matcher->name()).judges_itself) return matcher;
   return std::make_unique<JudgedMatcher>(std::move(matcher));
 }
 

@@ -52,8 +52,4 @@ std::string to_string(OdometryMap map) {
   return "?";
 }
 
-bool common_view_by_default(const std::string& method) {
-  return method == "mlndt";
-}
-
 }  // namespace sextant

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "sextant/core/error.hpp"
+#include "sextant/matchers/matcher_traits.hpp"
 
 namespace sextant {
 namespace {
@@ -38,7 +39,7 @@ OdometrySettings odometry_settings(const OdometryRequest& r, Face face) {
   s.recover = r.recover;
   s.sensor = parse_sensor_kind(r.sensor, argument(face, "sensor"));
   s.platform = parse_platform(r.platform, argument(face, "platform"));
-  s.common_view = r.common_view.value_or(common_view_by_default(r.method));
+  s.common_view = r.common_view.value_or(matcher_traits(r.method).common_view_by_default);
   if (const std::string why = s.problem(); !why.empty()) throw InputError("arguments", "", why);
   return s;
 }

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "sextant/core/error.hpp"
+#include "sextant/matchers/matcher_traits.hpp"
 #include "sextant/matchers/register_pair.hpp"
 #include "sextant/matchers/yaml.hpp"
 
@@ -14,7 +15,7 @@ namespace {
 constexpr char kWhere[] = "match() settings";
 
 bool has_presets(const std::string& method) {
-  return method == "mlndt" || method == "fbmlndt";
+  return matcher_traits(method).has_presets;
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "sextant/matchers/judged_matcher.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/matcher_choice.hpp"
+#include "sextant/matchers/matcher_traits.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 #include "sextant/matchers/yaml.hpp"
 
@@ -76,16 +77,16 @@ TEST(JudgedMatcher, TrustsARightPoseAndNotOneSlidAlongTheRoad) {
 }
 
 TEST(JudgedMatcher, WrapsOnlyTheMatchersThatDoNotJudgeThemselves) {
-  EXPECT_TRUE(judges_itself("mlndt"));
-  EXPECT_TRUE(judges_itself("fbmlndt"));
-  for (const char* name : {"mlndt", "fbmlndt"}) {
-    const std::unique_ptr<Matcher> m = matcher_choice(name, YAML::Node(), "<test>").make();
-    EXPECT_EQ(dynamic_cast<JudgedMatcher*>(m.get()), nullptr) << name;
-  }
-  for (const char* name : {"ndt", "icp_p2l", "icp_p2p", "pcl_ndt", "pcl_icp", "pcl_gicp"}) {
-    const std::unique_ptr<Matcher> m = matcher_choice(name, YAML::Node(), "<test>").make();
-    EXPECT_NE(dynamic_cast<JudgedMatcher*>(m.get()), nullptr) << name;
-    EXPECT_EQ(m->name(), name);
+  EXPECT_TRUE(matcher_traits("mlndt").judges_itself);
+  EXPECT_TRUE(matcher_traits("fbmlndt").judges_itself);
+  for (const std::string& name : matcher_registry().names()) {
+    const MatcherChoice choice = matcher_choice(name, YAML::Node(), "<test>");
+    const std::unique_ptr<Matcher> m = choice.make();
+    EXPECT_EQ(dynamic_cast<JudgedMatcher*>(m.get()) == nullptr, matcher_traits(name).judges_itself) << name;
+    EXPECT_EQ(static_cast<bool>(choice.make_wide), matcher_traits(name).has_wide_basin) << name;
+    if (!matcher_traits(name).judges_itself) {
+      EXPECT_EQ(m->name(), name);
+    }
   }
   EXPECT_NE(
       dynamic_cast<JudgedMatcher*>(matcher_choice(IcpObjective::kPointToPlane, IcpSettings{}).make().get()),

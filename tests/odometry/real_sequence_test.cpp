@@ -18,6 +18,7 @@
 #include "sextant/core/units.hpp"
 #include "sextant/eval/vehicle_slip.hpp"
 #include "sextant/matchers/match_pair.hpp"
+#include "sextant/matchers/matcher_traits.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/register_pair.hpp"
 #include "sextant/matchers/sampler.hpp"
@@ -189,7 +190,7 @@ TEST(RealSequence, APlainIcpChainSaysItStoodStill) {
   s.registration = odometry_registration({"icp_p2l", YAML::Node(), "gbs", YAML::Node()});
   s.guess = OdometryGuess::constant_velocity;
   s.map = OdometryMap::scan;
-  s.common_view = common_view_by_default("icp_p2l");
+  s.common_view = matcher_traits("icp_p2l").common_view_by_default;
   s.recover = false;
   const std::size_t first = 116, count = 12;
   const OdometryResult r = run_odometry(*dataset, s, first, count);

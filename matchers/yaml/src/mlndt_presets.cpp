@@ -5,6 +5,7 @@
 
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/matchers/matcher_traits.hpp"
 
 namespace sextant {
 namespace {
@@ -55,7 +56,7 @@ YAML::Node mlndt_preset(const std::string& name, const std::string& file) {
 }
 
 std::optional<YAML::Node> with_wide_basin(const std::string& matcher, const YAML::Node& settings) {
-  if (matcher != "mlndt" && matcher != "fbmlndt") return std::nullopt;
+  if (!matcher_traits(matcher).has_wide_basin) return std::nullopt;
   YAML::Node wide = settings.IsMap() ? YAML::Clone(settings) : YAML::Node(YAML::NodeType::Map);
   if (!wide["wide_basin"].IsDefined()) wide["wide_basin"] = YAML::Node(YAML::NodeType::Map);
   return wide;

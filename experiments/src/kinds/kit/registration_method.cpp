@@ -40,7 +40,8 @@ RegistrationMethod read_registration_method(const YAML::Node& node, const std::s
     else if (m.matcher == "fbmlndt")
       m.last_layer = read_fbmlndt_settings(m.settings, file).mlndt.pyramid.layers;
     else
-      in.fail("adaptive_start", "key 'adaptive_start': needs matcher mlndt or fbmlndt (a layer pyramid)");
+      in.fail("adaptive_start",
+              "key 'adaptive_start': needs a matcher with a layer pyramid (mlndt or fbmlndt)");
     if (m.adaptive_start.middle_layer > m.last_layer)
       in.fail("adaptive_start",
               "key 'adaptive_start': middle_layer is past the last layer " + std::to_string(m.last_layer));

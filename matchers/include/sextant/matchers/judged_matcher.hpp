@@ -34,9 +34,7 @@ class JudgedMatcher final : public Matcher {
   MlndtMatcher judge_;  ///< the default ML-NDT without its precision stage (only its layers judge)
 };
 
-/// Whether the matcher named `name` judges its own poses (mlndt and fbmlndt: the last layer's view).
-bool judges_itself(const std::string& name);
-/// `matcher` as it is when it judges itself, else in a JudgedMatcher.
+/// `matcher` as it is when it judges itself (matcher_traits.hpp), else in a JudgedMatcher.
 std::unique_ptr<Matcher> judged(std::unique_ptr<Matcher> matcher);
 
 }  // namespace sextant

@@ -67,7 +67,7 @@ struct OdometrySettings {
   /// measured more accurate on the campus, both MulRan stretches and their harder reads, with no step
   /// more than 1 m or 5° off trusted where the reference is a car's path (docs/matcher_defaults.md,
   /// "Registering only what both scans can see"); false registers the whole scans. The default of
-  /// ML-NDT, the default matcher (common_view_by_default)
+  /// ML-NDT, the default matcher (MatcherTraits::common_view_by_default, matcher_traits.hpp)
   bool common_view = true;
   /// Points closer than this to the sensor are dropped from every scan before matching (the
   /// vehicle's own body moves with the sensor and pulls registrations towards no motion) [m]; 0 keeps all.
@@ -177,11 +177,5 @@ std::string to_string(OdometryGuess guess);
 /// "scan" | "local_map"; InputError(`what`) naming the choices otherwise.
 OdometryMap parse_odometry_map(const std::string& text, const std::string& what = "map");
 std::string to_string(OdometryMap map);
-
-/// Whether OdometrySettings::common_view is the default for the matcher `method` (registry name): for
-/// ML-NDT (`mlndt`), measured better on the campus and both MulRan stretches; whole scans for the
-/// others, which were not measured better with it (PCL's GICP drifts 0.32 % with it on the campus,
-/// 0.06 % without). docs/matcher_defaults.md, "Registering only what both scans can see".
-bool common_view_by_default(const std::string& method);
 
 }  // namespace sextant

@@ -31,7 +31,7 @@ struct OdometryRequest {
   std::string guess;                  ///< empty: odometry when the dataset has it, else constant_velocity
   std::string map = "local_map";
   std::string sensor = "auto", platform = "auto";
-  std::optional<bool> common_view;  ///< none: the method's default (common_view_by_default)
+  std::optional<bool> common_view;  ///< none: the method's default (matcher_traits.hpp)
   std::size_t first = 0;
   std::size_t scans = 0;  ///< 0: to the end of the dataset
   std::size_t local_map_scans = 5;
