@@ -144,7 +144,7 @@ int run_eval(const EvalOptions& o) {
   const LoadedTrajectory reference = load(o.reference, o.format);
   const LoadedTrajectory estimate = load(o.estimate, o.format);
   TrajectoryEvaluationSettings settings;
-  if (!parse_alignment(o.align, &settings.alignment))
+  if (!from_string(o.align, &settings.alignment))
     throw std::invalid_argument("--align must be se3, sim3, origin or none, not '" + o.align + "'");
   settings.rpe.unit = o.delta_unit == "m" ? RpeSettings::Unit::meters : RpeSettings::Unit::frames;
   settings.rpe.delta = o.delta;

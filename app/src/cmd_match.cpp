@@ -323,7 +323,7 @@ int run_match(MatchOptions o) {
   if (!o.init.empty()) request.init = initial;
   request.wide_basin = !o.no_wide_basin;
   request.seed = o.seed;
-  request.sensor = parse_sensor_kind(o.sensor, "--sensor");
+  request.sensor = parse_enum(kSensorKindNames, o.sensor, "--sensor");
   const PairRegistration registered = register_pair(reference, input, request);
   const PairMatch& m = registered.match;
   std::string search = registered.search;

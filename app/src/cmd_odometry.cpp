@@ -70,8 +70,9 @@ int run_odometry_command(const OdometryOptions& o) {
   OdometrySettings settings = odometry_settings(request, Face::cli);
   std::optional<LoopCandidateSource> loop_source;
   if (!o.loop_closure.empty()) {
-    bool ok = false;
-    loop_source = loop_candidate_source_from_string(o.loop_closure, &ok);
+    LoopCandidateSource source{};
+    const bool ok = from_string(o.loop_closure, &source);
+    loop_source = source;
     if (!ok)
       throw InputError("--loop-closure", "",
                        "'" + o.loop_closure + "': expected proximity, descriptor or both");

@@ -64,7 +64,7 @@ MatcherConfig read_matcher_config(const MatcherOptions& o) {
     if (!matcher_traits(o.method).has_presets)
       throw InputError("--solver", "",
                        "a solver is a setting of mlndt and fbmlndt, not of '" + o.method + "'");
-    if (!solver_from_name(o.solver, kind))
+    if (!from_string(o.solver, &kind))
       throw InputError("--solver", "", "unknown solver '" + o.solver + "' (known: newton, lm, ceres)");
     config.matcher["solver"] = o.solver;
   }

@@ -3,7 +3,6 @@
 #include <atomic>
 #include <iostream>
 #include <mutex>
-#include <stdexcept>
 
 namespace sextant {
 namespace {
@@ -21,24 +20,12 @@ LogLevel log_level() {
   return static_cast<LogLevel>(g_level.load());
 }
 
-LogLevel parse_log_level(const std::string& name) {
-  if (name == "debug") return LogLevel::debug;
-  if (name == "info") return LogLevel::info;
-  if (name == "warning" || name == "warn") return LogLevel::warning;
-  if (name == "error") return LogLevel::error;
-  if (name == "off") return LogLevel::off;
-  throw std::invalid_argument("unknown log level '" + name + "' (known: debug info warning error off)");
+bool from_string(const std::string& text, LogLevel* out) {
+  return from_name(kLogLevelNames, text, out);
 }
 
-const char* log_level_name(LogLevel level) {
-  switch (level) {
-    case LogLevel::debug: return "debug";
-    case LogLevel::info: return "info";
-    case LogLevel::warning: return "warning";
-    case LogLevel::error: return "error";
-    case LogLevel::off: return "off";
-  }
-  return "?";
+std::string to_string(LogLevel level) {
+  return name_of(kLogLevelNames, level);
 }
 
 void set_log_sink(std::ostream* sink) {
@@ -48,7 +35,7 @@ void set_log_sink(std::ostream* sink) {
 
 void log(LogLevel level, const std::string& message) {
   if (level == LogLevel::off || static_cast<int>(level) < g_level.load()) return;
-  const std::string line = std::string("[") + log_level_name(level) + "] " + message + "\n";
+  const std::string line = "[" + to_string(level) + "] " + message + "\n";
   std::lock_guard<std::mutex> lock(g_mutex);
   std::ostream& out = g_sink ? *g_sink : std::cerr;
   out << line << std::flush;

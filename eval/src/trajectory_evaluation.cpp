@@ -114,24 +114,12 @@ TrajectoryEvaluation evaluate_trajectory(const PoseList& estimate, const PoseLis
   return r;
 }
 
-bool parse_alignment(const std::string& text, Alignment* alignment) {
-  for (Alignment a : {Alignment::se3, Alignment::sim3, Alignment::origin, Alignment::none}) {
-    if (text == alignment_name(a)) {
-      *alignment = a;
-      return true;
-    }
-  }
-  return false;
+bool from_string(const std::string& text, Alignment* out) {
+  return from_name(kAlignmentNames, text, out);
 }
 
-std::string alignment_name(Alignment alignment) {
-  switch (alignment) {
-    case Alignment::se3: return "se3";
-    case Alignment::sim3: return "sim3";
-    case Alignment::origin: return "origin";
-    case Alignment::none: return "none";
-  }
-  return "?";
+std::string to_string(Alignment alignment) {
+  return name_of(kAlignmentNames, alignment);
 }
 
 }  // namespace sextant

@@ -163,7 +163,7 @@ bool PlaneExtractionSettings::valid(std::string* why) const {
   if (!(min_inlier_ratio >= 0.0 && min_inlier_ratio <= 1.0))
     return fail("min_inlier_ratio must be in [0, 1]");
   if (max_planes_per_cell < 1) return fail("max_planes_per_cell must be ≥ 1");
-  if (!parse_plane_refit(refit, &method)) return fail("refit must be 'pca' or 'svd'");
+  if (!from_string(refit, &method)) return fail("refit must be 'pca' or 'svd'");
   if (!merge_thresholds.valid(why)) return false;
   if (!(horizontal_max_tilt_deg >= 0.0 && horizontal_max_tilt_deg <= 90.0))
     return fail("horizontal_max_tilt_deg must be in [0, 90]");
@@ -186,7 +186,7 @@ PlaneExtraction extract_cell_planes(const PointCloud& cloud, const PlaneExtracti
   const auto start = Clock::now();
   PlaneExtraction out;
   PlaneRefit refit = PlaneRefit::pca;
-  parse_plane_refit(settings.refit, &refit);
+  from_string(settings.refit, &refit);
   const PointsView points = cloud.points();
 
   // Splitting: (cell key, point index) sorted by key, so each cell is a contiguous run.

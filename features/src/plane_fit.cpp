@@ -58,15 +58,12 @@ PointMoments compute_moments(const std::vector<Eigen::Vector3d>& points) {
   return m;
 }
 
-bool parse_plane_refit(const std::string& text, PlaneRefit* out) {
-  if (text == "pca") {
-    *out = PlaneRefit::pca;
-  } else if (text == "svd") {
-    *out = PlaneRefit::svd;
-  } else {
-    return false;
-  }
-  return true;
+bool from_string(const std::string& text, PlaneRefit* out) {
+  return from_name(kPlaneRefitNames, text, out);
+}
+
+std::string to_string(PlaneRefit refit) {
+  return name_of(kPlaneRefitNames, refit);
 }
 
 PlaneFit fit_plane_pca(const PointMoments& moments) {

@@ -319,52 +319,20 @@ class Loop {
 
 }  // namespace
 
-bool solver_from_name(const std::string& name, SolverKind& kind) {
-  if (name == "newton")
-    kind = SolverKind::kNewton;
-  else if (name == "lm")
-    kind = SolverKind::kLevenbergMarquardt;
-  else if (name == "ceres")
-    kind = SolverKind::kCeres;
-  else
-    return false;
-  return true;
+bool from_string(const std::string& text, SolverKind* out) {
+  return from_name(kSolverNames, text, out);
 }
 
-bool step_control_from_name(const std::string& name, StepControl& control) {
-  if (name == "none")
-    control = StepControl::kNone;
-  else if (name == "line_search")
-    control = StepControl::kLineSearch;
-  else if (name == "more_thuente")
-    control = StepControl::kMoreThuente;
-  else if (name == "trust_region")
-    control = StepControl::kTrustRegion;
-  else if (name == "trust_region_last")
-    control = StepControl::kTrustRegionLast;
-  else
-    return false;
-  return true;
+bool from_string(const std::string& text, StepControl* out) {
+  return from_name(kStepControlNames, text, out);
 }
 
 std::string to_string(StepControl control) {
-  switch (control) {
-    case StepControl::kNone: return "none";
-    case StepControl::kLineSearch: return "line_search";
-    case StepControl::kMoreThuente: return "more_thuente";
-    case StepControl::kTrustRegion: return "trust_region";
-    case StepControl::kTrustRegionLast: return "trust_region_last";
-  }
-  return "unknown";
+  return name_of(kStepControlNames, control);
 }
 
 std::string to_string(SolverKind kind) {
-  switch (kind) {
-    case SolverKind::kNewton: return "newton";
-    case SolverKind::kLevenbergMarquardt: return "lm";
-    case SolverKind::kCeres: return "ceres";
-  }
-  return "unknown";
+  return name_of(kSolverNames, kind);
 }
 
 bool OptimizerSettings::valid(std::string* why) const {

@@ -10,20 +10,12 @@
 
 namespace sextant {
 
-SensorKind parse_sensor_kind(const std::string& text, const std::string& what) {
-  if (text == "auto") return SensorKind::automatic;
-  if (text == "spinning") return SensorKind::spinning;
-  if (text == "solid_state") return SensorKind::solid_state;
-  throw InputError(what, "", "unknown sensor '" + text + "' (known: auto, spinning, solid_state)");
+bool from_string(const std::string& text, SensorKind* out) {
+  return from_name(kSensorKindNames, text, out);
 }
 
 std::string to_string(SensorKind kind) {
-  switch (kind) {
-    case SensorKind::automatic: return "auto";
-    case SensorKind::spinning: return "spinning";
-    case SensorKind::solid_state: return "solid_state";
-  }
-  return "?";
+  return name_of(kSensorKindNames, kind);
 }
 
 SensorDetection detect_sensor(const PointCloud& scan) {

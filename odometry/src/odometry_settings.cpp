@@ -21,35 +21,20 @@ std::string OdometrySettings::problem() const {
   return {};
 }
 
-OdometryGuess parse_odometry_guess(const std::string& text, const std::string& what) {
-  if (text == "odometry") return OdometryGuess::odometry;
-  if (text == "constant_velocity") return OdometryGuess::constant_velocity;
-  if (text == "identity") return OdometryGuess::identity;
-  throw InputError(what, "",
-                   "unknown guess mode '" + text + "' (known: odometry, constant_velocity, identity)");
+bool from_string(const std::string& text, OdometryGuess* out) {
+  return from_name(kOdometryGuessNames, text, out);
 }
 
 std::string to_string(OdometryGuess guess) {
-  switch (guess) {
-    case OdometryGuess::odometry: return "odometry";
-    case OdometryGuess::constant_velocity: return "constant_velocity";
-    case OdometryGuess::identity: return "identity";
-  }
-  return "?";
+  return name_of(kOdometryGuessNames, guess);
 }
 
-OdometryMap parse_odometry_map(const std::string& text, const std::string& what) {
-  if (text == "scan") return OdometryMap::scan;
-  if (text == "local_map") return OdometryMap::local_map;
-  throw InputError(what, "", "unknown map mode '" + text + "' (known: scan, local_map)");
+bool from_string(const std::string& text, OdometryMap* out) {
+  return from_name(kOdometryMapNames, text, out);
 }
 
 std::string to_string(OdometryMap map) {
-  switch (map) {
-    case OdometryMap::scan: return "scan";
-    case OdometryMap::local_map: return "local_map";
-  }
-  return "?";
+  return name_of(kOdometryMapNames, map);
 }
 
 }  // namespace sextant

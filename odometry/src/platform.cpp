@@ -7,20 +7,12 @@
 
 namespace sextant {
 
-Platform parse_platform(const std::string& text, const std::string& what) {
-  if (text == "auto") return Platform::automatic;
-  if (text == "car") return Platform::car;
-  if (text == "handheld") return Platform::handheld;
-  throw InputError(what, "", "unknown platform '" + text + "' (known: auto, car, handheld)");
+bool from_string(const std::string& text, Platform* out) {
+  return from_name(kPlatformNames, text, out);
 }
 
 std::string to_string(Platform platform) {
-  switch (platform) {
-    case Platform::automatic: return "auto";
-    case Platform::car: return "car";
-    case Platform::handheld: return "handheld";
-  }
-  return "?";
+  return name_of(kPlatformNames, platform);
 }
 
 QualitySettings platform_tolerance(const QualitySettings& base, Platform platform,

@@ -29,16 +29,16 @@ std::string given(Face face, const std::string& name, const std::string& value) 
 
 OdometrySettings odometry_settings(const OdometryRequest& r, Face face) {
   OdometrySettings s;
-  s.map = parse_odometry_map(r.map, argument(face, "map"));
-  if (!r.guess.empty()) s.guess = parse_odometry_guess(r.guess, argument(face, "guess"));
+  s.map = parse_enum(kOdometryMapNames, r.map, argument(face, "map"));
+  if (!r.guess.empty()) s.guess = parse_enum(kOdometryGuessNames, r.guess, argument(face, "guess"));
   s.registration = r.registration;
   s.local_map_scans = r.local_map_scans;
   s.min_range = r.min_range;
   s.max_acceleration = r.max_acceleration;
   s.seed = r.seed;
   s.recover = r.recover;
-  s.sensor = parse_sensor_kind(r.sensor, argument(face, "sensor"));
-  s.platform = parse_platform(r.platform, argument(face, "platform"));
+  s.sensor = parse_enum(kSensorKindNames, r.sensor, argument(face, "sensor"));
+  s.platform = parse_enum(kPlatformNames, r.platform, argument(face, "platform"));
   s.common_view = r.common_view.value_or(matcher_traits(r.method).common_view_by_default);
   if (const std::string why = s.problem(); !why.empty()) throw InputError("arguments", "", why);
   return s;

@@ -12,21 +12,11 @@
 namespace sextant {
 
 std::string to_string(LoopCandidateSource source) {
-  switch (source) {
-    case LoopCandidateSource::proximity: return "proximity";
-    case LoopCandidateSource::descriptor: return "descriptor";
-    case LoopCandidateSource::both: break;
-  }
-  return "both";
+  return name_of(kLoopCandidateSourceNames, source);
 }
 
-LoopCandidateSource loop_candidate_source_from_string(const std::string& name, bool* ok) {
-  *ok = true;
-  if (name == "proximity") return LoopCandidateSource::proximity;
-  if (name == "descriptor") return LoopCandidateSource::descriptor;
-  if (name == "both") return LoopCandidateSource::both;
-  *ok = false;
-  return LoopCandidateSource::both;
+bool from_string(const std::string& text, LoopCandidateSource* out) {
+  return from_name(kLoopCandidateSourceNames, text, out);
 }
 
 bool LoopClosingSettings::valid(std::string* why) const {

@@ -3,22 +3,12 @@
 
 namespace sextant {
 
-RobustLoss robust_loss_from_string(const std::string& name, bool* ok) {
-  *ok = true;
-  if (name == "none") return RobustLoss::none;
-  if (name == "huber") return RobustLoss::huber;
-  if (name == "cauchy") return RobustLoss::cauchy;
-  *ok = false;
-  return RobustLoss::none;
+bool from_string(const std::string& text, RobustLoss* out) {
+  return from_name(kRobustLossNames, text, out);
 }
 
 std::string to_string(RobustLoss loss) {
-  switch (loss) {
-    case RobustLoss::huber: return "huber";
-    case RobustLoss::cauchy: return "cauchy";
-    case RobustLoss::none: break;
-  }
-  return "none";
+  return name_of(kRobustLossNames, loss);
 }
 
 }  // namespace sextant

@@ -42,7 +42,7 @@ py::dict stats(const SampleStats& s) {
 
 Alignment alignment_named(const std::string& name) {
   Alignment a;
-  if (!parse_alignment(name, &a))
+  if (!from_string(name, &a))
     throw py::value_error("alignment: unknown '" + name + "' (known: none, se3, sim3, origin)");
   return a;
 }

@@ -4,6 +4,7 @@
 #include <thread>
 #include <vector>
 
+#include "sextant/core/error.hpp"
 #include "sextant/core/log.hpp"
 #include "sextant/core/progress.hpp"
 
@@ -21,8 +22,12 @@ TEST(Log, LevelsFilterMessages) {
   set_log_level(before);
   set_log_sink(nullptr);
   EXPECT_EQ(sink.str(), "[warning] shown\n[error] also shown\n");
-  EXPECT_EQ(parse_log_level("warn"), LogLevel::warning);
-  EXPECT_THROW(parse_log_level("loud"), std::invalid_argument);
+  LogLevel level = LogLevel::info;
+  EXPECT_TRUE(from_string("warn", &level));
+  EXPECT_EQ(level, LogLevel::warning);
+  EXPECT_EQ(to_string(LogLevel::warning), "warning") << "the first name is the one written";
+  EXPECT_FALSE(from_string("loud", &level));
+  EXPECT_THROW(parse_enum(kLogLevelNames, "loud", "--log-level"), InputError);
 }
 
 TEST(Progress, CountsTicksFromManyThreads) {

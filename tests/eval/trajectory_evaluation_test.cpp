@@ -49,9 +49,9 @@ TEST(TrajectoryEvaluation, RigidCopyIsExactAfterSe3AndOriginAndOffByTheMoveWitho
     s.alignment = a;
     const TrajectoryEvaluation e = evaluate_trajectory(pairs.estimate, pairs.reference, s);
     ASSERT_TRUE(e.status.ok) << e.status.message;
-    EXPECT_NEAR(e.ate.translation.rms, 0.0, 1e-9) << alignment_name(a);
-    EXPECT_NEAR(e.ate.rotation.rms, 0.0, 1e-7) << alignment_name(a);  // an angle from acos: √ε
-    EXPECT_NEAR(e.wulf.position_rms, 0.0, 1e-9) << alignment_name(a);
+    EXPECT_NEAR(e.ate.translation.rms, 0.0, 1e-9) << to_string(a);
+    EXPECT_NEAR(e.ate.rotation.rms, 0.0, 1e-7) << to_string(a);  // an angle from acos: √ε
+    EXPECT_NEAR(e.wulf.position_rms, 0.0, 1e-9) << to_string(a);
     EXPECT_NEAR(e.rpe.translation.rms, 0.0, 1e-9);
     EXPECT_NEAR(e.kummerle.translation_rms, 0.0, 1e-9);
   }

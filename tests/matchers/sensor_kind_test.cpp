@@ -65,9 +65,9 @@ TEST(SensorKind, DeclaredWinsAndTheMeasurementIsKept) {
 
 TEST(SensorKind, NamesRoundTripAndAnUnknownOneIsNamed) {
   for (const SensorKind k : {SensorKind::automatic, SensorKind::spinning, SensorKind::solid_state})
-    EXPECT_EQ(parse_sensor_kind(to_string(k)), k);
+    EXPECT_EQ(parse_enum(kSensorKindNames, to_string(k), "sensor"), k);
   try {
-    parse_sensor_kind("mems", "--sensor");
+    parse_enum(kSensorKindNames, "mems", "--sensor");
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("--sensor"), std::string::npos) << e.what();

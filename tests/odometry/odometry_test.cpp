@@ -260,10 +260,10 @@ TEST(Odometry, BadRangesAndSettingsAreErrors) {
   s = mlndt_settings();
   s.seeds = {1, 2};  // fewer seeds than scans
   EXPECT_THROW(run_odometry(campus(), s, 0, 3), InputError);
-  EXPECT_THROW(parse_odometry_guess("gps"), InputError);
-  EXPECT_THROW(parse_odometry_map("global"), InputError);
-  EXPECT_EQ(parse_odometry_guess("constant_velocity"), OdometryGuess::constant_velocity);
-  EXPECT_EQ(parse_odometry_map("local_map"), OdometryMap::local_map);
+  EXPECT_THROW(parse_enum(kOdometryGuessNames, "gps", "guess"), InputError);
+  EXPECT_THROW(parse_enum(kOdometryMapNames, "global", "map"), InputError);
+  EXPECT_EQ(parse_enum(kOdometryGuessNames, "constant_velocity", "guess"), OdometryGuess::constant_velocity);
+  EXPECT_EQ(parse_enum(kOdometryMapNames, "local_map", "map"), OdometryMap::local_map);
   // One scan: no registration, the pose of the scan.
   const OdometryResult one = run_odometry(campus(), mlndt_settings(), 3, 1);
   EXPECT_TRUE(one.steps.empty());

@@ -60,8 +60,8 @@ TEST(Platform, TheTypicalStepIsTheMedianOfTheLastTrustedSteps) {
 
 TEST(Platform, NamesRoundTripAndAnUnknownOneIsNamed) {
   for (const Platform p : {Platform::automatic, Platform::car, Platform::handheld})
-    EXPECT_EQ(parse_platform(to_string(p)), p);
-  EXPECT_THROW(parse_platform("drone", "--platform"), InputError);
+    EXPECT_EQ(parse_enum(kPlatformNames, to_string(p), "platform"), p);
+  EXPECT_THROW(parse_enum(kPlatformNames, "drone", "--platform"), InputError);
 }
 
 }  // namespace

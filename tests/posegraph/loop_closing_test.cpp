@@ -105,13 +105,13 @@ TEST(LoopClosing, DescriptorCandidatesMustBeTrusted) {
 TEST(LoopClosing, SourceNamesRoundTrip) {
   for (const auto source :
        {LoopCandidateSource::proximity, LoopCandidateSource::descriptor, LoopCandidateSource::both}) {
-    bool ok = false;
-    EXPECT_EQ(loop_candidate_source_from_string(to_string(source), &ok), source);
-    EXPECT_TRUE(ok);
+    LoopCandidateSource back{};
+    EXPECT_TRUE(from_string(to_string(source), &back));
+    EXPECT_EQ(back, source);
   }
-  bool ok = true;
-  loop_candidate_source_from_string("nearby", &ok);
-  EXPECT_FALSE(ok);
+  LoopCandidateSource unchanged = LoopCandidateSource::descriptor;
+  EXPECT_FALSE(from_string("nearby", &unchanged));
+  EXPECT_EQ(unchanged, LoopCandidateSource::descriptor);
 }
 
 }  // namespace

@@ -8,7 +8,7 @@ namespace sextant {
 
 void read_optimizer_settings(SettingsReader& in, const std::string& known_solvers, OptimizerSettings& s) {
   std::string solver = to_string(s.solver), control = to_string(s.step_control);  // the defaults
-  if (in.read("solver", solver) && !solver_from_name(solver, s.solver))
+  if (in.read("solver", solver) && !from_string(solver, &s.solver))
     in.fail("solver", "unknown solver '" + solver + "' (known: " + known_solvers + ")");
   in.read("max_iterations", s.max_iterations);
   in.read("epsilon", s.epsilon);
@@ -18,7 +18,7 @@ void read_optimizer_settings(SettingsReader& in, const std::string& known_solver
   if (legacy) s.step_control = line_search ? StepControl::kLineSearch : StepControl::kNone;
   if (in.read("step_control", control)) {
     if (legacy) in.fail("step_control", "give step_control or line_search, not both");
-    if (!step_control_from_name(control, s.step_control))
+    if (!from_string(control, &s.step_control))
       in.fail("step_control",
               "key 'step_control': '" + control +
                   "' is not none, line_search, more_thuente, trust_region or trust_region_last");

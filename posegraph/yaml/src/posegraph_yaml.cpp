@@ -10,9 +10,9 @@ PoseGraphSettings read_pose_graph_settings(const YAML::Node& node, const std::st
   SettingsReader in(node, file);
   std::string loss = to_string(s.loss);
   if (in.read("loss", loss)) {
-    bool ok = false;
-    s.loss = robust_loss_from_string(loss, &ok);
-    if (!ok) in.fail("loss", "key 'loss': unknown robust loss '" + loss + "' (known: none, huber, cauchy)");
+    if (!from_string(loss, &s.loss))
+      in.fail("loss",
+              "key 'loss': unknown robust loss '" + loss + "' (known: " + names_list(kRobustLossNames) + ")");
   }
   in.read("loss_scale", s.loss_scale);
   in.read("robust_odometry", s.robust_odometry);

@@ -39,11 +39,13 @@ int main() {
   std::string why;
   check(sextant::PlaneExtractionSettings{}.valid(&why), "features: default extraction settings");
   check(sextant::IcpSettings{}.valid(&why), "matchers: default ICP settings");
-  check(sextant::parse_odometry_map("local_map") == sextant::OdometryMap::local_map, "odometry: map name");
+  check(
+      sextant::parse_enum(sextant::kOdometryMapNames, "local_map", "map") == sextant::OdometryMap::local_map,
+      "odometry: map name");
   check(sextant::PlaneSlamSettings{}.valid(&why), "filters: default plane-SLAM settings");
-  bool known = false;
-  sextant::robust_loss_from_string("huber", &known);
-  check(known, "posegraph: robust loss name");
+  sextant::RobustLoss loss{};
+  check(sextant::from_string("huber", &loss) && loss == sextant::RobustLoss::huber,
+        "posegraph: robust loss name");
   check(sextant::synth::WorldSettings{}.valid(&why), "synth: default world");
   check(!sextant::sextant_version().empty(), "pipeline: version " + sextant::sextant_version());
   // The YAML targets: one reader of each.

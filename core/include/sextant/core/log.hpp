@@ -5,6 +5,8 @@
 #include <ostream>
 #include <string>
 
+#include "sextant/core/enum_names.hpp"
+
 namespace sextant {
 
 enum class LogLevel { debug = 0, info = 1, warning = 2, error = 3, off = 4 };
@@ -12,9 +14,16 @@ enum class LogLevel { debug = 0, info = 1, warning = 2, error = 3, off = 4 };
 /// Messages below this level are dropped; default LogLevel::info.
 void set_log_level(LogLevel level);
 LogLevel log_level();
-/// "debug", "info", "warning" (or "warn"), "error", "off"; std::invalid_argument otherwise.
-LogLevel parse_log_level(const std::string& name);
-const char* log_level_name(LogLevel level);
+/// "debug", "info", "warning" (or "warn"), "error", "off".
+inline constexpr EnumNames<LogLevel, 6> kLogLevelNames{"log level",
+                                                       {{{LogLevel::debug, "debug"},
+                                                         {LogLevel::info, "info"},
+                                                         {LogLevel::warning, "warning"},
+                                                         {LogLevel::warning, "warn"},
+                                                         {LogLevel::error, "error"},
+                                                         {LogLevel::off, "off"}}}};
+bool from_string(const std::string& text, LogLevel* out);
+std::string to_string(LogLevel level);
 
 /// Redirects the log (default std::cerr); nullptr restores stderr. For tests.
 void set_log_sink(std::ostream* sink);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "sextant/core/enum_names.hpp"
 #include "sextant/core/trajectory.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
 
@@ -52,8 +53,12 @@ struct TrajectoryEvaluation {
 TrajectoryEvaluation evaluate_trajectory(const PoseList& estimate, const PoseList& reference,
                                          const TrajectoryEvaluationSettings& settings = {});
 
-/// Parses "se3", "sim3", "origin" or "none"; false for anything else.
-bool parse_alignment(const std::string& text, Alignment* alignment);
-std::string alignment_name(Alignment alignment);
+inline constexpr EnumNames<Alignment, 4> kAlignmentNames{"alignment",
+                                                         {{{Alignment::se3, "se3"},
+                                                           {Alignment::sim3, "sim3"},
+                                                           {Alignment::origin, "origin"},
+                                                           {Alignment::none, "none"}}}};
+bool from_string(const std::string& text, Alignment* out);
+std::string to_string(Alignment alignment);
 
 }  // namespace sextant

@@ -43,9 +43,9 @@ LoopCandidateSource source_of(const MethodConfig& method, const std::string& fil
   in.require("name", name);
   in.require("candidates", candidates);
   in.finish();
-  bool ok = false;
-  const LoopCandidateSource source = loop_candidate_source_from_string(candidates, &ok);
-  if (!ok) in.fail("candidates", "key 'candidates' must be proximity, descriptor or both");
+  LoopCandidateSource source{};
+  if (!from_string(candidates, &source))
+    in.fail("candidates", "key 'candidates' must be proximity, descriptor or both");
   return source;
 }
 

@@ -40,7 +40,7 @@ PoseGraphParams read_pose_graph_params(const ExperimentConfig& config) {
     in.fail("odometry", "key 'odometry': '" + odometry + "' is not campus or resample");
   if (in.read("guess", guess)) {
     try {
-      p.guess = parse_odometry_guess(guess, "key 'guess'");
+      p.guess = parse_enum(kOdometryGuessNames, guess, "key 'guess'");
     } catch (const InputError& e) {
       in.fail("guess", e.what());
     }

@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "sextant/core/enum_names.hpp"
 #include "sextant/core/point_cloud.hpp"
 #include "sextant/features/plane.hpp"
 
@@ -37,8 +38,10 @@ enum class PlaneRefit {
   svd   ///< SVD of A = [x y z 1], β = last right-singular vector, eqs. (3.23)–(3.25)
 };
 
-/// Parses "pca" / "svd"; returns false for anything else.
-bool parse_plane_refit(const std::string& text, PlaneRefit* out);
+inline constexpr EnumNames<PlaneRefit, 2> kPlaneRefitNames{
+    "plane refit", {{{PlaneRefit::pca, "pca"}, {PlaneRefit::svd, "svd"}}}};
+bool from_string(const std::string& text, PlaneRefit* out);
+std::string to_string(PlaneRefit refit);
 
 struct PlaneFit {
   bool ok = false;                                        ///< false for < 3 points or a degenerate set

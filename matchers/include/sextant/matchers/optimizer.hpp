@@ -10,6 +10,7 @@
 #include <limits>
 #include <string>
 
+#include "sextant/core/enum_names.hpp"
 #include "sextant/matchers/dof_mask.hpp"
 #include "sextant/matchers/more_thuente.hpp"
 #include "sextant/matchers/ndt_score.hpp"
@@ -35,12 +36,21 @@ enum class SolverKind { kNewton, kLevenbergMarquardt, kCeres };
 ///                  recover: Mlndt.LongRangeBeatsFixedCellNdt).
 enum class StepControl { kNone, kLineSearch, kMoreThuente, kTrustRegion, kTrustRegionLast };
 
-/// "none", "line_search", "more_thuente", "trust_region", "trust_region_last"; false for others.
-bool step_control_from_name(const std::string& name, StepControl& control);
+inline constexpr EnumNames<StepControl, 5> kStepControlNames{
+    "step control",
+    {{{StepControl::kNone, "none"},
+      {StepControl::kLineSearch, "line_search"},
+      {StepControl::kMoreThuente, "more_thuente"},
+      {StepControl::kTrustRegion, "trust_region"},
+      {StepControl::kTrustRegionLast, "trust_region_last"}}}};
+bool from_string(const std::string& text, StepControl* out);
 std::string to_string(StepControl control);
 
-/// "newton", "lm", "ceres"; false for other names.
-bool solver_from_name(const std::string& name, SolverKind& kind);
+inline constexpr EnumNames<SolverKind, 3> kSolverNames{"solver",
+                                                       {{{SolverKind::kNewton, "newton"},
+                                                         {SolverKind::kLevenbergMarquardt, "lm"},
+                                                         {SolverKind::kCeres, "ceres"}}}};
+bool from_string(const std::string& text, SolverKind* out);
 std::string to_string(SolverKind kind);
 
 struct OptimizerSettings {

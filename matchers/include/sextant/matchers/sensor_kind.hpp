@@ -9,6 +9,7 @@
 // a spinning lidar sees the whole azimuth circle, a solid-state one a sector of it.
 #include <string>
 
+#include "sextant/core/enum_names.hpp"
 #include "sextant/core/point_cloud.hpp"
 
 namespace sextant {
@@ -19,8 +20,12 @@ enum class SensorKind {
   solid_state,  ///< a fixed field of view, no rings (e.g. a Livox's rosette)
 };
 
-/// "auto" | "spinning" | "solid_state"; InputError(`what`) naming the choices otherwise.
-SensorKind parse_sensor_kind(const std::string& text, const std::string& what = "sensor");
+/// The names: "auto", "spinning", "solid_state" (parse_enum(kSensorKindNames, text, what) for a user's).
+inline constexpr EnumNames<SensorKind, 3> kSensorKindNames{"sensor",
+                                                           {{{SensorKind::automatic, "auto"},
+                                                             {SensorKind::spinning, "spinning"},
+                                                             {SensorKind::solid_state, "solid_state"}}}};
+bool from_string(const std::string& text, SensorKind* out);
 std::string to_string(SensorKind kind);
 
 /// What detect_sensor measured, and what it concluded.

@@ -22,6 +22,7 @@
 #include <Eigen/Geometry>
 
 #include "sextant/core/dataset.hpp"
+#include "sextant/core/enum_names.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/matchers/registration_quality.hpp"
@@ -172,10 +173,17 @@ OdometryResult run_odometry(const Dataset& dataset, const OdometrySettings& sett
                             std::size_t count, const OdometryProgress& progress = {});
 
 /// "odometry" | "constant_velocity" | "identity"; InputError(`what`) naming the choices otherwise.
-OdometryGuess parse_odometry_guess(const std::string& text, const std::string& what = "guess");
+inline constexpr EnumNames<OdometryGuess, 3> kOdometryGuessNames{
+    "guess mode",
+    {{{OdometryGuess::odometry, "odometry"},
+      {OdometryGuess::constant_velocity, "constant_velocity"},
+      {OdometryGuess::identity, "identity"}}}};
+bool from_string(const std::string& text, OdometryGuess* out);
 std::string to_string(OdometryGuess guess);
 /// "scan" | "local_map"; InputError(`what`) naming the choices otherwise.
-OdometryMap parse_odometry_map(const std::string& text, const std::string& what = "map");
+inline constexpr EnumNames<OdometryMap, 2> kOdometryMapNames{
+    "map mode", {{{OdometryMap::scan, "scan"}, {OdometryMap::local_map, "local_map"}}}};
+bool from_string(const std::string& text, OdometryMap* out);
 std::string to_string(OdometryMap map);
 
 }  // namespace sextant

@@ -15,6 +15,7 @@
 
 #include <Eigen/Geometry>
 
+#include "sextant/core/enum_names.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 
 namespace sextant {
@@ -26,7 +27,9 @@ enum class Platform {
 };
 
 /// "auto" | "car" | "handheld"; InputError(`what`) naming the choices otherwise.
-Platform parse_platform(const std::string& text, const std::string& what = "platform");
+inline constexpr EnumNames<Platform, 3> kPlatformNames{
+    "platform", {{{Platform::automatic, "auto"}, {Platform::car, "car"}, {Platform::handheld, "handheld"}}}};
+bool from_string(const std::string& text, Platform* out);
 std::string to_string(Platform platform);
 
 /// The bounds of the tolerance: a sequence carried on foot's bar, and a car's (QualitySettings).

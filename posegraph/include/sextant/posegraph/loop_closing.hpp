@@ -25,6 +25,7 @@
 
 #include <Eigen/Geometry>
 
+#include "sextant/core/enum_names.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/matchers/registration_result.hpp"
@@ -36,9 +37,13 @@
 namespace sextant {
 
 enum class LoopCandidateSource { proximity, descriptor, both };
+inline constexpr EnumNames<LoopCandidateSource, 3> kLoopCandidateSourceNames{
+    "loop candidate source",
+    {{{LoopCandidateSource::proximity, "proximity"},
+      {LoopCandidateSource::descriptor, "descriptor"},
+      {LoopCandidateSource::both, "both"}}}};
+bool from_string(const std::string& text, LoopCandidateSource* out);
 std::string to_string(LoopCandidateSource source);
-/// "proximity", "descriptor", "both"; ok = false for anything else.
-LoopCandidateSource loop_candidate_source_from_string(const std::string& name, bool* ok);
 
 struct LoopClosingSettings {
   LoopCandidateSource source = LoopCandidateSource::both;

@@ -22,6 +22,7 @@
 
 #include <Eigen/Geometry>
 
+#include "sextant/core/enum_names.hpp"
 #include "sextant/core/pose.hpp"
 
 namespace sextant {
@@ -49,7 +50,10 @@ struct PoseGraphSettings {
   bool valid(std::string* why) const;
 };
 
-RobustLoss robust_loss_from_string(const std::string& name, bool* ok);
+inline constexpr EnumNames<RobustLoss, 3> kRobustLossNames{
+    "robust loss",
+    {{{RobustLoss::none, "none"}, {RobustLoss::huber, "huber"}, {RobustLoss::cauchy, "cauchy"}}}};
+bool from_string(const std::string& text, RobustLoss* out);
 std::string to_string(RobustLoss loss);
 
 /// What the solve did. Never throws for bad data: a singular or non-finite information matrix,
