@@ -12,7 +12,7 @@
 
 namespace sextant::cli {
 
-/// Exit status of every subcommand (README, "Exit status").
+/// Exit status of every subcommand (docs/bad_input.md).
 inline constexpr int kExitRuntimeError = 1;
 inline constexpr int kExitUsage = 2;
 inline constexpr int kExitUntrusted = 3;  ///< a registration that is not converged or not trusted

@@ -1,4 +1,4 @@
-// The `sextant` command line: one subcommand per file under cli/. Exit status, the same in every
+// The `sextant` command line: one subcommand per file in app/src/. Exit status, the same in every
 // subcommand: 0 success, 1 a runtime error (bad input, a failed run), 2 a usage error, 3 a result that
 // is not converged or not trusted (`match`).
 #include <iostream>
