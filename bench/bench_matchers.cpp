@@ -15,7 +15,7 @@
 #include <numeric>
 #include <string>
 
-#include "mahalanobis_kernel.hpp"
+#include "ndt/mahalanobis_kernel.hpp"
 #include "sextant/core/io/cloud_io.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/rng.hpp"

@@ -7,7 +7,7 @@
 
 #include "sextant/core/error.hpp"
 #include "sextant/core/pose.hpp"
-#include "sextant/matchers/feature_based_sampler.hpp"
+#include "sextant/matchers/fbmlndt_matcher.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/sampler.hpp"
 #include "sextant/matchers/yaml.hpp"

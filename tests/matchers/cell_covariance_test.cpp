@@ -13,7 +13,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
-#include "cell_covariance_lanes.hpp"
+#include "ndt/cell_covariance_lanes.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/matchers/cell_covariance.hpp"
 

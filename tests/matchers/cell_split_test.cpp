@@ -9,7 +9,7 @@
 #include <map>
 #include <vector>
 
-#include "cell_split.hpp"
+#include "ndt/cell_split.hpp"
 #include "sextant/core/rng.hpp"
 
 namespace sextant::ndt_detail {

@@ -5,7 +5,7 @@
 
 #include <limits>
 
-#include "mahalanobis_kernel.hpp"
+#include "ndt/mahalanobis_kernel.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/matchers/ndt_grid.hpp"
 #include "test_clouds.hpp"

@@ -10,7 +10,7 @@
 #include "sextant/core/io/cloud_io.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/core/settings_reader.hpp"
-#include "sextant/matchers/feature_based_sampler.hpp"
+#include "sextant/matchers/fbmlndt_matcher.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"

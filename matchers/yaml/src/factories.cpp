@@ -3,7 +3,7 @@
 #include "readers.hpp"
 
 #include "sextant/features/yaml.hpp"
-#include "sextant/matchers/feature_based_sampler.hpp"
+#include "sextant/matchers/fbmlndt_matcher.hpp"
 #include "sextant/matchers/icp.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/ndt_matcher.hpp"

@@ -16,7 +16,7 @@
 #include <memory>
 #include <string>
 
-#include "sextant/matchers/feature_based_sampler.hpp"
+#include "sextant/matchers/fbmlndt_matcher.hpp"
 #include "sextant/matchers/icp.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"

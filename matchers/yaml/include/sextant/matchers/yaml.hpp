@@ -29,7 +29,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "sextant/core/registry.hpp"
-#include "sextant/matchers/feature_based_sampler.hpp"
+#include "sextant/matchers/fbmlndt_matcher.hpp"
 #include "sextant/matchers/icp.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/matcher_choice.hpp"

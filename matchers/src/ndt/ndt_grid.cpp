@@ -11,8 +11,8 @@
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
 
-#include "cell_covariance_lanes.hpp"
-#include "cell_split.hpp"
+#include "ndt/cell_covariance_lanes.hpp"
+#include "ndt/cell_split.hpp"
 
 namespace sextant {
 

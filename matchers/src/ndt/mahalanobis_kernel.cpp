@@ -3,7 +3,7 @@
 // once at run time. Both give the same bits (KernelInstructionSet.* checks it): the body's lanes do
 // the same IEEE operations in the same order, and this file is compiled with -ffp-contract=off
 // (matchers/CMakeLists.txt), so no multiply-add is fused on one path and not on the other.
-#include "mahalanobis_kernel.hpp"
+#include "ndt/mahalanobis_kernel.hpp"
 
 #include <cstdint>
 
@@ -29,14 +29,14 @@ struct Lanes {
 
 namespace baseline {
 #define SEXTANT_LANES_TARGET
-#include "mahalanobis_lanes.inc"
+#include "ndt/mahalanobis_lanes.inc"
 #undef SEXTANT_LANES_TARGET
 }  // namespace baseline
 
 #if SEXTANT_HAVE_AVX2
 namespace avx2 {
 #define SEXTANT_LANES_TARGET __attribute__((target("avx2")))
-#include "mahalanobis_lanes.inc"
+#include "ndt/mahalanobis_lanes.inc"
 #undef SEXTANT_LANES_TARGET
 }  // namespace avx2
 #endif

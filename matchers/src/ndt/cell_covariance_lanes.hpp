@@ -4,7 +4,7 @@
 // (instruction_set.hpp); a cell gives the same bits alone, in a batch and on each instruction set.
 #include <cstddef>
 
-#include "instruction_set.hpp"
+#include "ndt/instruction_set.hpp"
 
 namespace sextant::ndt_detail {
 

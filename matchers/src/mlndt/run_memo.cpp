@@ -1,5 +1,5 @@
 // Remembered ML-NDT runs (run_memo.hpp).
-#include "run_memo.hpp"
+#include "mlndt/run_memo.hpp"
 
 #include <algorithm>
 #include <cstring>

@@ -9,7 +9,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
-#include "ceres_stage.hpp"
+#include "optim/ceres_stage.hpp"
 
 namespace sextant {
 

@@ -1,4 +1,4 @@
-#include "instruction_set.hpp"
+#include "ndt/instruction_set.hpp"
 
 namespace sextant {
 

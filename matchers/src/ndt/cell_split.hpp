@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "instruction_set.hpp"
+#include "ndt/instruction_set.hpp"
 #include "sextant/core/point_cloud.hpp"
 
 namespace sextant::ndt_detail {

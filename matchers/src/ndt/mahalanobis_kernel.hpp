@@ -3,8 +3,8 @@
 // block of input points (ndt_score.cpp sums the blocks in a fixed order).
 #include <Eigen/Core>
 
-#include "instruction_set.hpp"
-#include "score_sums.hpp"
+#include "ndt/instruction_set.hpp"
+#include "ndt/score_sums.hpp"
 #include "sextant/matchers/ndt_grid.hpp"
 #include "sextant/matchers/ndt_score.hpp"
 

@@ -2,7 +2,7 @@
 // twice on x86-64, for plain x86-64 and with AVX2, like the score kernel's (mahalanobis_kernel.cpp);
 // both give the same bits (CellSplit.* checks it). This file is compiled with -ffp-contract=off
 // (matchers/CMakeLists.txt): no multiply-add is fused on one path and not on the other.
-#include "cell_split.hpp"
+#include "ndt/cell_split.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -41,7 +41,7 @@ namespace baseline {
 inline vd widen(vf v) {
   return __builtin_convertvector(v, vd);
 }
-#include "cell_split_lanes.inc"
+#include "ndt/cell_split_lanes.inc"
 #undef SEXTANT_LANES_TARGET
 }  // namespace baseline
 
@@ -52,7 +52,7 @@ namespace avx2 {
 SEXTANT_LANES_TARGET inline vd widen(vf v) {
   return reinterpret_cast<vd>(_mm256_cvtps_pd(reinterpret_cast<__m128>(v)));
 }
-#include "cell_split_lanes.inc"
+#include "ndt/cell_split_lanes.inc"
 #undef SEXTANT_LANES_TARGET
 }  // namespace avx2
 #endif

@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "cell_covariance_lanes.hpp"
+#include "ndt/cell_covariance_lanes.hpp"
 
 #if SEXTANT_HAVE_AVX2
 #include <immintrin.h>
@@ -37,7 +37,7 @@ inline vd sqrt_lanes(vd v) {
   return vd{std::sqrt(v[0]), std::sqrt(v[1]), std::sqrt(v[2]), std::sqrt(v[3])};
 #endif
 }
-#include "cell_covariance_lanes.inc"
+#include "ndt/cell_covariance_lanes.inc"
 #undef SEXTANT_LANES_TARGET
 }  // namespace baseline
 
@@ -47,7 +47,7 @@ namespace avx2 {
 SEXTANT_LANES_TARGET inline vd sqrt_lanes(vd v) {
   return reinterpret_cast<vd>(_mm256_sqrt_pd(reinterpret_cast<__m256d>(v)));
 }
-#include "cell_covariance_lanes.inc"
+#include "ndt/cell_covariance_lanes.inc"
 #undef SEXTANT_LANES_TARGET
 }  // namespace avx2
 #endif

@@ -1,4 +1,4 @@
-#include "ceres_stage.hpp"
+#include "optim/ceres_stage.hpp"
 
 #include <ceres/ceres.h>
 

@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "layer_objective.hpp"
-#include "run_memo.hpp"
+#include "mlndt/layer_objective.hpp"
+#include "mlndt/run_memo.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 
 namespace sextant {

@@ -4,8 +4,8 @@
 // only adds to sums (C⁻¹, C⁻¹[u]×, [u]×ᵀC⁻¹[u]×, C⁻¹e·uᵀ) and A is applied once at the end.
 #include "sextant/matchers/ndt_score.hpp"
 
-#include "mahalanobis_kernel.hpp"
-#include "score_sums.hpp"
+#include "ndt/mahalanobis_kernel.hpp"
+#include "ndt/score_sums.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <memory>
 
-#include "layer_objective.hpp"
-#include "run_memo.hpp"
+#include "mlndt/layer_objective.hpp"
+#include "mlndt/run_memo.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 #include "sextant/matchers/sensor_kind.hpp"
