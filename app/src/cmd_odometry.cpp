@@ -9,7 +9,6 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 
 #include <oneapi/tbb/global_control.h>
@@ -20,8 +19,6 @@
 #include "sextant/core/atomic_file.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/progress.hpp"
-#include "sextant/matchers/matcher.hpp"
-#include "sextant/matchers/sampler.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/odometry/yaml.hpp"
 #include "sextant/pipeline/dataset_argument.hpp"
@@ -71,11 +68,10 @@ int run_odometry_command(const OdometryOptions& o) {
   std::optional<LoopCandidateSource> loop_source;
   if (!o.loop_closure.empty()) {
     LoopCandidateSource source{};
-    const bool ok = from_string(o.loop_closure, &source);
-    loop_source = source;
-    if (!ok)
+    if (!from_string(o.loop_closure, &source))
       throw InputError("--loop-closure", "",
                        "'" + o.loop_closure + "': expected proximity, descriptor or both");
+    loop_source = source;
   }
   std::optional<tbb::global_control> threads;
   if (o.jobs > 0)
