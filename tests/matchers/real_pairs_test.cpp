@@ -245,6 +245,24 @@ TEST(MlndtPresets, LibraryDefaultsAreTheDefaultPresetAndThesisPinsTheThesis) {
   // A key beside the preset overrides it.
   EXPECT_EQ(read_mlndt_settings(YAML::Load("{preset: thesis, solver: lm}"), "x").optimizer.solver,
             SolverKind::kLevenbergMarquardt);
+  // The YAML `preset:` is the preset in code (mlndt_presets.hpp), field for field where they differ.
+  const MlndtSettings code = *mlndt_preset("thesis");
+  EXPECT_EQ(code.optimizer.function_tolerance, thesis.optimizer.function_tolerance);
+  EXPECT_EQ(code.pyramid.bounds_quantile, thesis.pyramid.bounds_quantile);
+  EXPECT_EQ(code.refine_first, thesis.refine_first);
+  EXPECT_EQ(mlndt_preset("outdoor")->pyramid.layers,
+            read_mlndt_settings(YAML::Load("{preset: outdoor}"), "x").pyramid.layers);
+  EXPECT_EQ(mlndt_preset("default")->threads, 0) << "every thread TBB allows";
+  EXPECT_FALSE(mlndt_preset("fastest").has_value());
+  try {
+    read_mlndt_settings(YAML::Load("{layers: 5,\n preset: fastest}"), "exp.yaml");
+    ADD_FAILURE() << "an unknown preset must be an error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("exp.yaml:", 0), 0u) << e.what();
+    EXPECT_NE(std::string(e.what()).find("unknown preset 'fastest' (known: default, thesis, outdoor)"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 // The legacy boolean and the named setting: line_search: true = step_control: line_search; both at

@@ -8,6 +8,7 @@
 #include "sextant/core/rng.hpp"
 #include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
+#include "sextant/matchers/mlndt_presets.hpp"
 #include "sextant/matchers/register_pair.hpp"
 #include "sextant/matchers/samplers.hpp"
 
@@ -78,5 +79,13 @@ int main() {
   request.init = Eigen::Isometry3d::Identity();
   const sextant::PairRegistration pair = sextant::register_pair(reference, input, request);
   ok = near("register_pair", truth, pair.match.result.T) && ok;
-  return ok ? 0 : 1;
+
+  // The thesis' exact settings, asked for in code (mlndt_presets.hpp).
+  const std::optional<sextant::MlndtSettings> thesis = sextant::mlndt_preset("thesis");
+  const bool thesis_ok = thesis && thesis->optimizer.solver == sextant::SolverKind::kNewton &&
+                         thesis->optimizer.step_control == sextant::StepControl::kNone &&
+                         std::isinf(thesis->max_distance) && thesis->unmatched_penalty == 50.0 &&
+                         !thesis->precision.enabled() && !sextant::mlndt_preset("fastest");
+  std::printf("the thesis preset in code: %s\n", thesis_ok ? "as the thesis" : "wrong");
+  return ok && thesis_ok ? 0 : 1;
 }

@@ -74,9 +74,23 @@ WideBasinSettings read_wide_basin_settings(const YAML::Node& node, const std::st
 }
 
 MlndtSettings read_mlndt_settings(const YAML::Node& node, const std::string& file) {
-  const YAML::Node settings = expand_mlndt_preset(node, file);  // `preset:` first, other keys override
-  SettingsReader in(settings, file);
+  // A deep copy: yaml-cpp's lookups in a non-const node write to its memory, and parallel odometry steps
+  // read one settings map at once. (YAML::Clone keeps no line numbers: an error in a map with a
+  // preset names line 1, as the merged copy of the preset's map before it did.)
+  SettingsReader in(node.IsMap() ? YAML::Clone(node) : node, file);
+  // `preset:` first (mlndt_presets.hpp), the other keys override it; not recorded: the resolved
+  // settings are the keys it set.
   MlndtSettings s;
+  std::string preset;
+  if (in.read_alias("preset", preset)) {
+    const std::optional<MlndtSettings> named = mlndt_preset(preset);
+    if (!named) {
+      std::string known;
+      for (const std::string& n : mlndt_preset_names()) known += (known.empty() ? "" : ", ") + n;
+      in.fail("preset", "key 'preset': unknown preset '" + preset + "' (known: " + known + ")");
+    }
+    s = *named;
+  }
   in.read("division", s.pyramid.division);
   in.read("layers", s.pyramid.layers);
   in.read("bounds_quantile", s.pyramid.bounds_quantile);

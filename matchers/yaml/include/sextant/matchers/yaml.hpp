@@ -7,20 +7,11 @@
 //   auto matcher = make_matcher("mlndt", settings_node, "exp.yaml");
 //   MatcherChoice choice = matcher_choice("mlndt", settings_node, "exp.yaml");  // for register_pair
 //
-// ML-NDT presets: a map of `mlndt` (and `fbmlndt`, which forwards the mlndt keys) may say
-// `preset: <name>`; its other keys override the preset's. One rule everywhere: `default` unless a
-// preset is named (`sextant match`, `sextant odometry`, the Python module, the library).
-//
-//   default — the measured best over every shared real pair and three campus pairs from the guess a
-//             user has (bench/bench_matcher_defaults, docs/matcher_defaults.md): LM, q = 8, n = 4,
-//             s = 2, last-layer terms truncated at 16 (unmatched points charged 16), with GBS input;
-//             also the library's defaults (MlndtSettings{}, a settings map without `preset:`)
-//   thesis  — the thesis' exact settings (Table 3.1, §5.1): Newton with the step as printed (eq. 3.16
-//             with H + γI, no step control), q = 8, n = 4, s = 2, three iterations per layer, the
-//             plain sum of eq. 3.11, unmatched points charged 50 (every experiment config of the
-//             thesis' nineteen says `preset: thesis` and overrides what it deliberately changes,
-//             which its report section names)
-//   outdoor — large outdoor scans: the default with n = 6 (finest cells ≈ 0.6–1 m on 100 m scenes)
+// ML-NDT presets (mlndt_presets.hpp): a map of `mlndt` (and `fbmlndt`, which forwards the mlndt keys)
+// may say `preset: <name>`; it starts from that preset's settings and its other keys override them.
+// One rule everywhere: `default` unless a preset is named (`sextant match`, `sextant odometry`, the
+// Python module, the library); every experiment config of the thesis' nineteen says `preset: thesis`
+// and overrides what it deliberately changes, which its report section names.
 #include <memory>
 #include <optional>
 #include <string>
@@ -35,6 +26,7 @@
 #include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/matchers/mlndt_global_init.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
+#include "sextant/matchers/mlndt_presets.hpp"
 #include "sextant/matchers/ndt_matcher.hpp"
 #include "sextant/matchers/pcl_peers.hpp"
 #include "sextant/matchers/sampler.hpp"
@@ -89,17 +81,10 @@ MatcherChoice matcher_choice(const std::string& name, const YAML::Node& settings
 /// The sampler `name` with `settings`, read at every call; errors name `file`.
 SamplerFactory sampler_factory(const std::string& name, const YAML::Node& settings, const std::string& file);
 
-// --- ML-NDT presets ---
-
-/// The preset's settings map; InputError (naming `file`) for an unknown name.
-YAML::Node mlndt_preset(const std::string& name, const std::string& file = "<settings>");
-std::vector<std::string> mlndt_preset_names();
+// --- The wide basin ---
 
 /// `settings` (mlndt or fbmlndt) with the wide basin switched on (`wide_basin: {}` unless it has its
 /// own); nothing for a matcher without a wide basin.
 std::optional<YAML::Node> with_wide_basin(const std::string& matcher, const YAML::Node& settings);
-
-/// `settings` with its `preset:` key (if any) expanded: the preset's keys, overridden by the others.
-YAML::Node expand_mlndt_preset(const YAML::Node& settings, const std::string& file);
 
 }  // namespace sextant
