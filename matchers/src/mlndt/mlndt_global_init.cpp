@@ -22,6 +22,14 @@ struct Hypothesis {
   auto key() const { return std::tie(yaw, x, y, roll, pitch); }
 };
 
+/// Whole steps of `step` within ±`range` on one side of the guess (a grid of 2·n + 1 values).
+int steps_within(double range, double step) {
+  return static_cast<int>(std::floor(range / step + 1e-9));
+}
+
+/// The two sets of hypotheses: yaw × x/y, and yaw × roll × pitch at the guess' position.
+enum class HypothesisSet { level, tilted };
+
 /// At most `count` input points, evenly strided (deterministic, no random choice).
 PointCloud strided_subsample(const PointCloud& input, int count) {
   const std::size_t n = input.size(), want = static_cast<std::size_t>(count);
@@ -95,15 +103,15 @@ bool WideBasinSettings::valid(std::string* why) const {
 }
 
 long WideBasinSettings::hypotheses() const {
-  const long yaws = 2 * static_cast<long>(std::floor(yaw_range_deg / yaw_step_deg + 1e-9)) + 1;
-  const long side = 2 * static_cast<long>(std::floor(translation_range / translation_step + 1e-9)) + 1;
+  const long yaws = 2L * steps_within(yaw_range_deg, yaw_step_deg) + 1;
+  const long side = 2L * steps_within(translation_range, translation_step) + 1;
   return yaws * side * side;
 }
 
 long WideBasinSettings::tilted_hypotheses() const {
   if (tilt_candidates == 0) return 0;
-  const long yaws = 2 * static_cast<long>(std::floor(yaw_range_deg / yaw_step_deg + 1e-9)) + 1;
-  const long tilts = 2 * static_cast<long>(std::floor(tilt_range_deg / tilt_step_deg + 1e-9)) + 1;
+  const long yaws = 2L * steps_within(yaw_range_deg, yaw_step_deg) + 1;
+  const long tilts = 2L * steps_within(tilt_range_deg, tilt_step_deg) + 1;
   return yaws * (tilts * tilts - 1);
 }
 
@@ -121,13 +129,13 @@ namespace {
 std::vector<Eigen::Isometry3d> best_hypotheses(const std::vector<NdtGrid>& layers, const PointCloud& input,
                                                const Eigen::Isometry3d& initial,
                                                const WideBasinSettings& settings, const ScoreThreads& threads,
-                                               bool tilted_set) {
+                                               HypothesisSet set) {
+  const bool tilted_set = set == HypothesisSet::tilted;
   if (layers.empty() || input.empty() || (tilted_set && settings.tilt_candidates == 0)) return {};
   const NdtGrid& grid = layers[wide_basin_layer(layers, 2.0 * settings.translation_step)];
-  const int yaws = static_cast<int>(std::floor(settings.yaw_range_deg / settings.yaw_step_deg + 1e-9));
-  const int side =
-      static_cast<int>(std::floor(settings.translation_range / settings.translation_step + 1e-9));
-  const int tilts = static_cast<int>(std::floor(settings.tilt_range_deg / settings.tilt_step_deg + 1e-9));
+  const int yaws = steps_within(settings.yaw_range_deg, settings.yaw_step_deg);
+  const int side = steps_within(settings.translation_range, settings.translation_step);
+  const int tilts = steps_within(settings.tilt_range_deg, settings.tilt_step_deg);
   const double full_turn_steps = 360.0 / settings.yaw_step_deg;
   const auto pose_of = [&](const Hypothesis& h) {
     return hypothesis_pose(initial, h.yaw * settings.yaw_step_deg * kRadPerDeg,
@@ -212,7 +220,8 @@ std::vector<Eigen::Isometry3d> wide_basin_starts(const std::vector<NdtGrid>& lay
                                                  const WideBasinSettings& settings,
                                                  const ScoreThreads& threads) {
   std::vector<Eigen::Isometry3d> starts{initial};
-  for (const Eigen::Isometry3d& T : best_hypotheses(layers, input, initial, settings, threads, false))
+  for (const Eigen::Isometry3d& T :
+       best_hypotheses(layers, input, initial, settings, threads, HypothesisSet::level))
     starts.push_back(T);
   return starts;
 }
@@ -222,7 +231,7 @@ std::vector<Eigen::Isometry3d> wide_basin_tilted_starts(const std::vector<NdtGri
                                                         const Eigen::Isometry3d& initial,
                                                         const WideBasinSettings& settings,
                                                         const ScoreThreads& threads) {
-  return best_hypotheses(layers, input, initial, settings, threads, true);
+  return best_hypotheses(layers, input, initial, settings, threads, HypothesisSet::tilted);
 }
 
 }  // namespace sextant
