@@ -240,8 +240,8 @@ std::string sensor_text(const SensorDetection& sensor, const std::string& declar
   return out.str();
 }
 
-void print_text(const MatchOptions& o, const PairRegistration& registered, const std::string& search,
-                const std::optional<PoseError>& error, const std::string& trust_note) {
+void print_text(const MatchOptions& o, const MatcherConfig& config, const PairRegistration& registered,
+                const std::string& search, const std::optional<PoseError>& error) {
   const PairMatch& m = registered.match;
   const RegistrationResult& r = m.result;
   if (verbosity() == Verbosity::kQuiet) {  // the transform alone, and why it is not trusted
@@ -254,8 +254,9 @@ void print_text(const MatchOptions& o, const PairRegistration& registered, const
     return;
   }
   const Pose6 p = to_pose6(r.T);
-  std::cout << std::fixed << std::setprecision(6) << "method:      " << describe_matcher(o) << ", sampling "
-            << o.sampling << ": " << r.input_points << " points (" << std::setprecision(1)
+  const std::string trust_note = uncalibrated_trust_note(settings_off_the_defaults(config));
+  std::cout << std::fixed << std::setprecision(6) << "method:      " << describe_matcher(config)
+            << ", sampling " << o.sampling << ": " << r.input_points << " points (" << std::setprecision(1)
             << 100.0 * m.kept_fraction << "%)\n"
             << std::setprecision(6) << "transform:   (p_reference = T · p_input)\n";
   for (int i = 0; i < 4; ++i) {
@@ -296,10 +297,7 @@ void print_text(const MatchOptions& o, const PairRegistration& registered, const
 int run_match(MatchOptions o) {
   const MatcherConfig config = read_matcher_config(o);
   if (o.print_config) {  // what the first registration runs with: with the wide basin without --init
-    MatcherConfig first = config;
-    const std::optional<YAML::Node> wide = with_wide_basin(o.method, config.matcher);
-    if (o.init.empty() && !o.no_wide_basin && wide) first.matcher = *wide;
-    std::cout << YAML::Dump(resolved_settings(o, first, "matcher settings")) << "\n";
+    std::cout << YAML::Dump(read_matcher_config(o, o.init.empty() && !o.no_wide_basin).resolved) << "\n";
     return 0;
   }
   std::optional<tbb::global_control> threads;
@@ -316,10 +314,8 @@ int run_match(MatchOptions o) {
     for (const std::string& warning : report->warnings)
       std::cerr << "warning: " << *file << ": " << warning << "\n";
   PairRegistrationRequest request;
-  request.matcher =
-      matcher_choice(o.method, config.matcher, o.config.empty() ? "matcher settings (--solver)" : o.config);
-  request.sampler =
-      sampler_factory(o.sampling, config.sampler, o.config.empty() ? "sampler settings" : o.config);
+  request.matcher = matcher_choice(config.spec.matcher);
+  request.sampler = sampler_factory(config.spec.sampler);
   if (!o.init.empty()) request.init = initial;
   request.wide_basin = !o.no_wide_basin;
   request.seed = o.seed;
@@ -345,9 +341,7 @@ int run_match(MatchOptions o) {
   if (o.json) {
     print_json(o, registered, search, error);
   } else {
-    print_text(o, registered, search, error,
-               uncalibrated_trust_note(
-                   settings_off_the_defaults(o, resolved_settings(o, config, "matcher settings"))));
+    print_text(o, config, registered, search, error);
   }
   return m.result.quality.trusted() ? 0 : kExitUntrusted;  // not converged is not trusted either
 }

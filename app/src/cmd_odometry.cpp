@@ -19,8 +19,8 @@
 #include "sextant/core/atomic_file.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/progress.hpp"
+#include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/odometry/odometry.hpp"
-#include "sextant/odometry/yaml.hpp"
 #include "sextant/pipeline/dataset_argument.hpp"
 #include "sextant/pipeline/json.hpp"
 #include "sextant/pipeline/odometry_loop_closure.hpp"
@@ -40,17 +40,15 @@ std::string yes_no(bool b) {
 int run_odometry_command(const OdometryOptions& o) {
   const std::string start = iso_time_now();
   // Arguments first (cheap), then the dataset.
+  // Unknown names and bad settings stop here; `config.resolved` is every setting they run with.
   const MatcherConfig config = read_matcher_config(o);
-  const std::string where = o.config.empty() ? "matcher settings (--method, --preset, --solver)" : o.config;
-  // Unknown names and bad settings stop here; `resolved` is every setting they run with.
-  const YAML::Node resolved = resolved_settings(o, config, where);
   if (o.print_config) {
-    std::cout << YAML::Dump(resolved) << "\n";
+    std::cout << YAML::Dump(config.resolved) << "\n";
     return 0;
   }
   OdometryRequest request;
   request.method = o.method;
-  request.registration = odometry_registration({o.method, config.matcher, o.sampling, config.sampler});
+  request.registration = {matcher_choice(config.spec.matcher), sampler_factory(config.spec.sampler)};
   request.guess = o.guess;
   request.map = o.map;
   request.sensor = o.sensor;
@@ -91,7 +89,7 @@ int run_odometry_command(const OdometryOptions& o) {
               << ", " << dataset->size() << " scans; odometry " << yes_no(meta.has_odometry)
               << ", ground truth " << yes_no(meta.has_ground_truth) << "), scans " << o.first << "–"
               << o.first + scans - 1 << "\n"
-              << "method:   " << describe_matcher(o) << ", sampling " << o.sampling << ", guess "
+              << "method:   " << describe_matcher(config) << ", sampling " << o.sampling << ", guess "
               << to_string(s.guess) << (o.guess.empty() ? " (default for this dataset)" : "") << ", map "
               << to_string(s.map)
               << (s.map == OdometryMap::local_map ? " of " + std::to_string(s.local_map_scans) + " scans"
@@ -99,7 +97,7 @@ int run_odometry_command(const OdometryOptions& o) {
               << "\n";
   if (!quiet) {
     for (const std::string& note : meta.notes) std::cout << "note:     " << note << "\n";
-    const std::string trust_note = uncalibrated_trust_note(settings_off_the_defaults(o, resolved));
+    const std::string trust_note = uncalibrated_trust_note(settings_off_the_defaults(config));
     if (!trust_note.empty()) std::cout << "note:     " << trust_note << "\n";
   }
   std::cout << std::flush;
@@ -164,7 +162,7 @@ int run_odometry_command(const OdometryOptions& o) {
   write_metrics_json(out / "metrics.json", estimate_accuracy, odometry_accuracy, scans, counts, seconds,
                      loop_summary);
   write_file_atomically(out / "provenance.json",
-                        provenance_json(o, config, resolved, meta, s, result, scans, start, seconds));
+                        provenance_json(o, config, meta, s, result, scans, start, seconds));
 
   std::cout << std::fixed << std::setprecision(1) << "registered " << result.steps.size() << " pairs in "
             << seconds << " s (" << std::setprecision(3)

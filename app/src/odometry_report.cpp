@@ -11,7 +11,7 @@
 
 namespace sextant::cli {
 
-std::string provenance_json(const OdometryOptions& o, const MatcherConfig& config, const YAML::Node& resolved,
+std::string provenance_json(const OdometryOptions& o, const MatcherConfig& config,
                             const DatasetMetadata& meta, const OdometrySettings& s,
                             const OdometryResult& result, std::size_t scans, const std::string& start,
                             double seconds) {
@@ -36,8 +36,8 @@ std::string provenance_json(const OdometryOptions& o, const MatcherConfig& confi
       {"config_file", o.config},
       {"matcher_settings", yaml_to_json(config.matcher)},
       {"sampler_settings", sampler ? yaml_to_json(config.sampler) : Json()},
-      {"matcher_resolved", yaml_to_json(resolved["matcher"])},
-      {"sampler_resolved", yaml_to_json(resolved["sampler"])},
+      {"matcher_resolved", yaml_to_json(config.resolved["matcher"])},
+      {"sampler_resolved", yaml_to_json(config.resolved["sampler"])},
       {"guess", to_string(s.guess)},
       {"map", to_string(s.map)},
       {"loop_closure", o.loop_closure},

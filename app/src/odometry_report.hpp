@@ -38,7 +38,7 @@ struct OdometryOptions : MatcherOptions {
 
 /// provenance.json: the command, the dataset, the settings as given and as resolved, the sensor and
 /// platform the checks assumed, the git state, the libraries' versions, the host and the times.
-std::string provenance_json(const OdometryOptions& o, const MatcherConfig& config, const YAML::Node& resolved,
+std::string provenance_json(const OdometryOptions& o, const MatcherConfig& config,
                             const DatasetMetadata& meta, const OdometrySettings& s,
                             const OdometryResult& result, std::size_t scans, const std::string& start,
                             double seconds);

@@ -13,6 +13,7 @@
 #include "python_yaml.hpp"
 #include "sextant/matchers/register_pair.hpp"
 #include "sextant/matchers/registration_quality.hpp"
+#include "sextant/pipeline/matcher_request.hpp"
 
 namespace sextant::python {
 namespace {
@@ -29,7 +30,7 @@ struct MatchResult {
   std::size_t matched_points = 0, input_points = 0;
 };
 
-MatchResult to_python(const MatchOutcome& o, const MatchRequest& request) {
+MatchResult to_python(const MatchOutcome& o, const MatcherConfig& config) {
   const RegistrationResult& r = o.match.result;
   MatchResult out;
   out.T = transform_array(r.T);
@@ -44,9 +45,9 @@ MatchResult to_python(const MatchOutcome& o, const MatchRequest& request) {
   out.trust = to_string(r.quality.trust);
   out.trust_reason = r.quality.reason;
   out.search = o.search;
-  out.method = request.method;
-  out.preset = o.preset;
-  out.sampling = request.sampling;
+  out.method = config.request.method;
+  out.preset = config.preset;
+  out.sampling = config.request.sampling;
   out.fallback = r.fallback;
   out.iterations = r.iterations;
   out.seconds = r.seconds;
@@ -66,26 +67,30 @@ MatchResult match(const py::object& reference, const py::object& input, const py
                   const std::string& method, const py::object& preset, const std::string& sampling,
                   std::uint64_t seed, const py::object& wide_basin, const py::object& sampler_settings,
                   const py::kwargs& settings) {
+  MatcherRequest asked;
+  asked.method = method;
+  if (!preset.is_none()) asked.preset = preset.cast<std::string>();
+  asked.sampling = sampling;
+  asked.matcher = yaml_map_from_kwargs(settings, "match() setting");
+  if (!sampler_settings.is_none()) asked.sampler = yaml_from_python(sampler_settings, "sampler_settings");
+  asked.matcher_where = "match() settings";
+  asked.sampler_where = "match() sampler settings";
   MatchRequest request;
-  request.method = method;
-  if (!preset.is_none()) request.preset = preset.cast<std::string>();
-  request.sampling = sampling;
   request.seed = seed;
-  request.settings = yaml_map_from_kwargs(settings, "match() setting");
-  if (!sampler_settings.is_none())
-    request.sampler_settings = yaml_from_python(sampler_settings, "sampler_settings");
   if (!init.is_none()) request.init = transform_from_array(init, "init");
   if (py::isinstance<py::bool_>(wide_basin) && !wide_basin.cast<bool>()) {
     request.wide_basin_retry = false;
   } else if (py::isinstance<py::bool_>(wide_basin) || py::isinstance<py::dict>(wide_basin)) {
-    if (request.settings["wide_basin"].IsDefined())
+    if (asked.matcher["wide_basin"].IsDefined())
       throw py::value_error("wide_basin is given twice (argument and setting)");
-    request.settings["wide_basin"] = py::isinstance<py::dict>(wide_basin)
-                                         ? yaml_from_python(wide_basin, "wide_basin")
-                                         : YAML::Node(YAML::NodeType::Map);
+    asked.matcher["wide_basin"] = py::isinstance<py::dict>(wide_basin)
+                                      ? yaml_from_python(wide_basin, "wide_basin")
+                                      : YAML::Node(YAML::NodeType::Map);
   } else if (!wide_basin.is_none()) {
     throw py::type_error("wide_basin: expected None, True, False or a dict of wide-basin settings");
   }
+  const MatcherConfig config = read_matcher_config(asked, Face::python);
+  request.spec = config.spec;
   const PointCloud reference_cloud = cloud_from_object(reference, "reference", Borrowing::kInPlace);
   const PointCloud input_cloud = cloud_from_object(input, "input", Borrowing::kInPlace);
   MatchOutcome outcome;
@@ -93,7 +98,7 @@ MatchResult match(const py::object& reference, const py::object& input, const py
     const py::gil_scoped_release release;
     outcome = run_match_request(reference_cloud, input_cloud, request);
   }
-  return to_python(outcome, request);
+  return to_python(outcome, config);
 }
 
 std::string repr(const MatchResult& r) {

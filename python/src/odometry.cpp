@@ -15,11 +15,9 @@
 #include "odometry_dataset.hpp"
 #include "python_yaml.hpp"
 #include "sextant/core/error.hpp"
-#include "sextant/matchers/matcher.hpp"
-#include "sextant/matchers/sampler.hpp"
-#include "sextant/matchers/yaml.hpp"
+#include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/odometry/odometry.hpp"
-#include "sextant/odometry/yaml.hpp"
+#include "sextant/pipeline/matcher_request.hpp"
 #include "sextant/pipeline/odometry_output.hpp"
 #include "sextant/pipeline/odometry_request.hpp"
 #include "steps_table.hpp"
@@ -57,15 +55,18 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
                      std::uint64_t campus_seed, int jobs, const py::object& sampler_settings,
                      const std::string& sensor, const std::string& platform, const py::kwargs& settings) {
   // Arguments first (cheap), then the dataset, as the CLI (odometry_request.hpp).
-  const YAML::Node matcher = matcher_settings(method, preset.is_none() ? "" : preset.cast<std::string>(),
-                                              yaml_map_from_kwargs(settings, "odometry() setting"), nullptr);
-  const YAML::Node sampler =
-      sampler_settings.is_none() ? YAML::Node() : yaml_from_python(sampler_settings, "sampler_settings");
-  (void)make_matcher(method, matcher, "odometry() settings");  // unknown names and bad settings stop here
-  (void)make_sampler(sampling, sampler, "odometry() sampler settings");
+  MatcherRequest asked;
+  asked.method = method;
+  if (!preset.is_none()) asked.preset = preset.cast<std::string>();
+  asked.sampling = sampling;
+  asked.matcher = yaml_map_from_kwargs(settings, "odometry() setting");
+  if (!sampler_settings.is_none()) asked.sampler = yaml_from_python(sampler_settings, "sampler_settings");
+  asked.matcher_where = "odometry() settings";
+  asked.sampler_where = "odometry() sampler settings";
+  const MatcherConfig config = read_matcher_config(asked, Face::python);  // unknown names, bad settings
   OdometryRequest request;
   request.method = method;
-  request.registration = odometry_registration({method, matcher, sampling, sampler});
+  request.registration = {matcher_choice(config.spec.matcher), sampler_factory(config.spec.sampler)};
   if (!guess.is_none()) request.guess = guess.cast<std::string>();
   request.map = map;
   request.sensor = sensor;

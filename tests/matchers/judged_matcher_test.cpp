@@ -79,8 +79,8 @@ TEST(JudgedMatcher, TrustsARightPoseAndNotOneSlidAlongTheRoad) {
 TEST(JudgedMatcher, WrapsOnlyTheMatchersThatDoNotJudgeThemselves) {
   EXPECT_TRUE(matcher_traits("mlndt").judges_itself);
   EXPECT_TRUE(matcher_traits("fbmlndt").judges_itself);
-  for (const std::string& name : matcher_registry().names()) {
-    const MatcherChoice choice = matcher_choice(name, YAML::Node(), "<test>");
+  for (const std::string& name : matcher_names()) {
+    const MatcherChoice choice = matcher_choice(read_matcher_spec(name, YAML::Node(), "<test>"));
     const std::unique_ptr<Matcher> m = choice.make();
     EXPECT_EQ(dynamic_cast<JudgedMatcher*>(m.get()) == nullptr, matcher_traits(name).judges_itself) << name;
     EXPECT_EQ(static_cast<bool>(choice.make_wide), matcher_traits(name).has_wide_basin) << name;
@@ -88,9 +88,7 @@ TEST(JudgedMatcher, WrapsOnlyTheMatchersThatDoNotJudgeThemselves) {
       EXPECT_EQ(m->name(), name);
     }
   }
-  EXPECT_NE(
-      dynamic_cast<JudgedMatcher*>(matcher_choice(IcpObjective::kPointToPlane, IcpSettings{}).make().get()),
-      nullptr);
+  EXPECT_NE(dynamic_cast<JudgedMatcher*>(matcher_choice(IcpP2lSettings{}).make().get()), nullptr);
   EXPECT_EQ(judged(nullptr), nullptr);
 }
 

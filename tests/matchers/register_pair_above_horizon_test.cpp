@@ -31,7 +31,7 @@ PairRegistration searched_short_of_the_motion(const Scripted& above,
   request.matcher.make_wide = [] {
     return std::make_unique<ScriptedMatcher>(std::map<double, Scripted>{{0.0, {2.37, 0.56, 1.21}}});
   };
-  request.sampler = all_points_sampler_factory();
+  request.sampler = sampler_factory(AllPointsSettings{});
   return register_pair(test::scan_above_and_below(), test::scan_above_and_below(), request);
 }
 

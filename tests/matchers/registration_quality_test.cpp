@@ -277,19 +277,19 @@ namespace {
 
 TEST(SettingsBounds, AbsurdButFiniteSettingsAreRefused) {  // issue 23
   try {
-    (void)make_matcher("ndt", YAML::Load("{cell_size: 1.0e30}"), "t.yaml");
+    (void)read_matcher_spec("ndt", YAML::Load("{cell_size: 1.0e30}"), "t.yaml");
     ADD_FAILURE() << "cell_size 1e30 accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("cell_size must be ≤ 1000 m"), std::string::npos) << e.what();
   }
-  EXPECT_NO_THROW((void)make_matcher("ndt", YAML::Load("{cell_size: 2.0}"), "t.yaml"));
+  EXPECT_NO_THROW(read_matcher_spec("ndt", YAML::Load("{cell_size: 2.0}"), "t.yaml"));
   try {
-    (void)make_matcher("icp_p2l", YAML::Load("{max_correspondence_distance: 1.0e30}"), "t.yaml");
+    (void)read_matcher_spec("icp_p2l", YAML::Load("{max_correspondence_distance: 1.0e30}"), "t.yaml");
     ADD_FAILURE() << "max_correspondence_distance 1e30 accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("at most 1000"), std::string::npos) << e.what();
   }
-  EXPECT_NO_THROW((void)make_matcher("icp_p2l", YAML::Load("{max_correspondence_distance: 2.0}"), "t.yaml"));
+  EXPECT_NO_THROW(read_matcher_spec("icp_p2l", YAML::Load("{max_correspondence_distance: 2.0}"), "t.yaml"));
 }
 
 // Issue 26: `--print-config` and provenance.json record every setting a matcher or sampler runs
@@ -308,18 +308,18 @@ TEST(ResolvedSettings, EveryMatcherAndSamplerRecordReadsBackToItself) {
     EXPECT_EQ(YAML::Dump(recording.resolved()), YAML::Dump(first)) << name;
   };
   const auto matcher = [](const std::string& n, const YAML::Node& s, const std::string& f) {
-    return make_matcher(n, s, f);
+    return read_matcher_spec(n, s, f);
   };
   const auto sampler = [](const std::string& n, const YAML::Node& s, const std::string& f) {
-    return make_sampler(n, s, f);
+    return read_sampler_spec(n, s, f);
   };
-  for (const std::string& name : matcher_registry().names()) round_trip(matcher, name, YAML::Node());
-  for (const std::string& name : sampler_registry().names())
+  for (const std::string& name : matcher_names()) round_trip(matcher, name, YAML::Node());
+  for (const std::string& name : sampler_names())
     if (name != "all") round_trip(sampler, name, YAML::Node());
   round_trip(matcher, "mlndt", YAML::Load("{preset: thesis, wide_basin: {}}"));
   // A given value and a preset's value are recorded as they end, not as the defaults.
   SettingsRecording recording;
-  (void)make_matcher("mlndt", YAML::Load("{preset: thesis, layers: 5}"), "t.yaml");
+  (void)read_matcher_spec("mlndt", YAML::Load("{preset: thesis, layers: 5}"), "t.yaml");
   EXPECT_EQ(recording.resolved()["layers"].as<int>(), 5);
   EXPECT_EQ(recording.resolved()["solver"].as<std::string>(), "newton");
   EXPECT_EQ(recording.resolved()["step_control"].as<std::string>(), "none");

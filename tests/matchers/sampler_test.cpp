@@ -107,7 +107,7 @@ TEST(Sampler, BadSettingsNameTheKey) {
   EXPECT_THROW(make_sampler("gbs", YAML::Load("{cell_size: -1}")), InputError);
   EXPECT_THROW(make_sampler("gbs", YAML::Load("{cel_size: 1}")), InputError);
   EXPECT_THROW(make_sampler("random", YAML::Load("{fraction: 2}")), InputError);
-  EXPECT_THROW(make_sampler("nope"), std::invalid_argument);
+  EXPECT_THROW(make_sampler("nope"), InputError);  // names the file and the known samplers
 }
 
 }  // namespace

@@ -16,9 +16,9 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/core/units.hpp"
+#include "sextant/matchers/yaml.hpp"
 #include "sextant/odometry/local_map.hpp"
 #include "sextant/odometry/odometry.hpp"
-#include "sextant/odometry/yaml.hpp"
 #include "sextant/synth/campus.hpp"
 #include "sextant_test/random_draws.hpp"
 
@@ -57,7 +57,8 @@ class NoOdometry : public Dataset {
 
 OdometrySettings mlndt_settings() {
   OdometrySettings s;
-  s.registration = odometry_registration({"mlndt", YAML::Load("{preset: default}"), "gbs", {}});
+  s.registration.matcher =
+      matcher_choice(read_matcher_spec("mlndt", YAML::Load("{preset: default}"), "<test>"));
   return s;
 }
 
@@ -123,8 +124,8 @@ TEST(Odometry, ConstantVelocityAndIdentityGuessesNeedNoOdometry) {
   }
   // Identity with ML-NDT's wide basin (docs/wide_basin.md): every step from no motion.
   s.guess = OdometryGuess::identity;
-  s.registration =
-      odometry_registration({"mlndt", YAML::Load("{preset: default, wide_basin: {}}"), "gbs", {}});
+  s.registration.matcher =
+      matcher_choice(read_matcher_spec("mlndt", YAML::Load("{preset: default, wide_basin: {}}"), "<test>"));
   expect_close_to_truth(d, run_odometry(d, s, 4, 4), 4, 0.5, 0.15, "identity, wide basin");
 }
 
@@ -212,8 +213,8 @@ TEST(Odometry, PrecisionStageFitsSurfacesToAMillimetre) {
   s.map = OdometryMap::local_map;
   const OdometryResult thin = run_odometry(campus(), s, 0, 12);
   expect_close_to_truth(campus(), thin, 0, 0.01, 0.001, "thin precision Gaussians");
-  s.registration = odometry_registration(
-      {"mlndt", YAML::Load("{preset: default, precision_max_eigen_ratio: 100}"), "gbs", {}});
+  s.registration.matcher = matcher_choice(
+      read_matcher_spec("mlndt", YAML::Load("{preset: default, precision_max_eigen_ratio: 100}"), "<test>"));
   const OdometryResult inflated = run_odometry(campus(), s, 0, 12);
   EXPECT_GT(largest_step_error(campus(), inflated), 0.003);
   EXPECT_GT(largest_step_error(campus(), inflated), 4.0 * largest_step_error(campus(), thin));
@@ -252,7 +253,7 @@ TEST(Odometry, BadRangesAndSettingsAreErrors) {
   EXPECT_THROW(run_odometry(campus(), mlndt_settings(), 12, 1), InputError);
   EXPECT_THROW(run_odometry(campus(), mlndt_settings(), 0, 0), InputError);
   OdometrySettings s = mlndt_settings();
-  s.registration = odometry_registration({"no_such_matcher", {}, "gbs", {}});
+  s.registration.matcher = MatcherChoice{};  // no matcher
   EXPECT_ANY_THROW(run_odometry(campus(), s, 0, 2));
   s = mlndt_settings();
   s.odometry = {Eigen::Isometry3d::Identity()};  // fewer poses than scans

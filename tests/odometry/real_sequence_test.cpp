@@ -18,13 +18,12 @@
 #include "sextant/core/units.hpp"
 #include "sextant/eval/vehicle_slip.hpp"
 #include "sextant/matchers/match_pair.hpp"
+#include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/matchers/matcher_traits.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/register_pair.hpp"
 #include "sextant/matchers/sampler.hpp"
-#include "sextant/matchers/yaml.hpp"
 #include "sextant/odometry/odometry.hpp"
-#include "sextant/odometry/yaml.hpp"
 #include "sextant_test/temp_dir.hpp"
 #include "shared_mulran.hpp"
 
@@ -187,7 +186,7 @@ TEST(RealSequence, APlainIcpChainSaysItStoodStill) {
   if (!std::filesystem::is_directory(kMulran)) GTEST_SKIP() << "no " << kMulran;
   const auto dataset = open_dataset(kMulran);
   OdometrySettings s;
-  s.registration = odometry_registration({"icp_p2l", YAML::Node(), "gbs", YAML::Node()});
+  s.registration.matcher = matcher_choice(IcpP2lSettings{});
   s.guess = OdometryGuess::constant_velocity;
   s.map = OdometryMap::scan;
   s.common_view = matcher_traits("icp_p2l").common_view_by_default;
@@ -224,7 +223,7 @@ TEST(RealSequence, MulranPairsFromTheReferenceStayThere) {
     const Eigen::Isometry3d truth =
         relative(*dataset->ground_truth(reference), *dataset->ground_truth(input));
     MlndtMatcher matcher;
-    const auto gbs = make_sampler("gbs");
+    const auto gbs = make_sampler(GridSamplerSettings{});
     Rng rng(1);
     const PairMatch m = match_pair(matcher, *gbs, dataset->scan(reference), dataset->scan(input), truth, rng);
     const Eigen::Isometry3d error = relative(truth, m.result.T);

@@ -14,9 +14,9 @@
 #include "sextant/core/pose.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/core/units.hpp"
+#include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/matchers/register_pair.hpp"
 #include "sextant/odometry/odometry.hpp"
-#include "sextant/odometry/yaml.hpp"
 #include "sextant_test/temp_dir.hpp"
 #include "shared_mulran.hpp"
 
@@ -61,7 +61,7 @@ std::vector<std::size_t> keyframes_from(std::size_t first, std::size_t last) {
 /// constant-velocity guess), with GBS seed `seed`.
 OdometryResult odometry_as_run(const Dataset& dataset, std::uint64_t seed) {
   OdometrySettings s;
-  s.registration = odometry_registration({});
+  s.registration = OdometryRegistration{};  // the default ML-NDT on GBS
   s.guess = OdometryGuess::constant_velocity;
   s.seed = seed;
   return run_odometry(dataset, s, 0, dataset.size());

@@ -29,7 +29,7 @@ OdometrySettings scripted_settings(const std::map<double, Scripted>& script,
   OdometrySettings s;
   s.registration.matcher.make = [script] { return std::make_unique<ScriptedMatcher>(script); };
   s.registration.matcher.make_wide = [wide] { return std::make_unique<ScriptedMatcher>(wide); };
-  s.registration.sampler = all_points_sampler_factory();
+  s.registration.sampler = sampler_factory(AllPointsSettings{});
   return s;
 }
 

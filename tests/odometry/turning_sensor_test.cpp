@@ -12,8 +12,8 @@
 
 #include "sextant/core/dataset.hpp"
 #include "sextant/core/units.hpp"
+#include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/odometry/odometry.hpp"
-#include "sextant/odometry/yaml.hpp"
 #include "sextant_test/temp_dir.hpp"
 #include "shared_mulran.hpp"
 
@@ -43,8 +43,8 @@ TEST(TurningSensor, AVelocityHeldInTheWorldIsWithinReach) {
   std::vector<std::size_t> keyframes;
   for (std::size_t k = 16; k <= 30; ++k) keyframes.push_back(k);
   const auto dataset = mulran_turning(tmp.path() / "turning", keyframes);
-  OdometrySettings s;  // as `sextant odometry` runs it
-  s.registration = odometry_registration({});
+  OdometrySettings s;                       // as `sextant odometry` runs it
+  s.registration = OdometryRegistration{};  // the default ML-NDT on GBS
   s.guess = OdometryGuess::constant_velocity;
   const OdometryResult r = run_odometry(*dataset, s, 0, dataset->size());
   ASSERT_EQ(r.steps.size(), keyframes.size() - 1);

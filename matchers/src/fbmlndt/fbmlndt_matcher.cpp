@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "sextant/core/checked_settings.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 
 namespace sextant {
@@ -17,10 +18,7 @@ bool FbmlndtSettings::valid(std::string* why) const {
 }
 
 FbmlndtMatcher::FbmlndtMatcher(FbmlndtSettings settings)
-    : settings_(std::move(settings)), mlndt_(settings_.mlndt) {
-  std::string why;
-  if (!settings_.features.valid(&why)) throw std::invalid_argument("fbmlndt: " + why);
-}
+    : settings_(checked(std::move(settings), "fbmlndt")), mlndt_(settings_.mlndt) {}
 
 RegistrationResult FbmlndtMatcher::align(const PointCloud& input, const Eigen::Isometry3d& initial) {
   const auto start = std::chrono::steady_clock::now();

@@ -6,6 +6,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "sextant/core/checked_settings.hpp"
 #include "sextant/matchers/icp.hpp"
 #include "sextant/matchers/icp_steps.hpp"
 #include "sextant/matchers/kd_tree.hpp"
@@ -139,9 +140,8 @@ class IcpMatcher final : public Matcher {
 }  // namespace
 
 std::unique_ptr<Matcher> make_icp(IcpObjective objective, const IcpSettings& settings) {
-  std::string why;
-  if (!settings.valid(&why)) throw std::invalid_argument("invalid ICP settings: " + why);
-  return std::make_unique<IcpMatcher>(objective, settings);
+  return std::make_unique<IcpMatcher>(
+      objective, checked(settings, objective == IcpObjective::kPointToPlane ? "icp_p2l" : "icp_p2p"));
 }
 
 }  // namespace sextant

@@ -7,6 +7,7 @@
 
 #include "mlndt/layer_objective.hpp"
 #include "mlndt/run_memo.hpp"
+#include "sextant/core/checked_settings.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 #include "sextant/matchers/sensor_kind.hpp"
@@ -53,7 +54,7 @@ bool MlndtSettings::valid(std::string* why) const {
 }
 
 MlndtMatcher::MlndtMatcher(MlndtSettings settings)
-    : settings_(std::move(settings)),
+    : settings_(checked(std::move(settings), "mlndt")),
       threads_(std::make_unique<ScoreThreads>(settings_.threads)),
       runs_(std::make_unique<mlndt_detail::RunMemo>()) {}
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "sextant/core/checked_settings.hpp"
+
 namespace sextant {
 
 namespace {
@@ -54,7 +56,7 @@ bool NdtSettings::valid(std::string* why) const {
   return cells.valid(why) && optimizer.valid(why);
 }
 
-NdtMatcher::NdtMatcher(NdtSettings settings) : settings_(std::move(settings)) {}
+NdtMatcher::NdtMatcher(NdtSettings settings) : settings_(checked(std::move(settings), "ndt")) {}
 
 void NdtMatcher::set_reference(const PointCloud& reference) {
   double edge = settings_.cell_size;

@@ -1,5 +1,7 @@
-// Matchers and samplers chosen in code (matcher_choice.hpp).
+// Matchers and samplers for register_pair and odometry (matcher_choice.hpp).
 #include "sextant/matchers/matcher_choice.hpp"
+
+#include <stdexcept>
 
 #include "sextant/matchers/judged_matcher.hpp"
 
@@ -7,87 +9,35 @@ namespace sextant {
 
 namespace {
 
-template <class Settings, class Make>
-MatcherChoice choice(std::string name, const Settings& settings, Make make) {
-  MatcherChoice c;
-  c.name = std::move(name);
-  c.make = [settings, make] { return judged(make(settings)); };
-  return c;
+template <class Spec>
+const Spec& checked_spec(const Spec& spec) {
+  std::string why;
+  if (!spec.valid(&why)) throw std::invalid_argument("invalid " + spec.name() + " settings: " + why);
+  return spec;
 }
 
-/// The wide basin on, with its own settings when the ML-NDT settings enable it, else its defaults.
-MlndtSettings with_wide_basin(MlndtSettings s) {
-  if (!s.wide_basin.enabled) {
-    s.wide_basin = WideBasinSettings{};
-    s.wide_basin.enabled = true;
-  }
-  return s;
+bool wide_basin_enabled(const MatcherSpec& spec) {
+  if (const MlndtSettings* s = spec.get<MlndtSettings>()) return s->wide_basin.enabled;
+  if (const FbmlndtSettings* s = spec.get<FbmlndtSettings>()) return s->mlndt.wide_basin.enabled;
+  return false;
 }
 
 }  // namespace
 
-MatcherChoice matcher_choice(const MlndtSettings& settings) {
-  MatcherChoice c = choice("mlndt", settings, [](const MlndtSettings& s) -> std::unique_ptr<Matcher> {
-    return std::make_unique<MlndtMatcher>(s);
-  });
-  const MlndtSettings wide = with_wide_basin(settings);
-  c.make_wide = [wide]() -> std::unique_ptr<Matcher> { return std::make_unique<MlndtMatcher>(wide); };
-  c.own_wide_basin = settings.wide_basin.enabled;
+MatcherChoice matcher_choice(const MatcherSpec& spec) {
+  MatcherChoice c;
+  c.name = checked_spec(spec).name();
+  c.make = [spec] { return judged(make_matcher(spec)); };
+  if (spec.traits().has_wide_basin) {
+    c.make_wide = [wide = with_wide_basin(spec)] { return make_matcher(wide); };
+    c.own_wide_basin = wide_basin_enabled(spec);
+  }
   return c;
 }
 
-MatcherChoice matcher_choice(const FbmlndtSettings& settings) {
-  MatcherChoice c = choice("fbmlndt", settings, [](const FbmlndtSettings& s) -> std::unique_ptr<Matcher> {
-    return std::make_unique<FbmlndtMatcher>(s);
-  });
-  FbmlndtSettings wide = settings;
-  wide.mlndt = with_wide_basin(settings.mlndt);
-  c.make_wide = [wide]() -> std::unique_ptr<Matcher> { return std::make_unique<FbmlndtMatcher>(wide); };
-  c.own_wide_basin = settings.mlndt.wide_basin.enabled;
-  return c;
-}
-
-MatcherChoice matcher_choice(const NdtSettings& settings) {
-  return choice("ndt", settings, [](const NdtSettings& s) -> std::unique_ptr<Matcher> {
-    return std::make_unique<NdtMatcher>(s);
-  });
-}
-
-MatcherChoice matcher_choice(IcpObjective objective, const IcpSettings& settings) {
-  return choice(objective == IcpObjective::kPointToPlane ? "icp_p2l" : "icp_p2p", settings,
-                [objective](const IcpSettings& s) { return make_icp(objective, s); });
-}
-
-MatcherChoice matcher_choice(const PclNdtSettings& settings) {
-  return choice("pcl_ndt", settings, [](const PclNdtSettings& s) { return make_pcl_ndt(s); });
-}
-
-MatcherChoice matcher_choice(const PclIcpSettings& settings) {
-  return choice("pcl_icp", settings, [](const PclIcpSettings& s) { return make_pcl_icp(s); });
-}
-
-MatcherChoice matcher_choice(const PclGicpSettings& settings) {
-  return choice("pcl_gicp", settings, [](const PclGicpSettings& s) { return make_pcl_gicp(s); });
-}
-
-SamplerFactory sampler_factory(const GridSamplerSettings& settings) {
-  return [settings]() -> std::unique_ptr<Sampler> { return std::make_unique<GridSampler>(settings); };
-}
-
-SamplerFactory sampler_factory(const RegularSamplerSettings& settings) {
-  return [settings]() -> std::unique_ptr<Sampler> { return std::make_unique<RegularSampler>(settings); };
-}
-
-SamplerFactory sampler_factory(const RandomSamplerSettings& settings) {
-  return [settings]() -> std::unique_ptr<Sampler> { return std::make_unique<RandomSampler>(settings); };
-}
-
-SamplerFactory sampler_factory(const PlaneExtractionSettings& settings) {
-  return [settings]() -> std::unique_ptr<Sampler> { return std::make_unique<FeatureBasedSampler>(settings); };
-}
-
-SamplerFactory all_points_sampler_factory() {
-  return []() -> std::unique_ptr<Sampler> { return std::make_unique<AllSampler>(); };
+SamplerFactory sampler_factory(const SamplerSpec& spec) {
+  checked_spec(spec);
+  return [spec] { return make_sampler(spec); };
 }
 
 }  // namespace sextant

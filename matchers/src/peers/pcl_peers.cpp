@@ -18,6 +18,7 @@
 #include <pcl/registration/ndt.h>
 #include <pcl/search/kdtree.h>
 
+#include "sextant/core/checked_settings.hpp"
 #include "sextant/matchers/pcl_peers.hpp"
 
 namespace sextant {
@@ -236,28 +237,18 @@ class PclGicpMatcher final : public PclPeer<PclGicp> {
   PclGicpSettings settings_;
 };
 
-template <class Settings>
-void require_valid(const Settings& settings, const char* what) {
-  std::string why;
-  if (!settings.valid(&why))
-    throw std::invalid_argument(std::string("invalid ") + what + " settings: " + why);
-}
-
 }  // namespace
 
 std::unique_ptr<Matcher> make_pcl_ndt(const PclNdtSettings& settings) {
-  require_valid(settings, "pcl_ndt");
-  return std::make_unique<PclNdtMatcher>(settings);
+  return std::make_unique<PclNdtMatcher>(checked(settings, "pcl_ndt"));
 }
 
 std::unique_ptr<Matcher> make_pcl_icp(const PclIcpSettings& settings) {
-  require_valid(settings, "pcl_icp");
-  return std::make_unique<PclIcpMatcher>(settings);
+  return std::make_unique<PclIcpMatcher>(checked(settings, "pcl_icp"));
 }
 
 std::unique_ptr<Matcher> make_pcl_gicp(const PclGicpSettings& settings) {
-  require_valid(settings, "pcl_gicp");
-  return std::make_unique<PclGicpMatcher>(settings);
+  return std::make_unique<PclGicpMatcher>(checked(settings, "pcl_gicp"));
 }
 
 }  // namespace sextant

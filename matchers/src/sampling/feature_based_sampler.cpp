@@ -3,12 +3,12 @@
 #include <stdexcept>
 #include <utility>
 
+#include "sextant/core/checked_settings.hpp"
+
 namespace sextant {
 
-FeatureBasedSampler::FeatureBasedSampler(PlaneExtractionSettings settings) : settings_(std::move(settings)) {
-  std::string why;
-  if (!settings_.valid(&why)) throw std::invalid_argument("fbs sampler: " + why);
-}
+FeatureBasedSampler::FeatureBasedSampler(PlaneExtractionSettings settings)
+    : settings_(checked(std::move(settings), "fbs")) {}
 
 // Table 3.2, feature extraction process: split S into cells, RANSAC per cell, F = the inliers.
 std::vector<std::size_t> FeatureBasedSampler::select(const PointCloud& input, Rng& rng) const {

@@ -6,6 +6,7 @@
 #include <numeric>
 #include <utility>
 
+#include "sextant/core/checked_settings.hpp"
 #include "sextant/matchers/samplers.hpp"
 
 namespace sextant {
@@ -34,7 +35,7 @@ bool GridSamplerSettings::valid(std::string* why) const {
   return problem == nullptr;
 }
 
-GridSampler::GridSampler(GridSamplerSettings settings) : settings_(settings) {}
+GridSampler::GridSampler(GridSamplerSettings settings) : settings_(checked(settings, "gbs")) {}
 
 std::vector<std::size_t> GridSampler::select(const PointCloud& input, Rng& rng) const {
   const double inv_cell = 1.0 / settings_.cell_size;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "sextant/core/checked_settings.hpp"
 #include "sextant/matchers/samplers.hpp"
 
 namespace sextant {
@@ -27,7 +28,7 @@ bool RegularSamplerSettings::valid(std::string* why) const {
   return false;
 }
 
-RegularSampler::RegularSampler(RegularSamplerSettings settings) : settings_(settings) {}
+RegularSampler::RegularSampler(RegularSamplerSettings settings) : settings_(checked(settings, "regular")) {}
 
 std::vector<std::size_t> RegularSampler::select(const PointCloud& input, Rng& /*rng*/) const {
   std::vector<std::size_t> indices;
@@ -42,7 +43,7 @@ bool RandomSamplerSettings::valid(std::string* why) const {
   return false;
 }
 
-RandomSampler::RandomSampler(RandomSamplerSettings settings) : settings_(settings) {}
+RandomSampler::RandomSampler(RandomSamplerSettings settings) : settings_(checked(settings, "random")) {}
 
 std::vector<std::size_t> RandomSampler::select(const PointCloud& input, Rng& rng) const {
   const std::size_t n = input.size();

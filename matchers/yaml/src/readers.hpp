@@ -1,18 +1,15 @@
 #pragma once
 // The readers of the settings parts the matchers share, at the level of an open SettingsReader
 // (private to Sextant::matchers_yaml).
-#include <memory>
 #include <string>
 
 #include <yaml-cpp/yaml.h>
 
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/matchers/dof_mask.hpp"
-#include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/ndt_grid.hpp"
 #include "sextant/matchers/optimizer.hpp"
 #include "sextant/matchers/precision_stage.hpp"
-#include "sextant/matchers/sampler.hpp"
 
 namespace sextant {
 
@@ -31,20 +28,5 @@ void read_optimizer_settings(SettingsReader& in, const std::string& known_solver
 
 /// Reads precision_min_cell, precision_min_coverage and precision_max_eigen_ratio at the reader's level.
 void read_precision_settings(SettingsReader& in, PrecisionSettings& s);
-
-/// The registries' factories (factories.cpp): settings from YAML (null node → defaults).
-std::unique_ptr<Matcher> create_mlndt_matcher(const YAML::Node& settings, const std::string& file);
-std::unique_ptr<Matcher> create_fbmlndt_matcher(const YAML::Node& settings, const std::string& file);
-std::unique_ptr<Matcher> create_ndt_matcher(const YAML::Node& settings, const std::string& file);
-std::unique_ptr<Matcher> make_icp_p2p_matcher(const YAML::Node& settings, const std::string& file);
-std::unique_ptr<Matcher> make_icp_p2l_matcher(const YAML::Node& settings, const std::string& file);
-std::unique_ptr<Matcher> make_pcl_ndt_matcher(const YAML::Node& settings, const std::string& file);
-std::unique_ptr<Matcher> make_pcl_icp_matcher(const YAML::Node& settings, const std::string& file);
-std::unique_ptr<Matcher> make_pcl_gicp_matcher(const YAML::Node& settings, const std::string& file);
-std::unique_ptr<Sampler> create_all_sampler(const YAML::Node& settings, const std::string& file);
-std::unique_ptr<Sampler> create_regular_sampler(const YAML::Node& settings, const std::string& file);
-std::unique_ptr<Sampler> create_random_sampler(const YAML::Node& settings, const std::string& file);
-std::unique_ptr<Sampler> create_grid_sampler(const YAML::Node& settings, const std::string& file);
-std::unique_ptr<Sampler> create_feature_based_sampler(const YAML::Node& settings, const std::string& file);
 
 }  // namespace sextant

@@ -16,7 +16,6 @@
 #include "sextant/matchers/icp.hpp"
 #include "sextant/matchers/yaml.hpp"
 #include "sextant/odometry/odometry.hpp"
-#include "sextant/odometry/yaml.hpp"
 #include "sextant/pipeline/provenance.hpp"
 #include "sextant/posegraph/pose_graph.hpp"
 #include "sextant/posegraph/yaml.hpp"
@@ -58,7 +57,7 @@ int main() {
         "filters_yaml: filter");
   check(sextant::read_rpe_settings(YAML::Node(), "c").delta > 0, "eval_yaml: defaults");
   check(sextant::synth::read_campus_settings(YAML::Node(), "c").world.valid(&why), "synth_yaml: defaults");
-  check(sextant::odometry_registration({}).matcher.name == "mlndt", "odometry_yaml: matcher");
+  check(sextant::read_matcher_spec("icp_p2l", YAML::Node(), "c").name() == "icp_p2l", "matchers_yaml: spec");
   check(sextant::yaml_line(YAML::Node()) == 0, "core_yaml: line of a null node");
   return failures == 0 ? 0 : 1;
 }

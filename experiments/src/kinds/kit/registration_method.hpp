@@ -9,18 +9,16 @@
 #include <yaml-cpp/yaml.h>
 
 #include "kit/adaptive_start.hpp"
+#include "sextant/matchers/matcher_spec.hpp"
 
 namespace sextant {
 
 struct RegistrationMethod {
   std::string name;
-  std::string matcher;
-  YAML::Node settings;  ///< may be null (defaults)
-  std::string sampler = "all";
-  YAML::Node sampler_settings;
+  MatcherSpec matcher;
+  SamplerSpec sampler = AllPointsSettings{};
   bool adaptive = false;  ///< `adaptive_start` given: the thesis' adaptive starting layer
   AdaptiveStartSettings adaptive_start;
-  int last_layer = 0;  ///< adaptive: the pyramid's last layer (mlndt / fbmlndt `layers`)
 };
 
 /// Does a method's node ask for the adaptive starting layer? Without reading (or checking) the rest:
@@ -29,7 +27,7 @@ inline bool declares_adaptive_start(const YAML::Node& node) {
   return node.IsMap() && node["adaptive_start"].IsDefined();
 }
 
-/// Reads one method; checks the matcher and sampler names and their settings by building them.
+/// Reads and checks one method (the matcher's and sampler's names and settings).
 RegistrationMethod read_registration_method(const YAML::Node& node, const std::string& file);
 
 }  // namespace sextant

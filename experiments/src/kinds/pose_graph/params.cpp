@@ -80,22 +80,18 @@ std::vector<PoseGraphMethod> read_pose_graph_methods(const ExperimentConfig& con
       method.filter = read_plane_slam_method(m.node, config.file);
     } else {
       SettingsReader in(m.node, config.file);
-      std::string name;
+      std::string name, matcher, sampler = "gbs";
       in.read("name", name);
-      in.require("matcher", method.odometry.matcher);
-      // Deep copies, bound with reset(): assigning to a YAML::Node writes through to the node it
-      // refers to, and the runs must not share (and concurrently walk) the config's tree.
-      method.odometry.settings.reset(YAML::Clone(in.child("settings")));
-      in.read("sampler", method.odometry.sampler);
-      method.odometry.sampler_settings.reset(YAML::Clone(in.child("sampler_settings")));
-      method.closure = method.odometry;
-      method.closure.settings.reset(
-          YAML::Clone(in.has("closure_settings") ? in.child("closure_settings") : in.child("settings")));
+      in.require("matcher", matcher);
+      in.read("sampler", sampler);
+      const YAML::Node settings = in.child("settings");
+      const YAML::Node sampler_settings = in.child("sampler_settings");
+      const YAML::Node closure_settings =
+          in.has("closure_settings") ? in.child("closure_settings") : settings;
       in.finish();
-      (void)make_matcher(method.closure.matcher, method.closure.settings, config.file);
-      // Build both once so that a bad setting stops before anything runs.
-      (void)make_matcher(method.odometry.matcher, method.odometry.settings, config.file);
-      (void)make_sampler(method.odometry.sampler, method.odometry.sampler_settings, config.file);
+      method.odometry.matcher = read_matcher_spec(matcher, settings, config.file);
+      method.odometry.sampler = read_sampler_spec(sampler, sampler_settings, config.file);
+      method.closure = read_matcher_spec(matcher, closure_settings, config.file);
     }
     out.push_back(std::move(method));
   }

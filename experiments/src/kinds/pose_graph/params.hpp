@@ -33,8 +33,8 @@
 
 #include "kit/plane_slam_params.hpp"
 #include "sextant/experiments/experiment_config.hpp"
+#include "sextant/matchers/matcher_spec.hpp"
 #include "sextant/odometry/odometry.hpp"
-#include "sextant/odometry/yaml.hpp"
 #include "sextant/posegraph/loop_closure.hpp"
 #include "sextant/posegraph/pose_graph.hpp"
 
@@ -61,9 +61,10 @@ struct PoseGraphParams {
 struct PoseGraphMethod {
   std::string name;
   bool is_filter = false;
-  OdometryMethod odometry;  ///< when !is_filter
-  OdometryMethod closure;   ///< the loop-closure registrations: `closure_settings` or else the odometry's
-  PlaneSlamMethod filter;   ///< when is_filter
+  RegistrationSpec odometry;  ///< when !is_filter
+  /// The loop-closure registrations' matcher (`closure_settings`, else the odometry's), on its sampler
+  MatcherSpec closure;
+  PlaneSlamMethod filter;  ///< when is_filter
 };
 
 /// Reads and checks `params` (InputError with file, line, key).

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 #include <memory>
-#include <mutex>
 #include <set>
 
 #include <tbb/parallel_for.h>
@@ -17,8 +16,7 @@
 #include "sextant/eval/trajectory_metrics.hpp"
 #include "sextant/filters/slam_run_failure.hpp"
 #include "sextant/matchers/match_pair.hpp"
-#include "sextant/matchers/yaml.hpp"
-#include "sextant/odometry/yaml.hpp"
+#include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/posegraph/loop_closing.hpp"
 #include "sextant/posegraph/relative_pose_factor.hpp"
 #include "sextant/synth/odometry.hpp"
@@ -53,17 +51,6 @@ PoseList guess_odometry(const synth::Campus& campus, const PoseGraphParams& para
   Rng rng(seed);
   Rng odometry_rng = rng.split();
   return synth::simulate_odometry(truth, campus.settings.odometry, odometry_rng);
-}
-
-/// A run's own deep copy of a method's YAML (yaml-cpp nodes are not safe to walk from several
-/// threads at once; the runs execute concurrently and share the session's methods).
-OdometryMethod private_copy(const OdometryMethod& m) {
-  static std::mutex mutex;
-  const std::lock_guard<std::mutex> lock(mutex);
-  OdometryMethod copy = m;
-  copy.settings.reset(YAML::Clone(m.settings));  // reset: `=` would write into m's node
-  copy.sampler_settings.reset(YAML::Clone(m.sampler_settings));
-  return copy;
 }
 
 /// `count` pairs (i, j), |i − j| ≥ the closures' index gap, truly ≥ min_distance apart.
@@ -118,13 +105,13 @@ std::optional<Eigen::Isometry3d> PreloadedCampus::ground_truth(std::size_t i) co
 }
 
 void run_pose_graph_method(const PreloadedCampus& data, const PoseGraphParams& params,
-                           const OdometryMethod& method, const OdometryMethod& closure, std::uint64_t seed,
+                           const RegistrationSpec& method, const MatcherSpec& closure, std::uint64_t seed,
                            RunRow& row) {
   const std::size_t n = data.size();
   const PoseList truth(data.campus().ground_truth.begin(),
                        data.campus().ground_truth.begin() + static_cast<std::ptrdiff_t>(n));
   OdometrySettings s;
-  s.registration = odometry_registration(private_copy(method));
+  s.registration = {matcher_choice(method.matcher), sampler_factory(method.sampler)};
   s.guess = params.guess;
   s.map = OdometryMap::scan;  // E20 chains scan-to-scan registrations (its edges are pairwise)
   s.seed = seed;
@@ -152,12 +139,10 @@ void run_pose_graph_method(const PreloadedCampus& data, const PoseGraphParams& p
   closing.graph = params.graph;
   closing.rounds = params.closure_rounds;
   closing.calibrate_information = params.calibrate_information;
-  const OdometryMethod closure_method = private_copy(closure);
   const ClosureRegistration register_closure =
       [&](std::size_t i, std::size_t j, const Eigen::Isometry3d& guess, std::uint64_t sampler_seed) {
-        const auto matcher = make_matcher(closure_method.matcher, closure_method.settings, "<loop closure>");
-        const auto sampler =
-            make_sampler(closure_method.sampler, closure_method.sampler_settings, "<loop closure>");
+        const auto matcher = make_matcher(closure);
+        const auto sampler = make_sampler(method.sampler);
         Rng local(sampler_seed);
         const PairMatch m = match_pair(*matcher, *sampler, data.clouds()[i], data.clouds()[j], guess, local);
         RegistrationResult r = m.result;

@@ -15,7 +15,7 @@
 #include "pose_graph/params.hpp"
 #include "sextant/core/dataset.hpp"
 #include "sextant/experiments/run_row.hpp"
-#include "sextant/odometry/yaml.hpp"
+#include "sextant/matchers/matcher_spec.hpp"
 
 namespace sextant {
 
@@ -41,7 +41,7 @@ class PreloadedCampus : public Dataset {
 
 /// The odometry method: chain, loop closures, graph solves; fills row.values and row.series.
 void run_pose_graph_method(const PreloadedCampus& data, const PoseGraphParams& params,
-                           const OdometryMethod& method, const OdometryMethod& closure, std::uint64_t seed,
+                           const RegistrationSpec& method, const MatcherSpec& closure, std::uint64_t seed,
                            RunRow& row);
 /// A plane-SLAM filter over the first `scans` scans.
 void run_filter_method(const PreloadedCampus& data, const PoseGraphParams& params,

@@ -160,8 +160,9 @@ ReportSection pose_graph_report(const ExperimentConfig& config, const PoseGraphP
       "An extension beyond the thesis (§7.2 future work: globally consistent n-scan registration after Lu "
       "and Milios). The first " +
       (params.scans ? std::to_string(params.scans) : std::string("(all)")) +
-      " scans of the synthetic campus; " + odometry.name + " (" + (matcher ? matcher->odometry.matcher : "") +
-      " on a " + (matcher ? matcher->odometry.sampler : "") +
+      " scans of the synthetic campus; " + odometry.name + " (" +
+      (matcher ? matcher->odometry.matcher.name() : "") + " on a " +
+      (matcher ? matcher->odometry.sampler.name() : "") +
       " sample) registers each scan onto the previous one from the odometry increment and the relative poses "
       "are chained from the true first pose (run_odometry). The pose graph has one node per scan, one edge "
       "per "

@@ -48,20 +48,15 @@ void mlndt_deviations(const MlndtSettings& s, std::string& out) {
 
 std::string method_deviations(const RegistrationMethod& m) {
   std::string out;
-  try {
-    if (m.matcher == "mlndt") {
-      mlndt_deviations(read_mlndt_settings(m.settings, "<" + m.name + ">"), out);
-    } else if (m.matcher == "fbmlndt") {
-      mlndt_deviations(read_fbmlndt_settings(m.settings, "<" + m.name + ">").mlndt, out);
-    } else if (m.matcher == "ndt") {
-      const NdtSettings s = read_ndt_settings(m.settings, "<" + m.name + ">");
-      optimizer_deviations(s.optimizer, out);
-      if (s.trilinear) add(out, "trilinear interpolation (Magnusson's variant the thesis cites)");
-    } else {
-      add(out, "a peer the thesis does not run");
-    }
-  } catch (const std::exception& e) {
-    add(out, e.what());
+  if (const MlndtSettings* s = m.matcher.get<MlndtSettings>()) {
+    mlndt_deviations(*s, out);
+  } else if (const FbmlndtSettings* f = m.matcher.get<FbmlndtSettings>()) {
+    mlndt_deviations(f->mlndt, out);
+  } else if (const NdtSettings* n = m.matcher.get<NdtSettings>()) {
+    optimizer_deviations(n->optimizer, out);
+    if (n->trilinear) add(out, "trilinear interpolation (Magnusson's variant the thesis cites)");
+  } else {
+    add(out, "a peer the thesis does not run");
   }
   if (m.adaptive) add(out, "adaptive starting layer (proposed in §5.1.1.3, never built by the thesis)");
   return m.name + ": " + (out.empty() ? "as in the thesis" : out);

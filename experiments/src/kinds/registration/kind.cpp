@@ -117,11 +117,10 @@ class RegistrationSession : public KindSession {
       }
     }
 
-    YAML::Node settings =
-        method.settings.IsMap() ? YAML::Clone(method.settings) : YAML::Node(YAML::NodeType::Map);
-    if (start_layer > 0) settings["start_layer"] = start_layer;
-    const auto matcher = make_matcher(method.matcher, settings, "<" + method.name + ">");
-    const auto sampler = make_sampler(method.sampler, method.sampler_settings, "<" + method.name + ">");
+    MatcherSpec spec = method.matcher;
+    if (start_layer > 0) set_start_layer(spec, start_layer);  // checked by check_registration_sweep
+    const auto matcher = make_matcher(spec);
+    const auto sampler = make_sampler(method.sampler);
     Rng rng(seed);
     o.m = match_pair(*matcher, *sampler, *reference, *input, o.guess, rng);
     return o;
@@ -198,7 +197,7 @@ class RegistrationSession : public KindSession {
     std::size_t failures = 0, done = 0;
     std::map<std::string, std::vector<double>> series;
     for (const std::string& pair : axis_labels_.at("pair")) {
-      const int layer = adaptive_start_layer(rule, method.last_layer, failures, done);
+      const int layer = adaptive_start_layer(rule, last_layer(method.matcher), failures, done);
       std::map<std::string, std::string> point = run.point;
       point["pair"] = pair;
       if (point.count("start_layer")) point["start_layer"] = layer_label(layer);
@@ -257,16 +256,16 @@ class RegistrationKind : public RunKind {
 
   void validate(const ExperimentConfig& config) const override {
     const RegistrationParams params = read_registration_params(config);
-    (void)read_methods(config);
-    check_registration_sweep(config, params);
+    const std::vector<RegistrationMethod> methods = read_methods(config);
+    check_registration_sweep(config, params, methods);
     if (params.pairs == PairSource::kDisplaced)
       check_displaced_sweep(config, read_displaced_settings(config, params));
     check_experiment_dataset(config, "registration");
     params.report->check_reference(config);
-    for (const auto& m : config.methods) {
-      if (!params.report->adaptive_start && read_registration_method(m.node, config.file).adaptive)
+    for (std::size_t k = 0; k < methods.size(); ++k) {
+      if (!params.report->adaptive_start && methods[k].adaptive)
         throw InputError(
-            config.file, at_line(yaml_line(m.node)),
+            config.file, at_line(yaml_line(config.methods[k].node)),
             "key 'adaptive_start': the adaptive starting layer is reported by report: init_layer only");
     }
   }

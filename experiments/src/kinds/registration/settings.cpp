@@ -115,7 +115,8 @@ RegistrationParams read_registration_params(const ExperimentConfig& config) {
   return p;
 }
 
-void check_registration_sweep(const ExperimentConfig& config, const RegistrationParams& params) {
+void check_registration_sweep(const ExperimentConfig& config, const RegistrationParams& params,
+                              const std::vector<RegistrationMethod>& methods) {
   const auto& known = registration_axes();
   for (const auto& axis : config.sweep) {
     if (std::find(known.begin(), known.end(), axis.name) == known.end())
@@ -143,9 +144,9 @@ void check_registration_sweep(const ExperimentConfig& config, const Registration
       axis_fail(config, find_axis(config, name)->values.front(),
                 "sweep axis '" + std::string(name) + "' is only used with pairs: displaced");
   }
-  for (const auto& m : config.methods) {
-    if (!consecutive && read_registration_method(m.node, config.file).adaptive)
-      throw InputError(config.file, at_line(yaml_line(m.node)),
+  for (std::size_t k = 0; k < methods.size(); ++k) {
+    if (!consecutive && methods[k].adaptive)
+      throw InputError(config.file, at_line(yaml_line(config.methods[k].node)),
                        "key 'adaptive_start': the adaptive starting layer needs pairs: consecutive");
   }
   const bool scaled = params.guess == GuessSource::kScaled;
@@ -153,19 +154,14 @@ void check_registration_sweep(const ExperimentConfig& config, const Registration
     throw InputError(config.file, "", "key 'sweep': an axis 'f' is used exactly when params.guess is scaled");
   if (const SweepAxis* layers = find_axis(config, "start_layer")) {
     // Every method must accept the override (e.g. mlndt's start_layer in [1, layers]).
-    for (const auto& m : config.methods) {
-      const RegistrationMethod method = read_registration_method(m.node, config.file);
+    for (const RegistrationMethod& method : methods) {
       for (const auto& v : layers->values) {
-        YAML::Node settings =
-            method.settings.IsMap() ? YAML::Clone(method.settings) : YAML::Node(YAML::NodeType::Map);
-        settings["start_layer"] = v.as<int>();
-        try {
-          (void)make_matcher(method.matcher, settings, config.file);
-        } catch (const InputError& e) {
-          axis_fail(config, v,
-                    "sweep axis 'start_layer': method '" + method.name + "' rejects " + YAML::Dump(v) + ": " +
-                        e.what());
-        }
+        MatcherSpec spec = method.matcher;
+        std::string why = "it has no layer pyramid";
+        if (!set_start_layer(spec, v.as<int>()) || !spec.valid(&why))
+          axis_fail(
+              config, v,
+              "sweep axis 'start_layer': method '" + method.name + "' rejects " + YAML::Dump(v) + ": " + why);
       }
     }
   }

@@ -70,7 +70,8 @@ inline const std::vector<std::string>& registration_axes() {
 /// Reads and checks `params` (InputError with file, line, key).
 RegistrationParams read_registration_params(const ExperimentConfig& config);
 /// Checks the sweep axes against the pair source and guess (InputError).
-void check_registration_sweep(const ExperimentConfig& config, const RegistrationParams& params);
+void check_registration_sweep(const ExperimentConfig& config, const RegistrationParams& params,
+                              const std::vector<RegistrationMethod>& methods);
 
 /// The number of sweep axis `axis` at a run's point, or `fallback` when the point has no such axis.
 double point_value(const RunSpec& run, const std::string& axis, double fallback);

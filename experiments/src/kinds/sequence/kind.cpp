@@ -22,8 +22,8 @@
 #include "sextant/core/pose.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/experiments/run_kind.hpp"
+#include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/odometry/odometry.hpp"
-#include "sextant/odometry/yaml.hpp"
 #include "sextant/synth/campus.hpp"
 #include "sextant/synth/odometry.hpp"
 
@@ -109,8 +109,7 @@ class SequenceSession : public KindSession {
     // Dead reckoning by the matcher alone, from the true first pose (fig 5.15): each registration
     // starts from the odometry increment, so run_odometry runs them in parallel.
     OdometrySettings chain_settings;
-    chain_settings.registration =
-        odometry_registration({method.matcher, method.settings, method.sampler, method.sampler_settings});
+    chain_settings.registration = {matcher_choice(method.matcher), sampler_factory(method.sampler)};
     chain_settings.guess = OdometryGuess::odometry;
     chain_settings.map = OdometryMap::scan;
     chain_settings.odometry = odometry;

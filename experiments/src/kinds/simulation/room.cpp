@@ -52,22 +52,16 @@ RoomParams read_room_params(const ExperimentConfig& config) {
   return p;
 }
 
-struct RoomMethod {
-  std::string matcher = "mlndt";
-  YAML::Node settings;
-};
-
-RoomMethod read_room_method(const YAML::Node& node, const std::string& file) {
+/// A method's matcher, read and checked (without settings: room_sim_matcher_defaults()).
+MatcherSpec read_room_method(const YAML::Node& node, const std::string& file) {
   SettingsReader in(node, file);
-  std::string name;
-  RoomMethod m;
+  std::string name, matcher = "mlndt";
   in.require("name", name);
-  in.read("matcher", m.matcher);
-  m.settings = in.child("settings");
+  in.read("matcher", matcher);
+  YAML::Node settings = in.child("settings");
   in.finish();
-  if (!m.settings.IsDefined() || m.settings.IsNull()) m.settings = room_sim_matcher_defaults();
-  (void)make_matcher(m.matcher, m.settings, file);  // checks the name and the settings
-  return m;
+  if (!settings.IsDefined() || settings.IsNull()) settings = room_sim_matcher_defaults();
+  return read_matcher_spec(matcher, settings, file);
 }
 
 TimedPath path_of(const RunRow& row) {
@@ -135,8 +129,7 @@ void validate_room_2d(const ExperimentConfig& config) {
 
 void run_room_2d(const ExperimentConfig& config, const RunSpec& spec, RunRow& row) {
   const RoomParams p = read_room_params(config);
-  const RoomMethod m = read_room_method(config.methods.at(spec.method_index).node, config.file);
-  auto matcher = make_matcher(m.matcher, m.settings, config.file);
+  auto matcher = make_matcher(read_room_method(config.methods.at(spec.method_index).node, config.file));
   Rng rng(spec.seed);
   const RoomSim2dRun r = run_room_sim_2d(p.room, *matcher, rng);
 

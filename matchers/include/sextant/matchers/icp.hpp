@@ -36,6 +36,11 @@ struct IcpSettings {
   bool valid(std::string* why) const;
 };
 
+/// The settings of `icp_p2p` and of `icp_p2l`: one type per objective, so that the type names the matcher
+/// (matcher_spec.hpp).
+struct IcpP2pSettings : IcpSettings {};
+struct IcpP2lSettings : IcpSettings {};
+
 /// Throws std::invalid_argument when `settings` are not valid.
 std::unique_ptr<Matcher> make_icp(IcpObjective objective, const IcpSettings& settings);
 

@@ -10,6 +10,11 @@
 
 namespace sextant {
 
+/// `all` has nothing to set.
+struct AllPointsSettings {
+  bool valid(std::string* /*why*/) const { return true; }
+};
+
 /// Keeps every point.
 class AllSampler final : public Sampler {
  public:

@@ -46,8 +46,8 @@ enum class OdometryMap {
   local_map,  ///< the last `local_map_scans` scans, in the frame of scan i − 1 (voxel-filtered when large)
 };
 
-/// The matcher and sampler of the registrations (matcher_choice.hpp; by registry name with YAML
-/// settings: odometry_registration() of odometry/yaml.hpp). Each worker builds its own.
+/// The matcher and sampler of the registrations (matcher_choice.hpp: from their specs,
+/// matcher_spec.hpp). Each worker builds its own.
 struct OdometryRegistration {
   MatcherChoice matcher = matcher_choice(MlndtSettings{});          ///< default ML-NDT
   SamplerFactory sampler = sampler_factory(GridSamplerSettings{});  ///< default GBS

@@ -62,9 +62,8 @@ void add_trilinear_claim(const ExperimentConfig& config, const RegistrationParam
   const MethodRows* trilinear = nullptr;
   for (const auto& m : config.methods) {
     const RegistrationMethod method = read_registration_method(m.node, config.file);
-    if (method.matcher == "ndt" && method.settings.IsMap() && method.settings["trilinear"].IsDefined() &&
-        method.settings["trilinear"].as<bool>())
-      trilinear = find_method(methods, method.name);
+    const NdtSettings* ndt = method.matcher.get<NdtSettings>();
+    if (ndt && ndt->trilinear) trilinear = find_method(methods, method.name);
   }
   if (!trilinear) return;
   const MethodRows* ndt = find_method(methods, params.baseline);

@@ -148,7 +148,9 @@ ReportSection init_layer_report(const ExperimentConfig& config, const Registrati
     pairs = std::max(pairs, cells[m][fi][li].success.size());
   }
 
-  // Each adaptive method's base: the fixed-layer method with the same matcher settings, else the first.
+  // Each adaptive method's base: the fixed-layer method whose config gives the same matcher settings,
+  // else the first.
+  const auto settings_text = [&](std::size_t m) { return YAML::Dump(config.methods[m].node["settings"]); };
   std::vector<std::size_t> base_of(methods.size(), methods.size());
   for (std::size_t a = 0; a < methods.size(); ++a) {
     if (!methods[a].adaptive) continue;
@@ -156,8 +158,7 @@ ReportSection init_layer_report(const ExperimentConfig& config, const Registrati
     for (std::size_t b = 0; b < methods.size(); ++b) {
       if (methods[b].adaptive) continue;
       if (fallback == methods.size()) fallback = b;
-      if (base_of[a] == methods.size() && YAML::Dump(methods[b].settings) == YAML::Dump(methods[a].settings))
-        base_of[a] = b;
+      if (base_of[a] == methods.size() && settings_text(b) == settings_text(a)) base_of[a] = b;
     }
     if (base_of[a] == methods.size()) base_of[a] = fallback;
   }

@@ -72,7 +72,7 @@ ReportSection strategies_report(const ExperimentConfig& config, const Registrati
   std::vector<std::string> samplers;
   std::vector<RegistrationStats> stats;
   for (std::size_t m = 0; m < grouped.size(); ++m) {
-    samplers.push_back(read_registration_method(config.methods[m].node, config.file).sampler);
+    samplers.push_back(read_registration_method(config.methods[m].node, config.file).sampler.name());
     std::vector<RegistrationSample> samples;
     for (const RunRow* r : grouped[m].rows) samples.push_back(sample_of(*r));
     stats.push_back(registration_stats(samples, settings));

@@ -1,11 +1,11 @@
 #pragma once
-// The matchers and samplers from YAML (target Sextant::matchers_yaml; the library takes the plain
-// settings structs, matcher_choice.hpp). A YAML file chooses `method: mlndt` by registry name; each
-// reader maps a settings map onto the struct's defaults, and every problem (an unknown key, a wrong
-// type, an invalid value) is an InputError naming the file, the line and the key.
+// The matcher and sampler specs from YAML (target Sextant::matchers_yaml; the library takes the specs,
+// matcher_spec.hpp). A YAML file chooses `matcher: mlndt` by name; each reader maps a settings map
+// onto the struct's defaults, and every problem (an unknown name or key, a wrong type, an invalid
+// value) is an InputError naming the file, the line and the key. Read once, at the edge:
 //
-//   auto matcher = make_matcher("mlndt", settings_node, "exp.yaml");
-//   MatcherChoice choice = matcher_choice("mlndt", settings_node, "exp.yaml");  // for register_pair
+//   MatcherSpec spec = read_matcher_spec("mlndt", settings_node, "exp.yaml");
+//   MatcherChoice choice = matcher_choice(spec);  // for register_pair and odometry
 //
 // ML-NDT presets (mlndt_presets.hpp): a map of `mlndt` (and `fbmlndt`, which forwards the mlndt keys)
 // may say `preset: <name>`; it starts from that preset's settings and its other keys override them.
@@ -19,11 +19,10 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include "sextant/core/registry.hpp"
 #include "sextant/matchers/fbmlndt_matcher.hpp"
 #include "sextant/matchers/icp.hpp"
 #include "sextant/matchers/matcher.hpp"
-#include "sextant/matchers/matcher_choice.hpp"
+#include "sextant/matchers/matcher_spec.hpp"
 #include "sextant/matchers/mlndt_global_init.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/mlndt_presets.hpp"
@@ -58,33 +57,17 @@ PclGicpSettings read_pcl_gicp_settings(const YAML::Node& node, const std::string
 /// Keys cell_size, max_per_cell, min_per_cell.
 GridSamplerSettings read_grid_sampler_settings(const YAML::Node& settings, const std::string& file);
 
-// --- The registries: by name, with YAML settings ---
+// --- The specs by name ---
 
-/// Factory signature: (settings node — may be null for defaults, file name for error messages).
-using MatcherRegistry = Registry<Matcher, const YAML::Node&, const std::string&>;
-using SamplerRegistry = Registry<Sampler, const YAML::Node&, const std::string&>;
+/// The matcher (sampler) named `name` (matcher_names(), sampler_names()) with `settings` (null: its
+/// defaults), read and checked.
+MatcherSpec read_matcher_spec(const std::string& name, const YAML::Node& settings, const std::string& file);
+SamplerSpec read_sampler_spec(const std::string& name, const YAML::Node& settings, const std::string& file);
 
-/// All matchers (samplers), filled with the built-ins on first use.
-MatcherRegistry& matcher_registry();
-SamplerRegistry& sampler_registry();
-
+/// read_matcher_spec (read_sampler_spec) and the bare matcher (sampler) it specifies.
 std::unique_ptr<Matcher> make_matcher(const std::string& name, const YAML::Node& settings = YAML::Node(),
                                       const std::string& file = "<settings>");
 std::unique_ptr<Sampler> make_sampler(const std::string& name, const YAML::Node& settings = YAML::Node(),
                                       const std::string& file = "<settings>");
-
-/// The matcher `name` with `settings` for register_pair and odometry: make() and make_wide() read
-/// the settings at every call (so a SettingsRecording records them), their errors name `file` (the
-/// wide basin's: `wide_file`, empty = `file`); the wide basin as with_wide_basin() gives it.
-MatcherChoice matcher_choice(const std::string& name, const YAML::Node& settings, const std::string& file,
-                             const std::string& wide_file = "");
-/// The sampler `name` with `settings`, read at every call; errors name `file`.
-SamplerFactory sampler_factory(const std::string& name, const YAML::Node& settings, const std::string& file);
-
-// --- The wide basin ---
-
-/// `settings` (mlndt or fbmlndt) with the wide basin switched on (`wide_basin: {}` unless it has its
-/// own); nothing for a matcher without a wide basin.
-std::optional<YAML::Node> with_wide_basin(const std::string& matcher, const YAML::Node& settings);
 
 }  // namespace sextant
