@@ -36,11 +36,9 @@ PlaneSlamSettings read_plane_slam_settings(const YAML::Node& node, const std::st
   if (filter_settings && !filter_settings.IsNull() && !filter_settings.IsMap())
     in.fail("", "filter_settings must be a map");
   if (!valid) in.fail("", why);
-  // The filter's own keys are checked now, so a typo fails before a long run starts.
-  make_filter(s.filter, std::make_shared<PlaneSlamModel>(), filter_settings, file);
-  s.filter_factory = [name = s.filter, filter_settings](std::shared_ptr<const SlamModel> model) {
-    return make_filter(name, std::move(model), filter_settings);
-  };
+  // The filter's own keys are read now, so a typo fails before a long run starts.
+  s.filter_factory =
+      filter_factory(read_filter_spec(s.filter, filter_settings, file, PlaneSlamModel().pose_dim()));
   return s;
 }
 

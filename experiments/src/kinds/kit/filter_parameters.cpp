@@ -1,12 +1,11 @@
 #include "kit/filter_parameters.hpp"
 
 #include "sextant/filters/filter.hpp"
-#include "sextant/filters/yaml.hpp"
 
 namespace sextant {
 
 Table sigma_point_table(const std::vector<FilterMethodSettings>& methods,
-                        const std::shared_ptr<const SlamModel>& model, const std::string& file) {
+                        const std::shared_ptr<const SlamModel>& model) {
   Table t;
   t.caption = "Each filter's sigma-point rule and its parameters";
   t.label = "sigma_points";
@@ -19,14 +18,14 @@ Table sigma_point_table(const std::vector<FilterMethodSettings>& methods,
       "with a centre of mean weight 0.";
   t.add_column("method").add_column("filter").add_column("sigma points and parameters");
   for (const FilterMethodSettings& m : methods)
-    t.add_row({Cell::text(m.method), Cell::text(m.filter),
-               Cell::text(make_filter(m.filter, model, m.settings, file)->approximation())});
+    t.add_row({Cell::text(m.method), Cell::text(m.filter.name()),
+               Cell::text(make_filter(m.filter, model)->approximation())});
   return t;
 }
 
 bool has_sigma_point_filter(const std::vector<FilterMethodSettings>& methods) {
   for (const FilterMethodSettings& m : methods)
-    if (m.filter == "ukf" || m.filter == "ckf" || m.filter == "rspkf") return true;
+    if (m.filter.get<UkfSettings>() || m.filter.get<CkfSettings>() || m.filter.get<RspkfSettings>()) return true;
   return false;
 }
 

@@ -6,24 +6,22 @@
 #include <string>
 #include <vector>
 
-#include <yaml-cpp/yaml.h>
-
 #include "sextant/eval/table.hpp"
+#include "sextant/filters/filter_spec.hpp"
 #include "sextant/filters/slam_model.hpp"
 
 namespace sextant {
 
-/// One method: its label, its filter registry name and the filter's settings node.
+/// One method: its label and its filter.
 struct FilterMethodSettings {
   std::string method;
-  std::string filter;
-  YAML::Node settings;
+  FilterSpec filter;
 };
 
 /// Table "sigma_points": method | filter | sigma points and parameters, one row per method, each
-/// filter built (not run) on `model` from its settings.
+/// filter built (not run) on `model`.
 Table sigma_point_table(const std::vector<FilterMethodSettings>& methods,
-                        const std::shared_ptr<const SlamModel>& model, const std::string& file);
+                        const std::shared_ptr<const SlamModel>& model);
 
 /// True when some method is a sigma-point filter (ukf, ckf, rspkf): only then is the table shown.
 bool has_sigma_point_filter(const std::vector<FilterMethodSettings>& methods);

@@ -90,11 +90,14 @@ PlaneSlamParams read_plane_slam_params(const ExperimentConfig& config) {
   p.spike_window = read_count(in, "spike_window", p.spike_window);
   p.compare_scans = read_count(in, "compare_scans", 0);
   in.read("failures_are_results", p.failures_are_results);
-  if (in.has("slam")) {
-    const YAML::Node slam = in.child("slam");
-    (void)read_plane_slam_settings(slam, config.file);  // errors name the line of the key
-    p.slam = YAML::Clone(slam);
+  const YAML::Node slam = in.child("slam");
+  if (slam && !slam.IsNull() && !slam.IsMap()) in.fail("slam", "key 'slam' must be a map");
+  for (const char* key : {"filter", "filter_settings"}) {
+    if (slam.IsMap() && slam[key].IsDefined())
+      throw InputError(config.file, at_line(yaml_line(slam[key])),
+                       std::string("key '") + key + "': set the filter per method, not under slam");
   }
+  p.slam = read_plane_slam_settings(slam, config.file);  // errors name the line of the key
   std::vector<long> at;
   in.read("information_at", at);
   for (long a : at) {
@@ -110,12 +113,6 @@ PlaneSlamParams read_plane_slam_params(const ExperimentConfig& config) {
   in.finish();
   std::string why;
   if (!p.valid(&why)) in.fail("", why);
-  if (p.slam && !p.slam.IsNull() && !p.slam.IsMap()) in.fail("slam", "key 'slam' must be a map");
-  for (const char* key : {"filter", "filter_settings"}) {
-    if (p.slam.IsMap() && p.slam[key].IsDefined())
-      throw InputError(config.file, at_line(yaml_line(p.slam[key])),
-                       std::string("key '") + key + "': set the filter per method, not under slam");
-  }
   return p;
 }
 
@@ -123,8 +120,9 @@ PlaneSlamMethod read_plane_slam_method(const YAML::Node& node, const std::string
   SettingsReader in(node, file);
   PlaneSlamMethod m;
   in.require("name", m.name);
-  in.require("filter", m.filter);
-  if (in.has("filter_settings")) m.filter_settings = in.child("filter_settings");
+  std::string filter;
+  in.require("filter", filter);
+  const YAML::Node filter_settings = in.child("filter_settings");
   m.scans = read_count(in, "scans", 0);
   m.motion =
       read_choice<MotionSource>(in, "motion", MotionSource::kOdometry,
@@ -143,22 +141,20 @@ PlaneSlamMethod read_plane_slam_method(const YAML::Node& node, const std::string
   if (m.matcher && !m.matcher.IsNull() && m.motion != MotionSource::kFbmlndt)
     in.fail("matcher", "key 'matcher': only with motion: fbmlndt");
   if (m.motion == MotionSource::kFbmlndt) (void)read_mlndt_settings(m.matcher, file);
-  if (!filter_registry().contains(m.filter))
-    in.fail("filter",
-            "key 'filter': '" + m.filter + "' is not a filter (ekf, ukf, ckf, rspkf, seif, eif, eseif)");
-  (void)make_filter(m.filter, std::make_shared<PlaneSlamModel>(), m.filter_settings, file);
-  m.filter_settings = YAML::Clone(m.filter_settings);
+  if (!default_filter_spec(filter))
+    in.fail("filter", "key 'filter': '" + filter + "' is not a filter (ekf, ukf, ckf, rspkf, seif, eif, eseif)");
+  m.filter = read_filter_spec(filter, filter_settings, file, PlaneSlamModel().pose_dim());
   return m;
 }
 
 PlaneSlamSettings plane_slam_settings(const PlaneSlamParams& params, const PlaneSlamMethod& method,
                                       double p0_scale, const std::string& file) {
-  YAML::Node node = params.slam.IsMap() ? YAML::Clone(params.slam) : YAML::Node(YAML::NodeType::Map);
-  node["filter"] = method.filter;
-  if (method.filter_settings && !method.filter_settings.IsNull())
-    node["filter_settings"] = YAML::Clone(method.filter_settings);
-  if (std::isfinite(p0_scale)) node[kP0ScaleAxis] = p0_scale;
-  PlaneSlamSettings s = read_plane_slam_settings(node, file);
+  PlaneSlamSettings s = params.slam;
+  s.filter = method.filter.name();
+  s.filter_factory = filter_factory(method.filter);
+  if (std::isfinite(p0_scale)) s.p0_scale = p0_scale;
+  std::string why;
+  if (!s.valid(&why)) throw InputError(file, "", "plane SLAM settings: " + why);
   s.record_pose_covariance = false;  // the kind reads the pose block itself (joint_covariance)
   return s;
 }

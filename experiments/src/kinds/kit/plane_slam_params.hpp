@@ -53,6 +53,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "sextant/experiments/experiment_config.hpp"
+#include "sextant/filters/filter_spec.hpp"
 #include "sextant/filters/plane_slam.hpp"
 #include "sextant/synth/settings.hpp"
 
@@ -77,7 +78,8 @@ struct PlaneSlamParams {
   std::size_t first = 0;  ///< the campus scan the run starts at (scan 0 of every series)
   std::size_t min_points = 300;
   OdometrySource odometry = OdometrySource::kCampus;
-  YAML::Node slam;  ///< PlaneSlamSettings keys without `filter` / `filter_settings` (may be null)
+  /// `slam:` the PlaneSlamSettings keys but `filter` / `filter_settings` (each method's, plane_slam_settings)
+  PlaneSlamSettings slam;
   std::string report = "accuracy";  ///< the plane_slam kind's layout (checked against its table)
   std::vector<std::size_t> information_at;
   double nees_probability = 0.99;
@@ -98,8 +100,7 @@ struct PlaneSlamParams {
 
 struct PlaneSlamMethod {
   std::string name;
-  std::string filter;
-  YAML::Node filter_settings;
+  FilterSpec filter;      ///< `filter:` and `filter_settings:`
   std::size_t scans = 0;  ///< 0: params.scans
   MotionSource motion = MotionSource::kOdometry;
   YAML::Node matcher;  ///< motion: fbmlndt: mlndt settings of the registration (may be null)

@@ -160,10 +160,10 @@ std::optional<Table> plane_slam_sigma_point_table(const ExperimentConfig& config
   std::vector<FilterMethodSettings> methods;
   for (const MethodConfig& m : config.methods) {
     const PlaneSlamMethod pm = read_plane_slam_method(m.node, config.file);
-    methods.push_back({m.name, pm.filter, pm.filter_settings});
+    methods.push_back({m.name, pm.filter});
   }
   if (!has_sigma_point_filter(methods)) return std::nullopt;
-  return sigma_point_table(methods, std::make_shared<PlaneSlamModel>(), config.file);
+  return sigma_point_table(methods, std::make_shared<PlaneSlamModel>());
 }
 
 ReportFigure error_figure(const PlaneSlamRows& data, const std::string& point, const std::string& series_name,

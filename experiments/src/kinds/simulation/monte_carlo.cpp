@@ -97,47 +97,36 @@ MonteCarloParams read_monte_carlo_params(const ExperimentConfig& config) {
   return p;
 }
 
-namespace {
-
-struct FilterMethod {
-  std::string filter;
-  YAML::Node settings;
-};
-
-FilterMethod read_filter_method(const YAML::Node& node, const std::string& file) {
+FilterSpec read_range_bearing_filter(const YAML::Node& node, const std::string& file) {
   SettingsReader in(node, file);
-  std::string name;
-  FilterMethod m;
+  std::string name, filter;
   in.require("name", name);
-  in.require("filter", m.filter);
-  m.settings = in.child("settings");
+  in.require("filter", filter);
+  const YAML::Node settings = in.child("settings");
   in.finish();
-  (void)make_filter(m.filter, std::make_shared<RangeBearingModel>(), m.settings, file);  // checks
-  return m;
+  return read_filter_spec(filter, settings, file, RangeBearingModel().pose_dim());
 }
-
-}  // namespace
 
 void validate_range_bearing(const ExperimentConfig& config) {
   (void)read_monte_carlo_params(config);
-  for (const auto& m : config.methods) (void)read_filter_method(m.node, config.file);
+  for (const auto& m : config.methods) (void)read_range_bearing_filter(m.node, config.file);
   if (!config.sweep.empty())
     throw InputError(config.file, "", "key 'sweep': range_bearing takes no sweep axes");
 }
 
 void run_range_bearing(const ExperimentConfig& config, const RunSpec& spec, RunRow& row) {
   const MonteCarloParams p = read_monte_carlo_params(config);
-  const FilterMethod m = read_filter_method(config.methods.at(spec.method_index).node, config.file);
+  FilterSpec filter_spec = read_range_bearing_filter(config.methods.at(spec.method_index).node, config.file);
   Rng world_rng(config.seed);
   const RangeBearingWorld world = make_range_bearing_world(p.landmarks, p.side, world_rng);
   Rng rng(spec.seed);
   const RangeBearingRun sim = simulate_range_bearing(world, p.sim, rng);
 
   // The RSPKF draws its random sigma points from its own seed: a different one per repetition.
-  YAML::Node settings = m.settings.IsMap() ? YAML::Clone(m.settings) : YAML::Node(YAML::NodeType::Map);
-  if (m.filter == "rspkf" && !settings["seed"]) settings["seed"] = spec.seed % 1000000007ULL;
+  if (RspkfSettings* rspkf = filter_spec.get<RspkfSettings>(); rspkf && !rspkf->seed)
+    rspkf->seed = spec.seed % 1000000007ULL;
   auto model = std::make_shared<RangeBearingModel>(p.sim.model());
-  auto filter = make_filter(m.filter, model, settings, config.file);
+  auto filter = make_filter(filter_spec, model);
   filter->initialize(Eigen::VectorXd::Zero(3), p.initial_sigma.cwiseAbs2().asDiagonal().toDenseMatrix());
   const SlamRunResult result = run_slam(*filter, sim.steps, p.sim.control_noise(), p.sim.observation_noise());
   const std::string failure =

@@ -5,10 +5,12 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <yaml-cpp/yaml.h>
 
 #include "sextant/experiments/report_model.hpp"
 #include "sextant/experiments/run_plan.hpp"
 #include "sextant/experiments/run_row.hpp"
+#include "sextant/filters/filter_spec.hpp"
 #include "sextant/filters/range_bearing_sim.hpp"
 
 namespace sextant {
@@ -27,6 +29,8 @@ struct MonteCarloParams {
 
 /// Reads and checks `params` (InputError with file, line, key).
 MonteCarloParams read_monte_carlo_params(const ExperimentConfig& config);
+/// A method's filter: `{name, filter, settings}`, read and checked (InputError).
+FilterSpec read_range_bearing_filter(const YAML::Node& node, const std::string& file);
 
 ReportSection monte_carlo_report(const ExperimentConfig& config, const MonteCarloParams& params,
                                  const RangeBearingWorld& world, const std::vector<RunSpec>& runs,

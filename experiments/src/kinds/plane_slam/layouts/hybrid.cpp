@@ -36,9 +36,10 @@ std::vector<Pair> pairs(const ExperimentConfig& config, const PlaneSlamRows& dat
     const PlaneSlamMethod method = read_plane_slam_method(m.node, config.file);
     const MethodRows* g = data.find(method.name, data.points.front());
     if (!g || g->rows.empty()) continue;
-    if (!by_filter.count(method.filter)) order.push_back(method.filter);
-    Pair& p = by_filter[method.filter];
-    p.filter = method.filter;
+    const std::string filter = method.filter.name();
+    if (!by_filter.count(filter)) order.push_back(filter);
+    Pair& p = by_filter[filter];
+    p.filter = filter;
     (method.motion == MotionSource::kFbmlndt ? p.hybrid : p.odometry) = g;
   }
   std::vector<Pair> out;
