@@ -1,4 +1,4 @@
-// ICP's k-d tree (matchers/kd_tree.hpp) against nanoflann (Debian's libnanoflann-dev), on real
+// ICP's k-d tree (matchers/src/icp/kd_tree.hpp) against nanoflann (Debian's libnanoflann-dev), on real
 // scans at the sizes ICP uses (docs/design.md, "Libraries we use and code we keep"):
 //   - build over a whole reference scan (set_reference),
 //   - the nearest reference point within max_correspondence_distance = 1 m of each point of the
@@ -18,8 +18,8 @@
 
 #include <nanoflann.hpp>
 
+#include "icp/kd_tree.hpp"
 #include "sextant/core/io/cloud_io.hpp"
-#include "sextant/matchers/kd_tree.hpp"
 
 namespace sextant {
 namespace {

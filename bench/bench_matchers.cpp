@@ -15,12 +15,13 @@
 #include <numeric>
 #include <string>
 
+#include "mlndt/mlndt_global_init.hpp"
 #include "ndt/mahalanobis_kernel.hpp"
+#include "ndt/ndt_score.hpp"
 #include "sextant/core/io/cloud_io.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
-#include "sextant/matchers/ndt_score.hpp"
 #include "sextant/matchers/samplers.hpp"
 
 namespace sextant {

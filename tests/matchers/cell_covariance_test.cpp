@@ -13,9 +13,9 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
+#include "ndt/cell_covariance.hpp"
 #include "ndt/cell_covariance_lanes.hpp"
 #include "sextant/core/rng.hpp"
-#include "sextant/matchers/cell_covariance.hpp"
 
 namespace sextant {
 namespace {

@@ -4,12 +4,12 @@
 #include <cmath>
 #include <limits>
 
+#include "icp/icp_steps.hpp"
+#include "icp/kd_tree.hpp"
 #include "pose_errors.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/matchers/icp.hpp"
-#include "sextant/matchers/icp_steps.hpp"
-#include "sextant/matchers/kd_tree.hpp"
 #include "sextant/matchers/yaml.hpp"
 #include "sextant_test/random_draws.hpp"
 

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "ndt/mahalanobis_kernel.hpp"
+#include "ndt/ndt_score.hpp"
 #include "sextant/core/rng.hpp"
 #include "sextant/matchers/ndt_grid.hpp"
 #include "test_clouds.hpp"

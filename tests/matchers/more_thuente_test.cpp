@@ -5,11 +5,11 @@
 #include <cmath>
 #include <vector>
 
+#include "optim/more_thuente.hpp"
 #include "pose_errors.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/matchers/matcher.hpp"
-#include "sextant/matchers/more_thuente.hpp"
 #include "sextant/matchers/ndt_matcher.hpp"
 #include "sextant/matchers/samplers.hpp"
 #include "sextant/matchers/yaml.hpp"

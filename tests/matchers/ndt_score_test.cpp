@@ -3,7 +3,7 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "sextant/matchers/ndt_score.hpp"
+#include "ndt/ndt_score.hpp"
 #include "sextant_test/finite_differences.hpp"
 #include "test_clouds.hpp"
 

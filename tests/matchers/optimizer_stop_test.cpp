@@ -3,9 +3,10 @@
 // minimum and evaluation count are known.
 #include <gtest/gtest.h>
 
+#include "ndt/ndt_score.hpp"
+#include "optim/optimizer.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/pose.hpp"
-#include "sextant/matchers/optimizer.hpp"
 #include "sextant/matchers/yaml.hpp"
 
 namespace sextant {

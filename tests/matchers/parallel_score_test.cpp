@@ -9,13 +9,13 @@
 #include <string>
 #include <vector>
 
+#include "ndt/ndt_score.hpp"
 #include "pose_errors.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/cloud_io.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/ndt_matcher.hpp"
-#include "sextant/matchers/ndt_score.hpp"
 #include "sextant/matchers/yaml.hpp"
 #include "test_clouds.hpp"
 

@@ -11,10 +11,10 @@
 #include <cmath>
 #include <limits>
 
+#include "icp/kd_tree.hpp"
 #include "pose_errors.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/cloud_io.hpp"
-#include "sextant/matchers/kd_tree.hpp"
 #include "sextant/matchers/match_pair.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/ndt_matcher.hpp"

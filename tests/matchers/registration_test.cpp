@@ -4,12 +4,12 @@
 
 #include <cmath>
 
+#include "ndt/ndt_score.hpp"
 #include "pose_errors.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/ndt_matcher.hpp"
-#include "sextant/matchers/ndt_score.hpp"
 #include "sextant/matchers/samplers.hpp"
 #include "sextant/matchers/yaml.hpp"
 #include "test_clouds.hpp"

@@ -5,8 +5,8 @@
 // is taken, not made again, and the result is the one a matcher without them computes.
 #include <gtest/gtest.h>
 
+#include "mlndt/mlndt_global_init.hpp"
 #include "sextant/core/pose.hpp"
-#include "sextant/matchers/mlndt_global_init.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/ndt_matcher.hpp"
 #include "test_clouds.hpp"

@@ -6,10 +6,10 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "icp/icp_steps.hpp"
+#include "icp/kd_tree.hpp"
 #include "sextant/core/checked_settings.hpp"
 #include "sextant/matchers/icp.hpp"
-#include "sextant/matchers/icp_steps.hpp"
-#include "sextant/matchers/kd_tree.hpp"
 
 namespace sextant {
 

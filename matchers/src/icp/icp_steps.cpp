@@ -1,4 +1,4 @@
-#include "sextant/matchers/icp_steps.hpp"
+#include "icp/icp_steps.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "sextant/matchers/kd_tree.hpp"
+#include "icp/kd_tree.hpp"
 
 #include <algorithm>
 #include <cmath>

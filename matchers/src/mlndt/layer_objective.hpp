@@ -5,9 +5,10 @@
 #include <limits>
 #include <vector>
 
+#include "ndt/ndt_score.hpp"
+#include "optim/optimizer.hpp"
 #include "sextant/core/chi_square.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
-#include "sextant/matchers/optimizer.hpp"
 
 namespace sextant::mlndt_detail {
 

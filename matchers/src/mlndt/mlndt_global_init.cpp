@@ -1,15 +1,15 @@
 // The wide-basin initialisation of ML-NDT (mlndt_global_init.hpp): hypotheses scored at a coarse
 // layer by the truncated Mahalanobis score of eq. (3.11).
-#include "sextant/matchers/mlndt_global_init.hpp"
+#include "mlndt/mlndt_global_init.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <tuple>
 
+#include "ndt/ndt_score.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/units.hpp"
 #include "sextant/matchers/horizon_check.hpp"
-#include "sextant/matchers/ndt_score.hpp"
 
 namespace sextant {
 

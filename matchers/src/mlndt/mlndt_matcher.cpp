@@ -6,7 +6,10 @@
 #include <memory>
 
 #include "mlndt/layer_objective.hpp"
+#include "mlndt/mlndt_global_init.hpp"
 #include "mlndt/run_memo.hpp"
+#include "ndt/ndt_score.hpp"
+#include "optim/optimizer.hpp"
 #include "sextant/core/checked_settings.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/matchers/registration_quality.hpp"

@@ -7,6 +7,8 @@
 
 #include "mlndt/layer_objective.hpp"
 #include "mlndt/run_memo.hpp"
+#include "ndt/ndt_score.hpp"
+#include "optim/optimizer.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 
 namespace sextant {

@@ -5,7 +5,7 @@
 // (cell_covariance_lanes.inc) are compiled twice on x86-64, for plain x86-64 and with AVX2, like the
 // split's (cell_split.cpp); this file is compiled with -ffp-contract=off (matchers/CMakeLists.txt), so
 // both give the same bits (CellCovariance.* checks it).
-#include "sextant/matchers/cell_covariance.hpp"
+#include "ndt/cell_covariance.hpp"
 
 #include <algorithm>
 #include <cstdint>

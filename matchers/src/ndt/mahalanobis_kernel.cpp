@@ -30,6 +30,7 @@ struct Lanes {
 namespace baseline {
 #define SEXTANT_LANES_TARGET
 #include "ndt/mahalanobis_lanes.inc"
+#include "ndt/ndt_score.hpp"
 #undef SEXTANT_LANES_TARGET
 }  // namespace baseline
 

@@ -4,9 +4,9 @@
 #include <Eigen/Core>
 
 #include "ndt/instruction_set.hpp"
+#include "ndt/ndt_score.hpp"
 #include "ndt/score_sums.hpp"
 #include "sextant/matchers/ndt_grid.hpp"
-#include "sextant/matchers/ndt_score.hpp"
 
 namespace sextant::score_detail {
 

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "ndt/ndt_score.hpp"
+#include "optim/optimizer.hpp"
 #include "sextant/core/checked_settings.hpp"
 
 namespace sextant {
@@ -63,12 +65,14 @@ void NdtMatcher::set_reference(const PointCloud& reference) {
   if (edge <= 0.0) edge = layer_geometry(reference.bounds(), settings_.volume_divisions, 1).cell_edge;
   grid_ = NdtGrid::build_over_bounds(reference, edge, settings_.cells);
   reference_points_ = reference.size();
-  params_ = GaussianScoreParams::from_outlier_ratio(settings_.outlier_ratio, edge);
+  cell_edge_ = edge;
 }
 
 RegistrationResult NdtMatcher::align(const PointCloud& input, const Eigen::Isometry3d& initial) {
   if (grid_.empty()) return not_started(empty_model_reason(reference_points_, grid_), input.size(), initial);
-  const GaussianObjective objective(grid_, params_, settings_.trilinear, settings_.threads, input);
+  const GaussianScoreParams params =
+      GaussianScoreParams::from_outlier_ratio(settings_.outlier_ratio, cell_edge_);
+  const GaussianObjective objective(grid_, params, settings_.trilinear, settings_.threads, input);
   return optimize(objective, initial, settings_.optimizer);
 }
 

@@ -2,7 +2,7 @@
 // Jacobian in the rotated point u = R·x: ∂(R·x)/∂α = a_α × u with a_α = e_x, a_β = Rx·e_y,
 // a_γ = Rx·Ry·e_z (columns of A), and ∂²(R·x)/∂ξi∂ξj = a_i × (a_j × u) for i ≤ j. So each point
 // only adds to sums (C⁻¹, C⁻¹[u]×, [u]×ᵀC⁻¹[u]×, C⁻¹e·uᵀ) and A is applied once at the end.
-#include "sextant/matchers/ndt_score.hpp"
+#include "ndt/ndt_score.hpp"
 
 #include "ndt/mahalanobis_kernel.hpp"
 #include "ndt/score_sums.hpp"

@@ -1,5 +1,5 @@
 // The Moré–Thuente line search (Moré & Thuente 1994), written from the paper's §§2–4.
-#include "sextant/matchers/more_thuente.hpp"
+#include "optim/more_thuente.hpp"
 
 #include <algorithm>
 #include <cmath>

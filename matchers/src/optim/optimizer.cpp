@@ -1,5 +1,5 @@
 // The shared optimiser loop (Table 3.1's registration process) with Newton, LM and Ceres steps.
-#include "sextant/matchers/optimizer.hpp"
+#include "optim/optimizer.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -9,7 +9,9 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
+#include "ndt/ndt_score.hpp"
 #include "optim/ceres_stage.hpp"
+#include "optim/more_thuente.hpp"
 
 namespace sextant {
 

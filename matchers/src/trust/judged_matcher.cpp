@@ -1,6 +1,8 @@
 // Every matcher's poses judged on the default ML-NDT's last layer (judged_matcher.hpp).
 #include "sextant/matchers/judged_matcher.hpp"
 
+#include "ndt/ndt_score.hpp"
+
 #include <utility>
 
 #include "sextant/matchers/matcher_traits.hpp"

@@ -8,7 +8,7 @@
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/matchers/dof_mask.hpp"
 #include "sextant/matchers/ndt_grid.hpp"
-#include "sextant/matchers/optimizer.hpp"
+#include "sextant/matchers/optimizer_settings.hpp"
 #include "sextant/matchers/precision_stage.hpp"
 
 namespace sextant {

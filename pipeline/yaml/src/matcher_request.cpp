@@ -7,7 +7,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/matchers/matcher_traits.hpp"
-#include "sextant/matchers/optimizer.hpp"
+#include "sextant/matchers/optimizer_settings.hpp"
 #include "sextant/matchers/yaml.hpp"
 
 namespace sextant {

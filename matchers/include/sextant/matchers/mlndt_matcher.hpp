@@ -14,11 +14,10 @@
 #include <vector>
 
 #include "sextant/matchers/matcher.hpp"
-#include "sextant/matchers/mlndt_global_init.hpp"
 #include "sextant/matchers/ndt_grid.hpp"
-#include "sextant/matchers/ndt_score.hpp"
-#include "sextant/matchers/optimizer.hpp"
+#include "sextant/matchers/optimizer_settings.hpp"
 #include "sextant/matchers/precision_stage.hpp"
+#include "sextant/matchers/wide_basin_settings.hpp"
 
 namespace sextant {
 
@@ -71,6 +70,8 @@ struct MlndtModel {
   std::size_t reference_points = 0;
 };
 
+class ScoreThreads;      // matchers/src/ndt/ndt_score.hpp
+struct ScoreEvaluation;  // matchers/src/ndt/ndt_score.hpp
 namespace mlndt_detail {
 class RunMemo;
 }

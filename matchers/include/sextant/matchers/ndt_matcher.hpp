@@ -11,7 +11,7 @@
 #include "sextant/core/units.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/ndt_grid.hpp"
-#include "sextant/matchers/optimizer.hpp"
+#include "sextant/matchers/optimizer_settings.hpp"
 
 namespace sextant {
 
@@ -45,7 +45,7 @@ class NdtMatcher final : public Matcher {
   NdtSettings settings_;
   NdtGrid grid_;
   std::size_t reference_points_ = 0;
-  GaussianScoreParams params_;
+  double cell_edge_ = 0.0;  ///< of grid_ [m]
 };
 
 }  // namespace sextant

@@ -23,13 +23,13 @@
 #include "sextant/matchers/icp.hpp"
 #include "sextant/matchers/matcher.hpp"
 #include "sextant/matchers/matcher_spec.hpp"
-#include "sextant/matchers/mlndt_global_init.hpp"
 #include "sextant/matchers/mlndt_matcher.hpp"
 #include "sextant/matchers/mlndt_presets.hpp"
 #include "sextant/matchers/ndt_matcher.hpp"
 #include "sextant/matchers/pcl_peers.hpp"
 #include "sextant/matchers/sampler.hpp"
 #include "sextant/matchers/samplers.hpp"
+#include "sextant/matchers/wide_basin_settings.hpp"
 
 namespace sextant {
 

@@ -11,6 +11,8 @@
 #include <functional>
 #include <string>
 
+#include "sextant/matchers/optimizer_settings.hpp"
+
 namespace sextant {
 
 /// φ and φ' at one step; ok = false when φ cannot be evaluated there (the search then treats the
@@ -19,14 +21,6 @@ struct LineSearchSample {
   double value = 0.0;  ///< φ(α)
   double slope = 0.0;  ///< φ'(α)
   bool ok = true;
-};
-
-struct MoreThuenteSettings {
-  double mu = 1e-4;  ///< μ of eq. (1.1), sufficient decrease, in (0, 1) [1]
-  double eta = 0.9;  ///< η of eq. (1.2), curvature, in [μ, 1) [1]
-  double max_step = 1.0;  ///< NDT: the longest step ‖α·Δξ‖, in ξ's mixed units [m and rad, as ε], ≤ 1000
-  int iterations = 10;  ///< evaluations of φ per line search, in [1, 100] [count]
-  bool valid(std::string* why) const;
 };
 
 enum class LineSearchEnd {
