@@ -1,9 +1,8 @@
 #pragma once
 // A nearly straight trajectory leaves the alignment's rotation about its direction free: Umeyama's
 // fit (umeyama.hpp) of positions that lie close to one line barely changes with a rotation about
-// that line, so the positions' errors pick one. On MulRan Riverside 0–107 (129 m × 1.6 m × 0.5 m of
-// spread) it turned the estimate 90–126° about the road; on keyframes 10–30 (51 m × 0.29 m) it
-// turned a right estimate 23° to fit a vertical bow of its pitch drift onto the road's sideways one.
+// that line, so the positions' errors pick one: on a nearly straight road it can turn a right
+// estimate by tens of degrees or more about the road (docs/odometry.md, "What it prints and writes").
 //
 // A roll θ about the principal axis a of the reference positions moves them by θ·d (RMS), d the RMS
 // distance of the positions from a; the fit cannot tell apart rolls whose displacement stays within

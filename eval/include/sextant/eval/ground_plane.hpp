@@ -1,13 +1,11 @@
 #pragma once
 // A trajectory on the ground plane (issue 22): each pose's x, y and heading, with its height, roll and
 // pitch set to zero. A reference whose height and tilt cannot be trusted (a pose graph that spread a
-// vertical correction over its keyframes, GNSS height) still judges the motion over the ground: MulRan
-// Riverside02's reference pitches 0.06° per keyframe against every lidar odometry of its keyframes, its
-// own included (docs/matcher_defaults.md, "The bias accrues per keyframe"). evo's `--project_to_plane
-// xy` does the same for its metrics. Each trajectory is projected in its own world frame, so an
-// estimate is aligned onto the reference first: the reference's own lidar-inertial odometry over MulRan
-// 116–165 starts pitched 7° in its world frame (its drift before the stretch), and projected unaligned its
-// motion over the ground came out 1.5 % short where in 3D it lies 0.32 % from the reference.
+// vertical correction over its keyframes, GNSS height) still judges the motion over the ground
+// (docs/matcher_defaults.md, "The bias accrues per keyframe"). evo's `--project_to_plane xy` does the
+// same for its metrics. Each trajectory is projected in its own world frame, so an estimate is aligned
+// onto the reference first: projected unaligned, a trajectory that starts tilted in its world frame
+// misjudges its motion over the ground.
 //
 //   const TrajectoryEvaluation e = evaluate_on_ground_plane(estimate, reference, settings);
 #include <vector>

@@ -5,9 +5,8 @@
 // is one angle for the whole trajectory, estimated here from the steps themselves. A step's sideways
 // slip is then its chord's component across the start heading turned by half the heading change:
 // zero for any arc, whatever the turn and the mounting. A reference step that slips far more than a
-// car can is no reference for that step: MulRan Riverside02's keyframes 33→34 and 34→35 slip 1.1 and
-// 1.3 m against their turn, where every other step of 0–107 and 116–165 slips at most 0.17 m
-// (docs/matcher_defaults.md, "Where the reference cannot judge").
+// car can is no reference for that step (docs/matcher_defaults.md, "Where the reference cannot
+// judge").
 //
 //   const VehicleSlip slip = vehicle_slip(reference_poses);
 //   for (std::size_t k : slip.slipping(0.5)) ...  // step k → k + 1 is not a car's

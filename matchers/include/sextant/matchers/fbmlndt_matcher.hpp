@@ -34,11 +34,11 @@ struct FbmlndtSettings {
   FbsFallback fallback = FbsFallback::kGbs;
   ConstraintThresholds constraints;  ///< when a feature sample counts as degenerate
   GridSamplerSettings fallback_gbs;  ///< the GBS sample added or used on fallback
-  /// Check the result on the GBS sample: plane points can slide along their planes (measured 3.6 m /
-  /// 9.9° off on a car-mounted pair where ML-NDT ends 1.2 cm off), the rest of the scene cannot. The
-  /// last layer refines the result with GBS points; a trusted refinement is the result, else ML-NDT
-  /// on the GBS points from the initial guess is, when trusted (recorded in `fallback`). YAML
-  /// `verify`; unset: on exactly when the ML-NDT settings' refine_first is (off in the thesis preset)
+  /// Check the result on the GBS sample: plane points can slide along their planes, the rest of the
+  /// scene cannot (docs/matcher_defaults.md, "FbML-NDT is checked on GBS points"). The last layer
+  /// refines the result with GBS points; a trusted refinement is the result, else ML-NDT on the GBS
+  /// points from the initial guess is, when trusted (recorded in `fallback`). YAML `verify`; unset: on
+  /// exactly when the ML-NDT settings' refine_first is (off in the thesis preset)
   bool verify = true;
   bool valid(std::string* why) const;
 };

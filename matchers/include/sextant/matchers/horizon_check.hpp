@@ -2,13 +2,12 @@
 // An answer without translation, and one that nothing else bounds, confirmed by the points above the
 // horizon (issue 22). A spinning lidar's ground rings are circles about the sensor, so two scans' rings
 // coincide at no translation (and at any turn about the vertical) whatever the vehicle did, and where
-// they are most of a sparse scan they hold a registration there: MulRan 0–107 read as 16 rings stood still
-// for five keyframes while the car moved 1.4–4.7 m each, fitting 0.94–1.12 × the prediction, as a real stop
-// fits, and `sextant match` trusted 16-ring pairs 2–5 m apart at no translation (docs/matcher_defaults.md,
-// "The ground's rings hold a sparse scan"). The points above a level sensor's horizon hold no ground ring: at
-// a stop they rest where the rest of the scan does, and after a drive they leave. The rings also hold a
-// registration short of the motion: an answer with translation that nothing else bounds (a pair; an odometry
-// step with no trusted velocity before it) must rest where those points rest too.
+// they are most of a sparse scan they hold a registration there, fitting as a real stop fits
+// (docs/matcher_defaults.md, "The ground's rings hold a sparse scan"). The points above a level sensor's
+// horizon hold no ground ring: at a stop they rest where the rest of the scan does, and after a drive
+// they leave. The rings also hold a registration short of the motion: an answer with translation that
+// nothing else bounds (a pair; an odometry step with no trusted velocity before it) must rest where
+// those points rest too.
 //
 //   if (r.quality.trusted() && answer_without_translation(r.T, quality)) {
 //     AboveHorizon said = register_above_horizon(*local, input, r.T, quality);
@@ -75,11 +74,10 @@ void search_above_horizon(AboveHorizon& said, Matcher& wide, const PointCloud& i
 /// converged, with overlap and every direction constrained: the answer is not where the world's points
 /// rest, whatever their fit; or they stay but fit clearly worse than the whole scan (beyond
 /// ambiguity_fit_band × its fit) and worse than max_fit_ratio: at one place every part of a scan fits
-/// as the whole does, and where the ground's rings carry the fit the rest does not (MulRan keyframes
-/// 148 → 151, 19 m apart along a riverside road, from the identity: the whole fits 1.29 at no translation,
-/// better than at the reference's pose, the points above the horizon 1.58; right answers and stops
-/// measured 0.97–1.09 × the whole); or the wide basin's search for them ends that far away, trusted.
-/// When they tell nothing (degenerate, not converged, not assessed) the answer stands.
+/// as the whole does, and where the ground's rings carry the fit the rest does not
+/// (docs/matcher_defaults.md, "Pairs far apart, from the identity"); or the wide basin's search for them
+/// ends that far away, trusted. When they tell nothing (degenerate, not converged, not assessed) the
+/// answer stands.
 void check_no_motion_above_horizon(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
                                    const AboveHorizon& above, const QualitySettings& tolerance);
 
@@ -93,14 +91,10 @@ void register_whole_from_there(AboveHorizon& said, Matcher& local, const PointCl
 /// scan's points above the horizon, registered alone from it, leave it (farther than the tolerance,
 /// converged, with overlap and every direction constrained) and the whole scan, registered from where they
 /// rest, does not come back to it (register_whole_from_there): at a right answer every part of a scan
-/// rests where the whole does, and the whole scan returns to it from nearby. MulRan keyframes 13 → 14 as
-/// 16 rings, the first step of `sextant odometry` (no motion known): the registration ended 2.37 m on
-/// where the car moved 4.0 m, fitting 1.21 × the prediction, trusted; its points above the horizon move
-/// 1.65 m on from it, to 0.17 m from the reference, and the whole scan from there ends at 4.09 m. On the
-/// synthetic campus read every 9 m, the points above the horizon of right answers at a turn or along a
-/// street moved 1.10–1.33 m (walls that hold them weakly along the street), and the whole scan came back.
-/// Only this objection: away from no translation those points may fit worse than the whole and match less
-/// (measured 1.30–1.45 × the prediction on right steps whose whole scan fits 1.08–1.30).
+/// rests where the whole does, and the whole scan returns to it from nearby, also where walls hold the
+/// points above the horizon only weakly along a street. Only this objection: away from no translation
+/// those points may fit worse than the whole and match less on right answers (docs/matcher_defaults.md,
+/// "Short of the motion, with nothing to bound it").
 void check_motion_above_horizon(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
                                 const AboveHorizon& above, const QualitySettings& tolerance);
 

@@ -2,9 +2,10 @@
 // The trust checks for matchers that do not judge their own poses (issue 22). ML-NDT and FbML-NDT
 // report, at their final pose, the last layer's matched points, mean matched term against its
 // prediction and Hessian: the overlap, fit and constraint of registration_quality.hpp. ICP, P2D-NDT
-// and the PCL peers report no fit and (most) no Hessian, so only their overlap by their own
-// correspondences was checked: PCL's GICP stood still on MulRan 116–165, every step 6 m off and
-// trusted. A JudgedMatcher registers with the matcher it wraps and scores the result's pose on the
+// and the PCL peers report no fit and (most) no Hessian, so on their own report only their overlap by
+// their own correspondences could be checked, and a pose slid along a road keeps its points within
+// their correspondence distance (docs/matcher_defaults.md, "Every matcher's poses judged on one
+// model"). A JudgedMatcher registers with the matcher it wraps and scores the result's pose on the
 // default ML-NDT's last layer, as ML-NDT scores its own: one model judges every matcher's poses, the
 // one the thresholds were measured on. The pose, score, H and seconds stay the matcher's; the
 // judge's model is built with the reference. `sextant match`, `sextant odometry` and the Python

@@ -35,26 +35,16 @@ struct MlndtSettings {
   /// The truncation applies in the finest `truncated_layers` layers only: coarse layers keep
   /// the plain sum, whose long tails give ML-NDT its capture range [count, 0..n]
   int truncated_layers = 1;
-  /// Threads of one registration: the reference model's grids (the pyramid beside the precision
-  /// grids), refine_first's two runs, the wide basin's hypotheses and starts, and each score
-  /// evaluation (newton and lm; a Ceres solve stays single-threaded). 1 runs on the calling thread,
-  /// 0 uses all the threads TBB allows (`sextant --jobs`). The parallel parts compute what the
-  /// serial ones do and choose in the same order, and scores are summed in fixed blocks added in a
-  /// fixed order (ndt_score.hpp), so the registration is bit-identical for every value [count, ≥ 0]
+  /// Threads of one registration (the model's grids, refine_first's runs, the wide basin, each score
+  /// evaluation; a Ceres solve stays serial): 1 the calling thread, 0 all TBB allows (`sextant --jobs`).
+  /// Bit-identical for every value (same choices, fixed summation order: ndt_score.hpp) [count, ≥ 0]
   int threads = 1;
   OptimizerSettings optimizer;  ///< solver (LM), iterations per layer (3), cap (50), ε, DOF mask
   /// Off by default: hypotheses over yaw × x/y scored at a coarse layer, the best refined
   WideBasinSettings wide_basin;
-  /// A guess is kept when it is good (§5.1.1.3: "if the odometry data provides a good initial
-  /// estimation … the algorithm should be started with the … last layer"): besides the pyramid from
-  /// start_layer, the last layer alone runs from the initial pose. A run that passes the trust checks
-  /// (registration_quality.hpp) wins over one that does not, else the lower final score (same input,
-  /// same last layer); the other stays as the result's alternative. A right guess is not pulled away
-  /// by the coarse layers (MulRan from the reference pose: 20 cm with s = 2 alone, 4.7 cm from the
-  /// last layer; backwards, 164 into 165, the coarse layers' run slid 8 m to zero motion with the
-  /// lower score and fails the fit check), a wrong one is not kept for its local fit (the campus'
-  /// biased odometry: 0.7 m off from the last layer alone, with a fit and overlap that pass the trust
-  /// checks, as the pyramid's right pose does, with the lower score). Off in the `thesis` preset.
+  /// Besides the pyramid from start_layer, the last layer alone runs from the initial pose (§5.1.1.3);
+  /// a run the trust checks pass wins, else the lower final score, and the other is an alternative.
+  /// Keeps a good guess, for one run more; off in `thesis` (docs/matcher_defaults.md, "A good guess is kept")
   bool refine_first = true;
   /// Finer grids after the pyramid's pose, from that pose only (precision_stage.hpp); off
   /// (min_cell 0) in the `thesis` preset

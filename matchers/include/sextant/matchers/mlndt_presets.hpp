@@ -2,8 +2,8 @@
 // The ML-NDT settings presets as plain settings: a C++ user asks for `thesis` without yaml-cpp, and a
 // YAML map's `preset:` starts from the same struct (its other keys override the preset's).
 //
-//   default — the measured best over every shared real pair and three campus pairs from the guess a
-//             user has (docs/matcher_defaults.md, "The choice"): the library's defaults
+//   default — the measured best on real and synthetic pairs from the guess a user has, and on the
+//             benchmark sequences (docs/matcher_defaults.md, "The choice"): the library's defaults
 //             (MlndtSettings{}: LM, q = 8, n = 4, s = 2, last-layer terms truncated at 16, unmatched
 //             points charged 16) on every thread TBB allows (the result is the same for any count)
 //   thesis  — the thesis' exact settings (Table 3.1, §5.1): Newton with the step as printed (eq. 3.16

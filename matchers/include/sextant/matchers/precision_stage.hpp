@@ -1,10 +1,10 @@
 #pragma once
 // ML-NDT's precision stage (issue 22). The pyramid's cells are fractions of the reference's box
 // (§3.2, Table 3.1: layer i splits it into qⁱ cubes), so a pose is only as precise as the last
-// layer's cells resolve the scene: on a 230 × 140 × 25 m outdoor keyframe the 4th layer's cells
-// are ≈ 6 m, and each holds several surfaces in one blurred Gaussian. More layers from the start
-// layer do not help: the finer layers then run from the coarse layers' early poses, and their
-// narrow basins pull a right pose away (the thesis' E4 guideline).
+// layer's cells resolve the scene: on a large outdoor scan they are metres wide, and each holds
+// several surfaces in one blurred Gaussian (docs/matcher_defaults.md, "Precision stage"). More
+// layers from the start layer do not help: the finer layers then run from the coarse layers' early
+// poses, and their narrow basins pull a right pose away (the thesis' E4 guideline).
 //
 // The precision stage continues after the pyramid has chosen its pose (after refine_first and the
 // wide basin too), from that pose only, so that the coarse layers' reach is kept and a finer grid's
@@ -28,9 +28,9 @@
 // and widens the basin the coarse layers need; but it also thickens every planar cell to a tenth of
 // its extent, so that the pattern of the returns inside a plane (rings that move with the sensor)
 // pulls the pose as much as the plane's offset does. From a pose the pyramid has already found, the
-// precision stage needs no basin: with thin Gaussians it fits the surfaces themselves. On the campus
-// this removed most of a scale bias that every step shared (docs/matcher_defaults.md, "Thin
-// Gaussians in the precision stage").
+// precision stage needs no basin: with thin Gaussians it fits the surfaces themselves, not the returns'
+// pattern, whose pull biases every step's scale alike (docs/matcher_defaults.md, "Thin Gaussians in
+// the precision stage").
 //
 // YAML keys of mlndt / fbmlndt: precision_min_cell (0 = off, the `thesis` preset), precision_min_coverage,
 // precision_max_eigen_ratio.

@@ -12,8 +12,8 @@
 //     on the input): nothing else bounds a pair's answer, and a solid-state lidar draws no rings.
 // Matchers without a wide basin (ICP, the PCL peers) register once, from the guess or the identity.
 // Clouds far from the origin of their coordinates are registered about the middle of the reference
-// (registration_centre.hpp), and the result is brought back to the clouds' coordinates: 5,400 km
-// away the Velodyne pair ended 67 km off before.
+// (registration_centre.hpp), and the result is brought back to the clouds' coordinates
+// (docs/bad_input.md).
 #include <cstdint>
 #include <optional>
 #include <string>

@@ -2,9 +2,9 @@
 // The point a registration turns about. A registration turns the input about the origin of its
 // coordinates: the sensor, in a scan's own frame. Clouds far from that origin (georeferenced, or
 // exported in a map frame) would turn about a point hundreds of metres or kilometres away, where a
-// thousandth of a degree moves them by centimetres: 300 m away the Velodyne pair ends 2.6 m off
-// (degenerate), and every odometry step over MulRan keyframes moved 300 m said degenerate. Such clouds are
-// registered in a frame centred at the reference, and the transforms are brought back:
+// thousandth of a degree moves them by centimetres: the registration ends metres off or degenerate
+// (docs/bad_input.md). Such clouds are registered in a frame centred at the reference, and the
+// transforms are brought back:
 //
 //   const CentredFrame frame(registration_centre(reference));
 //   T_local = register(frame.cloud(reference), frame.cloud(input), frame.local(guess));

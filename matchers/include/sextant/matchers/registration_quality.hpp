@@ -24,9 +24,8 @@
 //                         ambiguous: another solution the matcher reached (result.alternatives)
 //                         passes the same checks, fits about as well (ambiguity_fit_band) and lies
 //                         more than ambiguity_metres or ambiguity_degrees away. Two poses that far apart
-//                         cannot both be right, and the checks cannot tell which is (MulRan keyframes 159→160
-//                         from the identity: the wide basin's starts end 7 cm and 8 m from the truth, both
-//                         pass).
+//                         cannot both be right, and the checks cannot tell which is
+//                         (docs/matcher_defaults.md, "Two answers are no answer").
 #include <string>
 
 #include "sextant/core/point_cloud.hpp"
@@ -35,17 +34,17 @@
 namespace sextant {
 
 struct QualitySettings {
-  /// Below this fraction of the input matched, a registration is low_overlap. Consecutive scans of a
-  /// moving lidar share most of their view: right poses matched 0.6–0.97 on the campus, MulRan and the
-  /// outdoor pairs, a pose 10 km off none (docs/matcher_defaults.md, "Trust"); the noisy indoor room
-  /// scans fall below it although right (a known false alarm) [fraction]
+  /// Below this fraction of the input matched, a registration is low_overlap: consecutive scans of a
+  /// moving lidar share most of their view, a wrong pose puts most points where the reference has no
+  /// surface; noisy indoor scans can fall below it although right (docs/matcher_defaults.md, "The
+  /// thresholds' measured ranges") [fraction]
   double min_overlap = 0.5;
   /// Below this ratio of the weakest to the strongest eigenvalue of the scaled Hessian, a
   /// registration is degenerate [ratio]
   double min_constraint_ratio = 1e-3;
   /// Above this multiple of the predicted mean matched score (3 for the Mahalanobis score), a
-  /// registration is suspect: right poses fit 0.86–1.26 × on the campus and MulRan, poses that slid
-  /// or stuck 1.42–1.72 × [ratio]
+  /// registration is suspect: the bar lies between the fits of right poses and of poses that slid or
+  /// stuck (docs/matcher_defaults.md, "The thresholds' measured ranges") [ratio]
   double max_fit_ratio = 1.3;
   /// Two solutions that pass the checks and lie farther apart than this make a result ambiguous: at
   /// least one of them is off by half of it, the size of error the trust status exists to catch
@@ -53,8 +52,8 @@ struct QualitySettings {
   double ambiguity_metres = 1.0;
   double ambiguity_degrees = 5.0;
   /// ... and that fits within this factor of the result: an alternative whose matched points fit
-  /// clearly worse is told apart by the scans (on MulRan right steps fit 1.01–1.03 with passing
-  /// alternatives 8 m away at 1.23–1.27) [ratio ≥ 1]
+  /// clearly worse is told apart by the scans (docs/matcher_defaults.md, "The thresholds' measured
+  /// ranges") [ratio ≥ 1]
   double ambiguity_fit_band = 1.1;
   bool valid(std::string* why) const;
 };

@@ -44,10 +44,10 @@ inline constexpr double kSpinningCoverage = 0.4;
 
 /// The kind of sensor of a scan in its own frame: spinning when its points cover at least
 /// kSpinningCoverage of the azimuth circle, solid_state otherwise. A spinning lidar covers all of it but
-/// what its platform and the nearest walls hide (MulRan's OS1-64: 82 %), a rotating 2D scanner at least
-/// half (3DTK's rotating SICK: 50 %); a solid-state one its field of view, at most about 120° (a third:
-/// the Livox Avia's 70°, 21 %). An empty scan is
-/// taken as spinning with coverage 0 (no evidence either way: the checks of the kind that has them).
+/// what its platform and the nearest walls hide, a rotating 2D scanner at least half; a solid-state one
+/// its field of view, at most about 120°, a third (docs/odometry.md, "Which check applies to which sensor
+/// and platform"). An empty scan is taken as spinning with coverage 0 (no evidence either way: the checks
+/// of the kind that has them).
 SensorDetection detect_sensor(const PointCloud& scan);
 
 /// `declared` unless it is automatic, else what detect_sensor says of `scan`.

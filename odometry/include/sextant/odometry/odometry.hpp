@@ -56,19 +56,18 @@ struct OdometryRegistration {
 struct OdometrySettings {
   OdometryRegistration registration;
   OdometryGuess guess = OdometryGuess::odometry;
-  /// The local map by default: measured better than scan-to-scan on the campus and both MulRan
-  /// stretches (docs/matcher_defaults.md, "Scan-to-scan or a local map"); scan-to-scan runs its
-  /// registrations in parallel with the odometry guess
+  /// The local map by default: measured better than scan-to-scan on the benchmark sequences
+  /// (docs/matcher_defaults.md, "Scan-to-scan or a local map"); scan-to-scan runs its registrations in
+  /// parallel with the odometry guess
   OdometryMap map = OdometryMap::local_map;
   std::size_t local_map_scans = 5;            ///< local_map: scans in the map (k ≥ 1)
   std::size_t local_map_max_points = 150000;  ///< local_map: voxel-filter the map above this size
   double local_map_voxel = 0.2;               ///< local_map: voxel edge [m] (centroid per voxel)
   /// Register only what both sensors see from the guess (common_view.hpp): the reference's points in the
-  /// input sensor's band of elevations and range, the input's in the reference sensor's. The default:
-  /// measured more accurate on the campus, both MulRan stretches and their harder reads, with no step
-  /// more than 1 m or 5° off trusted where the reference is a car's path (docs/matcher_defaults.md,
-  /// "Registering only what both scans can see"); false registers the whole scans. The default of
-  /// ML-NDT, the default matcher (MatcherTraits::common_view_by_default, matcher_traits.hpp)
+  /// input sensor's band of elevations and range, the input's in the reference sensor's; false registers
+  /// the whole scans. The default of ML-NDT, the default matcher (MatcherTraits::common_view_by_default,
+  /// matcher_traits.hpp): measured more accurate on the benchmark sequences (docs/matcher_defaults.md,
+  /// "Registering only what both scans can see")
   bool common_view = true;
   /// Points closer than this to the sensor are dropped from every scan before matching (the
   /// vehicle's own body moves with the sensor and pulls registrations towards no motion) [m]; 0 keeps all.

@@ -2,12 +2,12 @@
 // What the sensor is carried by, and the size of a wrong step in that platform's units (issue 62).
 // QualitySettings' ambiguity tolerance (1 m or 5°) is the size of error the trust status exists to
 // catch, and "no motion" means within it (check_unconfirmed_no_motion, answer_without_translation). On
-// a car whose keyframes lie metres apart that is a fraction of a step; on a person who walks 0.2 m
-// per keyframe it is five steps: every right step is then "no motion", and an answer two steps off is
-// within the tolerance of the right one. The tolerance follows the platform's own motion instead: half
-// the median length of its last trusted steps (two answers farther apart disagree on the motion by more
-// than half of it), between the bar of a sequence carried on foot (0.3 m or 3°) and a car's (1 m or 5°),
-// the degrees following the metres on the line between the two.
+// a car whose keyframes lie metres apart that is a fraction of a step; on a person who walks a fraction
+// of a metre per keyframe it is several steps: every right step is then "no motion", and an answer two
+// steps off is within the tolerance of the right one. The tolerance follows the platform's own motion
+// instead: half the median length of its last trusted steps (two answers farther apart disagree on the
+// motion by more than half of it), between the bar of a sequence carried on foot (0.3 m or 3°) and a
+// car's (1 m or 5°), the degrees following the metres on the line between the two.
 #include <cstddef>
 #include <deque>
 #include <optional>

@@ -47,13 +47,12 @@ class SequenceTrust {
 /// The absolute fit check's bar (QualitySettings::max_fit_ratio) for a step of a sequence whose trusted
 /// steps fit `median_fit` × the prediction: `max_fit_ratio` × that median where it is above 1, else
 /// `max_fit_ratio` itself. The bar was set on spinning lidars, where right poses fit about as predicted
-/// (MulRan: 1.03–1.06 median, and poses that slid 1.42–1.72, 1.4–1.7 × the right ones); a sensor whose
-/// right poses fit worse than predicted (a sparse solid-state scan, whose cells estimate their Gaussians
-/// from a few points: the Livox Avia's right steps fit 1.10 median, 1.21 at the 90th percentile) keeps
-/// that separation in its own units. Never lowered: a scene that fits better than predicted (the
-/// synthetic campus, 0.85) keeps the bar of a right pose. The odometry applies it to the sensors the bar
-/// was not measured on (solid-state ones): raised on MulRan's harder reads it let far alternatives pass
-/// and made right steps ambiguous.
+/// and poses that slid clearly worse; a sensor whose right poses fit worse than predicted (a sparse
+/// solid-state scan, whose cells estimate their Gaussians from a few points) keeps that separation in its
+/// own units. Never lowered: a scene that fits better than predicted keeps the bar of a right pose. The
+/// odometry applies it only to the sensors the bar was not measured on (solid-state ones): raised for a
+/// spinning lidar it lets far alternatives pass and makes right steps ambiguous (docs/odometry.md,
+/// "Which check applies to which sensor and platform").
 double fit_bar(double max_fit_ratio, std::optional<double> median_fit);
 
 /// For a step with no motion known yet (the constant-velocity guess knows none, and the registration
@@ -61,10 +60,9 @@ double fit_bar(double max_fit_ratio, std::optional<double> median_fit);
 /// `quality` suspect when its `relative` lies within `tolerance`'s ambiguity distance of no motion but
 /// fits worse than two scans from one place do: above `fit_factor` × the prediction (the sequence check's own
 /// "about equal"). A lidar's rings coincide at no motion whatever the vehicle did, so there the scans always
-/// offer an answer; on MulRan keyframes 5–8 m apart, read backwards, it fit 1.28 against one scan, passed the
-/// absolute checks, and the chain then stood still on a map of scans stacked at one place
-/// (docs/matcher_defaults.md, "The collapse to no motion, and the check that stops it"). Right steps
-/// of that car fit 0.96–1.11 read forwards (10th to 90th percentile); two scans from one place, about 1.
+/// offer an answer, which can pass the absolute checks and leave the chain standing still on a map of
+/// scans stacked at one place; two scans from one place fit about as predicted (docs/matcher_defaults.md,
+/// "The collapse to no motion, and the check that stops it").
 void check_unconfirmed_no_motion(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
                                  const QualitySettings& tolerance,
                                  double fit_factor = SequenceTrustSettings{}.fit_factor);
@@ -83,13 +81,10 @@ double reachable_departure(double dt_before, double dt, double max_acceleration)
 /// `last_turn`, the rotation of that last motion (step k's displacement in scan k − 1's frame is
 /// R_{k−1}ᵀ v Δt_k, step k − 1's in scan k − 2's R_{k−2}ᵀ v Δt_{k−1}, so a constant v turns it by
 /// (R_{k−2}ᵀ R_{k−1})ᵀ): a lidar that turns back and forth while its platform holds its course, whose
-/// velocity reverses its direction in the sensor's frame with no acceleration at all (MulRan 0–107 with
-/// every keyframe turned ±15° about the vertical in turn: 35 right steps per run departed 1.9–2.6 m from
-/// the guess and were flagged; docs/matcher_defaults.md, "A sensor that turns on its own"). The
-/// platform could not have made a motion far from both. On MulRan 0–107 read as 32 rings (seed 5,
-/// keyframes 31 → 32, 1.4 s at 10 m/s) the wide basin's answer lay 5 m behind the last scan, 19 m from
-/// the guess, inside a local map where it fit better than the right pose at the map's frontier, and was
-/// trusted (docs/matcher_defaults.md, "A motion no platform makes").
+/// velocity reverses its direction in the sensor's frame with no acceleration at all
+/// (docs/matcher_defaults.md, "A sensor that turns on its own"). The platform could not have made a
+/// motion far from both, however well it fits, as a wide-basin answer behind the last scan inside a
+/// local map can (docs/matcher_defaults.md, "A motion no platform makes").
 void check_reachable_motion(RegistrationQuality& quality, const Eigen::Isometry3d& relative,
                             const Eigen::Isometry3d& guess, const Eigen::Matrix3d& last_turn, double reach,
                             const QualitySettings& tolerance);

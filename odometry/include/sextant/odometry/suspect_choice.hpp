@@ -2,10 +2,10 @@
 // Which registration a step chains when none is trusted (issue 22). The candidates are the step's
 // registrations whose only flaw is their fit: converged, enough overlap, every direction
 // constrained, matched points scoring above what a right pose predicts. Their fits say little
-// more: on MulRan 33→34 (a straight riverside road) they lay within 1.38–1.46 × of each other, and
-// the lowest was 21 m off while the one from the guess was 1 m off. So the scans pick a band — the
-// fits within `fit_band` × the lowest, the sequence check's own tolerance for "fits about
-// equally" (sequence_trust.hpp) — and the motion prior picks inside it: the candidate whose
+// more: along a straight road they lie close together, and the lowest can be the farthest off
+// (docs/matcher_defaults.md, "Which registration a step chains when none is trusted"). So the scans
+// pick a band — the fits within `fit_band` × the lowest, the sequence check's own tolerance for "fits
+// about equally" (sequence_trust.hpp) — and the motion prior picks inside it: the candidate whose
 // alignment of the input differs least from the guess's.
 #include <cstddef>
 #include <vector>

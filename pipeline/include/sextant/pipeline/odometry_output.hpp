@@ -41,9 +41,8 @@ struct OdometryCounts {
   std::size_t not_converged = 0, untrusted = 0, recovered = 0;
   /// With ground truth: the steps (indices) whose chained motion is trusted and yet more than the
   /// run's tolerance (OdometryResult::tolerance: a car's 1 m or 5°, less for a slower platform) from the
-  /// ground truth's: a wrong registration that passed the
-  /// checks, or a wrong reference (MulRan Riverside02's between keyframes 107 and 116). Nothing
-  /// without ground truth.
+  /// ground truth's: a wrong registration that passed the checks, or a wrong reference (docs/odometry.md,
+  /// "What it prints and writes"). Nothing without ground truth.
   std::optional<std::vector<std::size_t>> trusted_off_reference;
 };
 

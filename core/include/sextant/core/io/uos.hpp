@@ -25,7 +25,7 @@ Eigen::Matrix4d internal_pose_to_uos(const Eigen::Isometry3d& T);
 Eigen::Matrix4d uos_euler_to_matrix(const Eigen::Vector3d& t_cm, const Eigen::Vector3d& theta_rad);
 
 /// Points at or beyond this range from the scanner origin are the "no return" sentinel
-/// (the SICK's 32.76 m maximum; in the hannover1 samples every such point lies at 3275–3277 cm).
+/// (the SICK's 32.76 m maximum; docs/formats.md, "uos `.3d` details").
 constexpr double kUosNoReturnRangeCm = 3275.0;
 bool is_uos_no_return(const Eigen::Vector3d& p_uos_cm);
 /// Type code written as the 17th number of each `.frames` line (3DTK reads and ignores it here).
