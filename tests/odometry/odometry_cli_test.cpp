@@ -18,55 +18,20 @@
 #include "sextant/synth/campus.hpp"
 #include "sextant_test/cli_run.hpp"
 #include "sextant_test/temp_dir.hpp"
+#include "written_files.hpp"
 
 namespace sextant {
 namespace {
 
 namespace fs = std::filesystem;
+using test::json_number;
+using test::read_steps_csv;
+using test::read_text;
 using test::TempDir;
 
 using test::CliRun;
 CliRun run_cli(const std::string& arguments) {
   return test::run_cli(SEXTANT_CLI, arguments);
-}
-
-std::string read_text(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-/// The number after "key": (first occurrence after `after`); NaN when absent or null.
-double json_number(const std::string& json, const std::string& key, const std::string& after = "") {
-  const auto from = after.empty() ? 0 : json.find("\"" + after + "\"");
-  const auto at = json.find("\"" + key + "\": ", from == std::string::npos ? 0 : from);
-  if (at == std::string::npos) return NAN;
-  const char* start = json.c_str() + at + key.size() + 4;
-  char* end = nullptr;
-  const double v = std::strtod(start, &end);
-  return end == start ? NAN : v;
-}
-
-/// steps.csv as rows of named fields (the header's names).
-std::vector<std::map<std::string, std::string>> read_steps_csv(const fs::path& file) {
-  std::ifstream in(file);
-  std::vector<std::string> names;
-  std::vector<std::map<std::string, std::string>> rows;
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> fields;
-    std::stringstream cells(line);
-    for (std::string cell; std::getline(cells, cell, ',');) fields.push_back(cell);
-    if (!line.empty() && line.back() == ',') fields.emplace_back();
-    if (names.empty()) {
-      names = fields;
-      continue;
-    }
-    EXPECT_EQ(fields.size(), names.size()) << line;
-    auto& row = rows.emplace_back();
-    for (std::size_t i = 0; i < names.size() && i < fields.size(); ++i) row[names[i]] = fields[i];
-  }
-  return rows;
 }
 
 /// Checks the written files: TUM and KITTI trajectories with `poses` poses that agree with each
