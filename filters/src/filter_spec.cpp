@@ -33,7 +33,9 @@ bool FilterSpec::valid(std::string* why) const {
   return std::visit([why](const auto& s) { return s.valid(why); }, settings);
 }
 
-std::vector<std::string> filter_names() { return sorted_names(static_cast<FilterSettings*>(nullptr)); }
+std::vector<std::string> filter_names() {
+  return sorted_names(static_cast<FilterSettings*>(nullptr));
+}
 
 std::optional<FilterSpec> default_filter_spec(const std::string& name) {
   return defaults_named(name, static_cast<FilterSettings*>(nullptr));

@@ -31,7 +31,8 @@ TEST(FilterSpec, AFilterReadFromYamlIsTheStructsFilter) {
   UkfSettings ukf;
   ukf.unscented.alpha = 0.5;
   ukf.unscented.kappa_three_minus_n = true;
-  const FilterSpec read = read_filter_spec("ukf", YAML::Load("{alpha: 0.5, kappa_three_minus_n: true}"), "f.yaml");
+  const FilterSpec read =
+      read_filter_spec("ukf", YAML::Load("{alpha: 0.5, kappa_three_minus_n: true}"), "f.yaml");
   ASSERT_NE(read.get<UkfSettings>(), nullptr);
   EXPECT_EQ(make_filter(read, model)->approximation(), make_filter(ukf, model)->approximation());
   EXPECT_NE(make_filter(read, model)->approximation(), make_filter(UkfSettings{}, model)->approximation());
@@ -51,7 +52,8 @@ TEST(FilterSpec, InvalidSettingsAndAPriorThatDoesNotFitTheModelAreErrors) {
   EXPECT_THROW(make_filter("eseif", model, six, "f.yaml"), InputError);
   const FilterSpec unchecked = read_filter_spec("eseif", six, "f.yaml");  // no model: checked when built
   EXPECT_THROW(make_filter(unchecked, model), std::invalid_argument);
-  EXPECT_EQ(make_filter("eseif", model, YAML::Load("{relocation_prior: [1, 1, 1]}"), "f.yaml")->name(), "eseif");
+  EXPECT_EQ(make_filter("eseif", model, YAML::Load("{relocation_prior: [1, 1, 1]}"), "f.yaml")->name(),
+            "eseif");
 }
 
 TEST(FilterRegistry, SettingsErrorsNameTheKey) {

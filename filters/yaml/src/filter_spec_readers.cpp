@@ -32,8 +32,12 @@ std::optional<std::uint64_t> read_seed(SettingsReader& in) {
   return static_cast<std::uint64_t>(seed);
 }
 
-void read_into(SettingsReader& in, int, EkfSettings* s) { s->gaussian = read_gaussian(in); }
-void read_into(SettingsReader& in, int, CkfSettings* s) { s->gaussian = read_gaussian(in); }
+void read_into(SettingsReader& in, int, EkfSettings* s) {
+  s->gaussian = read_gaussian(in);
+}
+void read_into(SettingsReader& in, int, CkfSettings* s) {
+  s->gaussian = read_gaussian(in);
+}
 void read_into(SettingsReader&, int, EifSettings*) {}
 void read_into(SettingsReader& in, int, UkfSettings* s) {
   s->gaussian = read_gaussian(in);
@@ -61,7 +65,8 @@ void read_into(SettingsReader& in, int pose_dim, EseifSettings* s) {
   in.read("relocation_prior", s->relocation_prior);
   in.read("mean_recovery", s->mean_recovery);
   check(in, *s);
-  if (pose_dim > 0 && !s->relocation_prior.empty() && static_cast<int>(s->relocation_prior.size()) != pose_dim)
+  if (pose_dim > 0 && !s->relocation_prior.empty() &&
+      static_cast<int>(s->relocation_prior.size()) != pose_dim)
     in.fail("relocation_prior",
             "relocation_prior needs one sigma per pose entry (" + std::to_string(pose_dim) + ")");
 }

@@ -68,7 +68,8 @@ int main() {
   request.matcher = sextant::matcher_choice(*sextant::mlndt_preset("default"));
   request.sampler = sextant::sampler_factory(sextant::GridSamplerSettings{});
   const sextant::PairRegistration r = sextant::register_pair(reference, input, request);
-  check((r.match.result.T.translation() - truth.translation()).norm() < 0.05 && r.match.result.quality.trusted(),
+  check((r.match.result.T.translation() - truth.translation()).norm() < 0.05 &&
+            r.match.result.quality.trusted(),
         "matchers: register_pair recovers the pose, trusted (" + r.search + ")");
   // The YAML targets: one reader of each.
   const YAML::Node node = YAML::Load("{layers: 3}");

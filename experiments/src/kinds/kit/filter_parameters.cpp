@@ -25,7 +25,8 @@ Table sigma_point_table(const std::vector<FilterMethodSettings>& methods,
 
 bool has_sigma_point_filter(const std::vector<FilterMethodSettings>& methods) {
   for (const FilterMethodSettings& m : methods)
-    if (m.filter.get<UkfSettings>() || m.filter.get<CkfSettings>() || m.filter.get<RspkfSettings>()) return true;
+    if (m.filter.get<UkfSettings>() || m.filter.get<CkfSettings>() || m.filter.get<RspkfSettings>())
+      return true;
   return false;
 }
 

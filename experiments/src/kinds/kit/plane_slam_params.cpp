@@ -142,7 +142,8 @@ PlaneSlamMethod read_plane_slam_method(const YAML::Node& node, const std::string
     in.fail("matcher", "key 'matcher': only with motion: fbmlndt");
   if (m.motion == MotionSource::kFbmlndt) (void)read_mlndt_settings(m.matcher, file);
   if (!default_filter_spec(filter))
-    in.fail("filter", "key 'filter': '" + filter + "' is not a filter (ekf, ukf, ckf, rspkf, seif, eif, eseif)");
+    in.fail("filter",
+            "key 'filter': '" + filter + "' is not a filter (ekf, ukf, ckf, rspkf, seif, eif, eseif)");
   m.filter = read_filter_spec(filter, filter_settings, file, PlaneSlamModel().pose_dim());
   return m;
 }

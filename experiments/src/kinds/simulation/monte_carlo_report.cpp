@@ -64,7 +64,8 @@ ReportSection monte_carlo_report(const ExperimentConfig& config, const MonteCarl
       "Q = diag(σ_V², σ_γ²), R = diag(σ_r², σ_b²); errors are averaged over every control step of a run.";
 
   std::vector<FilterMethodSettings> filters;
-  for (const auto& m : config.methods) filters.push_back({m.name, read_range_bearing_filter(m.node, config.file)});
+  for (const auto& m : config.methods)
+    filters.push_back({m.name, read_range_bearing_filter(m.node, config.file)});
   section.tables.push_back(sigma_point_table(filters, std::make_shared<RangeBearingModel>(p.sim.model())));
 
   // Fig. 5.35: average position / orientation error norms against time.

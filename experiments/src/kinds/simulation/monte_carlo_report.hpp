@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Core>
 #include <yaml-cpp/yaml.h>
+#include <Eigen/Core>
 
 #include "sextant/experiments/report_model.hpp"
 #include "sextant/experiments/run_plan.hpp"

@@ -73,7 +73,8 @@ template <>
 struct FilterKind<UkfSettings> {
   static constexpr const char* kName = "ukf";
   static std::unique_ptr<Filter> make(const UkfSettings& s, std::shared_ptr<const SlamModel> m) {
-    return std::make_unique<SigmaPointFilter>("ukf", std::move(m), make_unscented_rule(s.unscented), s.gaussian);
+    return std::make_unique<SigmaPointFilter>("ukf", std::move(m), make_unscented_rule(s.unscented),
+                                              s.gaussian);
   }
 };
 template <>
@@ -87,8 +88,9 @@ template <>
 struct FilterKind<RspkfSettings> {
   static constexpr const char* kName = "rspkf";
   static std::unique_ptr<Filter> make(const RspkfSettings& s, std::shared_ptr<const SlamModel> m) {
-    return std::make_unique<SigmaPointFilter>("rspkf", std::move(m), make_stochastic_integration_rule(s.integration),
-                                              s.gaussian, s.seed.value_or(1));
+    return std::make_unique<SigmaPointFilter>("rspkf", std::move(m),
+                                              make_stochastic_integration_rule(s.integration), s.gaussian,
+                                              s.seed.value_or(1));
   }
 };
 template <>
