@@ -71,7 +71,7 @@ class MergingSession : public KindSession {
   void run(const RunSpec& run, RunRow& row) const override {
     for (int c = 1; c <= 2; ++c) {
       const std::vector<PlaneLandmark> planes =
-          make_case(p_, c, seed_ + static_cast<std::uint64_t>(run.repetition));
+          make_case(p_, c, seed_ + static_cast<std::uint64_t>(run.repetition)).planes;
       for (int pair = 0; pair < 2; ++pair) {
         const MergeCriteria m =
             merge_criteria(planes[0], planes[static_cast<std::size_t>(pair + 1)], p_.thresholds.min_variance);

@@ -24,10 +24,13 @@ struct MergingParams {
   MergeThresholds thresholds;
 };
 
-/// Planes 1–3 of case `which` (1 or 2; case 2 shifts planes 2 and 3 along y, fig. 4.2) from
-/// Rng(seed); `points`, when given, receives each plane's generated points.
-std::vector<PlaneLandmark> make_case(const MergingParams& p, int which, std::uint64_t seed,
-                                     std::vector<std::vector<Eigen::Vector3f>>* points = nullptr);
+/// Planes 1–3 of case `which` (1 or 2; case 2 shifts planes 2 and 3 along y, fig. 4.2) from Rng(seed):
+/// the fitted landmarks and each plane's generated points.
+struct MergingCase {
+  std::vector<PlaneLandmark> planes;
+  std::vector<std::vector<Eigen::Vector3f>> points;
+};
+MergingCase make_case(const MergingParams& p, int which, std::uint64_t seed);
 
 /// Fig. 4.1 (the merging problem, case 1 face-on) and fig. 4.2 (the points of case `which` from above).
 ReportFigure merging_problem_figure(const MergingParams& p, std::uint64_t seed);

@@ -27,18 +27,15 @@ PlaneLandmark thesis_plane(const std::pair<Grid, Grid>& grid, double y_shift, do
 
 }  // namespace
 
-/// Planes 1–3 of one case; case 2 shifts planes 2 and 3 (fig. 4.2).
-std::vector<PlaneLandmark> make_case(const MergingParams& p, int which, std::uint64_t seed,
-                                     std::vector<std::vector<Eigen::Vector3f>>* points) {
+MergingCase make_case(const MergingParams& p, int which, std::uint64_t seed) {
   Rng rng(seed);
-  std::vector<PlaneLandmark> planes;
-  if (points) points->assign(3, {});
+  MergingCase c;
+  c.points.assign(3, {});
   for (std::size_t i = 0; i < 3; ++i) {
     const double shift = which == 2 && i > 0 ? p.case2_shift : 0.0;
-    planes.push_back(
-        thesis_plane(p.planes[i], shift, p.noise_variance, rng, points ? &(*points)[i] : nullptr));
+    c.planes.push_back(thesis_plane(p.planes[i], shift, p.noise_variance, rng, &c.points[i]));
   }
-  return planes;
+  return c;
 }
 
 /// Fig. 4.2: the generated points of both cases seen along z (x against y), repetition 0.
@@ -48,8 +45,7 @@ ReportFigure planes_figure(const MergingParams& p, int which, std::uint64_t seed
               "x [m]",
               "y [m]",
               {}};
-  std::vector<std::vector<Eigen::Vector3f>> points;
-  (void)make_case(p, which, seed, &points);
+  const std::vector<std::vector<Eigen::Vector3f>> points = make_case(p, which, seed).points;
   for (std::size_t i = 0; i < 3; ++i) {
     std::vector<double> x, y;
     for (const auto& q : points[i]) x.push_back(q.x()), y.push_back(q.y());
@@ -69,7 +65,7 @@ ReportFigure merging_problem_figure(const MergingParams& p, std::uint64_t seed) 
   XYPlot plot{"Fig. 4.1: merging problem (case 1, face-on view)", "x [m]", "z (in-plane axis) [m]", {}};
   plot.equal_aspect = true;
   plot.height = 300;
-  const std::vector<PlaneLandmark> planes = make_case(p, 1, seed);
+  const std::vector<PlaneLandmark> planes = make_case(p, 1, seed).planes;
   // Plane 3's outline and the c1–c3 link are drawn first (unnamed) so that plane 2's outline and the
   // c1–c2 link lie on top of them; their legend entries come after, with nothing left to draw.
   const auto hull = [&](std::size_t i, std::vector<double>& x, std::vector<double>& z) {
