@@ -77,6 +77,18 @@ TEST(RegistrationQuality, EachCheckDecidesItsOwnCase) {
   r.constraint_hessian = corridor;
   EXPECT_EQ(assess_registration(r, input).trust, Trust::kDegenerate);
 
+  // A free parameter with a zero row (a turn about a line of points) is unconstrained, not left out;
+  // a parameter the registration's DOF mask holds fixed is left out.
+  Matrix6d line = full;
+  line.row(3).setZero();
+  line.col(3).setZero();
+  const RegistrationQuality about_the_line = assess_registration(converged_result(90, 100, line), input);
+  EXPECT_EQ(about_the_line.trust, Trust::kDegenerate);
+  EXPECT_EQ(about_the_line.constraint_ratio, 0.0);
+  r = converged_result(90, 100, line);
+  r.free.active[3] = false;  // roll held fixed
+  EXPECT_EQ(assess_registration(r, input).trust, Trust::kOk);
+
   r = converged_result(90, 100, full);
   r.mean_matched_score = 4.5;  // 1.5 × the χ²₃ mean
   const RegistrationQuality poor = assess_registration(r, input);
@@ -130,8 +142,40 @@ TEST(RegistrationQuality, ConstraintRatioScalesRotationsToMetres) {
   Matrix6d masked = Matrix6d::Zero();                                 // a 3-DOF matcher: x, y, yaw
   masked(0, 0) = masked(1, 1) = 1.0;
   masked(5, 5) = 100.0;
-  EXPECT_NEAR(constraint_ratio(masked, 10.0), 1.0, 1e-12);
+  DofMask planar;
+  std::string why;
+  ASSERT_TRUE(DofMask::from_names({"x", "y", "yaw"}, planar, &why));
+  EXPECT_NEAR(constraint_ratio(masked, 10.0, planar), 1.0, 1e-12);
+  // Free parameters whose rows are zero are constrained by nothing, whatever the others hold.
+  EXPECT_EQ(constraint_ratio(masked, 10.0), 0.0);
+  Matrix6d about_the_line = H;  // points on the x axis: a turn about it moves none of them
+  about_the_line.row(3).setZero();
+  about_the_line.col(3).setZero();
+  EXPECT_EQ(constraint_ratio(about_the_line, 20.0), 0.0);
   EXPECT_NEAR(rms_range(ring_of_points(10.0)), 10.0, 1e-5);
+}
+
+// 20,000 points on a line, the input shifted 0.5 m along it: nothing constrains the motion along the
+// line or a turn about it (a zero row of H), so no registration of it is trusted (issue 64).
+TEST(RegistrationQuality, ALineOfPointsIsNeverTrusted) {
+  PointCloud reference, input;
+  for (int i = 0; i < 20000; ++i) {
+    const float x = -50.0f + 100.0f * static_cast<float>(i) / 19999.0f;
+    reference.push_back({x, 0.0f, 0.0f});
+    input.push_back({x - 0.5f, 0.0f, 0.0f});
+  }
+  for (const char* name : {"mlndt", "ndt", "icp_p2p", "icp_p2l"}) {
+    auto matcher = make_matcher(name);
+    auto sampler = make_sampler("gbs");
+    Rng rng(1);
+    const PairMatch m = match_pair(*matcher, *sampler, reference, input, Eigen::Isometry3d::Identity(), rng);
+    EXPECT_FALSE(m.result.quality.trusted()) << name << ": " << m.result.quality.reason;
+  }
+  auto mlndt = make_matcher("mlndt");
+  auto gbs = make_sampler("gbs");
+  Rng rng(1);
+  const PairMatch m = match_pair(*mlndt, *gbs, reference, input, Eigen::Isometry3d::Identity(), rng);
+  EXPECT_EQ(m.result.quality.trust, Trust::kDegenerate) << m.result.quality.reason;
 }
 
 // A right pose fits the Gaussians as eq. (3.11) predicts; a wrong one is flagged. On the Velodyne

@@ -70,6 +70,7 @@ class IcpMatcher final : public Matcher {
     RegistrationResult result;
     result.input_points = input.size();
     result.T = initial;
+    result.free = settings_.dof;
     if (tree_.empty() || input.empty()) {
       result.why = Termination::kEmptyInput;
       return result;

@@ -78,6 +78,7 @@ class Loop {
   RegistrationResult run(const Eigen::Isometry3d& initial) {
     const auto start = std::chrono::steady_clock::now();
     result_.input_points = objective_.input().size();
+    result_.free = settings_.dof;
     if (is_finite(initial)) result_.T = initial;
     if (!is_finite(initial)) {
       finish(Termination::kNonFiniteInput);

@@ -53,12 +53,13 @@ double rms_range(const PointCloud& cloud) {
   return n == 0 || sum == 0.0 ? 1.0 : std::sqrt(sum / static_cast<double>(n));
 }
 
-double constraint_ratio(const Matrix6d& H, double range) {
+double constraint_ratio(const Matrix6d& H, double range, const DofMask& free) {
   if (!H.allFinite() || !(range > 0.0)) return 0.0;
-  std::vector<int> active;  // the parameters H constrains at all (a DOF mask zeroes the others)
+  if (H.isZero(0.0)) return std::numeric_limits<double>::quiet_NaN();  // the matcher gives no H
+  std::vector<int> active;  // the parameters the registration could move; a zero row among them: 0
   for (int i = 0; i < 6; ++i)
-    if (!H.row(i).isZero(0.0)) active.push_back(i);
-  if (active.empty()) return std::numeric_limits<double>::quiet_NaN();  // the matcher gives no H
+    if (free.active[static_cast<std::size_t>(i)]) active.push_back(i);
+  if (active.empty()) return std::numeric_limits<double>::quiet_NaN();
   const int n = static_cast<int>(active.size());
   Eigen::MatrixXd scaled(n, n);
   for (int i = 0; i < n; ++i) {
@@ -97,8 +98,9 @@ RegistrationQuality assess_alone(const RegistrationResult& result, const PointCl
   q.overlap = result.input_points == 0
                   ? 0.0
                   : static_cast<double>(result.matched_points) / static_cast<double>(result.input_points);
-  q.constraint_ratio = constraint_ratio(
-      result.constraint_hessian.isZero(0.0) ? result.H : result.constraint_hessian, rms_range(input));
+  q.constraint_ratio =
+      constraint_ratio(result.constraint_hessian.isZero(0.0) ? result.H : result.constraint_hessian,
+                       rms_range(input), result.free);
   if (result.predicted_matched_score > 0.0 && std::isfinite(result.mean_matched_score))
     q.fit_ratio = result.mean_matched_score / result.predicted_matched_score;
   if (!result.converged) {

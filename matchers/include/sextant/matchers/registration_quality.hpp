@@ -59,11 +59,11 @@ struct QualitySettings {
 };
 
 /// Rotations scaled to metres at `rms_range`: S·H·S with S = diag(1, 1, 1, 1/L, 1/L, 1/L); its weakest
-/// eigenvalue over its strongest (over the parameters H constrains at all: rows of a DOF-masked H are
-/// zero and left out; a negative definite H, of a maximised score, counts as −H). 0 for a
-/// non-finite or indefinite H; NaN for an all-zero H (a matcher that gives
+/// eigenvalue over its strongest, over the `free` parameters (a DOF mask's fixed ones are left out; a
+/// free one whose row is zero is constrained by nothing: 0). A negative definite H, of a maximised
+/// score, counts as −H. 0 for a non-finite or indefinite H; NaN for an all-zero H (a matcher that gives
 /// none, such as PCL's: no degeneracy check).
-double constraint_ratio(const Matrix6d& H, double rms_range);
+double constraint_ratio(const Matrix6d& H, double rms_range, const DofMask& free = DofMask{});
 
 /// RMS distance of the points from the origin of their frame (the sensor) [m]; 1 for an empty cloud.
 double rms_range(const PointCloud& cloud);

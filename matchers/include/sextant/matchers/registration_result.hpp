@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include "sextant/core/pose.hpp"
+#include "sextant/matchers/dof_mask.hpp"
 
 namespace sextant {
 
@@ -67,6 +68,9 @@ struct RegistrationResult {
   /// checks are measured too: the stage's thin Gaussians stiffen the surfaces' normals a hundredfold,
   /// not the directions the surfaces leave free, and the check's bar was set on the layers' Gaussians.
   Matrix6d constraint_hessian = Matrix6d::Zero();
+  /// The parameters the registration was free to move (its settings' DOF mask): the degeneracy check
+  /// weighs H over these, and a free parameter nothing constrains (a zero row) is unconstrained
+  DofMask free;
   double score = 0.0;
   /// Mean score of a matched point at the solution (the penalties of unmatched and rejected points
   /// left out), and what the score's model predicts for it at the right pose (3 for the Mahalanobis
