@@ -10,6 +10,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "information_ops.hpp"
+#include "sextant/core/checked_settings.hpp"
 #include "sextant/filters/covariance.hpp"
 #include "step_checks.hpp"
 
@@ -55,9 +56,7 @@ bool EseifSettings::valid(std::string* why) const {
 }
 
 Eseif::Eseif(std::string name, std::shared_ptr<const SlamModel> model, EseifSettings settings)
-    : name_(std::move(name)), model_(std::move(model)), s_(std::move(settings)) {
-  std::string why;
-  if (!s_.valid(&why)) throw std::invalid_argument("Eseif: " + why);
+    : name_(std::move(name)), model_(std::move(model)), s_(checked(std::move(settings), "eseif")) {
   if (!s_.relocation_prior.empty() && static_cast<int>(s_.relocation_prior.size()) != model_->pose_dim())
     throw std::invalid_argument("Eseif: relocation_prior needs one sigma per pose entry");
   const int p = model_->pose_dim();

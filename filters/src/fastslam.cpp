@@ -11,6 +11,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "sextant/core/checked_settings.hpp"
 #include "sextant/filters/covariance.hpp"
 #include "sextant/filters/particle_weights.hpp"
 #include "step_checks.hpp"
@@ -41,10 +42,7 @@ bool draw_gaussian(const Eigen::VectorXd& mean, const Eigen::MatrixXd& covarianc
 }
 
 FastSlam::FastSlam(std::shared_ptr<const SlamModel> model, FastSlamSettings settings, std::uint64_t seed)
-    : model_(std::move(model)), s_(settings), rng_(seed) {
-  std::string why;
-  if (!s_.valid(&why)) throw std::invalid_argument("FastSLAM settings: " + why);
-}
+    : model_(std::move(model)), s_(checked(settings, "fastslam2")), rng_(seed) {}
 
 std::string FastSlam::approximation() const {
   std::ostringstream out;

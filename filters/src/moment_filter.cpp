@@ -1,4 +1,6 @@
 #include "sextant/filters/gaussian_filters.hpp"
+
+#include "sextant/core/checked_settings.hpp"
 #include "step_checks.hpp"
 
 namespace sextant {
@@ -9,7 +11,7 @@ bool GaussianFilterSettings::valid(std::string* /*why*/) const {
 
 MomentFilter::MomentFilter(std::shared_ptr<const SlamModel> model, GaussianFilterSettings settings)
     : model_(std::move(model)),
-      s_(settings),
+      s_(checked(settings, "Gaussian filter")),
       x_(Eigen::VectorXd::Zero(model_->pose_dim())),
       P_(Eigen::MatrixXd::Identity(model_->pose_dim(), model_->pose_dim())) {}
 

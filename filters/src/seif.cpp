@@ -6,6 +6,7 @@
 #include <Eigen/LU>
 
 #include "information_ops.hpp"
+#include "sextant/core/checked_settings.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/filters/covariance.hpp"
 #include "step_checks.hpp"
@@ -144,7 +145,7 @@ std::size_t BlockInformationMatrix::blocks() const {
 // ---- Seif ----
 
 Seif::Seif(std::string name, std::shared_ptr<const SlamModel> model, SeifSettings settings)
-    : name_(std::move(name)), model_(std::move(model)), s_(std::move(settings)) {
+    : name_(std::move(name)), model_(std::move(model)), s_(checked(std::move(settings), "seif")) {
   const int p = model_->pose_dim();
   omega_.add_variable(p);
   omega_.set(kPose, kPose, Eigen::MatrixXd::Identity(p, p));
