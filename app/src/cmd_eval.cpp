@@ -53,7 +53,11 @@ LoadedTrajectory load(const std::string& file, const std::string& format) {
   t.format = format == "tum"     ? TrajectoryFormat::kTum
              : format == "kitti" ? TrajectoryFormat::kKitti
                                  : detect_trajectory_format(file);
-  t.poses = t.format == TrajectoryFormat::kTum ? read_tum_trajectory(file) : read_kitti_trajectory(file);
+  TrajectoryReadNotes notes;
+  t.poses =
+      t.format == TrajectoryFormat::kTum ? read_tum_trajectory(file, &notes) : read_kitti_trajectory(file);
+  if (const std::string note = trajectory_note(file, notes); !note.empty())
+    std::cerr << "note: " << note << "\n";
   return t;
 }
 

@@ -36,6 +36,36 @@ TEST(TrajectoryIo, TumKnownLine) {
   EXPECT_TRUE(t[0].pose.translation().isApprox(Eigen::Vector3d(1, 2, 3)));
 }
 
+// A trajectory is a time series: lines out of time order are read in time order, and say so; a stamp
+// given twice is an error naming both lines (issue 64: the RPE and drift were taken along the lines).
+TEST(TrajectoryIo, TumLinesAreTakenInTimeOrder) {
+  TempDir dir;
+  write_text(
+      dir / "s.tum",
+      "3 3 0 0 0 0 0 1\n1 1 0 0 0 0 0 1\n# a comment\n2 2 0 0 0 0 0 1\n4 4 0 0 0 0 0 1\n0 0 0 0 0 0 0 1\n");
+  TrajectoryReadNotes notes;
+  const Trajectory t = read_tum_trajectory(dir / "s.tum", &notes);
+  ASSERT_EQ(t.size(), 5u);
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    EXPECT_EQ(t[i].stamp, static_cast<double>(i));
+    EXPECT_EQ(t[i].pose.translation().x(), static_cast<double>(i));  // each pose stays with its stamp
+  }
+  EXPECT_EQ(notes.out_of_order, 3u);  // the lines of stamps 1, 2 and 0 come after a later one
+  EXPECT_NE(trajectory_note(dir / "s.tum", notes).find("3 poses come after a later stamp"),
+            std::string::npos);
+  TrajectoryReadNotes again;
+  read_trajectory(dir / "s.tum", &again);
+  EXPECT_EQ(again.out_of_order, 3u);
+  TrajectoryReadNotes ordered;
+  write_tum_trajectory(dir / "o.tum", sample_trajectory());
+  read_tum_trajectory(dir / "o.tum", &ordered);
+  EXPECT_EQ(ordered.out_of_order, 0u);
+  EXPECT_EQ(trajectory_note(dir / "o.tum", ordered), "");
+  write_text(dir / "d.tum", "1 0 0 0 0 0 0 1\n2 0 0 0 0 0 0 1\n1 5 0 0 0 0 0 1\n");
+  expect_input_error([&] { read_tum_trajectory(dir / "d.tum"); }, dir / "d.tum", "line 3",
+                     "(also at line 1)");
+}
+
 TEST(TrajectoryIo, KittiRoundTrip) {
   TempDir dir;
   write_kitti_trajectory(dir / "k.txt", sample_trajectory());

@@ -3,6 +3,8 @@
 // without alignment and 0 with it; JSON, plots, unmatched stamps counted; bad input exits 1 or 2.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -90,6 +92,38 @@ TEST(EvalCli, KnownOffsetJsonPlotsAndUnmatchedStamps) {
   EXPECT_EQ(tight.exit_code, 1) << tight.output;
   EXPECT_NE(tight.output.find("no estimate pose has a reference pose within"), std::string::npos)
       << tight.output;
+}
+
+// A trajectory is in time order whatever the order of its lines: the estimate shuffled gives the same
+// ATE, RPE and drift as in order, with a note that it was sorted (issue 64: the RPE was 16× off).
+TEST(EvalCli, LinesOutOfTimeOrderGiveTheSameAccuracy) {
+  test::TempDir tmp;
+  Trajectory ref, est;
+  for (int i = 0; i < 120; ++i) {
+    Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+    T.translation() = Eigen::Vector3d(1.5 * i, 4.0 * std::sin(0.05 * i), 0.0);
+    ref.push_back({100.0 + i, T});
+    T.translation() += Eigen::Vector3d(0.01 * i, -0.02 * std::cos(0.3 * i), 0.0);  // drifts, wobbles
+    est.push_back({100.0 + i, T});
+  }
+  write_tum_trajectory(tmp / "ref.tum", ref);
+  write_tum_trajectory(tmp / "est.tum", est);
+  Trajectory shuffled = est;
+  for (std::size_t i = 0; i + 7 < shuffled.size(); i += 7) std::swap(shuffled[i], shuffled[i + 5]);
+  std::reverse(shuffled.begin() + 40, shuffled.begin() + 80);
+  write_tum_trajectory(tmp / "shuffled.tum", shuffled);
+  const test::CliRun ordered =
+      run_cli("-q eval " + (tmp / "ref.tum").string() + " " + (tmp / "est.tum").string());
+  ASSERT_EQ(ordered.exit_code, 0) << ordered.output;
+  const test::CliRun mixed =
+      run_cli("-q eval " + (tmp / "ref.tum").string() + " " + (tmp / "shuffled.tum").string());
+  ASSERT_EQ(mixed.exit_code, 0) << mixed.output;
+  EXPECT_NE(mixed.output.find("poses come after a later stamp; the trajectory is taken in time order"),
+            std::string::npos)
+      << mixed.output;
+  const std::string accuracy = ordered.output.substr(0, ordered.output.find('\n'));
+  EXPECT_NE(mixed.output.find(accuracy), std::string::npos) << ordered.output << "\n" << mixed.output;
+  EXPECT_EQ(ordered.output.find("note:"), std::string::npos) << ordered.output;
 }
 
 // On a straight line the positions leave the rotation about it free: the output says the

@@ -49,8 +49,10 @@ class ScanFolderDataset final : public detail::ListedScansDataset {
     meta_.scan_count = scans_.size();
     const fs::path poses = poses_file.empty() ? beside(folder, scans_folder, "poses.txt") : poses_file;
     if (!poses.empty()) {
+      TrajectoryReadNotes read;
       const Trajectory trajectory =
-          poses_file.empty() ? read_kitti_trajectory(poses) : read_trajectory(poses);
+          poses_file.empty() ? read_kitti_trajectory(poses) : read_trajectory(poses, &read);
+      if (const std::string note = trajectory_note(poses, read); !note.empty()) meta_.notes.push_back(note);
       check_count(poses, trajectory.size(), "poses");
       for (const StampedPose& p : trajectory) ground_truth_.push_back(p.pose);
     }

@@ -1,7 +1,11 @@
 #include "sextant/core/io/trajectory_io.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numeric>
 #include <string>
+#include <vector>
 
 #include "sextant/core/atomic_file.hpp"
 #include "sextant/core/error.hpp"
@@ -10,9 +14,16 @@
 
 namespace sextant {
 
-Trajectory read_tum_trajectory(const std::filesystem::path& file) {
+std::string trajectory_note(const std::filesystem::path& file, const TrajectoryReadNotes& notes) {
+  if (notes.out_of_order == 0) return "";
+  return file.string() + ": " + std::to_string(notes.out_of_order) +
+         " poses come after a later stamp; the trajectory is taken in time order (sorted by stamp)";
+}
+
+Trajectory read_tum_trajectory(const std::filesystem::path& file, TrajectoryReadNotes* notes) {
   const std::string text = detail::read_file_bytes(file);
   Trajectory trajectory;
+  std::vector<long> lines;  // the file line of each pose
   std::vector<double> v;
   std::string bad;
   detail::for_each_line(text, [&](std::string_view line, long number) {
@@ -38,8 +49,31 @@ Trajectory read_tum_trajectory(const std::filesystem::path& file) {
     pose.pose.linear() = q.normalized().toRotationMatrix();
     pose.pose.translation() = Eigen::Vector3d(v[1], v[2], v[3]);
     trajectory.push_back(pose);
+    lines.push_back(number);
   });
-  return trajectory;
+  // Time order: a pose whose stamp is before the largest stamp so far is out of order.
+  std::size_t out_of_order = 0;
+  double latest = -std::numeric_limits<double>::infinity();
+  for (const StampedPose& p : trajectory) {
+    if (p.stamp < latest) ++out_of_order;
+    latest = std::max(latest, p.stamp);
+  }
+  std::vector<std::size_t> order(trajectory.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return trajectory[a].stamp < trajectory[b].stamp; });
+  for (std::size_t k = 1; k < order.size(); ++k)
+    if (trajectory[order[k]].stamp == trajectory[order[k - 1]].stamp)
+      throw InputError(file.string(), at_line(lines[order[k]]),
+                       "the stamp " + std::to_string(trajectory[order[k]].stamp) +
+                           " is given twice (also at line " + std::to_string(lines[order[k - 1]]) +
+                           "): which pose holds then?");
+  if (notes) notes->out_of_order = out_of_order;
+  if (out_of_order == 0) return trajectory;
+  Trajectory sorted;
+  sorted.reserve(trajectory.size());
+  for (std::size_t k : order) sorted.push_back(trajectory[k]);
+  return sorted;
 }
 
 void write_tum_trajectory(const std::filesystem::path& file, const Trajectory& trajectory) {
@@ -96,8 +130,9 @@ TrajectoryFormat detect_trajectory_format(const std::filesystem::path& file) {
                        std::to_string(count) + " numbers");
 }
 
-Trajectory read_trajectory(const std::filesystem::path& file) {
-  return detect_trajectory_format(file) == TrajectoryFormat::kTum ? read_tum_trajectory(file)
+Trajectory read_trajectory(const std::filesystem::path& file, TrajectoryReadNotes* notes) {
+  if (notes) *notes = TrajectoryReadNotes{};
+  return detect_trajectory_format(file) == TrajectoryFormat::kTum ? read_tum_trajectory(file, notes)
                                                                   : read_kitti_trajectory(file);
 }
 
