@@ -3,7 +3,9 @@
 #include "sextant/core/settings_reader.hpp"
 
 namespace sextant::cli {
+namespace {
 
+/// The flags as a request, with the --config file's maps (InputError naming the file).
 MatcherRequest matcher_request(const MatcherOptions& o) {
   MatcherRequest r;
   r.method = o.method;
@@ -20,6 +22,8 @@ MatcherRequest matcher_request(const MatcherOptions& o) {
   r.sampler_where = o.config.empty() ? "sampler settings (--sampling)" : o.config;
   return r;
 }
+
+}  // namespace
 
 MatcherConfig read_matcher_config(const MatcherOptions& o, bool wide_basin) {
   return sextant::read_matcher_config(matcher_request(o), Face::cli, wide_basin);

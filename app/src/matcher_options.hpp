@@ -15,10 +15,7 @@ struct MatcherOptions {
   std::string config;  ///< YAML file with optional `matcher:` and `sampler:` maps
 };
 
-/// The flags as a request, with the --config file's maps (InputError naming the file).
-MatcherRequest matcher_request(const MatcherOptions& o);
-
-/// The request of the flags, read (matcher_request.hpp): errors name --config or the flags.
+/// The flags and the --config file's maps, read (matcher_request.hpp): errors name --config or the flags.
 MatcherConfig read_matcher_config(const MatcherOptions& o, bool wide_basin = false);
 
 }  // namespace sextant::cli

@@ -11,6 +11,7 @@
 #include "arrays.hpp"
 #include "memory_dataset.hpp"
 #include "sextant/core/error.hpp"
+#include "sextant/core/io/kitti.hpp"
 #include "sextant/pipeline/dataset_argument.hpp"
 
 namespace sextant::python {
@@ -40,6 +41,11 @@ std::unique_ptr<Dataset> open_list(const py::sequence& clouds, const py::object&
     const auto t = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(times);
     if (!t || t.ndim() != 1) throw py::value_error("times: expected a 1-D array of seconds");
     stamps.assign(t.data(), t.data() + t.shape(0));
+    for (std::size_t k = 0; k < stamps.size(); ++k) {  // as times.txt: finite, each after the one before
+      const std::string problem =
+          scan_time_problem(k == 0 ? std::nullopt : std::optional<double>(stamps[k - 1]), stamps[k]);
+      if (!problem.empty()) throw py::value_error("times[" + std::to_string(k) + "]: " + problem);
+    }
   }
   return std::make_unique<MemoryDataset>(std::move(scans), std::move(truth), std::move(odometry_poses),
                                          std::move(stamps));

@@ -95,6 +95,35 @@ TEST(ScanFolder, PosesFileInTumOrKittiFormat) {
                      "found 5 numbers");
 }
 
+// Order is by time (issue 64): the scans' times increase; a TUM file's poses pair with the scans by
+// their stamps, whatever the order of its lines, and stamps that are not the scans' times are refused.
+TEST(ScanFolder, PosesPairWithTheScansByTime) {
+  TempDir dir;
+  for (int i = 0; i < 3; ++i) write_cloud(dir / ("s" + std::to_string(i) + ".csv"), cloud_of(3));
+  write_text(dir / "times.txt", "10.0\n10.5\n11.0\n");
+  Trajectory truth(3);
+  for (int i = 0; i < 3; ++i) {
+    truth[static_cast<std::size_t>(i)].stamp = 10.0 + 0.5 * i;
+    truth[static_cast<std::size_t>(i)].pose.translation() = Eigen::Vector3d(i, 0, 0);
+  }
+  Trajectory reversed(truth.rbegin(), truth.rend());
+  write_tum_trajectory(dir / "reversed.tum", reversed);
+  const auto ds = open_scan_folder(dir.path(), dir / "reversed.tum");
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(ds->ground_truth(static_cast<std::size_t>(i))->translation().x(), i);
+  EXPECT_TRUE(has_note(ds->metadata(), "2 poses come after a later stamp"));
+  Trajectory late = truth;
+  for (StampedPose& p : late) p.stamp += 5000.0;  // another clock
+  write_tum_trajectory(dir / "late.tum", late);
+  expect_input_error([&] { open_scan_folder(dir.path(), dir / "late.tum"); }, dir / "late.tum", "",
+                     "the pose of scan 0 is stamped 5010");
+  write_text(dir / "times.txt", "10.0\n10.5\n10.5\n");
+  expect_input_error([&] { open_dataset(dir.path()); }, dir / "times.txt", "line 3",
+                     "is not after the previous");
+  write_text(dir / "times.txt", "10.0\n9.5\n11.0\n");
+  expect_input_error([&] { open_dataset(dir.path()); }, dir / "times.txt", "line 2",
+                     "is not after the previous");
+}
+
 TEST(ScanFolder, SameNumberTwiceIsRefusedNamingBothFiles) {
   TempDir dir;
   write_cloud(dir / "cloud_001.pcd", cloud_of(3));

@@ -158,3 +158,8 @@ def test_bad_input_raises(data_dir, tmp_path):
         sextant.odometry([cloud, cloud], first=2)
     with pytest.raises(TypeError, match="one array"):
         sextant.odometry(cloud)
+    # The scans' times are held to what times.txt is held to: finite, each after the one before.
+    with pytest.raises(ValueError, match=r"times\[2\]: expected one finite time"):
+        sextant.odometry([cloud] * 5, times=[0, 1, float("nan"), 3, 4])
+    with pytest.raises(ValueError, match=r"times\[1\]: the time 0\.000000 s is not after the previous"):
+        sextant.odometry([cloud, cloud], times=[0, 0])

@@ -1,4 +1,7 @@
 // Any folder of point-cloud files as a dataset, and the layout detection of open_dataset.
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "listed_scans_dataset.hpp"
@@ -33,6 +36,25 @@ fs::path beside(const fs::path& folder, const fs::path& scans_folder, const std:
 }
 
 class ScanFolderDataset final : public detail::ListedScansDataset {
+ private:
+  /// A TUM file's poses pair with the scans by time: pose k (in time order) must be stamped with scan
+  /// k's time, to within half the shortest time between two scans.
+  void check_stamps(const fs::path& poses, const Trajectory& trajectory, const fs::path& times) const {
+    double shortest = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 1; k < times_.size(); ++k) shortest = std::min(shortest, times_[k] - times_[k - 1]);
+    const double tolerance = std::isfinite(shortest) ? 0.5 * shortest : 1e-3;
+    for (std::size_t k = 0; k < trajectory.size(); ++k) {
+      if (std::abs(trajectory[k].stamp - times_[k]) <= tolerance) continue;
+      throw InputError(poses.string(), "",
+                       "the poses pair with the scans by time, but the pose of scan " + std::to_string(k) +
+                           " is stamped " + std::to_string(trajectory[k].stamp) +
+                           " s and the scan's time is " + std::to_string(times_[k]) + " s (" +
+                           times.string() + "), more than " + std::to_string(tolerance) +
+                           " s apart: stamp the poses with the scans' times (or give them as KITTI poses, "
+                           "one per scan in order)");
+    }
+  }
+
  public:
   ScanFolderDataset(const fs::path& folder, const fs::path& poses_file) {
     fs::path scans_folder;
@@ -47,18 +69,21 @@ class ScanFolderDataset final : public detail::ListedScansDataset {
     meta_.format = "folder";
     meta_.path = folder;
     meta_.scan_count = scans_.size();
+    const fs::path times = beside(folder, scans_folder, "times.txt");
+    if (!times.empty()) {
+      times_ = read_kitti_times(times);
+      check_count(times, times_.size(), "times");
+    }
     const fs::path poses = poses_file.empty() ? beside(folder, scans_folder, "poses.txt") : poses_file;
     if (!poses.empty()) {
       TrajectoryReadNotes read;
+      const bool stamped = !poses_file.empty() && detect_trajectory_format(poses) == TrajectoryFormat::kTum;
       const Trajectory trajectory =
           poses_file.empty() ? read_kitti_trajectory(poses) : read_trajectory(poses, &read);
       if (const std::string note = trajectory_note(poses, read); !note.empty()) meta_.notes.push_back(note);
       check_count(poses, trajectory.size(), "poses");
+      if (stamped && !times_.empty()) check_stamps(poses, trajectory, times);
       for (const StampedPose& p : trajectory) ground_truth_.push_back(p.pose);
-    }
-    if (const fs::path times = beside(folder, scans_folder, "times.txt"); !times.empty()) {
-      times_ = read_kitti_times(times);
-      check_count(times, times_.size(), "times");
     }
     meta_.has_ground_truth = !ground_truth_.empty();
   }

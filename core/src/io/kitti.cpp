@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <string>
 
 #include "sextant/core/atomic_file.hpp"
@@ -178,6 +179,14 @@ std::vector<Eigen::Isometry3d> kitti_velodyne_poses(const std::vector<Eigen::Iso
   return out;
 }
 
+std::string scan_time_problem(std::optional<double> previous, double time) {
+  if (!std::isfinite(time)) return "expected one finite time [s] per scan";
+  if (previous && !(time > *previous))
+    return "the time " + std::to_string(time) + " s is not after the previous scan's (" +
+           std::to_string(*previous) + " s): a scan's time comes after the one before it";
+  return "";
+}
+
 std::vector<double> read_kitti_times(const std::filesystem::path& file) {
   const std::string text = detail::read_file_bytes(file);
   std::vector<double> times;
@@ -188,9 +197,12 @@ std::vector<double> read_kitti_times(const std::filesystem::path& file) {
     if (!detail::parse_numbers(line, values, &bad)) {
       throw InputError(file.string(), at_line(number), detail::bad_number_problem(bad));
     }
-    if (values.size() != 1 || !std::isfinite(values[0])) {
-      throw InputError(file.string(), at_line(number), "expected one finite time [s] per line");
-    }
+    if (values.size() != 1)
+      throw InputError(file.string(), at_line(number), "expected one time [s] per line");
+    const std::optional<double> previous = times.empty() ? std::nullopt : std::optional<double>(times.back());
+    if (const std::string problem = scan_time_problem(previous, values[0]); !problem.empty())
+      throw InputError(file.string(), at_line(number),
+                       problem + " (times.txt lists the scans' times in order)");
     times.push_back(values[0]);
   });
   return times;

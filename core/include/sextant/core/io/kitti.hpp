@@ -4,6 +4,8 @@
 // camera-0 poses file (one 3×4 row-major matrix per line), `calib.txt` (the `Tr:` line maps
 // Velodyne points into camera 0), and `times.txt` (one time [s] per scan).
 #include <filesystem>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -35,6 +37,11 @@ Eigen::Isometry3d read_kitti_calib_tr(const std::filesystem::path& file);
 /// pose between i and j is Tr⁻¹ · Pi⁻¹ · Pj · Tr.
 std::vector<Eigen::Isometry3d> kitti_velodyne_poses(const std::vector<Eigen::Isometry3d>& camera_poses,
                                                     const Eigen::Isometry3d& Tr);
+
+/// What is wrong with a scan's time `time` [s] after the previous scan's (none for the first scan), in
+/// words; "" when nothing is. Scan times are finite and each after the one before: every reader of them
+/// (times.txt, the Python module's `times`) holds them to this.
+std::string scan_time_problem(std::optional<double> previous, double time);
 
 /// `times.txt`: one time [s] per line.
 std::vector<double> read_kitti_times(const std::filesystem::path& file);
