@@ -36,7 +36,7 @@ bool angle_sigma(double sigma) {
 bool PlaneSlamSettings::valid(std::string* why) const {
   const char* problem = nullptr;
   if (!default_filter(filter))
-    problem = "unknown filter (see the filter registry: ekf, ukf, ckf, rspkf, seif, eseif, eif, fastslam2)";
+    problem = "unknown filter (filter_names(): ckf, eif, ekf, eseif, fastslam2, rspkf, seif, ukf)";
   else if (!(length_sigma(sigma_xy) && length_sigma(sigma_z) && angle_sigma(sigma_roll_pitch) &&
              angle_sigma(sigma_yaw)))
     problem =

@@ -1,9 +1,9 @@
 #pragma once
 // The `plane_slam` kind's view of an experiment config: plane SLAM over
-// the first `scans` scans of the campus with every filter of the filter registry.
+// the first `scans` scans of the campus with every filter of the catalogue (filter_spec.hpp).
 //
 //   methods:
-//     - {name: ekf, filter: ekf}                       # filter registry name (+ filter_settings)
+//     - {name: ekf, filter: ekf}                       # a filter of filter_spec.hpp (+ filter_settings)
 //     - {name: eif, filter: eif, scans: 40}            # a method may stop early (E17's EIF image)
 //     - {name: ekf_fbmlndt, filter: ekf, motion: fbmlndt, matcher: {solver: lm}}
 //                                                      # motion: odometry (default) | fbmlndt: the

@@ -1,5 +1,5 @@
 // E15 (§5.2.1.3 A, eqs. 5.7–5.9, figs 5.35–5.36): range–bearing point-landmark SLAM, a paired
-// Monte Carlo of any filters of the registry (UKF vs RSPKF). One world for every run (drawn from
+// Monte Carlo of any filters of the catalogue (UKF vs RSPKF). One world for every run (drawn from
 // the config seed); one run = one (filter, repetition); every filter of a repetition sees the
 // same noisy controls and observations (Rng(run.seed)), so differences are paired.
 //

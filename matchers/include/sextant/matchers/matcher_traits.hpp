@@ -23,7 +23,7 @@ struct MatcherTraits {
   bool common_view_by_default = false;
 };
 
-/// The traits of the matcher named `name` (registry names: mlndt, fbmlndt, ndt, icp_p2p, icp_p2l,
+/// The traits of the matcher named `name` (matcher_names(): mlndt, fbmlndt, ndt, icp_p2p, icp_p2l,
 /// pcl_ndt, pcl_icp, pcl_gicp); none of them for another name.
 MatcherTraits matcher_traits(const std::string& name);
 
