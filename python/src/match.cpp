@@ -67,14 +67,7 @@ MatchResult match(const py::object& reference, const py::object& input, const py
                   const std::string& method, const py::object& preset, const std::string& sampling,
                   std::uint64_t seed, const py::object& wide_basin, const py::object& sampler_settings,
                   const py::kwargs& settings) {
-  MatcherRequest asked;
-  asked.method = method;
-  if (!preset.is_none()) asked.preset = preset.cast<std::string>();
-  asked.sampling = sampling;
-  asked.matcher = yaml_map_from_kwargs(settings, "match() setting");
-  if (!sampler_settings.is_none()) asked.sampler = yaml_from_python(sampler_settings, "sampler_settings");
-  asked.matcher_where = "match() settings";
-  asked.sampler_where = "match() sampler settings";
+  MatcherRequest asked = matcher_request("match()", method, preset, sampling, settings, sampler_settings);
   MatchRequest request;
   request.seed = seed;
   if (!init.is_none()) request.init = transform_from_array(init, "init");

@@ -55,15 +55,9 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
                      std::uint64_t campus_seed, int jobs, const py::object& sampler_settings,
                      const std::string& sensor, const std::string& platform, const py::kwargs& settings) {
   // Arguments first (cheap), then the dataset, as the CLI (odometry_request.hpp).
-  MatcherRequest asked;
-  asked.method = method;
-  if (!preset.is_none()) asked.preset = preset.cast<std::string>();
-  asked.sampling = sampling;
-  asked.matcher = yaml_map_from_kwargs(settings, "odometry() setting");
-  if (!sampler_settings.is_none()) asked.sampler = yaml_from_python(sampler_settings, "sampler_settings");
-  asked.matcher_where = "odometry() settings";
-  asked.sampler_where = "odometry() sampler settings";
-  const MatcherConfig config = read_matcher_config(asked, Face::python);  // unknown names, bad settings
+  const MatcherConfig config =  // unknown names, bad settings
+      read_matcher_config(matcher_request("odometry()", method, preset, sampling, settings, sampler_settings),
+                          Face::python);
   OdometryRequest request;
   request.method = method;
   request.registration = {matcher_choice(config.spec.matcher), sampler_factory(config.spec.sampler)};

@@ -63,4 +63,18 @@ YAML::Node yaml_map_from_kwargs(const py::kwargs& kwargs, const std::string& wha
   return map;
 }
 
+MatcherRequest matcher_request(const std::string& call, const std::string& method,
+                               const pybind11::object& preset, const std::string& sampling,
+                               const pybind11::kwargs& settings, const pybind11::object& sampler_settings) {
+  MatcherRequest r;
+  r.method = method;
+  if (!preset.is_none()) r.preset = preset.cast<std::string>();
+  r.sampling = sampling;
+  r.matcher = yaml_map_from_kwargs(settings, call + " setting");
+  if (!sampler_settings.is_none()) r.sampler = yaml_from_python(sampler_settings, "sampler_settings");
+  r.matcher_where = call + " settings";
+  r.sampler_where = call + " sampler settings";
+  return r;
+}
+
 }  // namespace sextant::python
