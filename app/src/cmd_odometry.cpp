@@ -17,6 +17,7 @@
 #include "matcher_options.hpp"
 #include "odometry_report.hpp"
 #include "sextant/core/atomic_file.hpp"
+#include "sextant/core/output_folder.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/progress.hpp"
 #include "sextant/matchers/matcher_choice.hpp"
@@ -82,6 +83,8 @@ int run_odometry_command(const OdometryOptions& o) {
   const OdometryPlan plan = plan_odometry(std::move(settings), request, *dataset, o.dataset, Face::cli);
   const OdometrySettings& s = plan.settings;
   const std::size_t scans = plan.scans;
+  // Taken before the run: a second run into the same folder is refused now, not after it.
+  OutputFolder folder(o.out, "sextant odometry");
 
   const bool quiet = verbosity() == Verbosity::kQuiet;
   if (!quiet)
@@ -132,7 +135,7 @@ int run_odometry_command(const OdometryOptions& o) {
       odometry_accuracy = trajectory_accuracy(*odometry, *truth, &odometry_problem);
   }
 
-  const fs::path out(o.out);
+  const fs::path out = folder.staging();
   write_trajectories(out, *dataset, o.first, poses, truth);
   write_steps_csv(out / "steps.csv", o.first, result, truth);
   std::optional<LoopClosureSummary> loop_summary;
@@ -163,6 +166,7 @@ int run_odometry_command(const OdometryOptions& o) {
                      loop_summary);
   write_file_atomically(out / "provenance.json",
                         provenance_json(o, config, meta, s, result, scans, start, seconds));
+  folder.commit();
 
   std::cout << std::fixed << std::setprecision(1) << "registered " << result.steps.size() << " pairs in "
             << seconds << " s (" << std::setprecision(3)
@@ -204,7 +208,7 @@ int run_odometry_command(const OdometryOptions& o) {
   }
   if (verbosity() == Verbosity::kVerbose) print_steps(result, o.first);
   if (!quiet)
-    std::cout << "wrote:    " << (out / "trajectory.tum").string() << ", trajectory.kitti.txt"
+    std::cout << "wrote:    " << (folder.target() / "trajectory.tum").string() << ", trajectory.kitti.txt"
               << (truth ? ", groundtruth.tum, groundtruth.kitti.txt" : "")
               << ", steps.csv, metrics.json, provenance.json"
               << (loops ? ", loop_closures.csv, chained/trajectory.tum, chained/trajectory.kitti.txt" : "")

@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "sextant/core/error.hpp"
+#include "sextant/core/output_folder.hpp"
 #include "sextant/core/settings_reader.hpp"
 #include "sextant/synth/campus_io.hpp"
 #include "sextant/synth/yaml.hpp"
@@ -52,9 +53,11 @@ int run_synth(const SynthOptions& o) {
   }
   std::string why;
   if (!settings.valid(&why)) throw InputError(o.config.empty() ? "--scans" : o.config, "", why);
+  OutputFolder folder(o.out, "sextant synth");
   const auto start = std::chrono::steady_clock::now();
   const synth::Campus campus = synth::generate_campus(settings, seed);
-  synth::write_campus(campus, o.out);
+  synth::write_campus(campus, folder.staging());
+  folder.commit();
   if (!o.preview.empty()) {
     if (o.preview_scan >= campus.size()) throw InputError("--preview-scan", "", "no such scan");
     synth::write_campus_preview_svg(campus, o.preview_scan, o.preview);

@@ -9,6 +9,7 @@
 #include "report_overview.hpp"
 #include "result_folders.hpp"
 #include "sextant/core/atomic_file.hpp"
+#include "sextant/core/output_folder.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/trajectory_io.hpp"
 #include "sextant/core/log.hpp"
@@ -130,7 +131,9 @@ std::size_t write_scenes(const std::vector<ReportScene>& scenes, const std::stri
 
 }  // namespace
 
-ReportSummary write_report(const std::vector<fs::path>& results, const fs::path& out) {
+ReportSummary write_report(const std::vector<fs::path>& results, const fs::path& target) {
+  OutputFolder folder(target, "sextant report");
+  const fs::path& out = folder.staging();
   ReportSummary summary;
   HtmlReport page;
   page.title = "Sextant — reproduction of the thesis' experiments";
@@ -273,8 +276,9 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
   page.front_html = overview_html(overview);
   write_file_atomically(out / "overview.md", "# Experiments\n\n" + overview_markdown(overview));
   write_file_atomically(out / "report.md", all_md);
-  summary.index_html = out / "index.html";
-  page.write(summary.index_html);
+  page.write(out / "index.html");
+  folder.commit();
+  summary.index_html = folder.target() / "index.html";
   return summary;
 }
 

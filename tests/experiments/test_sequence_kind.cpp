@@ -181,6 +181,11 @@ TEST(SynthCli, ScansTruncatesTheRouteAndStretchRouteToStretchesIt) {
   EXPECT_GT(far_step, 5.0 * step);
   EXPECT_NE(run_cli("synth --out '" + (tmp / "bad").string() + "' --scans 500"), 0);  // past the 468 scans
   EXPECT_NE(run_cli("synth --out '" + (tmp / "bad").string() + "' --stretch-route-to 0"), 0);
+  // Issue 64, class 5: three scans written over five leave a three-scan dataset, not five files
+  // of which two belong to the earlier route.
+  ASSERT_EQ(run_cli("synth --out '" + (tmp / "five").string() + "' --scans 3"), 0);
+  EXPECT_FALSE(fs::exists(tmp / "five" / "scan003.3d"));
+  EXPECT_EQ(read_tum_trajectory(tmp / "five" / "ground_truth.tum").size(), 3u);
 }
 
 }  // namespace

@@ -219,6 +219,29 @@ TEST(OdometryCli, BadArgumentsAreClearErrors) {
   EXPECT_NE(no_out.output.find("--out"), std::string::npos) << no_out.output;
 }
 
+// Issue 64, class 5: a rerun replaces the whole file set of the earlier run, and a folder that holds
+// files sextant did not write is refused, with nothing deleted.
+TEST(OdometryCli, ARerunIntoTheSameFolderReplacesTheWholeSet) {
+  TempDir tmp;
+  const fs::path out = tmp / "out";
+  const std::string command = "odometry campus --scans 3 --no-progress -q --out " + out.string();
+  ASSERT_EQ(run_cli(command).exit_code, 0);
+  test::write_text(out / "loop_closures.csv", "of an earlier run with --loop-closure\n");
+  ASSERT_EQ(run_cli(command).exit_code, 0);
+  EXPECT_FALSE(fs::exists(out / "loop_closures.csv"));
+  expect_outputs(out, 3);
+  for (const auto& entry : fs::directory_iterator(tmp.path()))  // no staging folder or lock left
+    EXPECT_EQ(entry.path().filename(), "out");
+
+  test::write_text(tmp / "mine" / "notes.txt", "not sextant's\n");
+  const CliRun refused = run_cli("odometry campus --scans 3 --no-progress --out " + (tmp / "mine").string());
+  EXPECT_EQ(refused.exit_code, 1) << refused.output;
+  EXPECT_NE(refused.output.find("holds files sextant did not write (e.g. 'notes.txt')"), std::string::npos)
+      << refused.output;
+  EXPECT_TRUE(fs::exists(tmp / "mine" / "notes.txt"));
+  EXPECT_FALSE(fs::exists(tmp / "mine" / "trajectory.tum"));
+}
+
 // Issue 27 (E24): the campus' first loop comes back to its start near scan 80. Closing it with
 // place recognition alone must accept only right closures and leave the trajectory better.
 TEST(OdometryCli, LoopClosureByPlaceRecognitionOnTheCampus) {

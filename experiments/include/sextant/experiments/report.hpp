@@ -21,7 +21,8 @@ struct ReportSummary {
 };
 
 /// `results` are results roots (each holding <experiment>/experiment.yaml and runs.jsonl).
-/// Rows of the same experiment found in several roots are merged by run key.
+/// Rows of the same experiment found in several roots are merged by run key. `out` is written as a
+/// whole (OutputFolder): a rerun replaces every file of the earlier report.
 ReportSummary write_report(const std::vector<std::filesystem::path>& results,
                            const std::filesystem::path& out);
 
