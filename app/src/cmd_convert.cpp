@@ -21,9 +21,13 @@ void add_convert_command(CLI::App& app, int& exit_code) {
       cloud_format(*out);  // an unknown output extension fails before the input is read
       ScanLoadReport report;
       const PointCloud cloud = read_cloud(*in, &report);
-      write_cloud(*out, cloud);
+      const CloudWriteReport written = write_cloud(*out, cloud);
       std::cout << "wrote " << cloud.size() << " points to " << *out << " (" << report.non_finite_dropped
-                << " non-finite and " << report.no_return_dropped << " no-return points dropped)\n";
+                << " non-finite and " << report.no_return_dropped << " no-return points of " << *in
+                << " dropped)\n";
+      // A format that cannot keep a point (a .3d file and far points) says so.
+      if (const std::string note = dropped_on_reading_note(*out, written); !note.empty())
+        std::cerr << "warning: " << note << "\n";
       return 0;
     });
   });

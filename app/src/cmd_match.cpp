@@ -90,7 +90,8 @@ Json json_matrix(const Matrix& M) {
   return rows;
 }
 
-void print_json(const MatchOptions& o, const PairRegistration& registered, const std::string& search,
+void print_json(const MatchOptions& o, const PairRegistration& registered, const ScanLoadReport& reference_load,
+                const ScanLoadReport& input_load, const std::string& search,
                 const std::optional<PoseError>& error) {
   const PairMatch& m = registered.match;
   const RegistrationResult& r = m.result;
@@ -117,6 +118,10 @@ void print_json(const MatchOptions& o, const PairRegistration& registered, const
       {"score", json_value(r.score)},
       {"matched_points", r.matched_points},
       {"input_points", r.input_points},
+      {"reference_dropped_non_finite", reference_load.non_finite_dropped},
+      {"reference_dropped_no_return", reference_load.no_return_dropped},
+      {"input_dropped_non_finite", input_load.non_finite_dropped},
+      {"input_dropped_no_return", input_load.no_return_dropped},
       {"kept_fraction", json_value(m.kept_fraction)},
       {"trust", to_string(r.quality.trust)},
       {"trust_reason", r.quality.reason},
@@ -226,9 +231,12 @@ int run_match(MatchOptions o) {
   if (!o.gt.empty()) truth = read_ground_truth(o.gt);
   const PointCloud input = read_cloud(o.input, &input_report);
   for (const auto& [file, report] :
-       {std::pair{&o.reference, &reference_report}, std::pair{&o.input, &input_report}})
+       {std::pair{&o.reference, &reference_report}, std::pair{&o.input, &input_report}}) {
     for (const std::string& warning : report->warnings)
       std::cerr << "warning: " << *file << ": " << warning << "\n";
+    if (const std::string dropped = dropped_points_note(*report); !dropped.empty())
+      std::cerr << "note: " << *file << ": " << dropped << "\n";
+  }
   PairRegistrationRequest request;
   request.matcher = matcher_choice(config.spec.matcher);
   request.sampler = sampler_factory(config.spec.sampler);
@@ -243,7 +251,9 @@ int run_match(MatchOptions o) {
   std::optional<PoseError> error;
   if (truth) error = pose_error(*truth, m.result.T, registered.centre);
   if (!o.out.empty()) {
-    write_cloud(o.out, input.transformed(m.result.T));
+    const CloudWriteReport written = write_cloud(o.out, input.transformed(m.result.T));
+    if (const std::string note = dropped_on_reading_note(o.out, written); !note.empty())
+      std::cerr << "warning: " << note << "\n";
     if (!o.json && verbosity() != Verbosity::kQuiet)
       std::cout << "wrote:       " << o.out << " (the input in the reference frame)\n";
   }
@@ -255,7 +265,7 @@ int run_match(MatchOptions o) {
       std::cout << "wrote:       " << o.view << " (3D view: before and after; open it in a browser)\n";
   }
   if (o.json) {
-    print_json(o, registered, search, error);
+    print_json(o, registered, reference_report, input_report, search, error);
   } else {
     print_text(o, config, registered, search, error);
   }

@@ -121,10 +121,7 @@ int run_odometry_command(const OdometryOptions& o) {
   if (loop_source) loops = close_odometry_loops(*dataset, o.first, scans, result, s, *loop_source);
   const std::vector<Eigen::Isometry3d>& poses = loops ? loops->closing.poses : result.poses;
 
-  OdometryCounts counts;
-  for (const auto& step : result.steps) counts.not_converged += step.converged ? 0 : 1;
-  counts.untrusted = result.untrusted();
-  counts.recovered = result.recovered();
+  OdometryCounts counts = odometry_counts(result);
   const auto truth = ground_truth_of(*dataset, o.first, scans);
   std::optional<TrajectoryAccuracy> estimate_accuracy, odometry_accuracy;
   std::string estimate_problem, odometry_problem;  // why an accuracy could not be computed
@@ -176,6 +173,8 @@ int run_odometry_command(const OdometryOptions& o) {
             << (s.recover ? " (the least suspect registration, the last trusted motion or the guess chained)"
                           : "")
             << ", " << counts.recovered << " recovered\n";
+  if (const std::string dropped = dropped_points_line(counts, scans); !dropped.empty())
+    std::cout << "dropped:  " << dropped << "\n";
   if (loops)
     std::cout << "loops:    " << loops->closing.accepted() << " of " << loops->closing.attempts.size()
               << " candidates closed (" << o.loop_closure << "; " << loops->place_matches

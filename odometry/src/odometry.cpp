@@ -99,7 +99,7 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
                                          OdometryResult& result) {
   std::vector<OdometryStep> steps(count - 1);
   SequenceTrust trust;
-  PointCloud previous = load_sequence_scan(dataset, first, s.min_range);
+  PointCloud previous = load_sequence_scan(dataset, first, s.min_range, &result.loads[0]);
   result.sensor = resolve_sensor(s.sensor, previous);
   // The odometry tells the typical step before any registration: the median of its increments.
   MotionScale scale(count);
@@ -113,7 +113,7 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
     const std::size_t end = std::min(count, begin + kChunk);
     std::vector<PointCloud> chunk(end - begin);
     tbb::parallel_for(begin, end, [&](std::size_t k) {
-      chunk[k - begin] = load_sequence_scan(dataset, first + k, s.min_range);
+      chunk[k - begin] = load_sequence_scan(dataset, first + k, s.min_range, &result.loads[k]);
     });
     const std::vector<SensorView> views = views_of(chunk, s.common_view, result.sensor.kind);
     // Each step's clouds cut to what both sensors see (with common_view) and its frame, until its
@@ -208,11 +208,11 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
   std::deque<Eigen::Isometry3d> window_poses;  // their chained poses (frame of the sequence's first scan)
   // A scan and its sensor's view (where the steps cut to what both sensors see), loaded ahead.
   const auto load = [&](std::size_t k, PointCloud& scan, SensorView& view) {
-    scan = load_sequence_scan(dataset, first + k, s.min_range);
+    scan = load_sequence_scan(dataset, first + k, s.min_range, &result.loads[k]);
     if (s.common_view) view = sensor_view(scan, result.sensor.kind);
   };
   SensorView last_view, next_view;  // of window.back() and of `next`
-  window.push_back(load_sequence_scan(dataset, first, s.min_range));
+  window.push_back(load_sequence_scan(dataset, first, s.min_range, &result.loads[0]));
   window_poses.push_back(Eigen::Isometry3d::Identity());
   result.sensor = resolve_sensor(s.sensor, window.back());
   if (s.common_view) last_view = sensor_view(window.back(), result.sensor.kind);
@@ -299,8 +299,8 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
 
 }  // namespace
 
-PointCloud load_sequence_scan(const Dataset& dataset, std::size_t i, double min_range) {
-  PointCloud scan = dataset.scan(i);
+PointCloud load_sequence_scan(const Dataset& dataset, std::size_t i, double min_range, ScanLoadReport* report) {
+  PointCloud scan = dataset.scan(i, report);
   if (!(min_range > 0.0)) return scan;
   const float squared = static_cast<float>(min_range * min_range);
   std::vector<std::size_t> keep;
@@ -308,6 +308,16 @@ PointCloud load_sequence_scan(const Dataset& dataset, std::size_t i, double min_
   for (std::size_t j = 0; j < scan.size(); ++j)
     if (scan[j].squaredNorm() >= squared) keep.push_back(j);
   return scan.subset(keep);
+}
+
+ScanLoadReport OdometryResult::dropped_total() const {
+  ScanLoadReport total;
+  for (const ScanLoadReport& load : loads) {
+    total.points_read += load.points_read;
+    total.non_finite_dropped += load.non_finite_dropped;
+    total.no_return_dropped += load.no_return_dropped;
+  }
+  return total;
 }
 
 std::size_t OdometryResult::untrusted() const {
@@ -345,6 +355,7 @@ OdometryResult run_odometry(const Dataset& dataset, const OdometrySettings& sett
 
   StepCounter counter(progress, count - 1);
   OdometryResult result;
+  result.loads.resize(count);
   if (count > 1) {
     const bool independent =
         settings.parallel && settings.guess == OdometryGuess::odometry && settings.map == OdometryMap::scan;
@@ -352,7 +363,8 @@ OdometryResult run_odometry(const Dataset& dataset, const OdometrySettings& sett
                        ? parallel_steps(dataset, settings, first, count, odometry, seeds, counter, result)
                        : sequential_steps(dataset, settings, first, count, odometry, seeds, counter, result);
   } else {
-    result.sensor = resolve_sensor(settings.sensor, load_sequence_scan(dataset, first, settings.min_range));
+    result.sensor =
+        resolve_sensor(settings.sensor, load_sequence_scan(dataset, first, settings.min_range, &result.loads[0]));
     result.tolerance = platform_tolerance(settings.quality, settings.platform, std::nullopt);
   }
   result.poses.push_back(start_pose(dataset, settings, first));

@@ -102,6 +102,25 @@ std::string off_reference_warning(const std::vector<std::size_t>& steps, std::si
   return out.str();
 }
 
+OdometryCounts odometry_counts(const OdometryResult& result) {
+  OdometryCounts counts;
+  for (const auto& step : result.steps) counts.not_converged += step.converged ? 0 : 1;
+  counts.untrusted = result.untrusted();
+  counts.recovered = result.recovered();
+  counts.read = result.dropped_total();
+  for (const ScanLoadReport& load : result.loads) counts.scans_with_drops += load.dropped() > 0 ? 1 : 0;
+  return counts;
+}
+
+std::string dropped_points_line(const OdometryCounts& counts, std::size_t scans) {
+  const ScanLoadReport& r = counts.read;
+  if (r.dropped() == 0) return "";
+  return std::to_string(r.dropped()) + " of " + std::to_string(r.points_read) + " points read were dropped (" +
+         std::to_string(r.non_finite_dropped) + " non-finite, " + std::to_string(r.no_return_dropped) +
+         " no-return), in " + std::to_string(counts.scans_with_drops) + " of " + std::to_string(scans) +
+         " scans (per scan: steps.csv)";
+}
+
 void write_metrics_json(const std::filesystem::path& file, const std::optional<TrajectoryAccuracy>& estimate,
                         const std::optional<TrajectoryAccuracy>& odometry, std::size_t scans,
                         const OdometryCounts& counts, double seconds,
@@ -111,6 +130,9 @@ void write_metrics_json(const std::filesystem::path& file, const std::optional<T
       {"not_converged", counts.not_converged},
       {"untrusted", counts.untrusted},
       {"recovered", counts.recovered},
+      {"points_read", counts.read.points_read},
+      {"dropped_non_finite", counts.read.non_finite_dropped},
+      {"dropped_no_return", counts.read.no_return_dropped},
       {"trusted_off_reference", counts.trusted_off_reference ? Json(*counts.trusted_off_reference) : Json()},
       {"seconds", json_value(seconds)},
       {"estimate", estimate ? accuracy_json(*estimate) : Json()},

@@ -89,6 +89,14 @@ StepsTable steps_table(const OdometryResult& result, std::size_t first,
   c.integer("matched_points", [](std::size_t, Step s) { return static_cast<long long>(s.matched_points); });
   c.integer("reference_points",
             [](std::size_t, Step s) { return static_cast<long long>(s.reference_points); });
+  // What reading the step's input scan (to_scan) dropped; the first scan's count is in the summary.
+  const auto dropped = [&result](std::size_t i, std::size_t ScanLoadReport::*count) {
+    return i + 1 < result.loads.size() ? static_cast<long long>(result.loads[i + 1].*count) : 0LL;
+  };
+  c.integer("dropped_non_finite",
+            [&](std::size_t i, Step) { return dropped(i, &ScanLoadReport::non_finite_dropped); });
+  c.integer("dropped_no_return",
+            [&](std::size_t i, Step) { return dropped(i, &ScanLoadReport::no_return_dropped); });
   c.real("seconds", [](std::size_t, Step s) { return s.seconds; });
   error("error_m", &OdometryStep::relative, false, c);
   error("error_deg", &OdometryStep::relative, true, c);

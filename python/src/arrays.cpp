@@ -90,12 +90,27 @@ PointCloud cloud_from_array(const py::array& points, const std::string& what, Bo
                         py::str(points.dtype()).cast<std::string>());
 }
 
-PointCloud cloud_from_object(const py::object& source, const std::string& what, Borrowing borrowing) {
-  if (py::isinstance<py::str>(source) || py::hasattr(source, "__fspath__")) {
-    const std::string path = py::module_::import("os").attr("fspath")(source).cast<std::string>();
+void warn(const std::string& message) {
+  if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 1) != 0) throw py::error_already_set();
+}
+
+PointCloud read_cloud_warning_drops(const std::string& path, ScanLoadReport* report) {
+  ScanLoadReport local;
+  PointCloud cloud;
+  {
     const py::gil_scoped_release release;
-    return read_cloud(path);
+    cloud = read_cloud(path, &local);
   }
+  if (const std::string dropped = dropped_points_note(local); !dropped.empty()) warn(path + ": " + dropped);
+  if (report) *report = std::move(local);
+  return cloud;
+}
+
+PointCloud cloud_from_object(const py::object& source, const std::string& what, Borrowing borrowing,
+                             ScanLoadReport* report) {
+  if (py::isinstance<py::str>(source) || py::hasattr(source, "__fspath__"))
+    return read_cloud_warning_drops(py::module_::import("os").attr("fspath")(source).cast<std::string>(),
+                                    report);
   if (py::isinstance<py::array>(source)) return cloud_from_array(source, what, borrowing);
   // A converted list is a temporary array: its memory is gone after this call, so it is copied.
   return cloud_from_array(py::module_::import("numpy").attr("asarray")(source), what, Borrowing::kCopy);

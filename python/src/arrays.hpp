@@ -9,6 +9,7 @@
 #include <pybind11/pybind11.h>
 #include <Eigen/Geometry>
 
+#include "sextant/core/dataset.hpp"
 #include "sextant/core/point_cloud.hpp"
 #include "sextant/core/pose.hpp"
 
@@ -31,8 +32,14 @@ PointCloud cloud_from_array(const py::array& points, const std::string& what, Bo
 
 /// A cloud from an array (as cloud_from_array; anything else array-like is converted and copied)
 /// or a path (str or os.PathLike, read by the library's read_cloud with the GIL released).
-/// InputError for a bad file.
-PointCloud cloud_from_object(const py::object& source, const std::string& what, Borrowing borrowing);
+/// InputError for a bad file. `report`, for a path, gets what reading it dropped.
+PointCloud cloud_from_object(const py::object& source, const std::string& what, Borrowing borrowing,
+                             ScanLoadReport* report = nullptr);
+
+/// read_cloud with the GIL released; a UserWarning naming the file says what reading it dropped.
+PointCloud read_cloud_warning_drops(const std::string& path, ScanLoadReport* report = nullptr);
+/// A UserWarning (an exception when the warnings filter makes it one).
+void warn(const std::string& message);
 
 /// Arrays that share the memory of a cloud moved into them (the arrays keep it alive): points N×3
 /// float32 and, when the cloud has intensity, intensity N float32 (else None). No copy.

@@ -14,13 +14,7 @@ std::string path_of(const py::object& path) {
 }
 
 py::object read(const py::object& path, bool intensity) {
-  const std::string file = path_of(path);
-  PointCloud cloud;
-  {
-    const py::gil_scoped_release release;
-    cloud = read_cloud(file);
-  }
-  CloudArrays arrays = cloud_arrays(std::move(cloud));
+  CloudArrays arrays = cloud_arrays(read_cloud_warning_drops(path_of(path)));
   if (!intensity) return std::move(arrays.points);
   return py::make_tuple(arrays.points, arrays.intensity);
 }
@@ -37,15 +31,20 @@ void write(const py::object& path, const py::array& points, const py::object& in
                             std::to_string(cloud.size()) + ")");
     cloud.intensity().assign(values.data(), values.data() + values.shape(0));
   }
-  const py::gil_scoped_release release;
-  write_cloud(file, cloud);
+  CloudWriteReport written;
+  {
+    const py::gil_scoped_release release;
+    written = write_cloud(file, cloud);
+  }
+  if (const std::string note = dropped_on_reading_note(file, written); !note.empty()) warn(note);
 }
 
 constexpr char kReadDoc[] = R"doc(Read a point-cloud file with the library's readers.
 
 Formats by extension: .3d (uos), .bin (KITTI velodyne, x y z intensity), .xyz32.bin, .pcd, .ply,
 .csv/.xyz/.txt (x,y,z[,i]). Every reader converts to the internal frame (metres, x forward, y left,
-z up) and drops non-finite points.
+z up) and drops non-finite points (and a .3d file's "no return" points): a UserWarning names the file
+and counts them.
 
 Returns:
   intensity=False (default): the points, an N×3 float32 array.
@@ -60,7 +59,9 @@ constexpr char kWriteDoc[] =
     R"doc(Write a point cloud with the library's writers (format by extension, atomically).
 
 points: N×3 or N×4 (x y z intensity) float32/float64 array in metres, internal frame (a .3d file is
-written in the uos frame and centimetres). intensity: optional N values (not with an N×4 array).)doc";
+written in the uos frame and centimetres). intensity: optional N values (not with an N×4 array).
+A UserWarning counts the points that reading the file back drops: non-finite ones, and in a .3d file
+those at or beyond 32.75 m (the SICK's "no return").)doc";
 
 }  // namespace
 

@@ -16,15 +16,18 @@ void check_count(const std::vector<T>& values, std::size_t scans, const std::str
 
 }  // namespace
 
-MemoryDataset::MemoryDataset(std::vector<PointCloud> scans, std::vector<Eigen::Isometry3d> ground_truth,
-                             std::vector<Eigen::Isometry3d> odometry, std::vector<double> times)
+MemoryDataset::MemoryDataset(std::vector<PointCloud> scans, std::vector<ScanLoadReport> loads,
+                             std::vector<Eigen::Isometry3d> ground_truth, std::vector<Eigen::Isometry3d> odometry,
+                             std::vector<double> times)
     : scans_(std::move(scans)),
+      loads_(std::move(loads)),
       ground_truth_(std::move(ground_truth)),
       odometry_(std::move(odometry)),
       times_(std::move(times)) {
   check_count(ground_truth_, scans_.size(), "poses");
   check_count(odometry_, scans_.size(), "odometry_poses");
   check_count(times_, scans_.size(), "times");
+  check_count(loads_, scans_.size(), "loads");
   meta_.name = "arrays";
   meta_.format = "arrays";
   meta_.scan_count = scans_.size();
@@ -34,7 +37,10 @@ MemoryDataset::MemoryDataset(std::vector<PointCloud> scans, std::vector<Eigen::I
 
 PointCloud MemoryDataset::scan(std::size_t i, ScanLoadReport* report) const {
   const PointCloud& cloud = scans_.at(i);
-  if (report) report->points_read = cloud.size();
+  if (report) {
+    *report = loads_.empty() ? ScanLoadReport{} : loads_.at(i);
+    if (report->points_read == 0) report->points_read = cloud.size();  // an array: every row is kept
+  }
   return cloud;
 }
 

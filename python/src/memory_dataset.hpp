@@ -12,8 +12,9 @@ namespace sextant::python {
 class MemoryDataset final : public Dataset {
  public:
   /// ValueError (std::invalid_argument) when a non-empty pose or time list does not have one entry
-  /// per scan.
-  MemoryDataset(std::vector<PointCloud> scans, std::vector<Eigen::Isometry3d> ground_truth,
+  /// per scan. `loads`: what reading each scan dropped, for those read from a file (or empty).
+  MemoryDataset(std::vector<PointCloud> scans, std::vector<ScanLoadReport> loads,
+                std::vector<Eigen::Isometry3d> ground_truth,
                 std::vector<Eigen::Isometry3d> odometry, std::vector<double> times);
 
   const DatasetMetadata& metadata() const override { return meta_; }
@@ -25,6 +26,7 @@ class MemoryDataset final : public Dataset {
  private:
   DatasetMetadata meta_;
   std::vector<PointCloud> scans_;
+  std::vector<ScanLoadReport> loads_;
   std::vector<Eigen::Isometry3d> ground_truth_, odometry_;
   std::vector<double> times_;
 };

@@ -32,6 +32,7 @@ struct OdometryRun {
   std::string sensor;        ///< the lidar the checks assumed (declared, or measured)
   double tolerance_m = 0.0;  ///< the size of a wrong step the run ended with (platform_tolerance)
   std::size_t first = 0, scans = 0, not_converged = 0, untrusted = 0, recovered = 0;
+  std::size_t points_read = 0, dropped_non_finite = 0, dropped_no_return = 0;
   double seconds = 0.0;
 };
 
@@ -119,9 +120,13 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
   run.tolerance_m = result.tolerance.ambiguity_metres;
   run.first = first;
   run.scans = count;
-  for (const OdometryStep& step : result.steps) run.not_converged += step.converged ? 0 : 1;
-  run.untrusted = result.untrusted();
-  run.recovered = result.recovered();
+  const OdometryCounts counts = odometry_counts(result);
+  run.not_converged = counts.not_converged;
+  run.untrusted = counts.untrusted;
+  run.recovered = counts.recovered;
+  run.points_read = counts.read.points_read;
+  run.dropped_non_finite = counts.read.non_finite_dropped;
+  run.dropped_no_return = counts.read.no_return_dropped;
   run.seconds = seconds;
   return run;
 }
@@ -195,6 +200,11 @@ void bind_odometry(py::module_& m) {
       .def_readonly("not_converged", &OdometryRun::not_converged, "steps whose registration did not converge")
       .def_readonly("untrusted", &OdometryRun::untrusted, "steps whose chained motion is not trusted")
       .def_readonly("recovered", &OdometryRun::recovered, "steps the wide basin (or a restart) recovered")
+      .def_readonly("points_read", &OdometryRun::points_read, "points read from the scans' files")
+      .def_readonly("dropped_non_finite", &OdometryRun::dropped_non_finite,
+                    "points dropped for a NaN/Inf coordinate (per scan: steps['dropped_non_finite'])")
+      .def_readonly("dropped_no_return", &OdometryRun::dropped_no_return,
+                    "points dropped as the scanner's 'no return' (uos .3d; per scan: steps['dropped_no_return'])")
       .def_readonly("seconds", &OdometryRun::seconds, "wall time of the registrations [s]")
       .def("__repr__", [](const OdometryRun& r) {
         return "OdometryRun(scans=" + std::to_string(r.scans) + ", first=" + std::to_string(r.first) +

@@ -30,8 +30,10 @@ std::unique_ptr<Dataset> open_folder(const std::string& name, const py::object& 
 std::unique_ptr<Dataset> open_list(const py::sequence& clouds, const py::object& poses,
                                    const py::object& odometry, const py::object& times) {
   std::vector<PointCloud> scans;
+  std::vector<ScanLoadReport> loads(clouds.size());  // of the scans given as paths
   for (std::size_t i = 0; i < clouds.size(); ++i)
-    scans.push_back(cloud_from_object(clouds[i], "scans[" + std::to_string(i) + "]", Borrowing::kCopy));
+    scans.push_back(
+        cloud_from_object(clouds[i], "scans[" + std::to_string(i) + "]", Borrowing::kCopy, &loads[i]));
   if (scans.empty()) throw py::value_error("odometry: the list of scans is empty");
   std::vector<Eigen::Isometry3d> truth, odometry_poses;
   if (!poses.is_none()) truth = poses_from_array(poses, "poses");
@@ -47,8 +49,8 @@ std::unique_ptr<Dataset> open_list(const py::sequence& clouds, const py::object&
       if (!problem.empty()) throw py::value_error("times[" + std::to_string(k) + "]: " + problem);
     }
   }
-  return std::make_unique<MemoryDataset>(std::move(scans), std::move(truth), std::move(odometry_poses),
-                                         std::move(stamps));
+  return std::make_unique<MemoryDataset>(std::move(scans), std::move(loads), std::move(truth),
+                                         std::move(odometry_poses), std::move(stamps));
 }
 
 }  // namespace

@@ -94,6 +94,36 @@ TEST(CloudIo, CsvHeaderNonFiniteAndMalformed) {
   expect_input_error([&] { read_cloud(dir / "b.csv"); }, dir / "b.csv", "line 3", "'1.2.3'");
 }
 
+// Issue 64, class 3: a conversion that cannot keep a point says so. A .3d reader takes a point at or
+// beyond 32.75 m for the SICK's "no return" and drops it; every reader drops a non-finite one. The
+// writer counts exactly what reading the file back drops.
+TEST(CloudIo, WritingCountsThePointsReadingBackDrops) {
+  TempDir dir;
+  PointCloud cloud;
+  cloud.push_back(Eigen::Vector3f(1, 2, 3));
+  cloud.push_back(Eigen::Vector3f(32.8f, 0, 0));    // beyond the range .3d keeps
+  cloud.push_back(Eigen::Vector3f(20, 20, 20));     // 34.6 m: also beyond
+  cloud.push_back(Eigen::Vector3f(32.7f, 0, 0));    // within
+  cloud.push_back(Eigen::Vector3f(NAN, 0, 0));
+  for (const char* name : {"far.3d", "far.pcd", "far.bin"}) {
+    const CloudWriteReport written = write_cloud(dir / name, cloud);
+    ScanLoadReport read;
+    const PointCloud back = read_cloud(dir / name, &read);
+    EXPECT_EQ(written.points, 5u) << name;
+    EXPECT_EQ(written.non_finite, read.non_finite_dropped) << name;
+    EXPECT_EQ(written.beyond_no_return_range, read.no_return_dropped) << name;
+    EXPECT_EQ(back.size() + written.dropped_on_reading(), 5u) << name;
+  }
+  const CloudWriteReport uos = write_cloud(dir / "far.3d", cloud);
+  EXPECT_EQ(uos.beyond_no_return_range, 2u);
+  EXPECT_EQ(dropped_on_reading_note(dir / "far.3d", uos),
+            "2 of 5 points written to " + (dir / "far.3d").string() +
+                " lie at or beyond 32.75 m: a .3d reader takes them for the SICK's \"no return\" and drops "
+                "them (write .pcd, .ply or .bin to keep them); 1 has a non-finite coordinate, which every "
+                "reader drops");
+  EXPECT_EQ(dropped_on_reading_note(dir / "a.pcd", write_cloud(dir / "a.pcd", cloud.subset({0, 1}))), "");
+}
+
 // Issue 26: a CSV with the header x,y,z,nx,ny,nz was refused ("expected 3 or 4 numbers"). Columns
 // are found by the header's names, in any order; the columns not read are named in a warning.
 TEST(CloudIo, CsvColumnsByName) {

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "sextant/core/io/cloud_io.hpp"
 #include "sextant/core/io/kitti.hpp"
 #include "sextant/core/io/trajectory_io.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
@@ -164,6 +165,29 @@ TEST(OdometryCli, SyntheticKittiSequenceFolder) {
   EXPECT_NE(metrics.find("\"odometry\": null"), std::string::npos) << metrics;
   EXPECT_NE(metrics.find("\"trusted_off_reference\": []"), std::string::npos) << metrics;
   EXPECT_EQ(r.output.find("check:"), std::string::npos) << r.output;
+}
+
+// Issue 64, class 3: points a scan's file holds but reading it drops (here NaN) are counted per
+// step in steps.csv, in the summary line and in metrics.json.
+TEST(OdometryCli, DroppedPointsAreCountedPerStepAndInTheSummary) {
+  TempDir tmp;
+  write_kitti_sequence(tmp / "seq", 3);
+  PointCloud scan = read_cloud(tmp / "seq" / "velodyne" / "000001.bin");
+  const std::size_t read = scan.size() + 500;
+  for (int i = 0; i < 500; ++i) scan.push_back(Eigen::Vector3f(NAN, NAN, NAN));
+  write_kitti_velodyne(tmp / "seq" / "velodyne" / "000001.bin", scan);
+  const CliRun r = run_cli("odometry " + (tmp / "seq").string() + " --no-progress --out " + (tmp / "out").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("dropped:  500 of "), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("(500 non-finite, 0 no-return), in 1 of 3 scans"), std::string::npos) << r.output;
+  const auto steps = read_steps_csv(tmp / "out" / "steps.csv");
+  ASSERT_EQ(steps.size(), 2u);
+  EXPECT_EQ(steps[0].at("dropped_non_finite"), "500");  // step 0 → 1 reads scan 1
+  EXPECT_EQ(steps[1].at("dropped_non_finite"), "0");
+  EXPECT_EQ(steps[1].at("dropped_no_return"), "0");
+  const std::string metrics = read_text(tmp / "out" / "metrics.json");
+  EXPECT_EQ(json_number(metrics, "dropped_non_finite"), 500.0) << metrics;
+  EXPECT_GT(json_number(metrics, "points_read"), static_cast<double>(read)) << metrics;
 }
 
 // A trusted step far from the reference's motion is either a wrong registration that passed the checks

@@ -41,7 +41,7 @@ const StepsColumn& column(const StepsTable& t, const std::string& name) {
 
 TEST(StepsTable, HoldsSteps_csvsColumnsInItsOrder) {
   const StepsTable t = steps_table(two_steps(), 10, std::nullopt);
-  ASSERT_EQ(t.columns.size(), 37u);
+  ASSERT_EQ(t.columns.size(), 39u);
   EXPECT_EQ(t.rows, 2u);
   EXPECT_EQ(t.columns.front().name, "step");
   EXPECT_EQ(t.columns[3].name, "x_m");
@@ -54,6 +54,18 @@ TEST(StepsTable, HoldsSteps_csvsColumnsInItsOrder) {
   EXPECT_TRUE(std::isnan(column(t, "error_m").reals[0])) << "no truth, no error";
   EXPECT_TRUE(column(t, "error_m").missing);
   EXPECT_FALSE(column(t, "x_m").missing);
+}
+
+TEST(StepsTable, EachStepCountsWhatReadingItsInputScanDropped) {
+  OdometryResult r = two_steps();
+  r.loads.resize(3);
+  r.loads[0].non_finite_dropped = 9;  // the first scan is no step's input: the summary counts it
+  r.loads[1].non_finite_dropped = 4;
+  r.loads[2].no_return_dropped = 2;
+  const StepsTable t = steps_table(r, 0, std::nullopt);
+  EXPECT_EQ(column(t, "dropped_non_finite").integers, (std::vector<long long>{4, 0}));
+  EXPECT_EQ(column(t, "dropped_no_return").integers, (std::vector<long long>{0, 2}));
+  EXPECT_EQ(r.dropped_total().dropped(), 15u);
 }
 
 TEST(StepsTable, ErrorsAreAgainstTheTruthsMotions) {
@@ -90,15 +102,16 @@ TEST(StepsTable, AsCsvAnEmptyFieldForNoValueAndNoCommaInsideAField) {
     else
       fields.back().push_back(c);
   }
-  ASSERT_EQ(fields.size(), 37u);
+  ASSERT_EQ(fields.size(), 39u);
   EXPECT_EQ(fields[0], "1");
   EXPECT_EQ(fields[3], "1");
   EXPECT_NEAR(std::stod(fields[8]), 90.0, 1e-6);
   EXPECT_EQ(fields[12], "0");
   EXPECT_EQ(fields[13], "7");
-  EXPECT_EQ(fields[18], "");
-  EXPECT_EQ(fields[19], "");
-  EXPECT_EQ(fields[23], "wide_basin");
+  EXPECT_EQ(fields[17], "0");  // dropped_non_finite: the result records no loads
+  EXPECT_EQ(fields[20], "");
+  EXPECT_EQ(fields[21], "");
+  EXPECT_EQ(fields[25], "wide_basin");
 }
 
 }  // namespace

@@ -98,6 +98,26 @@ def test_write_cloud_rejects_bad_arrays(tmp_path):
         sextant.write_cloud(tmp_path / "a.pcd", np.array([[0, 0, 0], [1, 1, 1], [np.nan, 0, 0]]))
 
 
+def test_dropped_points_are_counted_in_a_warning(tmp_path):
+    """Issue 64, class 3: reading drops NaN rows and a .3d writer cannot keep points beyond 32.75 m;
+    both say so in a UserWarning that names the file and counts them."""
+    path = tmp_path / "half.csv"
+    path.write_text("1,2,3\nnan,2,3\n4,5,6\nnan,nan,nan\n")
+    with pytest.warns(UserWarning, match=re.escape(f"{path}: 2 of 4 points dropped (2 non-finite, 0 no-return)")):
+        assert sextant.read_cloud(path).shape == (2, 3)
+    far = np.array([[1, 2, 3], [40, 0, 0], [0, 0, 32.8]], dtype=np.float32)
+    with pytest.warns(UserWarning, match="2 of 3 points written to .*far.3d lie at or beyond 32.75 m"):
+        sextant.write_cloud(tmp_path / "far.3d", far)
+    with pytest.warns(UserWarning, match="2 of 3 points dropped .0 non-finite, 2 no-return."):
+        assert sextant.read_cloud(tmp_path / "far.3d").shape == (1, 3)
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # nothing to say: no warning
+        sextant.write_cloud(tmp_path / "far.pcd", far)
+        assert sextant.read_cloud(tmp_path / "far.pcd").shape == (3, 3)
+
+
 def test_pose_to_matrix_is_rx_ry_rz_and_inverts():
     a, b, g = 0.1, -0.2, 0.3
     rx = np.array([[1, 0, 0], [0, np.cos(a), -np.sin(a)], [0, np.sin(a), np.cos(a)]])

@@ -144,6 +144,19 @@ def test_the_sensor_and_platform_are_measured_or_declared(python_run, mulran):
         sextant.odometry(mulran, scans=2, platform="drone")
 
 
+def test_points_reading_drops_are_counted(data_dir, tmp_path):
+    """Issue 64, class 3: a scan file's NaN rows are dropped, warned about, and counted in the run."""
+    cloud = sextant.read_cloud(data_dir / "velodyne_pair" / "fast_gicp_251370668.pcd")
+    paths = [tmp_path / "a.csv", tmp_path / "b.csv"]
+    np.savetxt(paths[0], cloud, fmt="%.9g", delimiter=",")
+    np.savetxt(paths[1], np.vstack([cloud, np.full((40, 3), np.nan)]), fmt="%.9g", delimiter=",")
+    with pytest.warns(UserWarning, match="b.csv: 40 of .* points dropped .40 non-finite"):
+        run = sextant.odometry(paths)
+    assert (run.dropped_non_finite, run.dropped_no_return) == (40, 0)
+    assert run.points_read == 2 * len(cloud) + 40
+    assert list(run.steps["dropped_non_finite"]) == [40]
+
+
 def test_bad_input_raises(data_dir, tmp_path):
     cloud = sextant.read_cloud(data_dir / "velodyne_pair" / "fast_gicp_251370668.pcd")
     with pytest.raises(sextant.InputError, match="unknown map mode"):

@@ -128,17 +128,40 @@ PointCloud read_cloud(const std::filesystem::path& file, ScanLoadReport* report)
   return cloud;
 }
 
-void write_cloud(const std::filesystem::path& file, const PointCloud& cloud) {
-  switch (entry_for(file).kind) {
-    case Kind::uos: return write_uos_scan(file, cloud);
-    case Kind::kitti_bin: return write_kitti_velodyne(file, cloud);
-    case Kind::xyz32: return write_xyz32(file, cloud);
-    case Kind::pcd: return detail::write_pcd(file, cloud);
-    case Kind::ply: return detail::write_ply(file, cloud);
-    case Kind::csv: return detail::write_point_list(file, cloud, true);
-    case Kind::xyz:
-    case Kind::txt: return detail::write_point_list(file, cloud, false);
+CloudWriteReport write_cloud(const std::filesystem::path& file, const PointCloud& cloud) {
+  const Kind kind = entry_for(file).kind;
+  CloudWriteReport report;
+  report.points = cloud.size();
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
+    if (!cloud[i].allFinite())
+      ++report.non_finite;
+    else if (kind == Kind::uos && is_uos_no_return(internal_to_uos(cloud[i].cast<double>())))
+      ++report.beyond_no_return_range;
   }
+  switch (kind) {
+    case Kind::uos: write_uos_scan(file, cloud); break;
+    case Kind::kitti_bin: write_kitti_velodyne(file, cloud); break;
+    case Kind::xyz32: write_xyz32(file, cloud); break;
+    case Kind::pcd: detail::write_pcd(file, cloud); break;
+    case Kind::ply: detail::write_ply(file, cloud); break;
+    case Kind::csv: detail::write_point_list(file, cloud, true); break;
+    case Kind::xyz:
+    case Kind::txt: detail::write_point_list(file, cloud, false); break;
+  }
+  return report;
+}
+
+std::string dropped_on_reading_note(const std::filesystem::path& file, const CloudWriteReport& report) {
+  std::string note;
+  const std::string of = " of " + std::to_string(report.points) + " points written to " + file.string();
+  if (report.beyond_no_return_range > 0)
+    note = std::to_string(report.beyond_no_return_range) + of +
+           " lie at or beyond 32.75 m: a .3d reader takes them for the SICK's \"no return\" and drops them "
+           "(write .pcd, .ply or .bin to keep them)";
+  if (report.non_finite > 0)
+    note += (note.empty() ? std::to_string(report.non_finite) + of : "; " + std::to_string(report.non_finite)) +
+            (report.non_finite == 1 ? " has" : " have") + " a non-finite coordinate, which every reader drops";
+  return note;
 }
 
 }  // namespace sextant

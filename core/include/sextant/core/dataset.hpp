@@ -36,7 +36,11 @@ struct ScanLoadReport {
   /// What the reader doubts without refusing the file (`sextant info` prints them), e.g. a `.bin`
   /// whose fourth column does not look like intensity.
   std::vector<std::string> warnings;
+  std::size_t dropped() const { return non_finite_dropped + no_return_dropped; }
 };
+
+/// "6499 of 12998 points dropped (6499 non-finite, 0 no-return)", or empty when none was.
+std::string dropped_points_note(const ScanLoadReport& report);
 
 class Dataset {
  public:

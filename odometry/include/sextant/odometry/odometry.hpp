@@ -153,6 +153,10 @@ struct OdometryResult {
   /// reference by more than this is
   QualitySettings tolerance;
   std::vector<OdometryStep> steps;  ///< count − 1 registrations; steps[i] links poses[i] and poses[i + 1]
+  /// What reading each scan dropped (non-finite, no-return points), loads[i] of scan first + i
+  std::vector<ScanLoadReport> loads;
+  /// Over every scan: the points read, and those dropped
+  ScanLoadReport dropped_total() const;
   std::size_t untrusted() const;    ///< steps whose chained motion is not trusted
   std::size_t recovered() const;    ///< steps recovered (wide basin, or restart)
 };
@@ -161,8 +165,9 @@ struct OdometryResult {
 using OdometryProgress = std::function<void(std::size_t done, std::size_t total)>;
 
 /// Scan i of the dataset without the points closer than `min_range` to the sensor (as the chain
-/// registers it).
-PointCloud load_sequence_scan(const Dataset& dataset, std::size_t i, double min_range);
+/// registers it); `report`, when given, gets what reading the file dropped.
+PointCloud load_sequence_scan(const Dataset& dataset, std::size_t i, double min_range,
+                              ScanLoadReport* report = nullptr);
 
 /// Chains count − 1 registrations over scans first … first + count − 1. Throws InputError when the
 /// range leaves the dataset, count < 1, the settings are invalid or the guess mode needs odometry the

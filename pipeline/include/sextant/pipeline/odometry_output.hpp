@@ -39,12 +39,23 @@ void write_steps_csv(const std::filesystem::path& file, std::size_t first, const
 /// basin recovered.
 struct OdometryCounts {
   std::size_t not_converged = 0, untrusted = 0, recovered = 0;
+  /// Over every scan: the points read and those reading dropped (non-finite, no-return; per scan in
+  /// steps.csv), and how many scans dropped any
+  ScanLoadReport read;
+  std::size_t scans_with_drops = 0;
   /// With ground truth: the steps (indices) whose chained motion is trusted and yet more than the
   /// run's tolerance (OdometryResult::tolerance: a car's 1 m or 5°, less for a slower platform) from the
   /// ground truth's: a wrong registration that passed the checks, or a wrong reference (docs/odometry.md,
   /// "What it prints and writes"). Nothing without ground truth.
   std::optional<std::vector<std::size_t>> trusted_off_reference;
 };
+
+/// The counts of `result` (without trusted_off_reference, which needs the ground truth).
+OdometryCounts odometry_counts(const OdometryResult& result);
+
+/// "6499 of 25996 points read were dropped (6499 non-finite, 0 no-return), in 1 of 2 scans (per
+/// scan: steps.csv)" for the console; empty when none was.
+std::string dropped_points_line(const OdometryCounts& counts, std::size_t scans);
 
 /// The trusted steps of `result` more than `tolerance`'s ambiguity distance from `truth`'s relative
 /// motions (OdometryCounts::trusted_off_reference).

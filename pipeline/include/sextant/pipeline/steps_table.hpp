@@ -3,7 +3,8 @@
 // `sextant odometry`'s steps.csv (write_steps_csv) and sextant.odometry()'s OdometryRun.steps (one NumPy
 // array per column). The columns, in order: step, from_scan, to_scan, the relative pose (x_m … yaw_deg;
 // roll/pitch/yaw are α/β/γ, eq. 3.8), the guess (guess_x_m, guess_y_m, guess_yaw_deg), converged,
-// iterations, score, matched_points, reference_points, seconds, the error against the ground truth
+// iterations, score, matched_points, reference_points, dropped_non_finite and dropped_no_return (the
+// points reading to_scan's file dropped), seconds, the error against the ground truth
 // (error_m, error_deg; none without), status, trust, first_trust, recovery, overlap, constraint_ratio,
 // fit_ratio, trust_reason, fallback, then the first registration's own pose and error before any
 // recovery replaced it (first_x_m … first_yaw_deg, first_error_m, first_error_deg).

@@ -26,7 +26,21 @@ std::vector<CloudFormat> cloud_formats();
 /// Reads any known format. A file that holds no usable point (empty, or every point dropped) is
 /// an InputError, as is every malformed input (with the line or byte offset).
 PointCloud read_cloud(const std::filesystem::path& file, ScanLoadReport* report = nullptr);
+/// The points of a written file that reading it back drops (written all the same: another tool may
+/// keep them), so that a conversion that cannot keep a point says so.
+struct CloudWriteReport {
+  std::size_t points = 0;      ///< written
+  std::size_t non_finite = 0;  ///< NaN/Inf coordinates: every reader drops them
+  /// `.3d` only: points at or beyond 32.75 m, which a uos reader takes for the SICK's "no return"
+  std::size_t beyond_no_return_range = 0;
+  std::size_t dropped_on_reading() const { return non_finite + beyond_no_return_range; }
+};
+
 /// Writes atomically; the format follows the extension. An empty cloud is written as such.
-void write_cloud(const std::filesystem::path& file, const PointCloud& cloud);
+CloudWriteReport write_cloud(const std::filesystem::path& file, const PointCloud& cloud);
+
+/// "1098 of 12998 points written to FILE lie at or beyond 32.75 m: a .3d reader takes them for the
+/// SICK's 'no return' and drops them (…)", or empty when reading the file back gives every point.
+std::string dropped_on_reading_note(const std::filesystem::path& file, const CloudWriteReport& report);
 
 }  // namespace sextant
