@@ -147,6 +147,42 @@ TEST(ScanFolder, UosGapsAndAmbiguousNamesAreReported) {
   expect_input_error([&] { open_dataset(dir.path()); }, dir.path(), "", "scan005.3d and scan5.3d");
 }
 
+// Issue 64, class 4: every point-cloud file of a scan folder is accounted for. A file without a
+// number in its name is left out with a note that names it; a link to nothing is refused (the scan
+// it stands for cannot be read); clouds in the folder and in scans/ are refused as ambiguous.
+TEST(ScanFolder, EveryCloudFileIsAccountedFor) {
+  TempDir dir;
+  write_cloud(dir / "seq" / "cloud_000.pcd", cloud_of(2));
+  write_cloud(dir / "seq" / "cloud_001.pcd", cloud_of(3));
+  write_cloud(dir / "seq" / "first.pcd", cloud_of(4));
+  const auto ds = open_dataset(dir / "seq");
+  EXPECT_EQ(ds->size(), 2u);
+  EXPECT_TRUE(has_note(ds->metadata(), "1 point-cloud file is not a scan of the sequence: first.pcd (no number "
+                                       "in its name, which orders the scans)"));
+
+  std::filesystem::create_symlink(dir / "gone.pcd", dir / "seq" / "cloud_002.pcd");
+  expect_input_error([&] { open_dataset(dir / "seq"); }, dir / "seq" / "cloud_002.pcd", "", "a link to nothing");
+  std::filesystem::remove(dir / "seq" / "cloud_002.pcd");
+
+  write_cloud(dir / "seq" / "scans" / "000000.pcd", cloud_of(5));
+  expect_input_error([&] { open_dataset(dir / "seq"); }, dir / "seq", "",
+                     "both the folder (2 scans) and scans/ inside it (1) hold scans");
+
+  // Only numberless clouds beside scans/: the scans are scans/'s, and the others are named.
+  write_cloud(dir / "mulran" / "map.pcd", cloud_of(6));
+  write_cloud(dir / "mulran" / "scans" / "000000.pcd", cloud_of(2));
+  write_cloud(dir / "mulran" / "scans" / "000001.pcd", cloud_of(3));
+  const auto inner = open_dataset(dir / "mulran");
+  EXPECT_EQ(inner->size(), 2u);
+  EXPECT_TRUE(has_note(inner->metadata(), "in the folder itself: 1 point-cloud file is not a scan of the "
+                                          "sequence: map.pcd"));
+  // Nothing but numberless clouds: no scans, and the error says why each file is not one.
+  write_cloud(dir / "named" / "left.pcd", cloud_of(2));
+  write_cloud(dir / "named" / "right.pcd", cloud_of(2));
+  expect_input_error([&] { open_dataset(dir / "named"); }, dir / "named", "",
+                     "2 point-cloud files are not a scan of the sequence: left.pcd (no number");
+}
+
 TEST(ScanFolder, KittiVelodyneMixingFormatsIsReported) {
   TempDir dir;
   write_xyz32(dir / "velodyne" / "000000.xyz32.bin", cloud_of(2));

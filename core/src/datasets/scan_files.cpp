@@ -48,14 +48,29 @@ ScanListing list_scans(const std::filesystem::path& folder, const std::string& p
   ScanListing listing;
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
-    if (!entry.is_regular_file(ec)) continue;
     const std::string name = entry.path().filename().string();
-    if (name.compare(0, prefix.size(), prefix) != 0) continue;
     const std::string extension = matched_extension(name, extensions);
-    if (extension.empty()) continue;
+    if (extension.empty() || name[0] == '.') continue;  // not a cloud file (poses.txt, a hidden file)
+    std::error_code status_error;
+    const bool file = entry.is_regular_file(status_error);
+    if (!file && entry.is_symlink(status_error))
+      throw InputError(entry.path().string(), "",
+                       "a link to nothing (" + std::filesystem::read_symlink(entry.path(), status_error).string() +
+                           "): the scan cannot be read; restore its target or remove the link");
+    if (!file) {
+      listing.left_out.push_back(name + " (not a file)");
+      continue;
+    }
+    if (name.compare(0, prefix.size(), prefix) != 0) {
+      listing.left_out.push_back(name + " (not named " + prefix + "NNN" + extension + ")");
+      continue;
+    }
     std::string digits;
     const std::string stem = name.substr(prefix.size(), name.size() - prefix.size() - extension.size());
-    if (!last_digits(stem, digits)) continue;
+    if (!last_digits(stem, digits)) {
+      listing.left_out.push_back(name + " (no number in its name, which orders the scans)");
+      continue;
+    }
     const auto first = digits.find_first_not_of('0');
     const std::string significant = first == std::string::npos ? "0" : digits.substr(first);
     if (significant.size() > 19)
@@ -72,6 +87,9 @@ ScanListing list_scans(const std::filesystem::path& folder, const std::string& p
                            listing.files[i].path.filename().string() + " both carry the number " +
                            std::to_string(listing.files[i].number) + "; remove or rename one");
   }
+  std::sort(listing.left_out.begin(), listing.left_out.end());
+  if (!listing.files.empty() && !listing.left_out.empty())
+    listing.notes.push_back(left_out_note(listing.left_out));
   if (const std::string gaps = describe_gaps(listing.files); !gaps.empty())
     listing.notes.push_back("the numbering of the scans has gaps (" + gaps +
                             "); the scans are chained in order as if consecutive");
@@ -84,6 +102,13 @@ ScanListing list_scans(const std::filesystem::path& folder, const std::string& p
     listing.notes.push_back("the scans mix file formats (" + mix + ")");
   }
   return listing;
+}
+
+std::string left_out_note(const std::vector<std::string>& left_out) {
+  std::string names;
+  for (std::size_t i = 0; i < left_out.size() && i < 4; ++i) names += (i ? ", " : "") + left_out[i];
+  return std::to_string(left_out.size()) + (left_out.size() == 1 ? " point-cloud file is" : " point-cloud files are") +
+         " not a scan of the sequence: " + names + (left_out.size() > 4 ? ", …" : "");
 }
 
 std::string describe_gaps(const std::vector<NumberedFile>& files) {

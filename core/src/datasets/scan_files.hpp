@@ -17,15 +17,21 @@ struct NumberedFile {
 };
 
 struct ScanListing {
-  std::vector<NumberedFile> files;  ///< ascending number
-  std::vector<std::string> notes;   ///< gaps, mixed formats: reported, not errors
+  std::vector<NumberedFile> files;    ///< ascending number
+  std::vector<std::string> notes;     ///< gaps, mixed formats, files left out: reported, not errors
+  std::vector<std::string> left_out;  ///< "first.pcd (no number in its name, …)": cloud files not listed
 };
 
 /// Regular files named <prefix>…<digits><extension> for one of `extensions` (the longest one a
-/// name ends with wins, case-insensitive), ascending by number. InputError naming both files when
-/// two share a number, and for a file whose digits do not fit 19 places.
+/// name ends with wins, case-insensitive), ascending by number. A file with such an extension that
+/// is not listed (no number, another prefix, not a file) is in `left_out` and, when there are scans,
+/// in a note. InputError naming both files when two share a number, for a link to nothing with such
+/// an extension, and for a file whose digits do not fit 19 places.
 ScanListing list_scans(const std::filesystem::path& folder, const std::string& prefix,
                        const std::vector<std::string>& extensions);
+
+/// "2 point-cloud files are not a scan of the sequence: a.pcd (…), b.pcd (…)".
+std::string left_out_note(const std::vector<std::string>& left_out);
 
 /// "3 numbers missing: 001–002, 004" style description of the gaps of an ascending listing
 /// (empty when consecutive).

@@ -17,14 +17,29 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The folder's scans, or those of folder/scans when the folder itself holds none.
+/// The folder's scans, or those of folder/scans when the folder itself holds none. InputError when
+/// both hold scans (which are the sequence?), or when neither does (naming the cloud files left out).
 detail::ScanListing scan_listing(const fs::path& folder, fs::path& scans_folder) {
   scans_folder = folder;
   detail::ScanListing listing = detail::list_scans(folder, "", scan_folder_extensions());
-  if (listing.files.empty() && fs::is_directory(folder / "scans")) {
-    scans_folder = folder / "scans";
-    listing = detail::list_scans(scans_folder, "", scan_folder_extensions());
+  if (fs::is_directory(folder / "scans")) {
+    detail::ScanListing inner = detail::list_scans(folder / "scans", "", scan_folder_extensions());
+    if (!listing.files.empty() && !inner.files.empty())
+      throw InputError(folder.string(), "",
+                       "both the folder (" + std::to_string(listing.files.size()) + " scans) and scans/ inside it (" +
+                           std::to_string(inner.files.size()) +
+                           ") hold scans: which are the sequence? Give the folder that holds them alone");
+    if (listing.files.empty()) {
+      if (!listing.left_out.empty()) inner.notes.push_back("in the folder itself: " + detail::left_out_note(listing.left_out));
+      scans_folder = folder / "scans";
+      listing = std::move(inner);
+    }
   }
+  if (listing.files.empty())
+    throw InputError(folder.string(), "",
+                     "no scans: expected point-cloud files (.pcd .ply .bin .xyz32.bin .xyz .csv .3d) with a "
+                     "number in the name, in the folder or in scans/ inside it" +
+                         (listing.left_out.empty() ? std::string() : "; " + detail::left_out_note(listing.left_out)));
   return listing;
 }
 
@@ -59,10 +74,6 @@ class ScanFolderDataset final : public detail::ListedScansDataset {
   ScanFolderDataset(const fs::path& folder, const fs::path& poses_file) {
     fs::path scans_folder;
     detail::ScanListing listing = scan_listing(folder, scans_folder);
-    if (listing.files.empty())
-      throw InputError(folder.string(), "",
-                       "no scans: expected point-cloud files (.pcd .ply .bin .xyz32.bin .xyz .csv .3d) in "
-                       "the folder or in scans/ inside it");
     scans_ = std::move(listing.files);
     meta_.notes = std::move(listing.notes);
     meta_.name = detail::folder_name(folder);

@@ -75,8 +75,10 @@ const std::vector<std::string>& scan_folder_extensions();
 /// world ← scan matrix per line, the KITTI layout without calibration: the ground truth) and
 /// `times.txt` (one time [s] per scan). `poses_file`, when given, replaces poses.txt: TUM
 /// (8 numbers per line) or KITTI (12 per line), one pose per scan, in order. A pose or time count
-/// that differs from the scan count, and two files with the same number, are InputErrors; gaps
-/// in the numbering and mixed formats are notes in the metadata.
+/// that differs from the scan count, two files with the same number, a scan that is a link to
+/// nothing, and scans both in `folder` and in `folder/scans`, are InputErrors; gaps in the
+/// numbering, mixed formats and cloud files left out (no number in the name) are notes in the
+/// metadata.
 std::unique_ptr<Dataset> open_scan_folder(const std::filesystem::path& folder,
                                           const std::filesystem::path& poses_file = {});
 
