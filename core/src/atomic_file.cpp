@@ -20,6 +20,13 @@ std::filesystem::path temporary_beside(const std::filesystem::path& path) {
                                std::to_string(counter++));
 }
 
+void create_parent_folder(const std::filesystem::path& path) {
+  if (!path.has_parent_path()) return;
+  std::error_code ec;
+  std::filesystem::create_directories(path.parent_path(), ec);
+  if (ec) throw FileError(path.string(), "cannot create its folder: " + ec.message(), ec.value());
+}
+
 void fsync_path(const std::filesystem::path& path) {
   const int fd = ::open(path.c_str(), O_RDONLY);
   if (fd >= 0) {
@@ -33,8 +40,13 @@ void fsync_path(const std::filesystem::path& path) {
 void write_file_atomically_via_path(
     const std::filesystem::path& path,
     const std::function<void(const std::filesystem::path& temporary)>& writer) {
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  create_parent_folder(path);
   const auto tmp = temporary_beside(path);
+  // The temporary file is created here, so that a folder we may not write is the system's error
+  // naming the file, whatever the writer (PCL's says "Error during open!").
+  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw FileError::from_errno(path.string(), "cannot open for writing", errno);
+  ::close(fd);
   try {
     writer(tmp);
   } catch (...) {
@@ -47,7 +59,7 @@ void write_file_atomically_via_path(
   std::filesystem::rename(tmp, path, ec);
   if (ec) {
     std::filesystem::remove(tmp, ec);
-    throw InputError(path.string(), "", "cannot rename temporary file into place: " + ec.message());
+    throw FileError(path.string(), "cannot rename temporary file into place: " + ec.message(), ec.value());
   }
   if (path.has_parent_path()) fsync_path(path.parent_path());
 }
@@ -56,14 +68,10 @@ void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& writer) {
   write_file_atomically_via_path(path, [&](const std::filesystem::path& tmp) {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out)
-      throw InputError(tmp.string(), "", "cannot open for writing: " + std::string(std::strerror(errno)));
+    if (!out) throw FileError::from_errno(path.string(), "cannot open for writing", errno);
     writer(out);
     out.flush();
-    if (!out) {
-      throw InputError(path.string(), "",
-                       "write failed (" + std::string(std::strerror(errno)) + "); the previous file is kept");
-    }
+    if (!out) throw FileError::from_errno(path.string(), "write failed (the previous file is kept)", errno);
   });
 }
 
@@ -72,10 +80,9 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
 }
 
 void append_line_durably(const std::filesystem::path& path, const std::string& line) {
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  create_parent_folder(path);
   const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-  if (fd < 0)
-    throw InputError(path.string(), "", "cannot open for appending: " + std::string(std::strerror(errno)));
+  if (fd < 0) throw FileError::from_errno(path.string(), "cannot open for appending", errno);
   const std::string text = line + "\n";
   const off_t before = ::lseek(fd, 0, SEEK_END);
   const ssize_t written = ::write(fd, text.data(), text.size());

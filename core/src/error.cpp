@@ -1,5 +1,7 @@
 #include "sextant/core/error.hpp"
 
+#include <cstring>
+
 namespace sextant {
 namespace {
 
@@ -16,6 +18,13 @@ InputError::InputError(std::string file, std::string where, std::string problem)
       file_(std::move(file)),
       where_(std::move(where)),
       problem_(std::move(problem)) {}
+
+FileError::FileError(std::string file, std::string problem, int error_number)
+    : InputError(std::move(file), "", std::move(problem)), error_number_(error_number) {}
+
+FileError FileError::from_errno(std::string file, const std::string& what, int error_number) {
+  return FileError(std::move(file), error_number ? what + ": " + std::strerror(error_number) : what, error_number);
+}
 
 std::string at_line(long line) {
   return "line " + std::to_string(line);

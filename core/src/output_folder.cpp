@@ -18,8 +18,6 @@ namespace fs = std::filesystem;
 namespace sextant {
 namespace {
 
-std::string errno_text() { return std::strerror(errno); }
-
 /// The absolute target with symbolic links resolved (a link to a folder replaces the folder it
 /// points to, not the link) and without a trailing separator.
 fs::path resolve(const fs::path& target) {
@@ -38,7 +36,7 @@ int lock_file(const fs::path& file, const fs::path& target) {
   for (;;) {
     const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (fd < 0)
-      throw InputError(target.string(), "", "cannot create the folder's lock " + file.string() + ": " + errno_text());
+      throw FileError::from_errno(target.string(), "cannot create the folder's lock " + file.string(), errno);
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
       const int error = errno;
       ::close(fd);
@@ -102,17 +100,17 @@ OutputFolder::OutputFolder(const fs::path& target, const std::string& command)
   const std::string name = resolved_.filename().string();
   std::error_code ec;
   fs::create_directories(parent, ec);
-  if (ec) throw InputError(target.string(), "", "cannot create the folder it goes in: " + ec.message());
+  if (ec) throw FileError(target.string(), "cannot create the folder it goes in: " + ec.message(), ec.value());
   lock_fd_ = lock_file(lock_path(resolved_), target);
   try {
     check_replaceable(resolved_, target);
     remove_leftovers(parent, name);
     staging_ = parent / ("." + name + ".partial-" + std::to_string(::getpid()));
     fs::create_directory(staging_, ec);
-    if (ec) throw InputError(target.string(), "", "cannot create " + staging_.string() + ": " + ec.message());
+    if (ec) throw FileError(target.string(), "cannot create " + staging_.string() + ": " + ec.message(), ec.value());
     std::ofstream marker(staging_ / kMarkerFile);
     marker << "written by " << command << "; the folder is replaced as a whole by the next run into it\n";
-    if (!marker) throw InputError((staging_ / kMarkerFile).string(), "", "cannot write: " + errno_text());
+    if (!marker) throw FileError::from_errno((staging_ / kMarkerFile).string(), "cannot write", errno);
   } catch (...) {
     release();
     throw;
@@ -136,7 +134,7 @@ void OutputFolder::commit() {
   std::error_code ec;
   if (!fs::exists(resolved_)) {
     fs::rename(staging_, resolved_, ec);
-    if (ec) throw InputError(target_.string(), "", "cannot move the run's files into place: " + ec.message());
+    if (ec) throw FileError(target_.string(), "cannot move the run's files into place: " + ec.message(), ec.value());
   } else if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, resolved_.c_str(), RENAME_EXCHANGE) == 0) {
     fs::remove_all(staging_, ec);  // now the earlier run's files
   } else if (errno == EINVAL || errno == ENOSYS || errno == ENOTSUP) {
@@ -145,10 +143,10 @@ void OutputFolder::commit() {
     const fs::path previous = parent / ("." + resolved_.filename().string() + ".previous-" + std::to_string(::getpid()));
     fs::rename(resolved_, previous, ec);
     if (!ec) fs::rename(staging_, resolved_, ec);
-    if (ec) throw InputError(target_.string(), "", "cannot move the run's files into place: " + ec.message());
+    if (ec) throw FileError(target_.string(), "cannot move the run's files into place: " + ec.message(), ec.value());
     fs::remove_all(previous, ec);
   } else {
-    throw InputError(target_.string(), "", "cannot move the run's files into place: " + errno_text());
+    throw FileError::from_errno(target_.string(), "cannot move the run's files into place", errno);
   }
   committed_ = true;
   fsync_folder(parent);

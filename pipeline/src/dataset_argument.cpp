@@ -1,6 +1,7 @@
 // The dataset a user names (dataset_argument.hpp).
 #include "sextant/pipeline/dataset_argument.hpp"
 
+#include <cerrno>
 #include <filesystem>
 
 #include "sextant/core/error.hpp"
@@ -26,12 +27,13 @@ std::unique_ptr<Dataset> open_dataset_argument(const std::string& name,
   }
   const fs::path folder(name);
   if (!fs::exists(folder))
-    throw InputError(name, "",
-                     "no such dataset folder (expected a folder of scans, a uos folder, a KITTI sequence "
-                     "folder, or 'campus')");
+    throw FileError(name,
+                    "no such dataset folder (expected a folder of scans, a uos folder, a KITTI sequence "
+                    "folder, or 'campus')",
+                    ENOENT);
   if (!fs::is_directory(folder))
-    throw InputError(name, "",
-                     "is a file, expected a dataset folder (a folder of scans, uos or KITTI) or 'campus'");
+    throw FileError(name, "is a file, expected a dataset folder (a folder of scans, uos or KITTI) or 'campus'",
+                    ENOTDIR);
   std::unique_ptr<Dataset> dataset = open_dataset(folder);
   if (!poses) return dataset;
   if (dataset->metadata().format != "folder")

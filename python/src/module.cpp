@@ -1,5 +1,7 @@
 // The extension module sextant._sextant: the library's errors as Python exceptions, then each
 // topic's bindings (bindings.hpp). The package sextant (python/sextant/__init__.py) re-exports it.
+#include <filesystem>
+
 #include "bindings.hpp"
 #include "sextant/core/error.hpp"
 
@@ -11,12 +13,25 @@ void bind_errors(py::module_& m) {
   static PyObject* input_error = PyErr_NewExceptionWithDoc(
       "sextant.InputError",
       "Bad input (a file, a setting, a name): the library's InputError. str() is '<file>:<where>: "
-      "<problem>'; the attributes file, where and problem hold the parts. A subclass of ValueError.",
+      "<problem>'; the attributes file, where and problem hold the parts. A subclass of ValueError. "
+      "A file the system would not open, create or write raises the matching OSError instead "
+      "(FileNotFoundError, PermissionError, …), its filename the file's.",
       PyExc_ValueError, nullptr);
   m.add_object("InputError", py::handle(input_error).inc_ref());
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const FileError& e) {
+      // OSError(errno, strerror, filename) is the subclass the number names: FileNotFoundError,
+      // PermissionError, IsADirectoryError, …; str() is "[Errno 13] <the CLI's problem>: '<file>'".
+      const py::object os_error = py::module_::import("builtins").attr("OSError");
+      const py::object error = e.error_number() != 0 ? os_error(e.error_number(), e.problem(), e.file())
+                                                     : os_error(e.what());
+      PyErr_SetObject(error.get_type().ptr(), error.ptr());
+    } catch (const std::filesystem::filesystem_error& e) {
+      const py::object error = py::module_::import("builtins")
+                                   .attr("OSError")(e.code().value(), e.code().message(), e.path1().string());
+      PyErr_SetObject(error.get_type().ptr(), error.ptr());
     } catch (const InputError& e) {
       py::object error = py::reinterpret_borrow<py::object>(input_error)(e.what());
       error.attr("file") = e.file();

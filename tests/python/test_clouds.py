@@ -68,8 +68,10 @@ def test_a_malformed_file_raises_the_library_message_with_file_and_line(tmp_path
 
 
 def test_missing_empty_and_unknown_files_raise(tmp_path):
-    with pytest.raises(sextant.InputError, match="cannot open"):
+    # Issue 64, class 6: what the system refuses is the matching OSError, with the CLI's problem.
+    with pytest.raises(FileNotFoundError, match="cannot open") as caught:
         sextant.read_cloud(tmp_path / "missing.pcd")
+    assert caught.value.filename == str(tmp_path / "missing.pcd")
     (tmp_path / "empty.xyz").write_text("")
     with pytest.raises(sextant.InputError):
         sextant.read_cloud(tmp_path / "empty.xyz")
@@ -87,6 +89,20 @@ def test_write_cloud_round_trips_float64_with_intensity(tmp_path):
     read, read_intensity = sextant.read_cloud(path, intensity=True)
     np.testing.assert_array_equal(read, points.astype(np.float32))
     np.testing.assert_array_equal(read_intensity, intensity.astype(np.float32))
+
+
+def test_an_output_the_system_refuses_is_an_oserror_naming_the_file(tmp_path):
+    (tmp_path / "file").write_text("a file, not a folder\n")
+    for name in ["a.pcd", "a.ply", "a.3d", "a.bin"]:
+        target = tmp_path / "file" / name
+        with pytest.raises(OSError) as caught:
+            sextant.write_cloud(target, np.zeros((3, 3)))
+        assert caught.value.filename == str(target), name
+        assert "PCL" not in str(caught.value) and "pcl::" not in str(caught.value)
+    with pytest.raises(NotADirectoryError, match="is a file, expected a dataset folder"):
+        sextant.odometry(tmp_path / "file")
+    with pytest.raises(FileNotFoundError, match="no such dataset folder"):
+        sextant.odometry(tmp_path / "missing")
 
 
 def test_write_cloud_rejects_bad_arrays(tmp_path):

@@ -163,7 +163,7 @@ def test_bad_input_raises(data_dir, tmp_path):
         sextant.odometry([cloud, cloud], map="graph")
     with pytest.raises(sextant.InputError, match="unknown guess mode"):
         sextant.odometry([cloud, cloud], guess="psychic")
-    with pytest.raises(sextant.InputError, match="no such dataset folder"):
+    with pytest.raises(FileNotFoundError, match="no such dataset folder"):
         sextant.odometry(tmp_path / "missing")
     with pytest.raises(ValueError, match="poses: 1 entries for 2 scans"):
         sextant.odometry([cloud, cloud], poses=np.eye(4)[None])

@@ -1,5 +1,6 @@
 // Any folder of point-cloud files as a dataset, and the layout detection of open_dataset.
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -109,12 +110,14 @@ const std::vector<std::string>& scan_folder_extensions() {
 }
 
 std::unique_ptr<Dataset> open_scan_folder(const fs::path& folder, const fs::path& poses_file) {
-  if (!fs::is_directory(folder)) throw InputError(folder.string(), "", "not a folder");
+  if (!fs::is_directory(folder))
+    throw FileError(folder.string(), "not a folder", fs::exists(folder) ? ENOTDIR : ENOENT);
   return std::make_unique<ScanFolderDataset>(folder, poses_file);
 }
 
 std::unique_ptr<Dataset> open_dataset(const fs::path& folder) {
-  if (!fs::is_directory(folder)) throw InputError(folder.string(), "", "not a folder");
+  if (!fs::is_directory(folder))
+    throw FileError(folder.string(), "not a folder", fs::exists(folder) ? ENOTDIR : ENOENT);
   if (fs::is_directory(folder / "velodyne")) return open_kitti_dataset(folder);
   if (!detail::list_scans(folder, "scan", {".3d"}).files.empty()) return open_uos_dataset(folder);
   return open_scan_folder(folder);

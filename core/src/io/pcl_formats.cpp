@@ -43,7 +43,7 @@ void save_pcd(const std::filesystem::path& file, const PointCloud& cloud) {
       // PCL refuses to write an empty cloud; its own header with zero points reads back fine.
       std::ofstream out(tmp, std::ios::binary);
       out << pcl::PCDWriter::generateHeader(points) << "DATA binary\n";
-      if (!out) throw InputError(file.string(), "", "write failed");
+      if (!out) throw FileError::from_errno(file.string(), "write failed", errno);
       return;
     }
     if (pcl::PCDWriter().writeBinary(tmp.string(), points) != 0) {

@@ -26,7 +26,7 @@ void require_regular_file(const std::filesystem::path& file) {
   std::error_code ec;
   const std::filesystem::file_status status = std::filesystem::status(file, ec);
   if (ec && status.type() != std::filesystem::file_type::not_found)  // e.g. a symlink loop
-    throw InputError(file.string(), "", "cannot open: " + ec.message());
+    throw FileError(file.string(), "cannot open: " + ec.message(), ec.value());
   if (std::filesystem::is_directory(status))
     throw InputError(file.string(), "", "is a folder, expected a file");
   if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
@@ -38,7 +38,7 @@ void require_regular_file(const std::filesystem::path& file) {
 std::string read_file_bytes(const std::filesystem::path& file) {
   require_regular_file(file);
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string(), "", "cannot open: " + std::string(std::strerror(errno)));
+  if (!in) throw FileError::from_errno(file.string(), "cannot open", errno);
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 

@@ -56,7 +56,7 @@ YAML::Node load_yaml_file(const std::string& path) {
   try {
     root = YAML::LoadFile(path);
   } catch (const YAML::BadFile&) {
-    throw InputError(path, "", "cannot open YAML file");
+    throw FileError::from_errno(path, "cannot open YAML file", errno);
   } catch (const YAML::ParserException& e) {
     throw InputError(path, at_line(e.mark.line + 1), "YAML syntax error: " + e.msg);
   } catch (const YAML::Exception& e) {
