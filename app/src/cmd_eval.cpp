@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "number_options.hpp"
 #include "sextant/core/atomic_file.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/trajectory_io.hpp"
@@ -295,7 +296,7 @@ void add_eval_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"auto", "tum", "kitti"}))
       ->capture_default_str();
   cmd->add_option("--max-diff", o->max_diff, "TUM: largest time difference of a pose pair [s]")
-      ->check(CLI::NonNegativeNumber)
+      ->check(finite_number(0.0))
       ->capture_default_str();
   cmd->add_option("--align", o->align,
                   "Alignment of the estimate before every metric: se3 (Umeyama), sim3 (with scale), origin "
@@ -303,7 +304,7 @@ void add_eval_command(CLI::App& app, int& exit_code) {
       ->check(CLI::IsMember({"se3", "sim3", "origin", "none"}))
       ->capture_default_str();
   cmd->add_option("--delta", o->delta, "RPE step between the poses of a pair")
-      ->check(CLI::PositiveNumber)
+      ->check(finite_number(0.0, true))
       ->capture_default_str();
   cmd->add_option("--delta-unit", o->delta_unit, "Unit of --delta: frames, or m along the reference's path")
       ->check(CLI::IsMember({"frames", "m"}))
@@ -316,7 +317,7 @@ void add_eval_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--car-slip", o->car_slip,
                   "The reference is a car's: list its steps that slip sideways more than this [m] (a car "
                   "follows arcs; such a step cannot judge the estimate's; 0: off)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(finite_number(0.0));
   cmd->add_option("--plot", o->plot,
                   "Write trajectories.svg (top view) and error_along_path.svg into this folder");
   cmd->callback([o, &exit_code] { exit_code = guarded([&] { return run_eval(*o); }); });

@@ -21,6 +21,7 @@
 #include <tbb/global_control.h>
 
 #include "commands.hpp"
+#include "number_options.hpp"
 #include "matcher_options.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/cloud_io.hpp"
@@ -299,7 +300,9 @@ void add_match_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--view", o->view,
                   "Write a self-contained HTML page showing both clouds before and after the registration in "
                   "3D (rotate, zoom, toggle)");
-  cmd->add_option("--seed", o->seed, "Seed of the sampler's random choices")->capture_default_str();
+  cmd->add_option("--seed", o->seed, "Seed of the sampler's random choices")
+      ->capture_default_str()
+      ->check(whole_number());
   cmd->add_option("--sensor", o->sensor,
                   "The lidar: spinning (a trusted answer is confirmed by the points above the horizon), "
                   "solid_state (no rings: it is not), or auto (spinning when the input covers at least 40 % "
@@ -307,7 +310,7 @@ void add_match_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--jobs,-j", o->jobs,
                   "Threads of the registration (0 = all; the result is the same for any)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(worker_threads());
   cmd->add_flag("--print-config", o->print_config,
                 "Print every matcher and sampler setting the registration would use (the defaults included) "
                 "as YAML, and exit");

@@ -14,6 +14,7 @@
 #include <oneapi/tbb/global_control.h>
 
 #include "commands.hpp"
+#include "number_options.hpp"
 #include "matcher_options.hpp"
 #include "odometry_report.hpp"
 #include "sextant/core/atomic_file.hpp"
@@ -254,15 +255,16 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
                   "candidates");
   cmd->add_option("--local-map-scans", o->local_map_scans, "Scans in the local map")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(whole_number(1));
   cmd->add_option("--min-range", o->min_range, "Drop points closer than this to the sensor [m] (self-hits)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(finite_number(0.0));
   cmd->add_option("--max-acceleration", o->max_acceleration,
                   "With the constant-velocity guess and scan times: the hardest the platform accelerates or "
                   "brakes [m/s²]; a step farther than that allows from the last step's velocity, held in the "
                   "platform's frame or in the world, is not trusted (0: no check)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(finite_number(0.0));
   CLI::Option* common_view = cmd->add_flag(
       "--common-view", o->common_view,
       "Register only what both sensors see from the guess (each scan's band of elevations and range): the "
@@ -282,11 +284,15 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
                   "What carries it, which sets the size of a wrong step: car (1 m or 5°), handheld (0.3 m or "
                   "3°), or auto (the median of the last trusted steps' lengths, between the two)")
       ->capture_default_str();
-  cmd->add_option("--first", o->first, "First scan index")->capture_default_str();
-  cmd->add_option("--scans", o->scans, "Number of scans (0: to the end)")->capture_default_str();
-  cmd->add_option("--seed", o->seed, "Seed of the samplers' random choices")->capture_default_str();
-  cmd->add_option("--campus-seed", o->campus_seed, "Seed of the built-in campus")->capture_default_str();
-  cmd->add_option("--jobs,-j", o->jobs, "Worker threads (0 = all)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--first", o->first, "First scan index")->capture_default_str()->check(whole_number());
+  cmd->add_option("--scans", o->scans, "Number of scans (0: to the end)")->capture_default_str()->check(whole_number());
+  cmd->add_option("--seed", o->seed, "Seed of the samplers' random choices")
+      ->capture_default_str()
+      ->check(whole_number());
+  cmd->add_option("--campus-seed", o->campus_seed, "Seed of the built-in campus")
+      ->capture_default_str()
+      ->check(whole_number());
+  cmd->add_option("--jobs,-j", o->jobs, "Worker threads (0 = all)")->check(worker_threads());
   cmd->add_flag("--no-progress", o->no_progress, "No progress bar");
   cmd->add_flag("--print-config", o->print_config,
                 "Print every matcher and sampler setting this run would use (the defaults included) as YAML, "

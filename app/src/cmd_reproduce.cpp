@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "number_options.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/experiments/experiment_config.hpp"
 #include "sextant/experiments/report.hpp"
@@ -31,7 +32,7 @@ void add_reproduce_command(CLI::App& app, int& exit_code) {
                   "folder of eNN_*.yaml configs (default: the source tree's experiments/)");
   cmd->add_option("--results", args->results, "results root");
   cmd->add_option("--report", args->report, "report folder");
-  cmd->add_option("--jobs,-j", args->jobs, "worker threads (0 = all)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--jobs,-j", args->jobs, "worker threads (0 = all)")->check(worker_threads());
   cmd->add_flag("--quick", args->quick, "the quick profile (fewer scans and repetitions)");
   cmd->add_flag("--no-progress", args->no_progress, "no progress bar");
   cmd->callback([&exit_code, args] {

@@ -2,6 +2,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "number_options.hpp"
 #include "sextant/experiments/runner.hpp"
 
 namespace sextant::cli {
@@ -21,7 +22,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   cmd->add_option("configs", args->configs, "experiment YAML files")->required()->check(CLI::ExistingFile);
   cmd->add_option("--results", args->results, "results root: <results>/<experiment>/ is written");
   cmd->add_option("--cache", args->cache, "dataset cache folder (default <results>/_cache)");
-  cmd->add_option("--jobs,-j", args->jobs, "worker threads (0 = all)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--jobs,-j", args->jobs, "worker threads (0 = all)")->check(worker_threads());
   cmd->add_option("--shard", args->shard, "run only the slice i/n of the runs (1-based, e.g. 3/8)");
   cmd->add_flag("--quick", args->quick, "apply each config's quick: overrides (fewer scans and repetitions)");
   cmd->add_flag("--no-progress", args->no_progress, "no progress bar");

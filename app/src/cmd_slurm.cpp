@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "commands.hpp"
+#include "number_options.hpp"
 #include "sextant/core/atomic_file.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/experiments/experiment_config.hpp"
@@ -220,12 +221,12 @@ void add_slurm_command(CLI::App& app, int& exit_code) {
   cmd->add_option("target", args->target, "an experiment config (YAML), or 'reproduce' for every experiment")
       ->required();
   cmd->add_option("--array-size,-n", args->array_size, "tasks in the array (= shards)")
-      ->check(CLI::Range(1, 100000));
+      ->check(whole_number(1, 100000));
   cmd->add_option("--partition,-p", args->partition, "#SBATCH --partition");
   cmd->add_option("--time,-t", args->time, "#SBATCH --time per task (e.g. 01:00:00)");
   cmd->add_option("--mem", args->mem, "#SBATCH --mem per task (e.g. 4G)");
   cmd->add_option("--cpus-per-task,-c", args->cpus_per_task, "#SBATCH --cpus-per-task; the runner's --jobs")
-      ->check(CLI::PositiveNumber);
+      ->check(whole_number(1));
   cmd->add_option("--results", args->results, "results root: merged results; shards in <results>/_shards");
   cmd->add_option("--report", args->report, "report folder the merge job writes");
   cmd->add_option("--experiments", args->experiments, "folder of eNN_*.yaml configs for 'reproduce'");

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "number_options.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/output_folder.hpp"
 #include "sextant/core/settings_reader.hpp"
@@ -75,15 +76,19 @@ void add_synth_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("synth", "Write the built-in synthetic campus dataset (uos layout)");
   cmd->add_option("--out", options->out, "Output folder")->required();
   cmd->add_option("--scans", options->scans,
-                  "Write only the first N scans of the route (default: all; the route keeps its spacing)");
+                  "Write only the first N scans of the route (default: all; the route keeps its spacing)")
+      ->check(whole_number(1, synth::kMaxRouteScans));
   cmd->add_option("--stretch-route-to", options->stretch,
-                  "Divide the whole route into M scans instead of 468 (M = 30 puts scans ~45 m apart)");
-  auto* seed = cmd->add_option("--seed", options->seed, "Random seed (default 1, or the config's seed)");
+                  "Divide the whole route into M scans instead of 468 (M = 30 puts scans ~45 m apart)")
+      ->check(whole_number(1, synth::kMaxRouteScans));
+  auto* seed = cmd->add_option("--seed", options->seed, "Random seed (default 1, or the config's seed)")
+                   ->check(whole_number());
   cmd->add_option("--config", options->config,
                   "YAML campus settings (world, trajectory, sensor, odometry, gnss)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--preview", options->preview, "Also write a top-down SVG preview to this file");
-  cmd->add_option("--preview-scan", options->preview_scan, "Scan drawn in the preview (default 0)");
+  cmd->add_option("--preview-scan", options->preview_scan, "Scan drawn in the preview (default 0)")
+      ->check(whole_number());
   cmd->callback([options, seed, &exit_code] {
     options->seed_given = seed->count() > 0;
     exit_code = guarded([&] { return run_synth(*options); });

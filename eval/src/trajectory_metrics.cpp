@@ -187,9 +187,11 @@ bool RpeSettings::valid(std::string* why) const {
     if (why) *why = m;
     return false;
   };
-  if (!(delta > 0.0) || !std::isfinite(delta)) return fail("delta must be > 0");
+  if (!(delta > 0.0) || !std::isfinite(delta)) return fail("delta must be a finite number > 0");
   if (unit == Unit::frames && std::floor(delta) != delta) return fail("delta in frames must be an integer");
-  if (!(tolerance >= 0.0)) return fail("tolerance must be >= 0");
+  // Past 2⁵³ a double no longer holds every integer (and no trajectory has that many poses).
+  if (unit == Unit::frames && delta > 9007199254740992.0) return fail("delta in frames must be at most 2^53");
+  if (!(tolerance >= 0.0) || !std::isfinite(tolerance)) return fail("tolerance must be a finite number >= 0");
   return true;
 }
 
@@ -200,11 +202,8 @@ std::vector<std::pair<std::size_t, std::size_t>> rpe_pairs(const PoseList& refer
   if (n < 2 || !settings.valid(nullptr)) return pairs;
   if (settings.unit == RpeSettings::Unit::frames) {
     const auto step = static_cast<std::size_t>(settings.delta);
-    if (settings.all_pairs) {
-      for (std::size_t i = 0; i + step < n; ++i) pairs.emplace_back(i, i + step);
-    } else {
-      for (std::size_t i = 0; i + step < n; i += step) pairs.emplace_back(i, i + step);
-    }
+    if (step >= n) return pairs;  // (i + step would wrap around for a step near 2⁶⁴)
+    for (std::size_t i = 0; i < n - step; i += settings.all_pairs ? 1 : step) pairs.emplace_back(i, i + step);
     return pairs;
   }
   const std::vector<double> distance = path_distances(reference);

@@ -12,9 +12,9 @@ std::string OdometrySettings::problem() const {
   if (map == OdometryMap::local_map && local_map_scans < 1) return "local_map_scans must be ≥ 1";
   if (map == OdometryMap::local_map && !(local_map_voxel > 0.0 && std::isfinite(local_map_voxel)))
     return "local_map_voxel must be a positive number of metres";
-  if (!(min_range >= 0.0 && std::isfinite(min_range))) return "min_range must be ≥ 0 metres";
+  if (!(min_range >= 0.0 && std::isfinite(min_range))) return "min_range must be a finite number ≥ 0 metres";
   if (!(max_acceleration >= 0.0 && std::isfinite(max_acceleration)))
-    return "max_acceleration must be ≥ 0 m/s² (0: no check)";
+    return "max_acceleration must be a finite number ≥ 0 m/s² (0: no check)";
   if (initial_pose && !initial_pose->matrix().allFinite()) return "the initial pose is not finite";
   for (const auto& T : odometry)
     if (!T.matrix().allFinite()) return "an odometry pose is not finite";

@@ -18,6 +18,7 @@
 #include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/pipeline/matcher_request.hpp"
+#include "sextant/core/threads.hpp"
 #include "sextant/pipeline/odometry_output.hpp"
 #include "sextant/pipeline/odometry_request.hpp"
 #include "steps_table.hpp"
@@ -75,7 +76,8 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
   request.seed = seed;
   request.recover = recover;
   OdometrySettings checked = odometry_settings(request, Face::python);
-  if (jobs < 0) throw py::value_error("jobs: expected 0 (all cores) or a positive number of threads");
+  if (const std::string problem = worker_threads_problem(jobs, "jobs"); !problem.empty())
+    throw py::value_error(problem);
 
   const std::unique_ptr<Dataset> dataset =
       open_odometry_dataset(source, poses, odometry_poses, times, campus_seed);

@@ -157,6 +157,23 @@ TEST(Rpe, EvoPairSelection) {
   EXPECT_EQ(rpe_pairs(line, meters).size(), 8u);  // (0,2) … (7,9); from 8 the best is 9 at 1 m
   frames.delta = 2.5;
   EXPECT_FALSE(frames.valid(nullptr));
+  // Issue 64, class 7: a step past the poses gives no pair; one near 2⁶⁴ used to wrap i + step
+  // around and loop for ever. Past 2⁵³ frames the delta is refused.
+  frames.delta = 9;
+  EXPECT_EQ(rpe_pairs(line, frames), (Pairs{{0, 9}}));
+  frames.delta = 10;
+  EXPECT_TRUE(rpe_pairs(line, frames).empty());
+  frames.delta = 9007199254740992.0;  // 2⁵³
+  EXPECT_TRUE(frames.valid(nullptr));
+  EXPECT_TRUE(rpe_pairs(line, frames).empty());
+  frames.all_pairs = false;
+  EXPECT_TRUE(rpe_pairs(line, frames).empty());
+  frames.delta = 1e300;
+  std::string why;
+  EXPECT_FALSE(frames.valid(&why));
+  EXPECT_EQ(why, "delta in frames must be at most 2^53");
+  meters.tolerance = std::numeric_limits<double>::infinity();
+  EXPECT_FALSE(meters.valid(nullptr));
 }
 
 TEST(Rpe, ConstantStepErrorGivesConstantRelativeError) {

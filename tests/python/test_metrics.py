@@ -131,6 +131,11 @@ def test_kitti_drift_of_a_one_percent_long_path():
 
 def test_bad_input_raises():
     reference = straight_path(5)
+    # Issue 64, class 7: a delta of 1e300 frames looped for ever (its step wrapped around).
+    with pytest.raises(ValueError, match="delta in frames must be at most 2"):
+        metrics.rpe(reference, reference, delta=1e300)
+    with pytest.raises(ValueError, match="tolerance must be a finite number"):
+        metrics.rpe(reference, reference, delta=1.0, unit="meters", tolerance=float("inf"))
     with pytest.raises(ValueError, match="estimate has 4 poses, reference 5"):
         metrics.ate(reference, reference[:4])
     with pytest.raises(ValueError, match="at least 2 poses"):

@@ -159,6 +159,13 @@ def test_points_reading_drops_are_counted(data_dir, tmp_path):
 
 def test_bad_input_raises(data_dir, tmp_path):
     cloud = sextant.read_cloud(data_dir / "velodyne_pair" / "fast_gicp_251370668.pcd")
+    # Issue 64, class 7: the numbers the CLI refuses, Python refuses with the same words.
+    with pytest.raises(ValueError, match=r"jobs: 100000 threads on \d+ cores: at most \d+"):
+        sextant.odometry([cloud, cloud], jobs=100000)
+    with pytest.raises(sextant.InputError, match="min_range must be a finite number"):
+        sextant.odometry([cloud, cloud], min_range=float("inf"))
+    with pytest.raises(TypeError):  # a count is not negative (no wrap-around to 2**64 - 1)
+        sextant.odometry([cloud, cloud], scans=-1)
     with pytest.raises(sextant.InputError, match="unknown map mode"):
         sextant.odometry([cloud, cloud], map="graph")
     with pytest.raises(sextant.InputError, match="unknown guess mode"):
