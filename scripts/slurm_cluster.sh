@@ -50,16 +50,37 @@ free_port() {  # a TCP port nobody listens on, from a range away from the well-k
   exit 1
 }
 
-wait_for() {  # wait_for SECONDS what command...
-  local seconds=$1 what=$2
-  shift 2
-  for _ in $(seq $((seconds * 10))); do
-    "$@" >/dev/null 2>&1 && return 0
+# daemon NAME COMMAND...: starts a daemon in the foreground (it does not fork) in the background of
+# this script, its output in log/NAME.out and its PID in run/NAME.pid at once: a wait can then tell a
+# daemon still starting (on a loaded machine that may take long) from one that has died, and stop
+# finds it even before the daemon wrote the PID file itself (the same PID, to the same file).
+daemon() {
+  local name=$1
+  shift
+  "$@" </dev/null >>"$dir/log/$name.out" 2>&1 &
+  echo $! >"$dir/run/$name.pid"
+}
+
+dead_daemon() {  # prints the name of a started daemon that is no longer running; fails if none
+  local f
+  for f in "${pid_files[@]}"; do
+    [ -s "$dir/run/$f" ] || continue
+    kill -0 "$(cat "$dir/run/$f")" 2>/dev/null || { echo "${f%.pid}"; return 0; }
+  done
+  return 1
+}
+
+wait_for() {  # wait_for WHAT COMMAND...: until COMMAND succeeds, however long; fails if a daemon died
+  local what=$1 dead
+  shift
+  until "$@" >/dev/null 2>&1; do
+    if dead=$(dead_daemon); then
+      echo "slurm_cluster: $dead exited before $what; logs:" >&2
+      tail -n 20 "$dir"/log/* >&2 || true
+      return 1
+    fi
     sleep 0.1
   done
-  echo "slurm_cluster: $what did not come up within $seconds s; logs:" >&2
-  tail -n 20 "$dir"/log/* >&2 || true
-  return 1
 }
 
 start() {
@@ -80,9 +101,10 @@ start() {
   dd if=/dev/urandom of="$dir/munge/munge.key" bs=1024 count=1 status=none
   chmod 600 "$dir/munge/munge.key"
   local socket="$dir/munge/munge.socket"
-  munged --socket="$socket" --key-file="$dir/munge/munge.key" --pid-file="$dir/run/munged.pid" \
-    --log-file="$dir/log/munged.log" --seed-file="$dir/munge/munged.seed" --force
-  wait_for 10 munged munge --socket="$socket" -n
+  daemon munged munged --foreground --socket="$socket" --key-file="$dir/munge/munge.key" \
+    --pid-file="$dir/run/munged.pid" --log-file="$dir/log/munged.log" \
+    --seed-file="$dir/munge/munged.seed" --force
+  wait_for "munge's socket answered" munge --socket="$socket" -n
 
   local user host ctld_port slurmd_port
   user=$(id -un)
@@ -119,7 +141,13 @@ SwitchType=switch/none
 ReturnToService=2
 SchedulerType=sched/backfill
 SlurmctldTimeout=30
-SlurmdTimeout=30
+# A loaded machine answers late, and late is no failure: clients (squeue, sbatch, scontrol) wait 60 s
+# for slurmctld's answer (MessageTimeout, 10 s by default); a batch job may take 120 s to launch
+# (10 s by default); slurmd is given Slurm's default 300 s to answer pings before the node is set
+# DOWN and its jobs killed (NODE_FAIL).
+MessageTimeout=60
+BatchStartTimeout=120
+SlurmdTimeout=300
 InactiveLimit=0
 MinJobAge=30
 KillWait=5
@@ -131,11 +159,12 @@ export SLURM_CONF=$dir/slurm.conf
 export PATH="\$PATH:/usr/sbin"
 EOF
   export SLURM_CONF="$dir/slurm.conf"
-  # -i: ignore any state left in the folder; both fork into the background and write their PID file.
-  slurmctld -i -f "$SLURM_CONF"
-  wait_for 20 slurmctld scontrol ping
-  slurmd -f "$SLURM_CONF"
-  wait_for 30 "slurmd (node idle)" sh -c "sinfo -h -o %t | grep -qx idle"
+  # -D: in the foreground (see daemon); -i: ignore any state left in the folder. The node is usable
+  # once slurmd has registered and answered: "idle" (not "idle*", not responding; nor "unknown").
+  daemon slurmctld slurmctld -D -i -f "$SLURM_CONF"
+  wait_for "slurmctld answered a ping" scontrol ping
+  daemon slurmd slurmd -D -f "$SLURM_CONF"
+  wait_for "the node was idle" sh -c "sinfo -h -o %t | grep -qx idle"
   echo "slurm_cluster: up in $dir (slurmctld :$ctld_port, slurmd :$slurmd_port); source $dir/env"
 }
 

@@ -58,13 +58,49 @@ exp=e04_init_vs_layer
 "$sextant" run "experiments/$exp.yaml" --quick --jobs 2 --no-progress --results single \
   --cache results/_cache >/dev/null || fail "single-process run"
 
-wait_gone() {  # wait until squeue no longer lists the jobs (120 s at most)
-  for _ in $(seq 600); do
-    [ -z "$(squeue -h -o %i -j "$1" 2>/dev/null)" ] && return 0
-    sleep 0.2
+# Waiting is for events, never for a fixed time: on a loaded machine every step may be slow, and
+# slow is no failure (ctest's TIMEOUT is the bound). What fails at once is a state no job leaves by
+# itself: a daemon died; a task ended FAILED (or killed: node failure, out of memory, time limit),
+# after which its merge job's afterok can never be met; a job held after a failed launch or waiting
+# for a dependency that can never be met; the node drained or failed by slurmctld (after a failed
+# launch or an unkillable task). Not among them: a node DOWN because slurmd answered a ping late
+# (ReturnToService=2 brings it back once it answers) and "ReqNodeNotAvail" while the node returns.
+node=$(hostname -s)  # the cluster's one node (scripts/slurm_cluster.sh names it so)
+never_states='BOOT_FAIL|DEADLINE|FAILED|NODE_FAIL|OUT_OF_MEMORY|PREEMPTED|REQUEUE_HOLD|SPECIAL_EXIT|TIMEOUT'
+never_reasons='DependencyNeverSatisfied|JobHeld|JobLaunchFailure|launch failed|BadConstraints|Partition(Down|Inactive)'
+fail_queue() {  # fail, with Slurm's view: the queue (ended jobs too) and the node
+  { squeue -t all; sinfo -N -l; } >&2 2>/dev/null || true
+  fail "$@"
+}
+cluster_alive() {  # fail when a daemon has died: no job ends then
+  local d
+  for d in munged slurmctld slurmd; do
+    [ -s "$cluster/run/$d.pid" ] && kill -0 "$(cat "$cluster/run/$d.pid")" 2>/dev/null && continue
+    tail -n 20 "$cluster"/log/*.out >&2 || true
+    fail "$d (of the test cluster) is no longer running"
   done
-  squeue >&2
-  fail "jobs $1 still queued after 120 s"
+}
+jobs_known() {  # known = "<array job id> <job id> <state> <reason>" of each job, ended ones too
+  # Asked again until slurmctld answers: a timed-out squeue prints nothing, which is not "no jobs".
+  until known=$(squeue -h -t all -o '%F %i %T %r' 2>/dev/null); do
+    cluster_alive
+    sleep 0.5
+  done
+}
+wait_gone() {  # wait_gone IDS: until none of the jobs IDS (comma-separated) is queued, running or ending
+  local ids=" ${1//,/ } " jobs stuck state
+  while :; do
+    cluster_alive
+    jobs_known
+    jobs=$(awk -v ids="$ids" 'index(ids, " " $1 " ")' <<<"$known")
+    stuck=$(grep -E "^\S+ \S+ (($never_states) |PENDING .*($never_reasons))" <<<"$jobs") &&
+      fail_queue "jobs $1 can never finish: $stuck"
+    if state=$(sinfo -h -n "$node" -o %T 2>/dev/null) && [[ $state =~ drain|fail ]]; then
+      fail_queue "the node is $state (slurmctld's reason: $(sinfo -h -n "$node" -o %E)); jobs $1 cannot finish"
+    fi
+    grep -Evq '^(\S+ \S+ (COMPLETED|CANCELLED) .*)?$' <<<"$jobs" || return 0
+    sleep 0.5
+  done
 }
 job_id() {  # job_id array|merge <output>
   sed -n "s/^submitted: $1 job \([0-9]*\).*/\1/p" <<<"$2"
@@ -90,7 +126,10 @@ shard_sums() { for k in "$@"; do md5sum "results/_shards/$k-of-4/$exp/runs.jsonl
 
 echo "slurm_cluster_test: single-process reference done after $((SECONDS - start_time)) s"
 
-# 1. Submit; cancel task 3 at once (2 CPUs: tasks 3 and 4 wait for 1 and 2, so 3 has not started).
+# 1. Submit while the node is drained, so that no task can start; cancel task 3; resume the node.
+#    Task 3 is cancelled before it started however fast or slow the machine (not merely because the
+#    node's 2 CPUs keep tasks 3 and 4 waiting for 1 and 2, which a fast task 1 would undo).
+scontrol update NodeName="$node" State=DRAIN Reason=slurm_cluster_test || fail "could not drain the node"
 out=$(eval "$submit_line") || fail "submit: $out"
 echo "$out"
 array=$(job_id array "$out")
@@ -99,10 +138,13 @@ grep -qxF "resume:  $(realpath "$sextant") ${resume_line#build/app/sextant }" <<
   fail "the printed resume command is not the README's resume line"
 merge=$(job_id merge "$out")
 [[ -n $array && -n $merge ]] || fail "no job ids in the output"
-scancel "${array}_3"
+scancel "${array}_3" || fail "could not cancel task 3"
+scontrol update NodeName="$node" State=RESUME || fail "could not resume the node"
 wait_gone "$array"
 echo "slurm_cluster_test: array done (task 3 cancelled) after $((SECONDS - start_time)) s"
-[ -n "$(squeue -h -o %i -j "$merge")" ] || fail "the merge job ran although task 3 was cancelled"
+jobs_known
+merge_state=$(awk -v id="$merge" '$2 == id {print $3}' <<<"$known")
+[ "$merge_state" = PENDING ] || fail "the merge job is ${merge_state:-gone}, not pending, although task 3 was cancelled"
 [ ! -s "results/_shards/3-of-4/$exp/runs.jsonl" ] || fail "task 3 ran although it was cancelled"
 before=$(shard_sums 1 2 4)
 out=$(eval "$resume_line") || fail "resume: $out"
@@ -130,11 +172,12 @@ grep -q "^submitted: array job $array3 (tasks 2)" <<<"$out" || fail "not exactly
 wait_gone "$array3,$merge3"
 [ "$(shard_sums 1 3 4)" = "$before" ] || fail "a finished shard was redone"
 check_equal_to_single
-echo "slurm_cluster_test: deleted shard re-run alone, merged = single-process run"
+echo "slurm_cluster_test: deleted shard re-run alone, merged = single-process run ($((SECONDS - start_time)) s)"
 # `slurm reproduce --quick`: every experiment as one array plus the merge job; the merged results
 # equal a single-process `reproduce --quick` run for run (timings masked), and the report is written.
 "$sextant" reproduce --quick --jobs 2 --no-progress --experiments experiments --results single_all \
   --report single_report >/dev/null || fail "single-process reproduce --quick"
+echo "slurm_cluster_test: single-process reproduce --quick done after $((SECONDS - start_time)) s"
 out=$("$sextant" slurm reproduce --quick -n 3 --experiments experiments --results all --report all_report --submit) ||
   fail "slurm reproduce: $out"
 echo "$out"
@@ -142,6 +185,7 @@ array4=$(job_id array "$out")
 merge4=$(job_id merge "$out")
 [[ -n $array4 && -n $merge4 ]] || fail "slurm reproduce: no job ids in the output"
 wait_gone "$array4,$merge4"
+echo "slurm_cluster_test: slurm reproduce jobs done after $((SECONDS - start_time)) s"
 experiments=0
 for single in single_all/*/; do
   name=$(basename "$single")
