@@ -21,8 +21,8 @@
 #include <tbb/global_control.h>
 
 #include "commands.hpp"
-#include "number_options.hpp"
 #include "matcher_options.hpp"
+#include "number_options.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/cloud_io.hpp"
 #include "sextant/core/settings_reader.hpp"
@@ -91,9 +91,9 @@ Json json_matrix(const Matrix& M) {
   return rows;
 }
 
-void print_json(const MatchOptions& o, const PairRegistration& registered, const ScanLoadReport& reference_load,
-                const ScanLoadReport& input_load, const std::string& search,
-                const std::optional<PoseError>& error) {
+void print_json(const MatchOptions& o, const PairRegistration& registered,
+                const ScanLoadReport& reference_load, const ScanLoadReport& input_load,
+                const std::string& search, const std::optional<PoseError>& error) {
   const PairMatch& m = registered.match;
   const RegistrationResult& r = m.result;
   const auto text_or_null = [](const std::string& text) { return text.empty() ? Json() : Json(text); };

@@ -14,12 +14,12 @@
 #include <oneapi/tbb/global_control.h>
 
 #include "commands.hpp"
-#include "number_options.hpp"
 #include "matcher_options.hpp"
+#include "number_options.hpp"
 #include "odometry_report.hpp"
 #include "sextant/core/atomic_file.hpp"
-#include "sextant/core/output_folder.hpp"
 #include "sextant/core/error.hpp"
+#include "sextant/core/output_folder.hpp"
 #include "sextant/core/progress.hpp"
 #include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/odometry/odometry.hpp"
@@ -285,7 +285,9 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
                   "3°), or auto (the median of the last trusted steps' lengths, between the two)")
       ->capture_default_str();
   cmd->add_option("--first", o->first, "First scan index")->capture_default_str()->check(whole_number());
-  cmd->add_option("--scans", o->scans, "Number of scans (0: to the end)")->capture_default_str()->check(whole_number());
+  cmd->add_option("--scans", o->scans, "Number of scans (0: to the end)")
+      ->capture_default_str()
+      ->check(whole_number());
   cmd->add_option("--seed", o->seed, "Seed of the samplers' random choices")
       ->capture_default_str()
       ->check(whole_number());

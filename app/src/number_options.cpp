@@ -48,7 +48,8 @@ CLI::Validator finite_number(double min, bool strictly) {
           return "expected a number " + bound + ", got '" + text + "'";
         if (!std::isfinite(value) || errno == ERANGE)
           return "expected a finite number " + bound + ", got '" + text + "'";
-        if (strictly ? !(value > min) : !(value >= min)) return "expected a number " + bound + ", got '" + text + "'";
+        if (strictly ? !(value > min) : !(value >= min))
+          return "expected a number " + bound + ", got '" + text + "'";
         return "";
       },
       "NUMBER " + bound);

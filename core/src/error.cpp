@@ -23,7 +23,8 @@ FileError::FileError(std::string file, std::string problem, int error_number)
     : InputError(std::move(file), "", std::move(problem)), error_number_(error_number) {}
 
 FileError FileError::from_errno(std::string file, const std::string& what, int error_number) {
-  return FileError(std::move(file), error_number ? what + ": " + std::strerror(error_number) : what, error_number);
+  return FileError(std::move(file), error_number ? what + ": " + std::strerror(error_number) : what,
+                   error_number);
 }
 
 std::string at_line(long line) {

@@ -46,7 +46,8 @@ int lock_file(const fs::path& file, const fs::path& target) {
                              "); wait for it to finish, or choose another output folder");
       throw InputError(file.string(), "", "cannot lock: " + std::string(std::strerror(error)));
     }
-    struct stat locked{}, named{};
+    struct stat locked {
+    }, named{};
     if (::fstat(fd, &locked) == 0 && ::stat(file.c_str(), &named) == 0 && locked.st_ino == named.st_ino &&
         locked.st_dev == named.st_dev)
       return fd;
@@ -63,9 +64,10 @@ void check_replaceable(const fs::path& folder, const fs::path& target) {
     throw InputError(target.string(), "", "is a file, not a folder: choose a folder for the output");
   if (fs::exists(folder / kMarkerFile)) return;
   for (const auto& entry : fs::directory_iterator(folder, ec)) {
-    throw InputError(target.string(), "",
-                     "holds files sextant did not write (e.g. '" + entry.path().filename().string() +
-                         "'); sextant replaces its output folder as a whole, so choose a new or empty folder");
+    throw InputError(
+        target.string(), "",
+        "holds files sextant did not write (e.g. '" + entry.path().filename().string() +
+            "'); sextant replaces its output folder as a whole, so choose a new or empty folder");
   }
   if (ec) throw InputError(target.string(), "", "cannot list the folder: " + ec.message());
 }
@@ -100,14 +102,17 @@ OutputFolder::OutputFolder(const fs::path& target, const std::string& command)
   const std::string name = resolved_.filename().string();
   std::error_code ec;
   fs::create_directories(parent, ec);
-  if (ec) throw FileError(target.string(), "cannot create the folder it goes in: " + ec.message(), ec.value());
+  if (ec)
+    throw FileError(target.string(), "cannot create the folder it goes in: " + ec.message(), ec.value());
   lock_fd_ = lock_file(lock_path(resolved_), target);
   try {
     check_replaceable(resolved_, target);
     remove_leftovers(parent, name);
     staging_ = parent / ("." + name + ".partial-" + std::to_string(::getpid()));
     fs::create_directory(staging_, ec);
-    if (ec) throw FileError(target.string(), "cannot create " + staging_.string() + ": " + ec.message(), ec.value());
+    if (ec)
+      throw FileError(target.string(), "cannot create " + staging_.string() + ": " + ec.message(),
+                      ec.value());
     std::ofstream marker(staging_ / kMarkerFile);
     marker << "written by " << command << "; the folder is replaced as a whole by the next run into it\n";
     if (!marker) throw FileError::from_errno((staging_ / kMarkerFile).string(), "cannot write", errno);
@@ -117,7 +122,9 @@ OutputFolder::OutputFolder(const fs::path& target, const std::string& command)
   }
 }
 
-OutputFolder::~OutputFolder() { release(); }
+OutputFolder::~OutputFolder() {
+  release();
+}
 
 void OutputFolder::release() {
   std::error_code ec;
@@ -134,16 +141,21 @@ void OutputFolder::commit() {
   std::error_code ec;
   if (!fs::exists(resolved_)) {
     fs::rename(staging_, resolved_, ec);
-    if (ec) throw FileError(target_.string(), "cannot move the run's files into place: " + ec.message(), ec.value());
+    if (ec)
+      throw FileError(target_.string(), "cannot move the run's files into place: " + ec.message(),
+                      ec.value());
   } else if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, resolved_.c_str(), RENAME_EXCHANGE) == 0) {
     fs::remove_all(staging_, ec);  // now the earlier run's files
   } else if (errno == EINVAL || errno == ENOSYS || errno == ENOTSUP) {
     // No atomic exchange here: a kill between the two renames leaves no folder, and the previous
     // one beside it (removed by the next run).
-    const fs::path previous = parent / ("." + resolved_.filename().string() + ".previous-" + std::to_string(::getpid()));
+    const fs::path previous =
+        parent / ("." + resolved_.filename().string() + ".previous-" + std::to_string(::getpid()));
     fs::rename(resolved_, previous, ec);
     if (!ec) fs::rename(staging_, resolved_, ec);
-    if (ec) throw FileError(target_.string(), "cannot move the run's files into place: " + ec.message(), ec.value());
+    if (ec)
+      throw FileError(target_.string(), "cannot move the run's files into place: " + ec.message(),
+                      ec.value());
     fs::remove_all(previous, ec);
   } else {
     throw FileError::from_errno(target_.string(), "cannot move the run's files into place", errno);

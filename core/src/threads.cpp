@@ -10,7 +10,8 @@ std::size_t max_worker_threads() {
 }
 
 std::string worker_threads_problem(long long jobs, const std::string& argument) {
-  if (jobs < 0) return argument + ": " + std::to_string(jobs) + " threads: give 0 (every core) or a positive count";
+  if (jobs < 0)
+    return argument + ": " + std::to_string(jobs) + " threads: give 0 (every core) or a positive count";
   if (static_cast<unsigned long long>(jobs) > max_worker_threads())
     return argument + ": " + std::to_string(jobs) + " threads on " +
            std::to_string(max_worker_threads() / kThreadsPerCore) + " cores: at most " +

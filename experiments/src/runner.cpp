@@ -14,11 +14,11 @@
 
 #include "results_lock.hpp"
 #include "sextant/core/atomic_file.hpp"
-#include "sextant/core/threads.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/log.hpp"
 #include "sextant/core/progress.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/core/threads.hpp"
 #include "sextant/experiments/run_kind.hpp"
 #include "sextant/experiments/run_row.hpp"
 #include "sextant/pipeline/json.hpp"
@@ -116,7 +116,8 @@ bool RunnerOptions::valid(std::string* why) const {
     if (why) *why = text;
     return false;
   };
-  if (const std::string problem = worker_threads_problem(jobs, "--jobs"); !problem.empty()) return fail(problem);
+  if (const std::string problem = worker_threads_problem(jobs, "--jobs"); !problem.empty())
+    return fail(problem);
   if (shard.count < 1 || shard.index >= shard.count) return fail("--shard must be i/n with 1 ≤ i ≤ n");
   if (results_root.empty()) return fail("the results folder is empty");
   return true;

@@ -299,7 +299,8 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
 
 }  // namespace
 
-PointCloud load_sequence_scan(const Dataset& dataset, std::size_t i, double min_range, ScanLoadReport* report) {
+PointCloud load_sequence_scan(const Dataset& dataset, std::size_t i, double min_range,
+                              ScanLoadReport* report) {
   PointCloud scan = dataset.scan(i, report);
   if (!(min_range > 0.0)) return scan;
   const float squared = static_cast<float>(min_range * min_range);
@@ -363,8 +364,8 @@ OdometryResult run_odometry(const Dataset& dataset, const OdometrySettings& sett
                        ? parallel_steps(dataset, settings, first, count, odometry, seeds, counter, result)
                        : sequential_steps(dataset, settings, first, count, odometry, seeds, counter, result);
   } else {
-    result.sensor =
-        resolve_sensor(settings.sensor, load_sequence_scan(dataset, first, settings.min_range, &result.loads[0]));
+    result.sensor = resolve_sensor(settings.sensor,
+                                   load_sequence_scan(dataset, first, settings.min_range, &result.loads[0]));
     result.tolerance = platform_tolerance(settings.quality, settings.platform, std::nullopt);
   }
   result.poses.push_back(start_pose(dataset, settings, first));

@@ -32,8 +32,8 @@ std::unique_ptr<Dataset> open_dataset_argument(const std::string& name,
                     "folder, or 'campus')",
                     ENOENT);
   if (!fs::is_directory(folder))
-    throw FileError(name, "is a file, expected a dataset folder (a folder of scans, uos or KITTI) or 'campus'",
-                    ENOTDIR);
+    throw FileError(
+        name, "is a file, expected a dataset folder (a folder of scans, uos or KITTI) or 'campus'", ENOTDIR);
   std::unique_ptr<Dataset> dataset = open_dataset(folder);
   if (!poses) return dataset;
   if (dataset->metadata().format != "folder")

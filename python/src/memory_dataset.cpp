@@ -17,8 +17,8 @@ void check_count(const std::vector<T>& values, std::size_t scans, const std::str
 }  // namespace
 
 MemoryDataset::MemoryDataset(std::vector<PointCloud> scans, std::vector<ScanLoadReport> loads,
-                             std::vector<Eigen::Isometry3d> ground_truth, std::vector<Eigen::Isometry3d> odometry,
-                             std::vector<double> times)
+                             std::vector<Eigen::Isometry3d> ground_truth,
+                             std::vector<Eigen::Isometry3d> odometry, std::vector<double> times)
     : scans_(std::move(scans)),
       loads_(std::move(loads)),
       ground_truth_(std::move(ground_truth)),

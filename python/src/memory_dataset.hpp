@@ -14,8 +14,8 @@ class MemoryDataset final : public Dataset {
   /// ValueError (std::invalid_argument) when a non-empty pose or time list does not have one entry
   /// per scan. `loads`: what reading each scan dropped, for those read from a file (or empty).
   MemoryDataset(std::vector<PointCloud> scans, std::vector<ScanLoadReport> loads,
-                std::vector<Eigen::Isometry3d> ground_truth,
-                std::vector<Eigen::Isometry3d> odometry, std::vector<double> times);
+                std::vector<Eigen::Isometry3d> ground_truth, std::vector<Eigen::Isometry3d> odometry,
+                std::vector<double> times);
 
   const DatasetMetadata& metadata() const override { return meta_; }
   PointCloud scan(std::size_t i, ScanLoadReport* report) const override;

@@ -25,8 +25,8 @@ void bind_errors(py::module_& m) {
       // OSError(errno, strerror, filename) is the subclass the number names: FileNotFoundError,
       // PermissionError, IsADirectoryError, …; str() is "[Errno 13] <the CLI's problem>: '<file>'".
       const py::object os_error = py::module_::import("builtins").attr("OSError");
-      const py::object error = e.error_number() != 0 ? os_error(e.error_number(), e.problem(), e.file())
-                                                     : os_error(e.what());
+      const py::object error =
+          e.error_number() != 0 ? os_error(e.error_number(), e.problem(), e.file()) : os_error(e.what());
       PyErr_SetObject(error.get_type().ptr(), error.ptr());
     } catch (const std::filesystem::filesystem_error& e) {
       const py::object error = py::module_::import("builtins")

@@ -15,10 +15,10 @@
 #include "odometry_dataset.hpp"
 #include "python_yaml.hpp"
 #include "sextant/core/error.hpp"
+#include "sextant/core/threads.hpp"
 #include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/pipeline/matcher_request.hpp"
-#include "sextant/core/threads.hpp"
 #include "sextant/pipeline/odometry_output.hpp"
 #include "sextant/pipeline/odometry_request.hpp"
 #include "steps_table.hpp"
@@ -205,8 +205,9 @@ void bind_odometry(py::module_& m) {
       .def_readonly("points_read", &OdometryRun::points_read, "points read from the scans' files")
       .def_readonly("dropped_non_finite", &OdometryRun::dropped_non_finite,
                     "points dropped for a NaN/Inf coordinate (per scan: steps['dropped_non_finite'])")
-      .def_readonly("dropped_no_return", &OdometryRun::dropped_no_return,
-                    "points dropped as the scanner's 'no return' (uos .3d; per scan: steps['dropped_no_return'])")
+      .def_readonly(
+          "dropped_no_return", &OdometryRun::dropped_no_return,
+          "points dropped as the scanner's 'no return' (uos .3d; per scan: steps['dropped_no_return'])")
       .def_readonly("seconds", &OdometryRun::seconds, "wall time of the registrations [s]")
       .def("__repr__", [](const OdometryRun& r) {
         return "OdometryRun(scans=" + std::to_string(r.scans) + ", first=" + std::to_string(r.first) +

@@ -67,9 +67,9 @@ bool WorldSettings::valid(std::string* why) const {
 
 bool TrajectorySettings::valid(std::string* why) const {
   Checker c(why);
-  c.require(scans >= 1 && scans <= kMaxRouteScans,
-            "scans must be in [1, " + std::to_string(kMaxRouteScans) + "] (" + std::to_string(kMaxRouteScans) +
-                " puts a scan every ~1.3 cm along the route)");
+  c.require(scans >= 1 && scans <= kMaxRouteScans, "scans must be in [1, " + std::to_string(kMaxRouteScans) +
+                                                       "] (" + std::to_string(kMaxRouteScans) +
+                                                       " puts a scan every ~1.3 cm along the route)");
   c.require(first_scans >= 0 && first_scans <= scans,
             "first_scans must be in [0, scans] (0 keeps the whole route; use scans to stretch it)");
   c.require(sensor_height > 0.2, "sensor_height must exceed 0.2 m");

@@ -101,9 +101,9 @@ TEST(CloudIo, WritingCountsThePointsReadingBackDrops) {
   TempDir dir;
   PointCloud cloud;
   cloud.push_back(Eigen::Vector3f(1, 2, 3));
-  cloud.push_back(Eigen::Vector3f(32.8f, 0, 0));    // beyond the range .3d keeps
-  cloud.push_back(Eigen::Vector3f(20, 20, 20));     // 34.6 m: also beyond
-  cloud.push_back(Eigen::Vector3f(32.7f, 0, 0));    // within
+  cloud.push_back(Eigen::Vector3f(32.8f, 0, 0));  // beyond the range .3d keeps
+  cloud.push_back(Eigen::Vector3f(20, 20, 20));   // 34.6 m: also beyond
+  cloud.push_back(Eigen::Vector3f(32.7f, 0, 0));  // within
   cloud.push_back(Eigen::Vector3f(NAN, 0, 0));
   for (const char* name : {"far.3d", "far.pcd", "far.bin"}) {
     const CloudWriteReport written = write_cloud(dir / name, cloud);

@@ -157,11 +157,13 @@ TEST(ScanFolder, EveryCloudFileIsAccountedFor) {
   write_cloud(dir / "seq" / "first.pcd", cloud_of(4));
   const auto ds = open_dataset(dir / "seq");
   EXPECT_EQ(ds->size(), 2u);
-  EXPECT_TRUE(has_note(ds->metadata(), "1 point-cloud file is not a scan of the sequence: first.pcd (no number "
-                                       "in its name, which orders the scans)"));
+  EXPECT_TRUE(has_note(ds->metadata(),
+                       "1 point-cloud file is not a scan of the sequence: first.pcd (no number "
+                       "in its name, which orders the scans)"));
 
   std::filesystem::create_symlink(dir / "gone.pcd", dir / "seq" / "cloud_002.pcd");
-  expect_input_error([&] { open_dataset(dir / "seq"); }, dir / "seq" / "cloud_002.pcd", "", "a link to nothing");
+  expect_input_error([&] { open_dataset(dir / "seq"); }, dir / "seq" / "cloud_002.pcd", "",
+                     "a link to nothing");
   std::filesystem::remove(dir / "seq" / "cloud_002.pcd");
 
   write_cloud(dir / "seq" / "scans" / "000000.pcd", cloud_of(5));
@@ -174,8 +176,9 @@ TEST(ScanFolder, EveryCloudFileIsAccountedFor) {
   write_cloud(dir / "mulran" / "scans" / "000001.pcd", cloud_of(3));
   const auto inner = open_dataset(dir / "mulran");
   EXPECT_EQ(inner->size(), 2u);
-  EXPECT_TRUE(has_note(inner->metadata(), "in the folder itself: 1 point-cloud file is not a scan of the "
-                                          "sequence: map.pcd"));
+  EXPECT_TRUE(has_note(inner->metadata(),
+                       "in the folder itself: 1 point-cloud file is not a scan of the "
+                       "sequence: map.pcd"));
   // Nothing but numberless clouds: no scans, and the error says why each file is not one.
   write_cloud(dir / "named" / "left.pcd", cloud_of(2));
   write_cloud(dir / "named" / "right.pcd", cloud_of(2));

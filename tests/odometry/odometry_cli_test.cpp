@@ -176,7 +176,8 @@ TEST(OdometryCli, DroppedPointsAreCountedPerStepAndInTheSummary) {
   const std::size_t read = scan.size() + 500;
   for (int i = 0; i < 500; ++i) scan.push_back(Eigen::Vector3f(NAN, NAN, NAN));
   write_kitti_velodyne(tmp / "seq" / "velodyne" / "000001.bin", scan);
-  const CliRun r = run_cli("odometry " + (tmp / "seq").string() + " --no-progress --out " + (tmp / "out").string());
+  const CliRun r =
+      run_cli("odometry " + (tmp / "seq").string() + " --no-progress --out " + (tmp / "out").string());
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("dropped:  500 of "), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("(500 non-finite, 0 no-return), in 1 of 3 scans"), std::string::npos) << r.output;

@@ -55,7 +55,8 @@ ScanListing list_scans(const std::filesystem::path& folder, const std::string& p
     const bool file = entry.is_regular_file(status_error);
     if (!file && entry.is_symlink(status_error))
       throw InputError(entry.path().string(), "",
-                       "a link to nothing (" + std::filesystem::read_symlink(entry.path(), status_error).string() +
+                       "a link to nothing (" +
+                           std::filesystem::read_symlink(entry.path(), status_error).string() +
                            "): the scan cannot be read; restore its target or remove the link");
     if (!file) {
       listing.left_out.push_back(name + " (not a file)");
@@ -107,7 +108,8 @@ ScanListing list_scans(const std::filesystem::path& folder, const std::string& p
 std::string left_out_note(const std::vector<std::string>& left_out) {
   std::string names;
   for (std::size_t i = 0; i < left_out.size() && i < 4; ++i) names += (i ? ", " : "") + left_out[i];
-  return std::to_string(left_out.size()) + (left_out.size() == 1 ? " point-cloud file is" : " point-cloud files are") +
+  return std::to_string(left_out.size()) +
+         (left_out.size() == 1 ? " point-cloud file is" : " point-cloud files are") +
          " not a scan of the sequence: " + names + (left_out.size() > 4 ? ", …" : "");
 }
 

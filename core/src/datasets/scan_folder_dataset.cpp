@@ -27,20 +27,22 @@ detail::ScanListing scan_listing(const fs::path& folder, fs::path& scans_folder)
     detail::ScanListing inner = detail::list_scans(folder / "scans", "", scan_folder_extensions());
     if (!listing.files.empty() && !inner.files.empty())
       throw InputError(folder.string(), "",
-                       "both the folder (" + std::to_string(listing.files.size()) + " scans) and scans/ inside it (" +
-                           std::to_string(inner.files.size()) +
+                       "both the folder (" + std::to_string(listing.files.size()) +
+                           " scans) and scans/ inside it (" + std::to_string(inner.files.size()) +
                            ") hold scans: which are the sequence? Give the folder that holds them alone");
     if (listing.files.empty()) {
-      if (!listing.left_out.empty()) inner.notes.push_back("in the folder itself: " + detail::left_out_note(listing.left_out));
+      if (!listing.left_out.empty())
+        inner.notes.push_back("in the folder itself: " + detail::left_out_note(listing.left_out));
       scans_folder = folder / "scans";
       listing = std::move(inner);
     }
   }
   if (listing.files.empty())
-    throw InputError(folder.string(), "",
-                     "no scans: expected point-cloud files (.pcd .ply .bin .xyz32.bin .xyz .csv .3d) with a "
-                     "number in the name, in the folder or in scans/ inside it" +
-                         (listing.left_out.empty() ? std::string() : "; " + detail::left_out_note(listing.left_out)));
+    throw InputError(
+        folder.string(), "",
+        "no scans: expected point-cloud files (.pcd .ply .bin .xyz32.bin .xyz .csv .3d) with a "
+        "number in the name, in the folder or in scans/ inside it" +
+            (listing.left_out.empty() ? std::string() : "; " + detail::left_out_note(listing.left_out)));
   return listing;
 }
 

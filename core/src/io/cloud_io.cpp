@@ -159,8 +159,9 @@ std::string dropped_on_reading_note(const std::filesystem::path& file, const Clo
            " lie at or beyond 32.75 m: a .3d reader takes them for the SICK's \"no return\" and drops them "
            "(write .pcd, .ply or .bin to keep them)";
   if (report.non_finite > 0)
-    note += (note.empty() ? std::to_string(report.non_finite) + of : "; " + std::to_string(report.non_finite)) +
-            (report.non_finite == 1 ? " has" : " have") + " a non-finite coordinate, which every reader drops";
+    note +=
+        (note.empty() ? std::to_string(report.non_finite) + of : "; " + std::to_string(report.non_finite)) +
+        (report.non_finite == 1 ? " has" : " have") + " a non-finite coordinate, which every reader drops";
   return note;
 }
 

@@ -157,8 +157,8 @@ struct OdometryResult {
   std::vector<ScanLoadReport> loads;
   /// Over every scan: the points read, and those dropped
   ScanLoadReport dropped_total() const;
-  std::size_t untrusted() const;    ///< steps whose chained motion is not trusted
-  std::size_t recovered() const;    ///< steps recovered (wide basin, or restart)
+  std::size_t untrusted() const;  ///< steps whose chained motion is not trusted
+  std::size_t recovered() const;  ///< steps recovered (wide basin, or restart)
 };
 
 /// Called after each finished registration with (done, total); never concurrently.

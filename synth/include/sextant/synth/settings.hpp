@@ -37,7 +37,8 @@ struct WorldSettings {
 inline constexpr int kMaxRouteScans = 100000;
 
 struct TrajectorySettings {
-  int scans = 468;      ///< stop-and-go scan poses the whole route is divided into (sets the spacing), ≤ kMaxRouteScans [-]
+  int scans = 468;      ///< stop-and-go scan poses the whole route is divided into (sets the spacing), ≤
+                        ///< kMaxRouteScans [-]
   int first_scans = 0;  ///< keep only the first N of those poses (0 = all; ≤ scans) [-]
   double sensor_height = 1.1;    ///< scanner above the ground contact [m]
   double corner_radius = 9.0;    ///< radius of the rounded corners [m]
