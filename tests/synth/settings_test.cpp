@@ -55,7 +55,10 @@ TEST(CampusSettings, NegativeRangeZeroScansAndWrongTypesAreRejected) {
   EXPECT_NE(range.find("max_range"), std::string::npos) << range;
   EXPECT_NE(range.find("line 2"), std::string::npos) << range;
   const std::string scans = error_of("trajectory:\n  scans: 0\n");
-  EXPECT_NE(scans.find("scans must be at least 1"), std::string::npos) << scans;
+  EXPECT_NE(scans.find("scans must be in [1, 100000]"), std::string::npos) << scans;
+  // Issue 64, class 7: a route of two billion scans would only exhaust the memory.
+  const std::string too_many = error_of("trajectory:\n  scans: 2000000000\n");
+  EXPECT_NE(too_many.find("scans must be in [1, 100000]"), std::string::npos) << too_many;
   EXPECT_NE(error_of("trajectory:\n  scans: many\n").find("scans"), std::string::npos);
   const std::string first = error_of("trajectory:\n  scans: 20\n  first_scans: 21\n");
   EXPECT_NE(first.find("first_scans must be in [0, scans]"), std::string::npos) << first;
