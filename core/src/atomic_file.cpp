@@ -44,7 +44,8 @@ void write_file_atomically_via_path(
   const auto tmp = temporary_beside(path);
   // The temporary file is created here, so that a folder we may not write is the system's error
   // naming the file, whatever the writer (PCL's says "Error during open!").
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  const int fd =
+      ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);  // as ofstream: the umask decides
   if (fd < 0) throw FileError::from_errno(path.string(), "cannot open for writing", errno);
   ::close(fd);
   try {
