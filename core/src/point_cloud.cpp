@@ -51,6 +51,10 @@ void PointCloud::reserve(std::size_t n) {
   if (has_intensity()) intensity_.reserve(n);
 }
 
+void PointCloud::throw_mixed_intensity() {
+  throw std::logic_error("PointCloud::push_back: a point without intensity in a cloud with intensity");
+}
+
 void PointCloud::push_back(const Eigen::Vector3f& p, float intensity) {
   if (intensity_.size() != size()) {
     throw std::logic_error("PointCloud::push_back: mixing points with and without intensity");

@@ -226,7 +226,7 @@ TEST(RobustLayerGeometry, StrayPointDuplicatesAndOutliersLeaveTheResult) {
   ASSERT_LT(test::translation_error(truth, clean), 0.05);
 
   PointCloud stray = ref;
-  stray.push_back({10000.f, 0.f, 0.f});
+  stray.push_back({10000.f, 0.f, 0.f}, 0.f);  // the file has intensity: every point has one
   PointCloud repeated;
   Rng jitter(3);
   for (const Eigen::Vector3f& p : ref.points())
@@ -236,7 +236,8 @@ TEST(RobustLayerGeometry, StrayPointDuplicatesAndOutliersLeaveTheResult) {
   for (std::size_t i = 0; i < ref.size() / 1000; ++i)
     outliers.push_back({static_cast<float>(gross.uniform(-2000.0, 2000.0)),
                         static_cast<float>(gross.uniform(-2000.0, 2000.0)),
-                        static_cast<float>(gross.uniform(-200.0, 200.0))});
+                        static_cast<float>(gross.uniform(-200.0, 200.0))},
+                       0.f);
   for (const auto& [name, cloud] : {std::pair<const char*, const PointCloud*>{"one point at 10 km", &stray},
                                     {"every point 10x with 2 cm jitter", &repeated},
                                     {"0.1 % gross outliers", &outliers}}) {

@@ -174,7 +174,7 @@ TEST(OdometryCli, DroppedPointsAreCountedPerStepAndInTheSummary) {
   write_kitti_sequence(tmp / "seq", 3);
   PointCloud scan = read_cloud(tmp / "seq" / "velodyne" / "000001.bin");
   const std::size_t read = scan.size() + 500;
-  for (int i = 0; i < 500; ++i) scan.push_back(Eigen::Vector3f(NAN, NAN, NAN));
+  for (int i = 0; i < 500; ++i) scan.push_back(Eigen::Vector3f(NAN, NAN, NAN), 0.f);
   write_kitti_velodyne(tmp / "seq" / "velodyne" / "000001.bin", scan);
   const CliRun r =
       run_cli("odometry " + (tmp / "seq").string() + " --no-progress --out " + (tmp / "out").string());

@@ -81,7 +81,12 @@ class PointCloud {
   const std::vector<float>& intensity() const { return intensity_; }
   std::vector<float>& intensity() { return intensity_; }
 
-  void push_back(const Eigen::Vector3f& p) { mutable_points().push_back(p); }
+  /// std::logic_error when the cloud has intensity (or, with an intensity, has none while it has
+  /// points): every point has one, or none has.
+  void push_back(const Eigen::Vector3f& p) {
+    if (!intensity_.empty()) throw_mixed_intensity();
+    mutable_points().push_back(p);
+  }
   void push_back(const Eigen::Vector3f& p, float intensity);
 
   /// Axis-aligned bounds; all zero for an empty cloud.
@@ -92,6 +97,7 @@ class PointCloud {
   PointCloud subset(const std::vector<std::size_t>& indices) const;
 
  private:
+  [[noreturn]] static void throw_mixed_intensity();
   void own();  ///< copies the borrowed points into points_ and stops borrowing
 
   std::vector<Eigen::Vector3f> points_;
