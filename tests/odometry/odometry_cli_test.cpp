@@ -1,6 +1,7 @@
 // `sextant odometry` end to end: the campus (15 scans, known ground truth), the shared uos scans
 // of data/, and a small synthetic KITTI sequence folder written by the test in the benchmark's
-// layout (velodyne/*.bin from campus scans, poses.txt, calib.txt, times.txt); bad arguments.
+// layout (velodyne/*.bin from campus scans, poses.txt, calib.txt, times.txt). Bad input:
+// odometry_cli_input_test.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "odometry_cli_run.hpp"
 #include "sextant/core/io/cloud_io.hpp"
 #include "sextant/core/io/kitti.hpp"
 #include "sextant/core/io/trajectory_io.hpp"
@@ -31,36 +33,9 @@ using test::read_text;
 using test::TempDir;
 
 using test::CliRun;
-CliRun run_cli(const std::string& arguments) {
-  return test::run_cli(SEXTANT_CLI, arguments);
-}
-
-/// Checks the written files: TUM and KITTI trajectories with `poses` poses that agree with each
-/// other (KITTI in the same frame unless `kitti_frame` is given), steps.csv with one line per
-/// registration, metrics.json and provenance.json. Returns the TUM trajectory.
-Trajectory expect_outputs(const fs::path& out, std::size_t poses) {
-  for (const char* name :
-       {"trajectory.tum", "trajectory.kitti.txt", "steps.csv", "metrics.json", "provenance.json"})
-    EXPECT_TRUE(fs::exists(out / name)) << name;
-  const Trajectory tum = read_tum_trajectory(out / "trajectory.tum");
-  EXPECT_EQ(tum.size(), poses);
-  std::ifstream steps(out / "steps.csv");
-  std::size_t lines = 0;
-  for (std::string line; std::getline(steps, line);) ++lines;
-  EXPECT_EQ(lines, poses);  // header + poses − 1 registrations
-  // Without a recovery the first registration is the one chained: its own pose columns agree.
-  for (const auto& step : read_steps_csv(out / "steps.csv")) {
-    if (!step.at("recovery").empty()) continue;
-    for (const char* field :
-         {"x_m", "y_m", "z_m", "roll_deg", "pitch_deg", "yaw_deg", "error_m", "error_deg"})
-      EXPECT_EQ(step.at(std::string("first_") + field), step.at(field)) << field;
-  }
-  const std::string provenance = read_text(out / "provenance.json");
-  for (const char* key : {"\"git\"", "\"seed\"", "\"method\"", "\"guess\"", "\"libraries\""})
-    EXPECT_NE(provenance.find(key), std::string::npos) << key;
-  return tum;
-}
-
+using test::expect_outputs;
+using test::run_cli;
+using test::write_kitti_sequence;
 TEST(OdometryCli, CampusFifteenScansCloseToTheTruthAndFilesReadBack) {
   TempDir tmp;
   const CliRun r = run_cli("odometry campus --scans 15 --no-progress --out " + (tmp / "out").string());
@@ -105,39 +80,6 @@ TEST(OdometryCli, SharedUosScans) {
   EXPECT_LT(std::stod(step.at("first_error_m")), 0.1);
 }
 
-/// A KITTI odometry sequence folder from scans of a campus driven with ~1 m between scans (a
-/// Velodyne at 10 Hz and 36 km/h), after its turn on the spot: velodyne/NNNNNN.bin, poses.txt in the
-/// camera-0 frame (P_i = Tr · T0⁻¹ T_i · Tr⁻¹), calib.txt with a KITTI-like Tr, times.txt at 10 Hz.
-std::vector<Eigen::Isometry3d> write_kitti_sequence(const fs::path& folder, std::size_t scans) {
-  synth::CampusSettings settings;
-  settings.trajectory.scans = 1400;
-  const std::size_t skip = 12;  // past the turn on the spot between scans 3 and 4 of the route
-  settings.trajectory.first_scans = static_cast<int>(skip + scans);
-  const synth::CampusDataset campus(synth::generate_campus(settings, 3));
-  Eigen::Isometry3d Tr = Eigen::Isometry3d::Identity();  // camera 0 ← Velodyne: z forward, x right
-  Tr.linear() << 0, -1, 0, 0, 0, -1, 1, 0, 0;
-  Tr.translation() << -0.004, -0.076, -0.272;
-  std::vector<Eigen::Isometry3d> camera;
-  std::ostringstream times, calib;
-  fs::create_directories(folder / "velodyne");
-  for (std::size_t i = 0; i < scans; ++i) {
-    char name[32];
-    std::snprintf(name, sizeof name, "%06zu.bin", i);
-    write_kitti_velodyne(folder / "velodyne" / name, campus.scan(skip + i));
-    camera.push_back(Tr * campus.ground_truth(skip)->inverse() * *campus.ground_truth(skip + i) *
-                     Tr.inverse());
-    times << 0.1 * static_cast<double>(i) << "\n";
-  }
-  write_kitti_poses(folder / "poses.txt", camera);
-  calib << "P0: 1 0 0 0 0 1 0 0 0 0 1 0\nTr:";
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 4; ++c) calib << " " << Tr.matrix()(r, c);
-  calib << "\n";
-  test::write_text(folder / "calib.txt", calib.str());
-  test::write_text(folder / "times.txt", times.str());
-  return camera;
-}
-
 TEST(OdometryCli, SyntheticKittiSequenceFolder) {
   TempDir tmp;
   const std::vector<Eigen::Isometry3d> camera = write_kitti_sequence(tmp / "sequences" / "07", 10);
@@ -167,30 +109,6 @@ TEST(OdometryCli, SyntheticKittiSequenceFolder) {
   EXPECT_EQ(r.output.find("check:"), std::string::npos) << r.output;
 }
 
-// Issue 64, class 3: points a scan's file holds but reading it drops (here NaN) are counted per
-// step in steps.csv, in the summary line and in metrics.json.
-TEST(OdometryCli, DroppedPointsAreCountedPerStepAndInTheSummary) {
-  TempDir tmp;
-  write_kitti_sequence(tmp / "seq", 3);
-  PointCloud scan = read_cloud(tmp / "seq" / "velodyne" / "000001.bin");
-  const std::size_t read = scan.size() + 500;
-  for (int i = 0; i < 500; ++i) scan.push_back(Eigen::Vector3f(NAN, NAN, NAN), 0.f);
-  write_kitti_velodyne(tmp / "seq" / "velodyne" / "000001.bin", scan);
-  const CliRun r =
-      run_cli("odometry " + (tmp / "seq").string() + " --no-progress --out " + (tmp / "out").string());
-  ASSERT_EQ(r.exit_code, 0) << r.output;
-  EXPECT_NE(r.output.find("dropped:  500 of "), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("(500 non-finite, 0 no-return), in 1 of 3 scans"), std::string::npos) << r.output;
-  const auto steps = read_steps_csv(tmp / "out" / "steps.csv");
-  ASSERT_EQ(steps.size(), 2u);
-  EXPECT_EQ(steps[0].at("dropped_non_finite"), "500");  // step 0 → 1 reads scan 1
-  EXPECT_EQ(steps[1].at("dropped_non_finite"), "0");
-  EXPECT_EQ(steps[1].at("dropped_no_return"), "0");
-  const std::string metrics = read_text(tmp / "out" / "metrics.json");
-  EXPECT_EQ(json_number(metrics, "dropped_non_finite"), 500.0) << metrics;
-  EXPECT_GT(json_number(metrics, "points_read"), static_cast<double>(read)) << metrics;
-}
-
 // A trusted step far from the reference's motion is either a wrong registration that passed the checks
 // or a wrong reference (MulRan Riverside02 between keyframes 107 and 116): the run says which steps,
 // on the console and in metrics.json. Here the reference jumps 3 m between scans 5 and 6. The steps are
@@ -214,57 +132,6 @@ TEST(OdometryCli, TrustedStepsFarFromTheReferenceAreNamed) {
       << r.output;
   const std::string metrics = read_text(tmp / "out" / "metrics.json");
   EXPECT_NE(metrics.find("\"trusted_off_reference\": [5]"), std::string::npos) << metrics;
-}
-
-TEST(OdometryCli, BadArgumentsAreClearErrors) {
-  TempDir tmp;
-  const std::string out = " --out " + (tmp / "out").string();
-  const std::string uos = std::string(SEXTANT_DATA_DIR) + "/uos_3dtk";
-  const auto expect_error = [](const CliRun& r, const std::string& text) {
-    EXPECT_EQ(r.exit_code, 1) << r.output;
-    EXPECT_NE(r.output.find("sextant: error:"), std::string::npos) << r.output;
-    EXPECT_NE(r.output.find(text), std::string::npos) << r.output;
-  };
-  expect_error(run_cli("odometry " + uos + " --method nosuch" + out), "unknown matcher 'nosuch'");
-  expect_error(run_cli("odometry " + (tmp / "missing").string() + out), "no such dataset folder");
-  expect_error(run_cli("odometry " + uos + " --guess gps" + out), "unknown guess mode 'gps'");
-  expect_error(run_cli("odometry " + uos + " --map global" + out), "unknown map mode 'global'");
-  expect_error(run_cli("odometry " + uos + " --loop-closure gps" + out),
-               "expected proximity, descriptor or both");
-  expect_error(run_cli("odometry " + uos + " --scans 5" + out), "go past the dataset's 3 scans");
-  expect_error(run_cli("odometry " + uos + " --first 3" + out), "past the dataset's 3 scans");
-  expect_error(run_cli("odometry " + uos + " --method icp_p2l --preset thesis" + out),
-               "presets are settings");
-  const CliRun negative = run_cli("odometry " + uos + " --max-acceleration -1" + out);
-  EXPECT_EQ(negative.exit_code, 2) << negative.output;
-  EXPECT_NE(negative.output.find("--max-acceleration"), std::string::npos) << negative.output;
-  EXPECT_FALSE(fs::exists(tmp / "out"));  // nothing written before the arguments are checked
-  const CliRun no_out = run_cli("odometry " + uos);
-  EXPECT_NE(no_out.exit_code, 0);
-  EXPECT_NE(no_out.output.find("--out"), std::string::npos) << no_out.output;
-}
-
-// Issue 64, class 5: a rerun replaces the whole file set of the earlier run, and a folder that holds
-// files sextant did not write is refused, with nothing deleted.
-TEST(OdometryCli, ARerunIntoTheSameFolderReplacesTheWholeSet) {
-  TempDir tmp;
-  const fs::path out = tmp / "out";
-  const std::string command = "odometry campus --scans 3 --no-progress -q --out " + out.string();
-  ASSERT_EQ(run_cli(command).exit_code, 0);
-  test::write_text(out / "loop_closures.csv", "of an earlier run with --loop-closure\n");
-  ASSERT_EQ(run_cli(command).exit_code, 0);
-  EXPECT_FALSE(fs::exists(out / "loop_closures.csv"));
-  expect_outputs(out, 3);
-  for (const auto& entry : fs::directory_iterator(tmp.path()))  // no staging folder or lock left
-    EXPECT_EQ(entry.path().filename(), "out");
-
-  test::write_text(tmp / "mine" / "notes.txt", "not sextant's\n");
-  const CliRun refused = run_cli("odometry campus --scans 3 --no-progress --out " + (tmp / "mine").string());
-  EXPECT_EQ(refused.exit_code, 1) << refused.output;
-  EXPECT_NE(refused.output.find("holds files sextant did not write (e.g. 'notes.txt')"), std::string::npos)
-      << refused.output;
-  EXPECT_TRUE(fs::exists(tmp / "mine" / "notes.txt"));
-  EXPECT_FALSE(fs::exists(tmp / "mine" / "trajectory.tum"));
 }
 
 // Issue 27 (E24): the campus' first loop comes back to its start near scan 80. Closing it with
