@@ -5,20 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "odometry_cli_run.hpp"
-#include "sextant/core/io/cloud_io.hpp"
 #include "sextant/core/io/kitti.hpp"
 #include "sextant/core/io/trajectory_io.hpp"
 #include "sextant/eval/trajectory_metrics.hpp"
-#include "sextant/synth/campus.hpp"
 #include "sextant_test/cli_run.hpp"
 #include "sextant_test/temp_dir.hpp"
 #include "written_files.hpp"
