@@ -113,12 +113,10 @@ OdometryCounts odometry_counts(const OdometryResult& result) {
 }
 
 std::string dropped_points_line(const OdometryCounts& counts, std::size_t scans) {
-  const ScanLoadReport& r = counts.read;
-  if (r.dropped() == 0) return "";
-  return std::to_string(r.dropped()) + " of " + std::to_string(r.points_read) +
-         " points read were dropped (" + std::to_string(r.non_finite_dropped) + " non-finite, " +
-         std::to_string(r.no_return_dropped) + " no-return), in " + std::to_string(counts.scans_with_drops) +
-         " of " + std::to_string(scans) + " scans (per scan: steps.csv)";
+  const std::string dropped = dropped_points_note(counts.read);
+  if (dropped.empty()) return "";
+  return dropped + ", in " + std::to_string(counts.scans_with_drops) + " of " + std::to_string(scans) +
+         " scans (per scan: steps.csv)";
 }
 
 void write_metrics_json(const std::filesystem::path& file, const std::optional<TrajectoryAccuracy>& estimate,

@@ -53,8 +53,8 @@ struct OdometryCounts {
 /// The counts of `result` (without trusted_off_reference, which needs the ground truth).
 OdometryCounts odometry_counts(const OdometryResult& result);
 
-/// "6499 of 25996 points read were dropped (6499 non-finite, 0 no-return), in 1 of 2 scans (per
-/// scan: steps.csv)" for the console; empty when none was.
+/// "6499 of 25996 points dropped (6499 non-finite, 0 no-return), in 1 of 2 scans (per scan:
+/// steps.csv)" for the console (dropped_points_note over the run); empty when none was.
 std::string dropped_points_line(const OdometryCounts& counts, std::size_t scans);
 
 /// The trusted steps of `result` more than `tolerance`'s ambiguity distance from `truth`'s relative
