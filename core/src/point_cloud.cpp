@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #if defined(__SSE2__)
 #include <immintrin.h>
@@ -28,13 +29,16 @@ PointCloud PointCloud::borrow(const Eigen::Vector3f* points, std::size_t size) {
 }
 
 PointCloud::PointCloud(const PointCloud& other)
-    : points_(other.points().begin(), other.points().end()), intensity_(other.intensity_) {}
+    : points_(other.points().begin(), other.points().end()),
+      intensity_(other.intensity_),
+      time_(other.time_) {}
 
 PointCloud& PointCloud::operator=(const PointCloud& other) {
   if (this == &other) return *this;
   const PointsView source = other.points();
   points_.assign(source.begin(), source.end());
   intensity_ = other.intensity_;
+  time_ = other.time_;
   borrowed_ = nullptr;
   borrowed_size_ = 0;
   return *this;
@@ -51,11 +55,20 @@ void PointCloud::reserve(std::size_t n) {
   if (has_intensity()) intensity_.reserve(n);
 }
 
-void PointCloud::throw_mixed_intensity() {
-  throw std::logic_error("PointCloud::push_back: a point without intensity in a cloud with intensity");
+void PointCloud::set_time(std::vector<float> time) {
+  if (!time.empty() && time.size() != size())
+    throw std::invalid_argument("PointCloud::set_time: " + std::to_string(time.size()) + " times for " +
+                                std::to_string(size()) + " points");
+  time_ = std::move(time);
+}
+
+void PointCloud::throw_mixed_attributes() {
+  throw std::logic_error(
+      "PointCloud::push_back: a point without intensity or time in a cloud whose points have them");
 }
 
 void PointCloud::push_back(const Eigen::Vector3f& p, float intensity) {
+  if (!time_.empty()) throw_mixed_attributes();
   if (intensity_.size() != size()) {
     throw std::logic_error("PointCloud::push_back: mixing points with and without intensity");
   }
@@ -106,6 +119,7 @@ PointCloud PointCloud::transformed(const Eigen::Isometry3d& T) const {
   out.points_.reserve(size());
   for (const auto& p : points()) out.points_.push_back(Tf * p);
   out.intensity_ = intensity_;
+  out.time_ = time_;
   return out;
 }
 
@@ -121,30 +135,41 @@ PointCloud PointCloud::subset(const std::vector<std::size_t>& indices) const {
     out.intensity_.reserve(indices.size());
     for (std::size_t i : indices) out.intensity_.push_back(intensity_[i]);
   }
+  if (has_time()) {
+    out.time_.reserve(indices.size());
+    for (std::size_t i : indices) out.time_.push_back(time_[i]);
+  }
   return out;
 }
 
 std::size_t remove_non_finite(PointCloud& cloud) {
   const PointCloud& read = cloud;
-  const bool all_finite =
-      std::all_of(read.points().begin(), read.points().end(),
-                  [](const Eigen::Vector3f& p) { return p.allFinite(); }) &&
-      std::all_of(read.intensity().begin(), read.intensity().end(), [](float v) { return std::isfinite(v); });
+  const auto finite = [](float v) { return std::isfinite(v); };
+  const bool all_finite = std::all_of(read.points().begin(), read.points().end(),
+                                      [](const Eigen::Vector3f& p) { return p.allFinite(); }) &&
+                          std::all_of(read.intensity().begin(), read.intensity().end(), finite) &&
+                          std::all_of(read.time().begin(), read.time().end(), finite);
   if (all_finite) return 0;  // a borrowed cloud stays borrowed
   auto& pts = cloud.mutable_points();
   auto& inten = cloud.intensity();
+  std::vector<float> time = cloud.time();
   const bool with_intensity = cloud.has_intensity();
+  const bool with_time = cloud.has_time();
   std::size_t kept = 0;
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    const bool finite = pts[i].allFinite() && (!with_intensity || std::isfinite(inten[i]));
-    if (!finite) continue;
+    const bool ok = pts[i].allFinite() && (!with_intensity || std::isfinite(inten[i])) &&
+                    (!with_time || std::isfinite(time[i]));
+    if (!ok) continue;
     pts[kept] = pts[i];
     if (with_intensity) inten[kept] = inten[i];
+    if (with_time) time[kept] = time[i];
     ++kept;
   }
   const std::size_t dropped = pts.size() - kept;
   pts.resize(kept);
   if (with_intensity) inten.resize(kept);
+  time.resize(with_time ? kept : 0);
+  cloud.set_time(std::move(time));
   return dropped;
 }
 

@@ -53,6 +53,31 @@ TEST(PointCloud, EveryPointHasAnIntensityOrNoneHas) {
   EXPECT_THROW(without.push_back(Eigen::Vector3f(4, 5, 6), 7.f), std::logic_error);
 }
 
+TEST(PointCloud, TimesAreOnePerPointAndFollowEveryPoint) {
+  PointCloud cloud(std::vector<Eigen::Vector3f>{{1, 0, 0}, {2, 0, 0}, {3, 0, 0}});
+  EXPECT_FALSE(cloud.has_time());
+  EXPECT_THROW(cloud.set_time({0.f, 1.f}), std::invalid_argument);
+  cloud.set_time({0.00f, 0.05f, 0.10f});
+  ASSERT_TRUE(cloud.has_time());
+  EXPECT_THROW(cloud.push_back(Eigen::Vector3f(4, 0, 0)), std::logic_error);
+  EXPECT_THROW(cloud.push_back(Eigen::Vector3f(4, 0, 0), 1.f), std::logic_error);
+  EXPECT_EQ(cloud.size(), 3u);
+
+  const PointCloud picked = cloud.subset({2, 0});
+  EXPECT_EQ(picked.time(), (std::vector<float>{0.10f, 0.00f}));
+  EXPECT_EQ(cloud.transformed(Eigen::Isometry3d(Eigen::Translation3d(1, 2, 3))).time(), cloud.time());
+  const PointCloud copy = cloud;
+  EXPECT_EQ(copy.time(), cloud.time());
+
+  PointCloud with_bad_time = cloud;
+  with_bad_time.set_time({0.00f, std::numeric_limits<float>::quiet_NaN(), 0.10f});
+  EXPECT_EQ(remove_non_finite(with_bad_time), 1u);
+  EXPECT_EQ(with_bad_time.time(), (std::vector<float>{0.00f, 0.10f}));
+  EXPECT_EQ(with_bad_time[1], Eigen::Vector3f(3, 0, 0));
+  cloud.set_time({});
+  EXPECT_FALSE(cloud.has_time());
+}
+
 TEST(PointCloud, BoundsAreThoseOfOnePointAtATime) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   for (std::size_t n = 1; n <= 13; ++n)

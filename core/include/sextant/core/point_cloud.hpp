@@ -1,5 +1,6 @@
 #pragma once
-// A point cloud in the internal frame (metres): contiguous float xyz, optional intensity. A cloud
+// A point cloud in the internal frame (metres): contiguous float xyz, optional intensity and
+// per-point time. A cloud
 // either owns its points or borrows another's contiguous xyz memory (PointCloud::borrow, for the
 // Python module's arrays): reading is the same, the first mutable access copies the borrowed
 // points, and a copy of a cloud always owns its points.
@@ -81,32 +82,41 @@ class PointCloud {
   const std::vector<float>& intensity() const { return intensity_; }
   std::vector<float>& intensity() { return intensity_; }
 
-  /// std::logic_error when the cloud has intensity (or, with an intensity, has none while it has
-  /// points): every point has one, or none has.
+  /// Per-point time [s] relative to the scan's stamp (Dataset::stamp; negative before it), when the
+  /// file has one: either empty or one value per point.
+  bool has_time() const { return !time_.empty(); }
+  const std::vector<float>& time() const { return time_; }
+  /// Gives every point its time: std::invalid_argument unless one value per point (or none, which
+  /// removes the times).
+  void set_time(std::vector<float> time);
+
+  /// std::logic_error when the cloud has intensity or time (or, with an intensity, has none while it
+  /// has points): every point has one, or none has. A cloud with time takes its times by set_time.
   void push_back(const Eigen::Vector3f& p) {
-    if (!intensity_.empty()) throw_mixed_intensity();
+    if (!intensity_.empty() || !time_.empty()) throw_mixed_attributes();
     mutable_points().push_back(p);
   }
   void push_back(const Eigen::Vector3f& p, float intensity);
 
   /// Axis-aligned bounds; all zero for an empty cloud.
   Bounds bounds() const;
-  /// The cloud with every point mapped by T (intensity kept).
+  /// The cloud with every point mapped by T (intensity and time kept).
   PointCloud transformed(const Eigen::Isometry3d& T) const;
-  /// The points whose indices are given, in that order (intensity kept).
+  /// The points whose indices are given, in that order (intensity and time kept).
   PointCloud subset(const std::vector<std::size_t>& indices) const;
 
  private:
-  [[noreturn]] static void throw_mixed_intensity();
+  [[noreturn]] static void throw_mixed_attributes();
   void own();  ///< copies the borrowed points into points_ and stops borrowing
 
   std::vector<Eigen::Vector3f> points_;
   std::vector<float> intensity_;
+  std::vector<float> time_;
   const Eigen::Vector3f* borrowed_ = nullptr;  ///< non-null: the points are these, not points_
   std::size_t borrowed_size_ = 0;
 };
 
-/// Drops points with a NaN or Inf coordinate (or intensity); returns how many were dropped.
+/// Drops points with a NaN or Inf coordinate (or intensity, or time); returns how many were dropped.
 std::size_t remove_non_finite(PointCloud& cloud);
 
 }  // namespace sextant
