@@ -28,6 +28,8 @@
 #include "sextant/pipeline/odometry_loop_closure.hpp"
 #include "sextant/pipeline/odometry_output.hpp"
 #include "sextant/pipeline/odometry_request.hpp"
+#include "sextant/eval/run_view.hpp"
+#include "sextant/pipeline/odometry_view.hpp"
 #include "sextant/pipeline/provenance.hpp"
 
 namespace sextant::cli {
@@ -37,6 +39,20 @@ namespace fs = std::filesystem;
 
 std::string yes_no(bool b) {
   return b ? "yes" : "no";
+}
+
+/// Where --view is written: into the run's folder when it names a file there (it is then one of the
+/// run's files, swapped in with them), else where it says. Checked before the run: the folder exists
+/// and three.js is installed.
+fs::path view_target(const OdometryOptions& o, const OutputFolder& folder) {
+  const fs::path view = fs::absolute(o.view);
+  if (!view.filename().empty() && !fs::is_directory(view) &&
+      fs::weakly_canonical(view.parent_path()) == fs::weakly_canonical(fs::absolute(folder.target()))) {
+    check_run_view_scripts();
+    return folder.staging() / view.filename();
+  }
+  check_run_view_path(o.view);
+  return view;
 }
 
 int run_odometry_command(const OdometryOptions& o) {
@@ -86,6 +102,7 @@ int run_odometry_command(const OdometryOptions& o) {
   const std::size_t scans = plan.scans;
   // Taken before the run: a second run into the same folder is refused now, not after it.
   OutputFolder folder(o.out, "sextant odometry");
+  const fs::path view = o.view.empty() ? fs::path() : view_target(o, folder);
 
   const bool quiet = verbosity() == Verbosity::kQuiet;
   if (!quiet)
@@ -164,6 +181,10 @@ int run_odometry_command(const OdometryOptions& o) {
                      loop_summary);
   write_file_atomically(out / "provenance.json",
                         provenance_json(o, config, meta, s, result, scans, start, seconds));
+  if (!view.empty())
+    write_odometry_view(view, *dataset, o.first, result, poses, truth, s.min_range,
+                        "sextant odometry: " + meta.name + ", scans " + std::to_string(o.first) + "–" +
+                            std::to_string(o.first + scans - 1) + " (" + o.method + ")");
   folder.commit();
 
   std::cout << std::fixed << std::setprecision(1) << "registered " << result.steps.size() << " pairs in "
@@ -213,6 +234,9 @@ int run_odometry_command(const OdometryOptions& o) {
               << ", steps.csv, metrics.json, provenance.json"
               << (loops ? ", loop_closures.csv, chained/trajectory.tum, chained/trajectory.kitti.txt" : "")
               << "\n";
+  if (!quiet && !o.view.empty())
+    std::cout << "view:     " << o.view
+              << " (the map, the trajectory and the marked steps; open it in a browser)\n";
   return 0;
 }
 
@@ -253,6 +277,11 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
                   "whatever the drift), or both; every closure is verified by a trusted registration. "
                   "trajectory.* is then the loop-closed one, chained/ the chain, loop_closures.csv the "
                   "candidates");
+  cmd->add_option("--view", o->view,
+                  "Write one self-contained HTML page of the run (three.js, offline): the map (the scans "
+                  "placed by the trajectory), the trajectory and the ground truth, the untrusted, not "
+                  "converged and recovered steps marked; a click on a step shows its time, trust, reason "
+                  "and error (docs/odometry.md, \"The view of a run\")");
   cmd->add_option("--local-map-scans", o->local_map_scans, "Scans in the local map")
       ->capture_default_str()
       ->check(whole_number(1));

@@ -41,6 +41,7 @@ std::string provenance_json(const OdometryOptions& o, const MatcherConfig& confi
       {"guess", to_string(s.guess)},
       {"map", to_string(s.map)},
       {"loop_closure", o.loop_closure},
+      {"view", o.view.empty() ? Json() : Json(o.view)},
       {"local_map_scans", s.local_map_scans},
       {"min_range", json_value(s.min_range)},
       {"max_acceleration", json_value(s.max_acceleration)},
