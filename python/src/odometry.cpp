@@ -21,6 +21,7 @@
 #include "sextant/pipeline/matcher_request.hpp"
 #include "sextant/pipeline/odometry_output.hpp"
 #include "sextant/pipeline/odometry_request.hpp"
+#include "sextant/pipeline/odometry_view.hpp"
 #include "steps_table.hpp"
 
 namespace sextant::python {
@@ -55,7 +56,8 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
                      double max_acceleration, std::uint64_t seed, bool recover, const py::object& common_view,
                      const py::object& poses, const py::object& odometry_poses, const py::object& times,
                      std::uint64_t campus_seed, int jobs, const py::object& sampler_settings,
-                     const std::string& sensor, const std::string& platform, const py::kwargs& settings) {
+                     const std::string& sensor, const std::string& platform, const py::object& view,
+                     const py::kwargs& settings) {
   // Arguments first (cheap), then the dataset, as the CLI (odometry_request.hpp).
   const MatcherConfig config =  // unknown names, bad settings
       read_matcher_config(matcher_request("odometry()", method, preset, sampling, settings, sampler_settings),
@@ -78,6 +80,9 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
   OdometrySettings checked = odometry_settings(request, Face::python);
   if (const std::string problem = worker_threads_problem(jobs, "jobs"); !problem.empty())
     throw py::value_error(problem);
+  const std::string view_path =
+      view.is_none() ? std::string() : py::module_::import("os").attr("fspath")(view).cast<std::string>();
+  if (!view_path.empty()) check_run_view_path(view_path);  // before the run, not after it
 
   const std::unique_ptr<Dataset> dataset =
       open_odometry_dataset(source, poses, odometry_poses, times, campus_seed);
@@ -99,6 +104,10 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
     result = run_odometry(*dataset, s, first, count);
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     truth = ground_truth_of(*dataset, first, count);
+    if (!view_path.empty())
+      write_odometry_view(view_path, *dataset, first, result, result.poses, truth, s.min_range,
+                          "sextant.odometry: " + meta.name + ", scans " + std::to_string(first) + "–" +
+                              std::to_string(first + count - 1) + " (" + method + ")");
   }
 
   OdometryRun run;
@@ -155,6 +164,9 @@ min_range: drop points closer than this to the sensor [m]. max_acceleration: wit
 sensor: "spinning", "solid_state" or "auto" (the CLI's --sensor: the ring and horizon checks apply to a
     spinning lidar only; auto measures the first scan). platform: "car", "handheld" or "auto" (the CLI's
     --platform: the size of a wrong step, 1 m or 5°, 0.3 m or 3°, or the typical step's between them).
+view: a file name (str or path): also write the run's view there, one offline HTML page (the CLI's
+    --view: the map, the trajectory and the ground truth, the untrusted, not converged and recovered
+    steps marked, a click on a step shows its trust and reason).
 poses: ground truth. For a folder of scans: a TUM or KITTI file (the CLI's --poses); for a list: an
     N×4×4 array (world ← scan). odometry_poses (N×4×4) and times (N seconds): a list's odometry and
     clock.
@@ -221,7 +233,7 @@ void bind_odometry(py::module_& m) {
         py::arg("recover") = true, py::arg("common_view") = py::none(), py::arg("poses") = py::none(),
         py::arg("odometry_poses") = py::none(), py::arg("times") = py::none(), py::arg("campus_seed") = 1,
         py::arg("jobs") = 0, py::arg("sampler_settings") = py::none(), py::arg("sensor") = "auto",
-        py::arg("platform") = "auto");
+        py::arg("platform") = "auto", py::arg("view") = py::none());
 }
 
 }  // namespace sextant::python
