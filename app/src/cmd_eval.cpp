@@ -1,8 +1,8 @@
 // `sextant eval REFERENCE ESTIMATE [--format auto|tum|kitti] [--max-diff S] [--align se3|sim3|origin|none]
-// [--delta N] [--delta-unit frames|m] [--ground-plane] [--json] [--plot DIR] [--car-slip M]`: the accuracy of
-// a trajectory one already has (evo_ape / evo_rpe's job, plus KITTI drift, Wulf and Kümmerle). TUM files pair
-// by timestamp, KITTI files (no time) by index. For `sextant odometry`'s own files, with the defaults, it
-// prints the very line odometry printed (both go through evaluate_trajectory).
+// [--delta N] [--delta-unit frames|m] [--ground-plane] [--json] [--plot DIR] [--view FILE] [--car-slip M]`:
+// the accuracy of a trajectory one already has (evo_ape / evo_rpe's job, plus KITTI drift, Wulf and
+// Kümmerle). TUM files pair by timestamp, KITTI files (no time) by index. For `sextant odometry`'s own files,
+// with the defaults, it prints the very line odometry printed (both go through evaluate_trajectory).
 #include <cmath>
 #include <filesystem>
 #include <iomanip>

@@ -1,8 +1,9 @@
 // `sextant odometry <dataset> [--method mlndt] [--preset …] [--guess odometry|constant_velocity|identity]
-// [--map scan|local_map] [--first N] [--scans N] --out DIR`: chains registrations over a sequence
-// (§5.1.3's dead reckoning by a matcher) of a uos folder, a KITTI odometry sequence folder or the
+// [--map scan|local_map] [--first N] [--scans N] [--view run.html] --out DIR`: chains registrations over a
+// sequence (§5.1.3's dead reckoning by a matcher) of a uos folder, a KITTI odometry sequence folder or the
 // built-in campus (`campus`), writes the trajectory as TUM and KITTI files, steps.csv, metrics.json
-// and provenance.json, and prints ATE / RPE / KITTI drift against the dataset's ground truth.
+// and provenance.json (and with --view the run's HTML page), and prints ATE / RPE / KITTI drift
+// against the dataset's ground truth.
 #include <chrono>
 #include <filesystem>
 #include <iomanip>
@@ -21,6 +22,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/output_folder.hpp"
 #include "sextant/core/progress.hpp"
+#include "sextant/eval/run_view.hpp"
 #include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/pipeline/dataset_argument.hpp"
@@ -28,7 +30,6 @@
 #include "sextant/pipeline/odometry_loop_closure.hpp"
 #include "sextant/pipeline/odometry_output.hpp"
 #include "sextant/pipeline/odometry_request.hpp"
-#include "sextant/eval/run_view.hpp"
 #include "sextant/pipeline/odometry_view.hpp"
 #include "sextant/pipeline/provenance.hpp"
 
