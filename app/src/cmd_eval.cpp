@@ -1,8 +1,8 @@
 // `sextant eval REFERENCE ESTIMATE [--format auto|tum|kitti] [--max-diff S] [--align se3|sim3|origin|none]
-// [--delta N] [--delta-unit frames|m] [--ground-plane] [--json] [--plot DIR] [--car-slip M]`: the accuracy of
-// a trajectory one already has (evo_ape / evo_rpe's job, plus KITTI drift, Wulf and Kümmerle). TUM files pair
-// by timestamp, KITTI files (no time) by index. For `sextant odometry`'s own files, with the defaults, it
-// prints the very line odometry printed (both go through evaluate_trajectory).
+// [--delta N] [--delta-unit frames|m] [--ground-plane] [--json] [--plot DIR] [--view FILE] [--car-slip M]`:
+// the accuracy of a trajectory one already has (evo_ape / evo_rpe's job, plus KITTI drift, Wulf and
+// Kümmerle). TUM files pair by timestamp, KITTI files (no time) by index. For `sextant odometry`'s own files,
+// with the defaults, it prints the very line odometry printed (both go through evaluate_trajectory).
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -21,6 +21,7 @@
 #include "sextant/eval/alignment_roll.hpp"
 #include "sextant/eval/ground_plane.hpp"
 #include "sextant/eval/plots.hpp"
+#include "sextant/eval/run_view.hpp"
 #include "sextant/eval/trajectory_evaluation.hpp"
 #include "sextant/eval/vehicle_slip.hpp"
 #include "sextant/pipeline/json.hpp"
@@ -41,6 +42,7 @@ struct EvalOptions {
   bool ground_plane = false;  ///< every metric on x, y and heading only (ground_plane.hpp)
   bool json = false;
   std::string plot;
+  std::string view;       ///< the trajectories and per-pose errors as one HTML page (run_view.hpp)
   double car_slip = 0.0;  ///< > 0: list the reference's steps that slip sideways more than this [m]
 };
 
@@ -146,6 +148,7 @@ std::string slip_line(const ReferenceSlip& r, double limit) {
 }
 
 int run_eval(const EvalOptions& o) {
+  if (!o.view.empty()) check_run_view_path(o.view);
   const LoadedTrajectory reference = load(o.reference, o.format);
   const LoadedTrajectory estimate = load(o.estimate, o.format);
   TrajectoryEvaluationSettings settings;
@@ -172,6 +175,12 @@ int run_eval(const EvalOptions& o) {
           ? "scan"
           : fixed(o.delta, o.delta_unit == "m" ? 1 : 0) + (o.delta_unit == "m" ? " m" : " frames");
   if (!o.plot.empty()) write_plots(o.plot, pairs, e);
+  if (!o.view.empty())
+    write_run_view(evaluation_run_view(pairs, e,
+                                       "sextant eval: " + fs::path(o.estimate).filename().string() +
+                                           " against " + fs::path(o.reference).filename().string(),
+                                       by_stamp),
+                   o.view);
   std::optional<ReferenceSlip> slip;
   if (o.car_slip > 0.0) {
     slip.emplace();
@@ -275,6 +284,8 @@ int run_eval(const EvalOptions& o) {
   if (slip) std::cout << slip_line(*slip, o.car_slip) << "\n";
   if (!o.plot.empty())
     std::cout << "wrote: " << (fs::path(o.plot) / "trajectories.svg").string() << ", error_along_path.svg\n";
+  if (!o.view.empty())
+    std::cout << "wrote: " << o.view << " (both trajectories and each pose's error, in 3D)\n";
   return 0;
 }
 
@@ -320,6 +331,11 @@ void add_eval_command(CLI::App& app, int& exit_code) {
       ->check(finite_number(0.0));
   cmd->add_option("--plot", o->plot,
                   "Write trajectories.svg (top view) and error_along_path.svg into this folder");
+  cmd->add_option(
+      "--view", o->view,
+      "Write one self-contained HTML page (three.js, offline) of both trajectories, the estimate "
+      "aligned as for the ATE and coloured by each pose's error; a click on a pose shows its time "
+      "and error");
   cmd->callback([o, &exit_code] { exit_code = guarded([&] { return run_eval(*o); }); });
 }
 

@@ -1,9 +1,9 @@
 // `sextant odometry <dataset> [--method mlndt] [--preset …] [--guess odometry|constant_velocity|identity]
-// [--map scan|local_map] [--first N] [--scans N] --out DIR`: chains registrations over a sequence
-// (§5.1.3's dead reckoning by a matcher) of a uos folder, a KITTI odometry sequence folder or the
+// [--map scan|local_map] [--first N] [--scans N] [--view run.html] --out DIR`: chains registrations over a
+// sequence (§5.1.3's dead reckoning by a matcher) of a uos folder, a KITTI odometry sequence folder or the
 // built-in campus (`campus`), writes the trajectory as TUM and KITTI files, steps.csv, metrics.json
-// and provenance.json (and with --map-out the run's map), and prints ATE / RPE / KITTI drift against
-// the dataset's ground truth.
+// and provenance.json (with --map-out the run's map, with --view its HTML page), and prints ATE /
+// RPE / KITTI drift against the dataset's ground truth.
 #include <chrono>
 #include <filesystem>
 #include <iomanip>
@@ -24,6 +24,7 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/output_folder.hpp"
 #include "sextant/core/progress.hpp"
+#include "sextant/eval/run_view.hpp"
 #include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/pipeline/dataset_argument.hpp"
@@ -31,6 +32,7 @@
 #include "sextant/pipeline/odometry_loop_closure.hpp"
 #include "sextant/pipeline/odometry_output.hpp"
 #include "sextant/pipeline/odometry_request.hpp"
+#include "sextant/pipeline/odometry_view.hpp"
 #include "sextant/pipeline/provenance.hpp"
 #include "sextant/pipeline/run_map_builder.hpp"
 
@@ -41,6 +43,20 @@ namespace fs = std::filesystem;
 
 std::string yes_no(bool b) {
   return b ? "yes" : "no";
+}
+
+/// Where --view is written: into the run's folder when it names a file there (it is then one of the
+/// run's files, swapped in with them), else where it says. Checked before the run: the folder exists
+/// and three.js is installed.
+fs::path view_target(const OdometryOptions& o, const OutputFolder& folder) {
+  const fs::path view = fs::absolute(o.view);
+  if (!view.filename().empty() && !fs::is_directory(view) &&
+      fs::weakly_canonical(view.parent_path()) == fs::weakly_canonical(fs::absolute(folder.target()))) {
+    check_run_view_scripts();
+    return folder.staging() / view.filename();
+  }
+  check_run_view_path(o.view);
+  return view;
 }
 
 int run_odometry_command(const OdometryOptions& o) {
@@ -95,6 +111,7 @@ int run_odometry_command(const OdometryOptions& o) {
   const std::size_t scans = plan.scans;
   // Taken before the run: a second run into the same folder is refused now, not after it.
   OutputFolder folder(o.out, "sextant odometry");
+  const fs::path view = o.view.empty() ? fs::path() : view_target(o, folder);
 
   const bool quiet = verbosity() == Verbosity::kQuiet;
   if (!quiet)
@@ -124,8 +141,10 @@ int run_odometry_command(const OdometryOptions& o) {
   }
   // The map is built as the run goes; with --loop-closure, after the loops are closed, from the
   // closed poses (run_map_builder.hpp).
+  // The view draws the same map.
+  const bool wants_map = map_output || !o.view.empty();
   std::optional<RunMapBuilder> map;
-  if (map_output && !loop_source) map.emplace(map_settings);
+  if (wants_map && !loop_source) map.emplace(map_settings);
   const OdometryResult result = run_odometry(
       *dataset, s, o.first, scans, [&](std::size_t, std::size_t) { progress->tick(); },
       map ? map->observer() : OdometryScanObserver{});
@@ -135,10 +154,10 @@ int run_odometry_command(const OdometryOptions& o) {
   std::optional<OdometryLoopClosure> loops;
   if (loop_source) loops = close_odometry_loops(*dataset, o.first, scans, result, s, *loop_source);
   const std::vector<Eigen::Isometry3d>& poses = loops ? loops->closing.poses : result.poses;
-  if (map_output && loops)
+  if (wants_map && loops)
     map.emplace(build_run_map(*dataset, o.first, poses, result.steps, s.min_range, map_settings));
   const std::optional<RunMapSummary> map_summary =
-      map ? std::optional<RunMapSummary>(map->summary()) : std::nullopt;
+      map_output ? std::optional<RunMapSummary>(map->summary()) : std::nullopt;
 
   OdometryCounts counts = odometry_counts(result);
   const auto truth = ground_truth_of(*dataset, o.first, scans);
@@ -180,6 +199,10 @@ int run_odometry_command(const OdometryOptions& o) {
   }
   write_metrics_json(out / "metrics.json", estimate_accuracy, odometry_accuracy, scans, counts, seconds,
                      loop_summary);
+  if (!view.empty())
+    write_odometry_view(view, *dataset, o.first, result, poses, truth, map->map(),
+                        "sextant odometry: " + meta.name + ", scans " + std::to_string(o.first) + "–" +
+                            std::to_string(o.first + scans - 1) + " (" + o.method + ")");
   if (map_output) {
     const PointCloud cloud = map->map().cloud();
     map.reset();  // the voxels' memory, before the writer's copies
@@ -248,6 +271,9 @@ int run_odometry_command(const OdometryOptions& o) {
               << ", steps.csv, metrics.json, provenance.json"
               << (loops ? ", loop_closures.csv, chained/trajectory.tum, chained/trajectory.kitti.txt" : "")
               << "\n";
+  if (!quiet && !o.view.empty())
+    std::cout << "view:     " << o.view
+              << " (the map, the trajectory and the marked steps; open it in a browser)\n";
   return 0;
 }
 
@@ -310,6 +336,11 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
                 "Leave the scans placed by untrusted steps out of the map (counted and printed); the scans "
                 "after them stay, placed by the chain")
       ->needs(map_out);
+  cmd->add_option("--view", o->view,
+                  "Write one self-contained HTML page of the run (three.js, offline): the map (the scans "
+                  "placed by the trajectory), the trajectory and the ground truth, the untrusted, not "
+                  "converged and recovered steps marked; a click on a step shows its time, trust, reason "
+                  "and error (docs/odometry.md, \"The view of a run\")");
   cmd->add_option("--local-map-scans", o->local_map_scans, "Scans in the local map")
       ->capture_default_str()
       ->check(whole_number(1));

@@ -55,6 +55,7 @@ std::string provenance_json(const OdometryOptions& o, const MatcherConfig& confi
       {"map", to_string(s.map)},
       {"loop_closure", o.loop_closure},
       {"map_out", map_json},
+      {"view", o.view.empty() ? Json() : Json(o.view)},
       {"local_map_scans", s.local_map_scans},
       {"min_range", json_value(s.min_range)},
       {"max_acceleration", json_value(s.max_acceleration)},

@@ -21,6 +21,7 @@ struct OdometryOptions : MatcherOptions {
   std::string guess;  ///< empty: odometry when the dataset has it, else constant_velocity
   std::string map = "local_map";
   std::string loop_closure;       ///< empty: none; proximity, descriptor or both
+  std::string view;               ///< empty: none; else the run's HTML view (run_view.hpp)
   std::string sensor = "auto";    ///< auto, spinning, solid_state
   std::string platform = "auto";  ///< auto, car, handheld
   std::size_t first = 0;

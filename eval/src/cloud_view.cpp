@@ -7,15 +7,13 @@
 #include <array>
 #include <cctype>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
-#include <fstream>
 #include <locale>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include "cloud_view_script.hpp"
+#include "page_encoding.hpp"
 #include "sextant/core/atomic_file.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/eval/table.hpp"
@@ -47,11 +45,6 @@ bool is_colour(const std::string& c) {
          });
 }
 
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
-
 /// Explicit colours as given (lower case); the others from the palette, skipping colours in use.
 std::vector<std::string> cloud_colours(const CloudView& view) {
   std::vector<std::string> out(view.clouds.size());
@@ -62,7 +55,7 @@ std::vector<std::string> cloud_colours(const CloudView& view) {
     if (!is_colour(c))
       throw std::invalid_argument("cloud view: colour '" + c + "' of cloud '" + view.clouds[i].name +
                                   "' is not #rrggbb");
-    out[i] = lower(c);
+    out[i] = detail::lower_ascii(c);
     used.push_back(out[i]);
   }
   std::size_t next = 0;
@@ -76,65 +69,6 @@ std::vector<std::string> cloud_colours(const CloudView& view) {
         break;
       }
     }
-  }
-  return out;
-}
-
-std::string base64(const std::vector<unsigned char>& bytes) {
-  static const char* const kDigits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
-    std::uint32_t v = static_cast<std::uint32_t>(bytes[i]) << 16;
-    if (n > 1) v |= static_cast<std::uint32_t>(bytes[i + 1]) << 8;
-    if (n > 2) v |= bytes[i + 2];
-    out += kDigits[(v >> 18) & 63];
-    out += kDigits[(v >> 12) & 63];
-    out += n > 1 ? kDigits[(v >> 6) & 63] : '=';
-    out += n > 2 ? kDigits[v & 63] : '=';
-  }
-  return out;
-}
-
-/// The kept points' coordinates as little-endian float32 x, y, z.
-std::vector<unsigned char> float_bytes(const std::vector<Eigen::Vector3f>& points) {
-  std::vector<unsigned char> bytes;
-  bytes.reserve(points.size() * 12);
-  for (const Eigen::Vector3f& p : points)
-    for (int k = 0; k < 3; ++k) {
-      std::uint32_t u = 0;
-      std::memcpy(&u, &p[k], 4);
-      for (int b = 0; b < 4; ++b) bytes.push_back(static_cast<unsigned char>((u >> (8 * b)) & 0xFF));
-    }
-  return bytes;
-}
-
-/// A JSON string that is also safe inside <script>: '<', '>' and '&' as \u escapes.
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (const char ch : s) {
-    const auto c = static_cast<unsigned char>(ch);
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += ch;
-    } else if (c < 0x20 || c == '<' || c == '>' || c == '&') {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-    } else {
-      out += ch;
-    }
-  }
-  return out + "\"";
-}
-
-/// "123 456" (thin space groups).
-std::string grouped(std::size_t n) {
-  std::string digits = std::to_string(n), out;
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) out += "\u2009";
-    out += digits[i];
   }
   return out;
 }
@@ -153,16 +87,7 @@ std::string pose_json(const std::optional<Eigen::Isometry3d>& T) {
 }
 
 std::string read_three_js(const std::filesystem::path& dir) {
-  const std::filesystem::path path = find_three_js(dir);
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in.good() && !in.eof()) throw InputError(path.string(), "", "cannot read three.js");
-  std::string js = text.str();
-  std::string lowered = lower(js);
-  if (lowered.find("</script") != std::string::npos)
-    throw InputError(path.string(), "", "contains '</script' and cannot be inlined into a page");
-  return js;
+  return detail::read_inline_script(find_three_js(dir));
 }
 
 /// The finite points of a cloud, subsampled to `cap`.
@@ -236,8 +161,8 @@ std::string render_cloud_view(const CloudView& view, const CloudViewOptions& opt
                                   std::to_string(states) + " states");
   }
   const std::string src = options.three_js_src;
-  if (lower(src).find("http:") != std::string::npos || lower(src).find("https:") != std::string::npos ||
-      src.rfind("//", 0) == 0)
+  if (detail::lower_ascii(src).find("http:") != std::string::npos ||
+      detail::lower_ascii(src).find("https:") != std::string::npos || src.rfind("//", 0) == 0)
     throw std::invalid_argument("cloud view: three.js must come from a local file, not '" + src + "'");
   if (view.max_points == 0) throw std::invalid_argument("cloud view: max_points must be at least 1");
   const std::vector<std::string> colours = cloud_colours(view);
@@ -272,9 +197,9 @@ std::string render_cloud_view(const CloudView& view, const CloudViewOptions& opt
   std::ostringstream json;
   json.imbue(std::locale::classic());
   json.precision(9);
-  json << "{\"three\":" << json_string(src.empty() ? "inlined" : src) << ",\"states\":" << states
-       << ",\"centre\":[" << centre.x() << "," << centre.y() << "," << centre.z() << "],\"radius\":" << radius
-       << ",\"clouds\":[";
+  json << "{\"three\":" << detail::script_json_string(src.empty() ? "inlined" : src)
+       << ",\"states\":" << states << ",\"centre\":[" << centre.x() << "," << centre.y() << "," << centre.z()
+       << "],\"radius\":" << radius << ",\"clouds\":[";
   page << "<ul class=\"sx-legend\">\n";
   for (std::size_t i = 0; i < view.clouds.size(); ++i) {
     const ViewCloud& c = view.clouds[i];
@@ -283,12 +208,13 @@ std::string render_cloud_view(const CloudView& view, const CloudViewOptions& opt
     page << "<li><label><input type=\"checkbox\" data-cloud=\"" << i << "\" checked>"
          << "<span class=\"sx-swatch\" style=\"background:" << colours[i] << "\"></span>"
          << escape_html(c.name) << " <span class=\"sx-count\">"
-         << (kept.size() < finite ? grouped(kept.size()) + " of " + grouped(finite) : grouped(kept.size()))
+         << (kept.size() < finite ? detail::grouped(kept.size()) + " of " + detail::grouped(finite)
+                                  : detail::grouped(kept.size()))
          << " points</span></label></li>\n";
     json << (i ? "," : "") << "\n{\"color\":\"" << colours[i] << "\",\"count\":" << kept.size()
          << ",\"poses\":[";
     for (std::size_t s = 0; s < states; ++s) json << (s ? "," : "") << pose_json(poses_of[i][s]);
-    json << "],\"points\":\"" << base64(float_bytes(kept)) << "\"}";
+    json << "],\"points\":\"" << detail::base64(detail::float32_bytes(kept)) << "\"}";
   }
   json << "]}";
   // Sparse scenes get larger points by default (the slider changes it).
@@ -305,7 +231,7 @@ std::string render_cloud_view(const CloudView& view, const CloudViewOptions& opt
        << (view.states.size() > 1
                ? " · keys 1–" + std::to_string(std::min<std::size_t>(9, states)) + ": state"
                : std::string())
-       << ". At most " << grouped(view.max_points) << " points per cloud (evenly strided).</p>\n"
+       << ". At most " << detail::grouped(view.max_points) << " points per cloud (evenly strided).</p>\n"
        << "<p id=\"sx-status\" class=\"sx-status\">Loading…</p>\n"
        << "<noscript><p class=\"sx-error\">The 3D view needs JavaScript.</p></noscript>\n</div>\n";
   if (src.empty())

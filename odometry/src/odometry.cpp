@@ -333,9 +333,8 @@ std::size_t OdometryResult::untrusted() const {
 }
 
 std::size_t OdometryResult::recovered() const {
-  return static_cast<std::size_t>(std::count_if(steps.begin(), steps.end(), [](const OdometryStep& s) {
-    return s.recovery == "wide_basin" || s.recovery == "restart";
-  }));
+  return static_cast<std::size_t>(
+      std::count_if(steps.begin(), steps.end(), [](const OdometryStep& s) { return s.recovered(); }));
 }
 
 OdometryResult run_odometry(const Dataset& dataset, const OdometrySettings& settings, std::size_t first,

@@ -23,6 +23,7 @@
 #include "sextant/pipeline/matcher_request.hpp"
 #include "sextant/pipeline/odometry_output.hpp"
 #include "sextant/pipeline/odometry_request.hpp"
+#include "sextant/pipeline/odometry_view.hpp"
 #include "sextant/pipeline/run_map_builder.hpp"
 #include "steps_table.hpp"
 
@@ -81,7 +82,8 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
                      const py::object& poses, const py::object& odometry_poses, const py::object& times,
                      std::uint64_t campus_seed, int jobs, const py::object& sampler_settings,
                      const std::string& sensor, const std::string& platform, bool build_map,
-                     const py::object& map_voxel, bool map_trusted_only, const py::kwargs& settings) {
+                     const py::object& map_voxel, bool map_trusted_only, const py::object& view,
+                     const py::kwargs& settings) {
   // Arguments first (cheap), then the dataset, as the CLI (odometry_request.hpp).
   const MatcherConfig config =  // unknown names, bad settings
       read_matcher_config(matcher_request("odometry()", method, preset, sampling, settings, sampler_settings),
@@ -105,6 +107,9 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
   if (const std::string problem = worker_threads_problem(jobs, "jobs"); !problem.empty())
     throw py::value_error(problem);
   const std::optional<RunMapSettings> world_map = map_settings(build_map, map_voxel, map_trusted_only);
+  const std::string view_path =
+      view.is_none() ? std::string() : py::module_::import("os").attr("fspath")(view).cast<std::string>();
+  if (!view_path.empty()) check_run_view_path(view_path);  // before the run, not after it
 
   const std::unique_ptr<Dataset> dataset =
       open_odometry_dataset(source, poses, odometry_poses, times, campus_seed);
@@ -116,8 +121,8 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
 
   OdometryResult result;
   std::optional<std::vector<Eigen::Isometry3d>> truth;
-  std::optional<RunMapBuilder> builder;  // built as the run goes, as the CLI's --map-out
-  if (world_map) builder.emplace(*world_map);
+  std::optional<RunMapBuilder> builder;  // built as the run goes, as the CLI's --map-out; the view draws it
+  if (world_map || !view_path.empty()) builder.emplace(world_map.value_or(RunMapSettings{}));
   double seconds = 0.0;
   {
     const py::gil_scoped_release release;
@@ -129,6 +134,10 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
         run_odometry(*dataset, s, first, count, {}, builder ? builder->observer() : OdometryScanObserver{});
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     truth = ground_truth_of(*dataset, first, count);
+    if (!view_path.empty())
+      write_odometry_view(view_path, *dataset, first, result, result.poses, truth, builder->map(),
+                          "sextant.odometry: " + meta.name + ", scans " + std::to_string(first) + "–" +
+                              std::to_string(first + count - 1) + " (" + method + ")");
   }
 
   OdometryRun run;
@@ -160,7 +169,7 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
   run.dropped_non_finite = counts.read.non_finite_dropped;
   run.dropped_no_return = counts.read.no_return_dropped;
   run.seconds = seconds;
-  if (builder) {
+  if (world_map) {
     CloudArrays arrays = cloud_arrays(builder->map().cloud());
     run.map_points = std::move(arrays.points);
     run.map_intensity = std::move(arrays.intensity);
@@ -200,6 +209,9 @@ build_map: also build the run's map, as ``sextant odometry --map-out`` does: eve
     rounded to 1, 2 or 5 × 10ⁿ, at least 0.01 (the CLI's --map-voxel). map_trusted_only: leave the scans
     placed by untrusted steps out (the CLI's --map-trusted-only; by default they go in, so that the map
     shows where the run went wrong).
+view: a file name (str or path): also write the run's view there, one offline HTML page (the CLI's
+    --view: the map, the trajectory and the ground truth, the untrusted, not converged and recovered
+    steps marked, a click on a step shows its trust and reason).
 poses: ground truth. For a folder of scans: a TUM or KITTI file (the CLI's --poses); for a list: an
     N×4×4 array (world ← scan). odometry_poses (N×4×4) and times (N seconds): a list's odometry and
     clock.
@@ -277,7 +289,7 @@ void bind_odometry(py::module_& m) {
         py::arg("odometry_poses") = py::none(), py::arg("times") = py::none(), py::arg("campus_seed") = 1,
         py::arg("jobs") = 0, py::arg("sampler_settings") = py::none(), py::arg("sensor") = "auto",
         py::arg("platform") = "auto", py::arg("build_map") = false, py::arg("map_voxel") = py::none(),
-        py::arg("map_trusted_only") = false);
+        py::arg("map_trusted_only") = false, py::arg("view") = py::none());
 }
 
 }  // namespace sextant::python

@@ -183,3 +183,20 @@ def test_bad_input_raises(data_dir, tmp_path):
         sextant.odometry([cloud] * 5, times=[0, 1, float("nan"), 3, 4])
     with pytest.raises(ValueError, match=r"times\[1\]: the time 0\.000000 s is not after the previous"):
         sextant.odometry([cloud, cloud], times=[0, 0])
+
+
+def test_view_is_the_clis_page(tmp_path):
+    """odometry(..., view=) writes the page `sextant odometry --view` writes: every pose, one entry per
+    step with its trust, the ground truth; a missing folder raises before the run."""
+    path = tmp_path / "run.html"
+    r = sextant.odometry("campus", scans=5, view=path)
+    page = path.read_text(encoding="utf-8")
+    start = page.index('<script type="application/json" id="sx-data">')
+    data = json.loads(page[page.index(">", start) + 1:page.index("</script>", start)])
+    assert data["estimate"]["count"] == r.poses.shape[0] == 5
+    assert data["steps"]["count"] == len(r.steps["trust"]) == 4
+    texts = data["steps"]["texts"]
+    assert [texts[i] for i in data["steps"]["trust"]] == list(r.steps["trust"])
+    assert data["reference"] is not None and data["map"]["count"] > 0
+    with pytest.raises(sextant.InputError, match="does not exist"):
+        sextant.odometry("campus", scans=5, view=tmp_path / "missing" / "run.html")

@@ -143,6 +143,8 @@ struct OdometryStep {
   /// would otherwise lose what the scans said
   Eigen::Isometry3d first_relative = Eigen::Isometry3d::Identity();
   bool trusted() const { return quality.trusted(); }
+  /// Trusted after the first registration was not: a wide-basin answer, or a restart
+  bool recovered() const { return recovery == "wide_basin" || recovery == "restart"; }
 };
 
 struct OdometryResult {
