@@ -3,6 +3,7 @@
 // odometry_output.hpp): its options, provenance.json, the sensor line and the per-step lines of -v.
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <string>
 
 #include <yaml-cpp/yaml.h>
@@ -10,10 +11,14 @@
 #include "matcher_options.hpp"
 #include "sextant/core/dataset.hpp"
 #include "sextant/odometry/odometry.hpp"
+#include "sextant/recordings/recording.hpp"
 
 namespace sextant::cli {
 
 struct OdometryOptions : MatcherOptions {
+  /// The part of a recording the options choose (--topic, --start, --duration, --every).
+  RecordingSelection recording_selection() const;
+
   std::string dataset, out;
   std::string poses;  ///< ground truth for a scan folder: TUM or KITTI file (default: poses.txt beside it)
   std::string guess;  ///< empty: odometry when the dataset has it, else constant_velocity
@@ -21,6 +26,10 @@ struct OdometryOptions : MatcherOptions {
   std::string loop_closure;       ///< empty: none; proximity, descriptor or both
   std::string sensor = "auto";    ///< auto, spinning, solid_state
   std::string platform = "auto";  ///< auto, car, handheld
+  std::string topic;              ///< a recording's PointCloud2 topic (empty: its only one)
+  double start = 0.0;             ///< [s] from the recording's start
+  double duration = std::numeric_limits<double>::quiet_NaN();  ///< [s]; NaN: to the end
+  std::size_t every = 1;                                       ///< every N-th message of the topic
   std::size_t first = 0;
   std::size_t scans = 0;  ///< 0: to the end of the dataset
   std::size_t local_map_scans = 5;

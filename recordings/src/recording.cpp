@@ -29,7 +29,8 @@ RecordingFiles files_of(const std::filesystem::path& path) {
 
 std::string storage_of(const OpenedRecording& r) {
   std::string storage = r.containers.empty() ? "" : r.containers.front()->storage();
-  if (r.containers.size() > 1) storage += ", " + std::to_string(r.containers.size()) + " files";
+  if (r.containers.size() > 1)
+    storage = std::to_string(r.containers.size()) + " files, the first: " + storage;
   if (!r.files.layout.empty()) storage += " (" + r.files.layout + ")";
   return storage;
 }
@@ -99,16 +100,19 @@ bool RecordingSelection::is_default() const {
   return topic.empty() && start == 0.0 && !duration && every == 1;
 }
 
-bool RecordingSelection::valid(std::string* why) const {
-  std::string problem;
+std::pair<std::string, std::string> RecordingSelection::problem() const {
   if (!std::isfinite(start) || start < 0.0)
-    problem = "start must be a finite number of seconds ≥ 0";
-  else if (duration && (!std::isfinite(*duration) || *duration <= 0.0))
-    problem = "duration must be a finite number of seconds > 0";
-  else if (every < 1)
-    problem = "every must be ≥ 1";
-  if (why) *why = problem;
-  return problem.empty();
+    return {"start", "expected a finite number of seconds ≥ 0 from the recording's start"};
+  if (duration && !(std::isfinite(*duration) && *duration > 0.0))
+    return {"duration", "expected a finite number of seconds > 0"};
+  if (every < 1) return {"every", "expected a whole number ≥ 1"};
+  return {};
+}
+
+bool RecordingSelection::valid(std::string* why) const {
+  const auto [field, problem_text] = problem();
+  if (why) *why = field.empty() ? "" : field + ": " + problem_text;
+  return field.empty();
 }
 
 bool is_recording(const std::filesystem::path& path) {

@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sextant/core/dataset.hpp"
@@ -33,7 +34,10 @@ struct RecordingSelection {
 
   /// True when nothing but the defaults is chosen (a folder of scans takes no selection).
   bool is_default() const;
-  /// start finite and ≥ 0, duration finite and > 0, every ≥ 1; else false and why.
+  /// The first field whose value cannot be honoured ("start": finite and ≥ 0, "duration": finite and
+  /// > 0, "every": ≥ 1) and why, or two empty strings.
+  std::pair<std::string, std::string> problem() const;
+  /// problem() as the settings structs say it: false and "field: why".
   bool valid(std::string* why) const;
 };
 
