@@ -14,6 +14,10 @@ bool is_point_cloud2_type(const std::string& type) {
   return type == "sensor_msgs/PointCloud2" || type == "sensor_msgs/msg/PointCloud2";
 }
 
+bool keeps_point_clouds(const Connection& c) {
+  return is_point_cloud2_type(c.type);
+}
+
 std::string sniff_format(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   char bytes[16] = {};
@@ -26,11 +30,11 @@ std::string sniff_format(const std::filesystem::path& file) {
 }
 
 std::unique_ptr<Container> open_container(const std::filesystem::path& file, std::uint16_t file_index,
-                                          bool zstd_messages) {
+                                          bool zstd_messages, KeepMessages keep) {
   const std::string format = sniff_format(file);
-  if (format == "rosbag1") return open_rosbag1(file, file_index);
-  if (format == "mcap") return open_mcap(file, file_index);
-  if (format == "sqlite3") return open_rosbag2_sqlite(file, file_index, zstd_messages);
+  if (format == "rosbag1") return open_rosbag1(file, file_index, std::move(keep));
+  if (format == "mcap") return open_mcap(file, file_index, std::move(keep));
+  if (format == "sqlite3") return open_rosbag2_sqlite(file, file_index, zstd_messages, std::move(keep));
   std::error_code ec;
   if (!std::filesystem::exists(file, ec)) throw FileError(file.string(), "no such recording file", ENOENT);
   throw InputError(

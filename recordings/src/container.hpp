@@ -3,9 +3,11 @@
 // connections, MCAP channels, rosbag2 topics), their message counts, its time span, and where the
 // messages of its point-cloud connections lie, so that any one of them is read again later without
 // reading the others (a position of 24 bytes per message; nothing of the messages themselves is kept).
+// Positions are kept for the messages of the connections a KeepMessages says (the point clouds).
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -30,6 +32,11 @@ struct Connection {
 
 /// sensor_msgs/PointCloud2 in either spelling (ROS 1 "sensor_msgs/PointCloud2", ROS 2 ".../msg/...").
 bool is_point_cloud2_type(const std::string& type);
+
+/// Which connections' messages a container keeps the positions of.
+using KeepMessages = std::function<bool(const Connection&)>;
+/// The default: sensor_msgs/PointCloud2 connections.
+bool keeps_point_clouds(const Connection& c);
 
 inline constexpr std::uint32_t kNoChunk = std::numeric_limits<std::uint32_t>::max();
 
@@ -58,9 +65,9 @@ class Container {
   /// The log times of the first and last message [ns], when it has messages.
   std::optional<std::int64_t> first_time() const { return first_time_; }
   std::optional<std::int64_t> last_time() const { return last_time_; }
-  /// The positions of the messages of its point-cloud connections, in the order found (the caller
-  /// sorts them by time); taken once.
-  std::vector<MessagePosition> take_point_cloud_messages() { return std::move(point_clouds_); }
+  /// The positions of the messages of the connections it keeps (KeepMessages), in the order found (the
+  /// caller sorts them by time); taken once.
+  std::vector<MessagePosition> take_kept_messages() { return std::move(kept_); }
 
   /// The payload of the message at `position` (its first `prefix` bytes at most): the serialized
   /// message, for a rosbag2 bag compressed per message decompressed. Decompressed chunks come from and
@@ -77,24 +84,30 @@ class Container {
     if (!last_time_ || t > *last_time_) last_time_ = t;
   }
 
+  explicit Container(KeepMessages keep) : keep_(std::move(keep)) {}
+  bool keeps(std::uint16_t connection) const { return keep_(connections_[connection]); }
+
+  KeepMessages keep_;
   std::string file_, format_, storage_;
   std::vector<Connection> connections_;
   std::optional<std::int64_t> first_time_, last_time_;
-  std::vector<MessagePosition> point_clouds_;
+  std::vector<MessagePosition> kept_;
 };
 
 /// Opens one file, its format by its first bytes (ROS 1 bag, MCAP, sqlite3; `zstd_messages`: a rosbag2
 /// sqlite3 file compressed per message); `file_index` is stored
 /// in every position. InputError naming the file when it is none of them.
 std::unique_ptr<Container> open_container(const std::filesystem::path& file, std::uint16_t file_index,
-                                          bool zstd_messages = false);
+                                          bool zstd_messages = false, KeepMessages keep = keeps_point_clouds);
 
 /// What the first bytes of a file say it is: "rosbag1", "mcap", "sqlite3", or empty.
 std::string sniff_format(const std::filesystem::path& file);
 
-std::unique_ptr<Container> open_rosbag1(const std::filesystem::path& file, std::uint16_t file_index);
-std::unique_ptr<Container> open_mcap(const std::filesystem::path& file, std::uint16_t file_index);
+std::unique_ptr<Container> open_rosbag1(const std::filesystem::path& file, std::uint16_t file_index,
+                                        KeepMessages keep);
+std::unique_ptr<Container> open_mcap(const std::filesystem::path& file, std::uint16_t file_index,
+                                     KeepMessages keep);
 std::unique_ptr<Container> open_rosbag2_sqlite(const std::filesystem::path& file, std::uint16_t file_index,
-                                               bool zstd_messages);
+                                               bool zstd_messages, KeepMessages keep);
 
 }  // namespace sextant::recordings_detail

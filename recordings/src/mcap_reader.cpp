@@ -32,7 +32,8 @@ MessageEncoding encoding_of(const std::string& name) {
 
 class Mcap : public Container {
  public:
-  Mcap(const std::filesystem::path& path, std::uint16_t file_index) : reader_(path), file_index_(file_index) {
+  Mcap(const std::filesystem::path& path, std::uint16_t file_index, KeepMessages keep)
+      : Container(std::move(keep)), reader_(path), file_index_(file_index) {
     file_ = reader_.name();
     format_ = "mcap";
     const Bytes magic = reader_.read(0, kMcapMagicSize, "MCAP magic");
@@ -156,8 +157,7 @@ class Mcap : public Container {
   void add_message(std::uint16_t connection, std::int64_t time, std::uint32_t chunk, std::uint64_t offset) {
     ++connections_[connection].messages;
     saw_time(time);
-    if (is_point_cloud2_type(connections_[connection].type))
-      point_clouds_.push_back(MessagePosition{time, offset, chunk, file_index_, connection});
+    if (keeps(connection)) kept_.push_back(MessagePosition{time, offset, chunk, file_index_, connection});
   }
 
   /// Reads the summary; false when the file has none that indexes every message (then nothing is kept).
@@ -215,7 +215,7 @@ class Mcap : public Container {
   /// Drops what the summary said, for a pass over the data instead.
   void forget() {
     connections_.clear();
-    point_clouds_.clear();
+    kept_.clear();
     first_time_.reset();
     last_time_.reset();
     chunks_.clear();
@@ -248,11 +248,11 @@ class Mcap : public Container {
       const std::uint16_t connection = connection_of(channel, where);
       connections_[connection].messages += entries.size();
       messages += entries.size();
-      if (!is_point_cloud2_type(connections_[connection].type)) continue;
+      if (!keeps(connection)) continue;
       for (const auto& [time, offset] : entries) {
         if (offset >= index.uncompressed_size)
           throw InputError(file_, where, "a message index entry points past its chunk's records");
-        point_clouds_.push_back(
+        kept_.push_back(
             MessagePosition{static_cast<std::int64_t>(time), offset, chunk, file_index_, connection});
       }
     }
@@ -334,8 +334,9 @@ class Mcap : public Container {
 
 }  // namespace
 
-std::unique_ptr<Container> open_mcap(const std::filesystem::path& file, std::uint16_t file_index) {
-  return std::make_unique<Mcap>(file, file_index);
+std::unique_ptr<Container> open_mcap(const std::filesystem::path& file, std::uint16_t file_index,
+                                     KeepMessages keep) {
+  return std::make_unique<Mcap>(file, file_index, std::move(keep));
 }
 
 }  // namespace sextant::recordings_detail

@@ -40,7 +40,7 @@ std::string storage_of(const OpenedRecording& r) {
 std::map<std::string, std::vector<MessagePosition>> point_cloud_messages(OpenedRecording& r) {
   std::map<std::string, std::vector<MessagePosition>> topics;
   for (auto& container : r.containers)
-    for (const MessagePosition& p : container->take_point_cloud_messages())
+    for (const MessagePosition& p : container->take_kept_messages())
       topics[container->connections()[p.connection].topic].push_back(p);
   for (auto& [topic, all] : topics)
     std::stable_sort(all.begin(), all.end(), [](const MessagePosition& a, const MessagePosition& b) {

@@ -25,8 +25,8 @@ struct Chunk {
 
 class Rosbag1 : public Container {
  public:
-  Rosbag1(const std::filesystem::path& path, std::uint16_t file_index)
-      : reader_(path), file_index_(file_index) {
+  Rosbag1(const std::filesystem::path& path, std::uint16_t file_index, KeepMessages keep)
+      : Container(std::move(keep)), reader_(path), file_index_(file_index) {
     file_ = reader_.name();
     format_ = "rosbag1";
     const Bytes magic = reader_.read(0, kRosbag1MagicSize, "bag version line");
@@ -133,8 +133,7 @@ class Rosbag1 : public Container {
   void add_message(std::uint16_t connection, std::int64_t time, std::uint32_t chunk, std::uint64_t offset) {
     ++connections_[connection].messages;
     saw_time(time);
-    if (is_point_cloud2_type(connections_[connection].type))
-      point_clouds_.push_back(MessagePosition{time, offset, chunk, file_index_, connection});
+    if (keeps(connection)) kept_.push_back(MessagePosition{time, offset, chunk, file_index_, connection});
   }
 
   void read_index(std::uint64_t index_pos, std::uint32_t chunk_count) {
@@ -174,7 +173,7 @@ class Rosbag1 : public Container {
       for (const auto& [id, count] : info.counts) {
         const std::uint16_t c = connection_of(id, info.where);
         connections_[c].messages += count;
-        if (is_point_cloud2_type(connections_[c].type)) wanted.insert(c);
+        if (keeps(c)) wanted.insert(c);
       }
       if (!wanted.empty()) read_chunk_index(chunk, info.counts.size(), wanted);
     }
@@ -202,7 +201,7 @@ class Rosbag1 : public Container {
           if (offset >= chunks_[chunk].uncompressed_size)
             cursor.fail("index entry points at byte " + std::to_string(offset) + " of a chunk of " +
                         std::to_string(chunks_[chunk].uncompressed_size) + " bytes");
-          point_clouds_.push_back(MessagePosition{sec * 1000000000 + nsec, offset, chunk, file_index_, c});
+          kept_.push_back(MessagePosition{sec * 1000000000 + nsec, offset, chunk, file_index_, c});
         }
       }
       at = r.end();
@@ -255,8 +254,9 @@ class Rosbag1 : public Container {
 
 }  // namespace
 
-std::unique_ptr<Container> open_rosbag1(const std::filesystem::path& file, std::uint16_t file_index) {
-  return std::make_unique<Rosbag1>(file, file_index);
+std::unique_ptr<Container> open_rosbag1(const std::filesystem::path& file, std::uint16_t file_index,
+                                        KeepMessages keep) {
+  return std::make_unique<Rosbag1>(file, file_index, std::move(keep));
 }
 
 }  // namespace sextant::recordings_detail

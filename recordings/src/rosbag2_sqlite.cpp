@@ -51,8 +51,9 @@ MessageEncoding encoding_of(const std::string& name) {
 
 class Rosbag2Sqlite : public Container {
  public:
-  Rosbag2Sqlite(const std::filesystem::path& path, std::uint16_t file_index, bool zstd_messages)
-      : file_index_(file_index), zstd_messages_(zstd_messages) {
+  Rosbag2Sqlite(const std::filesystem::path& path, std::uint16_t file_index, bool zstd_messages,
+                KeepMessages keep)
+      : Container(std::move(keep)), file_index_(file_index), zstd_messages_(zstd_messages) {
     file_ = path.string();
     format_ = "rosbag2";
     storage_ = zstd_messages ? "sqlite3, zstd per message" : "sqlite3";
@@ -124,11 +125,11 @@ class Rosbag2Sqlite : public Container {
     }
     Statement s(db_, "SELECT id, timestamp FROM messages WHERE topic_id = ?1", file_);
     for (const auto& [id, index] : topics) {
-      if (!is_point_cloud2_type(connections_[index].type)) continue;
+      if (!keeps(index)) continue;
       s.bind(1, id);
       while (s.step())
-        point_clouds_.push_back(MessagePosition{s.integer(1), static_cast<std::uint64_t>(s.integer(0)),
-                                                kNoChunk, file_index_, index});
+        kept_.push_back(MessagePosition{s.integer(1), static_cast<std::uint64_t>(s.integer(0)), kNoChunk,
+                                        file_index_, index});
       s.reset();
     }
   }
@@ -142,8 +143,8 @@ class Rosbag2Sqlite : public Container {
 }  // namespace
 
 std::unique_ptr<Container> open_rosbag2_sqlite(const std::filesystem::path& file, std::uint16_t file_index,
-                                               bool zstd_messages) {
-  return std::make_unique<Rosbag2Sqlite>(file, file_index, zstd_messages);
+                                               bool zstd_messages, KeepMessages keep) {
+  return std::make_unique<Rosbag2Sqlite>(file, file_index, zstd_messages, std::move(keep));
 }
 
 }  // namespace sextant::recordings_detail
