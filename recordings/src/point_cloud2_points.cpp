@@ -55,7 +55,7 @@ Reader coordinate(const PointCloud2Message& m, const std::string& name, const Pl
   for (const PointField2& f : m.fields) names += (names.empty() ? "" : " ") + f.name;
   if (!r)
     throw InputError(place.file, place.at(0),
-                     "a point cloud without an '" + name + "' field (fields: " + names + ")");
+                     "a point cloud without the field '" + name + "' (fields: " + names + ")");
   if (r->datatype != 7 && r->datatype != 8)
     throw InputError(place.file, place.at(0),
                      "field '" + name + "' is " + datatype_name(r->datatype) +
