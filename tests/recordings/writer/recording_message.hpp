@@ -14,7 +14,8 @@ struct TestMessage {
   Bytes data;                 ///< serialized as the container's encoding expects
 };
 
-/// Compresses `data` as bz2, lz4 (frame format) or zstd ("none" or "": a copy), with Debian's libraries.
+/// Compresses `data` as bz2, lz4 (frame format) or zstd with Debian's libraries; any other name ("none",
+/// "", or one to test that readers refuse it): a copy.
 Bytes compress(const std::string& compression, const Bytes& data);
 
 }  // namespace sextant::test
