@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -79,16 +80,22 @@ std::string selection_text(const RecordingSelection& s) {
   return text;
 }
 
+/// [ns] of `seconds` (≥ 0), saturated at 4·10^9 s: beyond any recording, and added to a log time (ns since
+/// 1970) it does not overflow.
+std::int64_t nanoseconds(double seconds) {
+  return seconds >= 4e9 ? std::int64_t{4000000000000000000} : std::llround(seconds * 1e9);
+}
+
 /// The chosen part of `all` (log-time order): from first + start for duration, every N-th.
 std::vector<MessagePosition> select(const std::vector<MessagePosition>& all, const RecordingSelection& s,
                                     std::int64_t first) {
-  const double from = static_cast<double>(first) + s.start * 1e9;
-  const double to = s.duration ? from + *s.duration * 1e9 : INFINITY;
+  const std::int64_t from = first + nanoseconds(s.start);
+  const std::int64_t length =
+      s.duration ? nanoseconds(*s.duration) : std::numeric_limits<std::int64_t>::max();
   std::vector<MessagePosition> chosen;
   std::size_t k = 0;
   for (const MessagePosition& p : all) {
-    const double t = static_cast<double>(p.log_time);
-    if (t < from || t >= to) continue;
+    if (p.log_time < from || p.log_time - from >= length) continue;
     if (k++ % s.every == 0) chosen.push_back(p);
   }
   return chosen;
