@@ -41,6 +41,10 @@ class Rosbag1 : public Container {
     if (header.op != op::kBagHeader)
       throw InputError(file_, header.where,
                        "expected the bag header record (op 3), found op " + std::to_string(header.op));
+    if (header.has("encryptor") && header.text(file_, "encryptor") != "rosbag/NoEncryptor")
+      throw InputError(file_, header.where,
+                       "an encrypted bag (encryptor " + header.text(file_, "encryptor") +
+                           "): sextant reads unencrypted bags (`rosbag decrypt` writes one)");
     const std::uint64_t index_pos = header.u64(file_, "index_pos");
     const std::uint32_t chunk_count = header.u32(file_, "chunk_count");
     if (index_pos != 0 && index_pos < reader_.size()) {

@@ -47,7 +47,7 @@ void write_bytes(const fs::path& file, const std::string& bytes) {
 
 TEST(BadRecordings, ATruncatedBagNamesTheRecordItBreaksIn) {
   const test::TempDir tmp;
-  test::write_bag(tmp / "a.bag", test::known_messages(20, true), {"lz4", 10, true, false});
+  test::write_bag(tmp / "a.bag", test::known_messages(20, true), test::bag_options("lz4", 10, true, false));
   const std::string whole = bytes_of(tmp / "a.bag");
   write_bytes(tmp / "cut.bag",
               whole.substr(0, whole.size() / 2));  // its index is gone: one pass, cut in a chunk
@@ -56,7 +56,7 @@ TEST(BadRecordings, ATruncatedBagNamesTheRecordItBreaksIn) {
 
 TEST(BadRecordings, UnknownCompressionsAreNamed) {
   const test::TempDir tmp;
-  test::write_bag(tmp / "a.bag", test::known_messages(3, true), {"zlib", 10, false, false});
+  test::write_bag(tmp / "a.bag", test::known_messages(3, true), test::bag_options("zlib", 10, false, false));
   expect_error(tmp / "a.bag", "byte 4109",
                "unknown chunk compression 'zlib' (ROS 1 bags use none, bz2 or lz4)");
   test::McapOptions brotli;
@@ -68,7 +68,7 @@ TEST(BadRecordings, UnknownCompressionsAreNamed) {
 
 TEST(BadRecordings, ACorruptChunkIsNamedWhenItsScanIsRead) {
   const test::TempDir tmp;
-  test::write_bag(tmp / "a.bag", test::known_messages(4, true), {"bz2", 10, true, false});
+  test::write_bag(tmp / "a.bag", test::known_messages(4, true), test::bag_options("bz2", 10, true, false));
   std::string bag = bytes_of(tmp / "a.bag");
   const std::size_t chunk = 4109;  // the first record after the 4096-byte bag header
   const std::size_t bz = bag.find("BZh", chunk);

@@ -34,7 +34,7 @@ TEST(ExperimentSource, ARecordingWithItsSelection) {
   const test::TempDir tmp;
   std::vector<test::TestMessage> messages = test::known_messages(30, true);
   messages.push_back(test::known_message(0, true, "/other"));
-  test::write_bag(tmp / "drive.bag", messages, {"bz2", 10, true, false});
+  test::write_bag(tmp / "drive.bag", messages, test::bag_options("bz2", 10, true, false));
   const ExperimentConfig c = config_with(
       "  source: folder\n  path: drive.bag\n  topic: /points\n  start: 1\n  duration: 1\n  every: 3\n", tmp);
   EXPECT_EQ(c.dataset.recording.topic, "/points");

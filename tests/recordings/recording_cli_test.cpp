@@ -46,7 +46,7 @@ std::vector<test::TestMessage> campus_messages(bool ros1) {
 
 TEST(RecordingCli, TheCampusCopiedIntoABagRunsAsTheCampus) {
   const test::TempDir tmp;
-  test::write_bag(tmp / "campus.bag", campus_messages(true), {"lz4", 3, true, false});
+  test::write_bag(tmp / "campus.bag", campus_messages(true), test::bag_options("lz4", 3, true, false));
   const std::string same = " --guess constant_velocity --max-acceleration 0 --no-progress --out ";
   const test::CliRun campus =
       run("odometry campus --scans " + std::to_string(kScans) + same + (tmp / "a").string());

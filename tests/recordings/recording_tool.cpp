@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
     for (std::size_t k = 0; k < scans; ++k)
       messages.push_back(test::known_message(k, bag, "/points", points));
     if (bag) {
-      test::write_bag(path, messages, {"lz4", 50, true, false});
+      test::write_bag(path, messages, test::bag_options("lz4", 50, true, false));
     } else {
       test::McapOptions o;
       o.compression = "zstd";

@@ -28,7 +28,7 @@ std::string problem_of(const fs::path& path, const RecordingSelection& s) {
 
 TEST(RecordingSelection, StartDurationAndEveryChooseByLogTime) {
   const test::TempDir tmp;
-  test::write_bag(tmp / "a.bag", test::known_messages(30, true), {"bz2", 7, true, false});
+  test::write_bag(tmp / "a.bag", test::known_messages(30, true), test::bag_options("bz2", 7, true, false));
   RecordingSelection s;
   s.start = 1.0;  // from the first message: scans 10 … 19 lie in [1, 2) s
   s.duration = 1.0;

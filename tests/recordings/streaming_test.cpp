@@ -57,7 +57,7 @@ TEST(Streaming, An18000ScanMcapReadsWithBoundedMemory) {
 
 TEST(Streaming, An18000ScanBagReadsWithBoundedMemory) {
   const test::TempDir tmp;
-  test::write_bag(tmp / "long.bag", scans_only(true), {"lz4", kPerChunk, true, false});
+  test::write_bag(tmp / "long.bag", scans_only(true), test::bag_options("lz4", kPerChunk, true, false));
   expect_streams(tmp / "long.bag");
 }
 

@@ -82,12 +82,17 @@ void write_bag(const std::filesystem::path& file, const std::vector<TestMessage>
   ByteWriter w;
   w.raw("#ROSBAG V2.0\n", 13);
   const std::size_t header_at = w.size();
-  record(w,
-         {{"op", {0x03}},
-          {"index_pos", u64_bytes(0)},
-          {"conn_count", u32_bytes(0)},
-          {"chunk_count", u32_bytes(0)}},
-         Bytes(4096 - 4 - 69 - 4, ' '));  // the record takes 4096 bytes, as rosbag writes it
+  const auto bag_header = [&](ByteWriter& into, std::uint64_t index_pos, std::uint32_t conns,
+                              std::uint32_t chunks) {
+    Fields fields{{"op", {0x03}},
+                  {"index_pos", u64_bytes(index_pos)},
+                  {"conn_count", u32_bytes(conns)},
+                  {"chunk_count", u32_bytes(chunks)}};
+    if (!o.encryptor.empty()) fields.emplace_back("encryptor", text(o.encryptor));
+    const std::size_t header = 69 + (o.encryptor.empty() ? 0 : 4 + 10 + o.encryptor.size());
+    record(into, fields, Bytes(4096 - 8 - header, ' '));  // the record takes 4096 bytes, as rosbag writes it
+  };
+  bag_header(w, 0, 0, 0);
   struct ChunkInfo {
     std::uint64_t pos;
     std::int64_t start, end;
@@ -149,14 +154,9 @@ void write_bag(const std::filesystem::path& file, const std::vector<TestMessage>
               {"count", u32_bytes(static_cast<std::uint32_t>(info.counts.size()))}},
              data.bytes());
     }
-    // the bag header's fields: index_pos, conn_count, chunk_count (values at fixed places in its header)
-    ByteWriter header;
-    record(header,
-           {{"op", {0x03}},
-            {"index_pos", u64_bytes(index_pos)},
-            {"conn_count", u32_bytes(static_cast<std::uint32_t>(topics.size()))},
-            {"chunk_count", u32_bytes(static_cast<std::uint32_t>(infos.size()))}},
-           Bytes(4096 - 4 - 69 - 4, ' '));
+    ByteWriter header;  // the bag header again, now with its counts, over the first one
+    bag_header(header, index_pos, static_cast<std::uint32_t>(topics.size()),
+               static_cast<std::uint32_t>(infos.size()));
     std::copy(header.bytes().begin(), header.bytes().end(),
               w.bytes().begin() + static_cast<std::ptrdiff_t>(header_at));
   }

@@ -4,6 +4,7 @@
 // after each chunk, and at index_pos the connection and chunk-info records.
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "recording_message.hpp"
@@ -15,7 +16,18 @@ struct BagOptions {
   std::size_t messages_per_chunk = 10;
   bool index = true;            ///< false: index_pos 0, no index records (a recording cut short)
   bool reverse_chunks = false;  ///< chunks written last-first (their times out of order)
+  std::string encryptor;        ///< the bag header's `encryptor` field, when not empty (the data stay plain)
 };
+
+inline BagOptions bag_options(std::string compression, std::size_t messages_per_chunk = 10, bool index = true,
+                              bool reverse_chunks = false) {
+  BagOptions o;
+  o.compression = std::move(compression);
+  o.messages_per_chunk = messages_per_chunk;
+  o.index = index;
+  o.reverse_chunks = reverse_chunks;
+  return o;
+}
 
 /// Writes `messages` (in their order, one connection per topic) to `file`.
 void write_bag(const std::filesystem::path& file, const std::vector<TestMessage>& messages,
