@@ -1,10 +1,13 @@
-// Chunk decompression through libbz2, liblz4 and libzstd (decompress.hpp).
+// Chunk decompression through libbz2, liblz4 and libzstd (decompress.hpp). Each streams into a buffer
+// that grows as the data expand, up to the size the record claims: a lying size field cannot make us
+// allocate more than twice what the data really hold.
 #include "decompress.hpp"
 
 #include <bzlib.h>
 #include <lz4frame.h>
 #include <zstd.h>
 
+#include <algorithm>
 #include <limits>
 #include <memory>
 
@@ -17,6 +20,38 @@ namespace {
   throw InputError(file, where, problem);
 }
 
+/// The output buffer: starts at what the input could plausibly expand to, grows (doubling) up to one byte
+/// more than the size claimed (room for a decompressor to see that its data end there); `room()` is where
+/// the next bytes go.
+class Output {
+ public:
+  Output(std::size_t input_size, std::uint64_t expected) : limit_(expected + 1) {
+    bytes_.resize(
+        static_cast<std::size_t>(std::min<std::uint64_t>(limit_, 16 * std::uint64_t{input_size} + 4096)));
+  }
+  std::uint8_t* room() { return bytes_.data() + done_; }
+  std::size_t room_size() const { return bytes_.size() - done_; }
+  void wrote(std::size_t n) { done_ += n; }
+  std::size_t done() const { return done_; }
+  /// Makes room when full; false when the limit is reached (the data expand beyond the claim).
+  bool grow() {
+    if (room_size() > 0) return true;
+    if (bytes_.size() >= limit_) return false;
+    bytes_.resize(
+        static_cast<std::size_t>(std::min<std::uint64_t>(limit_, 2 * std::uint64_t{bytes_.size()} + 1)));
+    return true;
+  }
+  Bytes take() {
+    bytes_.resize(done_);
+    return std::move(bytes_);
+  }
+
+ private:
+  std::uint64_t limit_;
+  Bytes bytes_;
+  std::size_t done_ = 0;
+};
+
 void check_size(std::uint64_t got, std::uint64_t expected, const char* name, const std::string& file,
                 const std::string& where) {
   if (got != expected)
@@ -25,21 +60,38 @@ void check_size(std::uint64_t got, std::uint64_t expected, const char* name, con
              std::to_string(expected));
 }
 
+[[noreturn]] void too_large(const char* name, std::uint64_t expected, const std::string& file,
+                            const std::string& where) {
+  fail(file, where,
+       std::string(name) + " data decompress to more than the " + std::to_string(expected) +
+           " bytes the record says");
+}
+
 Bytes bz2(const std::uint8_t* data, std::size_t size, std::uint64_t expected, const std::string& file,
           const std::string& where) {
-  Bytes out(expected);
-  if (size > std::numeric_limits<unsigned>::max())
-    fail(file, where, "bz2 data of " + std::to_string(size) + " bytes: larger than libbz2 reads at once");
-  unsigned length = static_cast<unsigned>(expected);
-  const int status = BZ2_bzBuffToBuffDecompress(reinterpret_cast<char*>(out.data()), &length,
-                                                const_cast<char*>(reinterpret_cast<const char*>(data)),
-                                                static_cast<unsigned>(size), 0, 0);
-  if (status == BZ_OUTBUFF_FULL)
-    fail(file, where,
-         "bz2 data decompress to more than the " + std::to_string(expected) + " bytes the record says");
-  if (status != BZ_OK) fail(file, where, "corrupt bz2 data (libbz2 status " + std::to_string(status) + ")");
-  check_size(length, expected, "bz2", file, where);
-  return out;
+  bz_stream stream{};
+  if (BZ2_bzDecompressInit(&stream, 0, 0) != BZ_OK) fail(file, where, "libbz2 could not start decompressing");
+  const std::unique_ptr<bz_stream, int (*)(bz_stream*)> end(&stream, &BZ2_bzDecompressEnd);
+  Output out(size, expected);
+  std::size_t in_done = 0;
+  for (;;) {
+    if (!out.grow()) too_large("bz2", expected, file, where);
+    const unsigned in_size = static_cast<unsigned>(std::min<std::size_t>(size - in_done, 1u << 30));
+    const unsigned out_size = static_cast<unsigned>(std::min<std::size_t>(out.room_size(), 1u << 30));
+    stream.next_in = const_cast<char*>(reinterpret_cast<const char*>(data + in_done));
+    stream.avail_in = in_size;
+    stream.next_out = reinterpret_cast<char*>(out.room());
+    stream.avail_out = out_size;
+    const int status = BZ2_bzDecompress(&stream);
+    in_done += in_size - stream.avail_in;
+    out.wrote(out_size - stream.avail_out);
+    if (status == BZ_STREAM_END) break;
+    if (status != BZ_OK) fail(file, where, "corrupt bz2 data (libbz2 status " + std::to_string(status) + ")");
+    if (in_done == size && stream.avail_out > 0)
+      fail(file, where, "truncated bz2 data: the stream does not end");
+  }
+  check_size(out.done(), expected, "bz2", file, where);
+  return out.take();
 }
 
 Bytes lz4(const std::uint8_t* data, std::size_t size, std::uint64_t expected, const std::string& file,
@@ -49,31 +101,42 @@ Bytes lz4(const std::uint8_t* data, std::size_t size, std::uint64_t expected, co
     fail(file, where, "liblz4 could not make a decompression context");
   const std::unique_ptr<LZ4F_dctx, decltype(&LZ4F_freeDecompressionContext)> context(
       raw, &LZ4F_freeDecompressionContext);
-  Bytes out(expected);
-  std::size_t in_done = 0, out_done = 0, hint = 1;
-  while (in_done < size) {  // frame after frame (one per chunk, as ROS 1 and MCAP write them)
-    std::size_t in_size = size - in_done, out_size = out.size() - out_done;
-    hint =
-        LZ4F_decompress(context.get(), out.data() + out_done, &out_size, data + in_done, &in_size, nullptr);
+  Output out(size, expected);
+  std::size_t in_done = 0;
+  for (;;) {  // frame after frame (one per chunk, as ROS 1 and MCAP write them)
+    if (!out.grow()) too_large("lz4", expected, file, where);
+    std::size_t in_size = size - in_done, out_size = out.room_size();
+    const std::size_t room = out_size;
+    const std::size_t hint =
+        LZ4F_decompress(context.get(), out.room(), &out_size, data + in_done, &in_size, nullptr);
     if (LZ4F_isError(hint)) fail(file, where, std::string("corrupt lz4 data: ") + LZ4F_getErrorName(hint));
     in_done += in_size;
-    out_done += out_size;
-    if (in_size == 0 && out_size == 0)
-      fail(file, where,
-           "lz4 data decompress to more than the " + std::to_string(expected) + " bytes the record says");
+    out.wrote(out_size);
+    if (hint == 0 && in_done == size) break;
+    if (in_done == size && out_size < room) fail(file, where, "truncated lz4 data: the frame does not end");
   }
-  if (hint != 0) fail(file, where, "truncated lz4 data: the frame does not end");
-  check_size(out_done, expected, "lz4", file, where);
-  return out;
+  check_size(out.done(), expected, "lz4", file, where);
+  return out.take();
 }
 
 Bytes zstd(const std::uint8_t* data, std::size_t size, std::uint64_t expected, const std::string& file,
            const std::string& where) {
-  Bytes out(expected);
-  const std::size_t got = ZSTD_decompress(out.data(), out.size(), data, size);
-  if (ZSTD_isError(got)) fail(file, where, std::string("corrupt zstd data: ") + ZSTD_getErrorName(got));
-  check_size(got, expected, "zstd", file, where);
-  return out;
+  const std::unique_ptr<ZSTD_DStream, decltype(&ZSTD_freeDStream)> stream(ZSTD_createDStream(),
+                                                                          &ZSTD_freeDStream);
+  if (!stream) fail(file, where, "libzstd could not make a decompression stream");
+  Output out(size, expected);
+  ZSTD_inBuffer in{data, size, 0};
+  for (;;) {  // frame after frame
+    if (!out.grow()) too_large("zstd", expected, file, where);
+    ZSTD_outBuffer o{out.room(), out.room_size(), 0};
+    const std::size_t hint = ZSTD_decompressStream(stream.get(), &o, &in);
+    if (ZSTD_isError(hint)) fail(file, where, std::string("corrupt zstd data: ") + ZSTD_getErrorName(hint));
+    out.wrote(o.pos);
+    if (hint == 0 && in.pos == in.size) break;
+    if (in.pos == in.size && o.pos < o.size) fail(file, where, "truncated zstd data: the frame does not end");
+  }
+  check_size(out.done(), expected, "zstd", file, where);
+  return out.take();
 }
 
 }  // namespace

@@ -89,6 +89,10 @@ PointCloud point_cloud2_points(const PointCloud2Message& m, const Bytes& payload
 
   ScanLoadReport local;
   const std::size_t points = static_cast<std::size_t>(m.height) * m.width;
+  if (points == 0) {  // an empty cloud (a height of 10^9 rows of nothing is not read row by row)
+    if (report) *report = local;
+    return PointCloud();
+  }
   std::vector<Eigen::Vector3f> xyz;
   std::vector<float> intensities;
   std::vector<double> raw_times;
