@@ -67,7 +67,7 @@ void describe_dataset(const Dataset& dataset, const std::string& where) {
 /// "1592833242.605 s (2020-06-22 13:40:42 UTC)"; the date only for a clock since the epoch (1990–2100).
 std::string time_text(double seconds) {
   std::ostringstream out;
-  out << std::fixed << std::setprecision(9) << seconds << " s";
+  out << std::fixed << std::setprecision(6) << seconds << " s";
   if (seconds > 631152000.0 && seconds < 4102444800.0) {
     const std::time_t t = static_cast<std::time_t>(seconds);
     std::tm utc{};

@@ -248,6 +248,7 @@ class Mcap : public Container {
       const std::uint16_t connection = connection_of(channel, where);
       connections_[connection].messages += entries.size();
       messages += entries.size();
+      for (const auto& entry : entries) saw_time(static_cast<std::int64_t>(entry.first));
       if (!keeps(connection)) continue;
       for (const auto& [time, offset] : entries) {
         if (offset >= index.uncompressed_size)

@@ -89,13 +89,19 @@ std::int64_t nanoseconds(double seconds) {
 /// The chosen part of `all` (log-time order): from first + start for duration, every N-th.
 std::vector<MessagePosition> select(const std::vector<MessagePosition>& all, const RecordingSelection& s,
                                     std::int64_t first) {
-  const std::int64_t from = first + nanoseconds(s.start);
-  const std::int64_t length =
-      s.duration ? nanoseconds(*s.duration) : std::numeric_limits<std::int64_t>::max();
+  // Log times are whatever the file says (an MCAP time beyond 2^63 ns reads as negative): the sums and
+  // differences are taken so that none overflows.
+  const std::int64_t start = nanoseconds(s.start);
+  const std::int64_t from = first > std::numeric_limits<std::int64_t>::max() - start
+                                ? std::numeric_limits<std::int64_t>::max()
+                                : first + start;
+  const std::uint64_t length = s.duration ? static_cast<std::uint64_t>(nanoseconds(*s.duration))
+                                          : std::numeric_limits<std::uint64_t>::max();
   std::vector<MessagePosition> chosen;
   std::size_t k = 0;
   for (const MessagePosition& p : all) {
-    if (p.log_time < from || p.log_time - from >= length) continue;
+    if (p.log_time < from) continue;
+    if (static_cast<std::uint64_t>(p.log_time) - static_cast<std::uint64_t>(from) >= length) continue;
     if (k++ % s.every == 0) chosen.push_back(p);
   }
   return chosen;
@@ -175,8 +181,12 @@ std::unique_ptr<Dataset> open_recording(const std::filesystem::path& path,
                          "': sextant reads ROS 1 and CDR messages");
   const std::vector<MessagePosition> all = std::move(point_cloud_messages(r)[topic.name]);
   if (all.empty()) throw InputError(path.string(), "", "topic '" + topic.name + "' has no messages");
-  std::vector<MessagePosition> chosen = select(all, selection, *r.first_time());
-  const double span = 1e-9 * static_cast<double>(*r.last_time() - *r.first_time());
+  // The recording starts at its first message, which an index that lies about its chunks' times must
+  // not put after the topic's own first message.
+  const std::int64_t first = std::min(*r.first_time(), all.front().log_time);
+  std::vector<MessagePosition> chosen = select(all, selection, first);
+  const double span = 1e-9 * (static_cast<double>(std::max(*r.last_time(), all.back().log_time)) -
+                              static_cast<double>(first));
   if (chosen.empty())
     throw InputError(path.string(), "",
                      "the selection (" + selection_text(selection) + ") holds none of the " +

@@ -206,6 +206,7 @@ class Rosbag1 : public Container {
             cursor.fail("index entry points at byte " + std::to_string(offset) + " of a chunk of " +
                         std::to_string(chunks_[chunk].uncompressed_size) + " bytes");
           kept_.push_back(MessagePosition{sec * 1000000000 + nsec, offset, chunk, file_index_, c});
+          saw_time(kept_.back().log_time);
         }
       }
       at = r.end();

@@ -2,6 +2,7 @@
 // memory (docs/formats.md, "Recordings: memory"):
 //   sextant_recording_tool write long.mcap 18000 [points per scan]   (or long.bag)
 //   /usr/bin/time -v sextant_recording_tool read long.mcap
+// and the fuzzers' seeds (fuzz/seeds/): sextant_recording_tool seeds fuzz/seeds
 #include <cstdlib>
 #include <iostream>
 #include <string>
@@ -35,6 +36,24 @@ int main(int argc, char** argv) {
       test::write_mcap(path, messages, o);
     }
     std::cout << "wrote " << scans << " scans of " << points << " points to " << path.string() << "\n";
+    return 0;
+  }
+  if (command == "seeds") {  // two scans of 3 points and a String message between them, small
+    const auto messages = [](bool ros1) {
+      std::vector<test::TestMessage> m = test::known_messages(2, ros1, "/points", 3);
+      return m;
+    };
+    test::BagOptions bag = test::bag_options("none", 3);
+    bag.header_bytes = 128;
+    test::write_bag(path / "small.bag", messages(true), bag);
+    bag.compression = "lz4";
+    test::write_bag(path / "small_lz4.bag", messages(true), bag);
+    test::McapOptions mcap;
+    mcap.messages_per_chunk = 3;
+    test::write_mcap(path / "small.mcap", messages(false), mcap);
+    mcap.compression = "zstd";
+    test::write_mcap(path / "small_zstd.mcap", messages(false), mcap);
+    std::cout << "wrote small.bag, small_lz4.bag, small.mcap, small_zstd.mcap to " << path.string() << "\n";
     return 0;
   }
   if (command == "read") {

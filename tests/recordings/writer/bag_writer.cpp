@@ -90,7 +90,8 @@ void write_bag(const std::filesystem::path& file, const std::vector<TestMessage>
                   {"chunk_count", u32_bytes(chunks)}};
     if (!o.encryptor.empty()) fields.emplace_back("encryptor", text(o.encryptor));
     const std::size_t header = 69 + (o.encryptor.empty() ? 0 : 4 + 10 + o.encryptor.size());
-    record(into, fields, Bytes(4096 - 8 - header, ' '));  // the record takes 4096 bytes, as rosbag writes it
+    record(into, fields,
+           Bytes(o.header_bytes - 8 - header, ' '));  // the record takes 4096 bytes, as rosbag writes it
   };
   bag_header(w, 0, 0, 0);
   struct ChunkInfo {

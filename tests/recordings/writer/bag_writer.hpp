@@ -17,6 +17,7 @@ struct BagOptions {
   bool index = true;            ///< false: index_pos 0, no index records (a recording cut short)
   bool reverse_chunks = false;  ///< chunks written last-first (their times out of order)
   std::string encryptor;        ///< the bag header's `encryptor` field, when not empty (the data stay plain)
+  std::size_t header_bytes = 4096;  ///< the bag header record's size, padding included (rosbag: 4096)
 };
 
 inline BagOptions bag_options(std::string compression, std::size_t messages_per_chunk = 10, bool index = true,
