@@ -1,7 +1,8 @@
 // `sextant odometry <dataset> [--method mlndt] [--preset …] [--guess odometry|constant_velocity|identity]
 // [--map scan|local_map] [--first N] [--scans N] --out DIR`: chains registrations over a sequence
-// (§5.1.3's dead reckoning by a matcher) of a uos folder, a KITTI odometry sequence folder or the
-// built-in campus (`campus`), writes the trajectory as TUM and KITTI files, steps.csv, metrics.json
+// (§5.1.3's dead reckoning by a matcher) of a uos folder, a KITTI odometry sequence folder, a folder of
+// scans, a recording (--topic, --start, --duration, --every choose its scans) or the built-in campus
+// (`campus`), writes the trajectory as TUM and KITTI files, steps.csv, metrics.json
 // and provenance.json, and prints ATE / RPE / KITTI drift against the dataset's ground truth.
 #include <chrono>
 #include <filesystem>
