@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Sextant needs (only the missing ones, non-interactively, with sudo
 # when not root, `apt-get update` at most once), then configures and builds Release into build/.
-# Usage: scripts/setup.sh [extra cmake -D options...]
+# Usage: [SEXTANT_BUILD_TARGETS="sextant …"] scripts/setup.sh [extra cmake -D options...]
+# The configuration is one for every caller (scripts/main.sh and test.sh share build/: the test
+# command after the main one compiles only what the main one did not need); SEXTANT_BUILD_TARGETS
+# builds only those targets (main.sh: the CLI and the Python module, not the tests).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -30,5 +33,10 @@ if ((${#missing[@]})); then
 fi
 
 jobs=$(nproc 2>/dev/null || echo 2)
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "$@"
-cmake --build build -j"$jobs"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSEXTANT_PYTHON=ON "$@"
+read -r -a targets <<<"${SEXTANT_BUILD_TARGETS:-}"
+if ((${#targets[@]})); then
+  cmake --build build -j"$jobs" --target "${targets[@]}"
+else
+  cmake --build build -j"$jobs"
+fi

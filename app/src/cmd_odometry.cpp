@@ -2,19 +2,21 @@
 // [--map scan|local_map] [--first N] [--scans N] --out DIR`: chains registrations over a sequence
 // (§5.1.3's dead reckoning by a matcher) of a uos folder, a KITTI odometry sequence folder, a folder of
 // scans, a recording (--topic, --start, --duration, --every choose its scans) or the built-in campus
-// (`campus`), writes the trajectory as TUM and KITTI files, steps.csv, metrics.json
-// and provenance.json, and prints ATE / RPE / KITTI drift against the dataset's ground truth.
+// (`campus`), writes the trajectory as TUM and KITTI files, steps.csv, metrics.json and provenance.json
+// (and with --map-out the run's map), and prints ATE / RPE / KITTI drift against the dataset's ground truth.
 #include <chrono>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include <oneapi/tbb/global_control.h>
 
 #include "commands.hpp"
+#include "map_output.hpp"
 #include "matcher_options.hpp"
 #include "number_options.hpp"
 #include "odometry_report.hpp"
@@ -30,6 +32,7 @@
 #include "sextant/pipeline/odometry_output.hpp"
 #include "sextant/pipeline/odometry_request.hpp"
 #include "sextant/pipeline/provenance.hpp"
+#include "sextant/pipeline/run_map_builder.hpp"
 
 namespace sextant::cli {
 namespace {
@@ -74,6 +77,11 @@ int run_odometry_command(const OdometryOptions& o) {
                        "'" + o.loop_closure + "': expected proximity, descriptor or both");
     loop_source = source;
   }
+  std::optional<MapOutput> map_output;  // its extension is checked now, before the run
+  if (!o.map_out.empty()) map_output.emplace(o.map_out, o.out);
+  RunMapSettings map_settings;
+  if (o.map_voxel > 0.0) map_settings.voxel = o.map_voxel;
+  map_settings.trusted_only = o.map_trusted_only;
   std::optional<tbb::global_control> threads;
   if (o.jobs > 0)
     threads.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(o.jobs));
@@ -114,14 +122,23 @@ int run_odometry_command(const OdometryOptions& o) {
   } else {
     progress.emplace(scans - 1, "odometry");
   }
-  const OdometryResult result =
-      run_odometry(*dataset, s, o.first, scans, [&](std::size_t, std::size_t) { progress->tick(); });
+  // The map is built as the run goes; with --loop-closure, after the loops are closed, from the
+  // closed poses (run_map_builder.hpp).
+  std::optional<RunMapBuilder> map;
+  if (map_output && !loop_source) map.emplace(map_settings);
+  const OdometryResult result = run_odometry(
+      *dataset, s, o.first, scans, [&](std::size_t, std::size_t) { progress->tick(); },
+      map ? map->observer() : OdometryScanObserver{});
   progress->finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!quiet) std::cout << "sensor:   " << sensor_line(s, result) << "\n";
   std::optional<OdometryLoopClosure> loops;
   if (loop_source) loops = close_odometry_loops(*dataset, o.first, scans, result, s, *loop_source);
   const std::vector<Eigen::Isometry3d>& poses = loops ? loops->closing.poses : result.poses;
+  if (map_output && loops)
+    map.emplace(build_run_map(*dataset, o.first, poses, result.steps, s.min_range, map_settings));
+  const std::optional<RunMapSummary> map_summary =
+      map ? std::optional<RunMapSummary>(map->summary()) : std::nullopt;
 
   OdometryCounts counts = odometry_counts(result);
   const auto truth = ground_truth_of(*dataset, o.first, scans);
@@ -163,8 +180,13 @@ int run_odometry_command(const OdometryOptions& o) {
   }
   write_metrics_json(out / "metrics.json", estimate_accuracy, odometry_accuracy, scans, counts, seconds,
                      loop_summary);
+  if (map_output) {
+    const PointCloud cloud = map->map().cloud();
+    map.reset();  // the voxels' memory, before the writer's copies
+    map_output->write(folder, cloud);
+  }
   write_file_atomically(out / "provenance.json",
-                        provenance_json(o, config, meta, s, result, scans, start, seconds));
+                        provenance_json(o, config, meta, s, result, scans, start, seconds, map_summary));
   folder.commit();
 
   std::cout << std::fixed << std::setprecision(1) << "registered " << result.steps.size() << " pairs in "
@@ -177,6 +199,18 @@ int run_odometry_command(const OdometryOptions& o) {
             << ", " << counts.recovered << " recovered\n";
   if (const std::string dropped = dropped_points_line(counts, scans); !dropped.empty())
     std::cout << "dropped:  " << dropped << "\n";
+  if (map_summary) {
+    std::ostringstream voxel;  // as given, or as chosen: 0.2, 0.05, 0.125
+    voxel << map_summary->voxel;
+    std::cout << "map:      " << map_summary->points << " points (voxel " << voxel.str() << " m) → "
+              << map_output->path().string();
+    if (map_summary->scans_left_out > 0)
+      std::cout << "; " << map_summary->scans_left_out << " of " << scans
+                << " scans left out, placed by untrusted steps (--map-trusted-only)";
+    if (map_summary->skipped_points > 0)
+      std::cout << "; " << map_summary->skipped_points << " points beyond the voxel index's range left out";
+    std::cout << "\n";
+  }
   if (loops)
     std::cout << "loops:    " << loops->closing.accepted() << " of " << loops->closing.attempts.size()
               << " candidates closed (" << o.loop_closure << "; " << loops->place_matches
@@ -256,6 +290,28 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
                   "whatever the drift), or both; every closure is verified by a trusted registration. "
                   "trajectory.* is then the loop-closed one, chained/ the chain, loop_closures.csv the "
                   "candidates");
+  CLI::Option* map_out =
+      cmd->add_option(
+             "--map-out", o->map_out,
+             "Write the run's map: every scan (as registered: its sensor's frame, without "
+             "--min-range's points) moved into the world by its pose and voxel-filtered, one point "
+             "per occupied voxel at the centroid of its points, with their mean intensity when every "
+             "scan has one; binary .ply or .pcd by the extension, written atomically; inside --out it "
+             "goes in with the run's files. Built as the run goes (memory grows with the occupied "
+             "voxels, not with the scans); with --loop-closure after the loops are closed, from the "
+             "closed poses. Scans placed by untrusted steps go in too (the map shows where the run "
+             "went wrong) unless --map-trusted-only")
+          ->check(map_file());
+  cmd->add_option(
+         "--map-voxel", o->map_voxel,
+         "The map's voxel edge [m] (default: 1/100 of the first scan's median range, rounded to 1, 2 "
+         "or 5 × 10ⁿ, at least 0.01; printed and recorded in provenance.json)")
+      ->check(finite_number(0.0, /*strictly=*/true))
+      ->needs(map_out);
+  cmd->add_flag("--map-trusted-only", o->map_trusted_only,
+                "Leave the scans placed by untrusted steps out of the map (counted and printed); the scans "
+                "after them stay, placed by the chain")
+      ->needs(map_out);
   cmd->add_option("--local-map-scans", o->local_map_scans, "Scans in the local map")
       ->capture_default_str()
       ->check(whole_number(1));

@@ -24,8 +24,21 @@ RecordingSelection OdometryOptions::recording_selection() const {
 std::string provenance_json(const OdometryOptions& o, const MatcherConfig& config,
                             const DatasetMetadata& meta, const OdometrySettings& s,
                             const OdometryResult& result, std::size_t scans, const std::string& start,
-                            double seconds) {
+                            double seconds, const std::optional<RunMapSummary>& map) {
   const GitState git = current_git_state();
+  Json map_json;  // null without --map-out
+  if (map)
+    map_json = {{"path", o.map_out},
+                {"voxel_m", json_value(map->voxel)},
+                {"voxel_from", map->voxel_origin()},
+                {"first_scan_median_range_m", json_value(map->median_range)},
+                {"after_loop_closure", !o.loop_closure.empty()},
+                {"trusted_only", o.map_trusted_only},
+                {"points", map->points},
+                {"intensity", map->intensity},
+                {"scans", map->scans},
+                {"scans_left_out", map->scans_left_out},
+                {"skipped_points", map->skipped_points}};
   const bool sampler = config.sampler.IsDefined() && !config.sampler.IsNull();
   const Json provenance = {
       {"command", "odometry"},
@@ -56,6 +69,7 @@ std::string provenance_json(const OdometryOptions& o, const MatcherConfig& confi
       {"guess", to_string(s.guess)},
       {"map", to_string(s.map)},
       {"loop_closure", o.loop_closure},
+      {"map_out", map_json},
       {"local_map_scans", s.local_map_scans},
       {"min_range", json_value(s.min_range)},
       {"max_acceleration", json_value(s.max_acceleration)},

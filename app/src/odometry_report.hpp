@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include <yaml-cpp/yaml.h>
@@ -11,6 +12,7 @@
 #include "matcher_options.hpp"
 #include "sextant/core/dataset.hpp"
 #include "sextant/odometry/odometry.hpp"
+#include "sextant/pipeline/run_map_builder.hpp"
 #include "sextant/recordings/recording.hpp"
 
 namespace sextant::cli {
@@ -43,14 +45,18 @@ struct OdometryOptions : MatcherOptions {
   bool common_view = false;  ///< --common-view: whatever the method
   bool whole_scans = false;  ///< --whole-scans: whatever the method
   bool print_config = false;
+  std::string map_out;            ///< --map-out: empty, or a .ply / .pcd file
+  double map_voxel = 0.0;         ///< --map-voxel [m]; 0: the default (RunMapSettings)
+  bool map_trusted_only = false;  ///< --map-trusted-only
 };
 
 /// provenance.json: the command, the dataset, the settings as given and as resolved, the sensor and
 /// platform the checks assumed, the git state, the libraries' versions, the host and the times.
+/// `map`: the run's map when --map-out asked for one.
 std::string provenance_json(const OdometryOptions& o, const MatcherConfig& config,
                             const DatasetMetadata& meta, const OdometrySettings& s,
                             const OdometryResult& result, std::size_t scans, const std::string& start,
-                            double seconds);
+                            double seconds, const std::optional<RunMapSummary>& map);
 
 /// -v: one line per registration (steps.csv has every column).
 void print_steps(const OdometryResult& result, std::size_t first);

@@ -14,6 +14,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
 
+#include "scan_handout.hpp"
 #include "sequence_inputs.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/rng.hpp"
@@ -30,6 +31,7 @@ namespace {
 
 using odometry_detail::dataset_label;
 using odometry_detail::odometry_poses;
+using odometry_detail::ScanHandout;
 using odometry_detail::start_pose;
 using odometry_detail::step_reach;
 using odometry_detail::StepContext;
@@ -96,10 +98,11 @@ std::vector<SensorView> views_of(const std::vector<PointCloud>& scans, bool comm
 std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometrySettings& s, std::size_t first,
                                          std::size_t count, const std::vector<Eigen::Isometry3d>& odometry,
                                          const std::vector<std::uint64_t>& seeds, StepCounter& counter,
-                                         OdometryResult& result) {
+                                         ScanHandout& handout, OdometryResult& result) {
   std::vector<OdometryStep> steps(count - 1);
   SequenceTrust trust;
   PointCloud previous = load_sequence_scan(dataset, first, s.min_range, &result.loads[0]);
+  handout.first(previous);
   result.sensor = resolve_sensor(s.sensor, previous);
   // The odometry tells the typical step before any registration: the median of its increments.
   MotionScale scale(count);
@@ -154,6 +157,7 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
       worker.recover(steps[k - 1], frame.reference(), frame.input(), {steps[k - 1].guess}, seeds[k], trust);
     });
     for (std::size_t k = begin; k < end; ++k) frames[k - begin]->to_coordinates(steps[k - 1]);
+    for (std::size_t k = begin; k < end; ++k) handout.next(k, chunk[k - begin], steps[k - 1]);
     previous = std::move(chunk.back());
     previous_view = views.back();
   }
@@ -195,7 +199,7 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
                                            std::size_t first, std::size_t count,
                                            const std::vector<Eigen::Isometry3d>& odometry,
                                            const std::vector<std::uint64_t>& seeds, StepCounter& counter,
-                                           OdometryResult& result) {
+                                           ScanHandout& handout, OdometryResult& result) {
   StepWorker worker(s);
   SequenceTrust trust;
   MotionScale scale;  // the platform's typical step, from its trusted steps
@@ -214,6 +218,7 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
   SensorView last_view, next_view;  // of window.back() and of `next`
   window.push_back(load_sequence_scan(dataset, first, s.min_range, &result.loads[0]));
   window_poses.push_back(Eigen::Isometry3d::Identity());
+  handout.first(window.back());
   result.sensor = resolve_sensor(s.sensor, window.back());
   if (s.common_view) last_view = sensor_view(window.back(), result.sensor.kind);
   PointCloud next;
@@ -283,6 +288,7 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
     const std::size_t keep =
         s.map == OdometryMap::local_map && steps.back().trusted() ? s.local_map_scans : 1;
     window_poses.push_back(previous_pose * steps.back().relative);
+    handout.next(k, input, steps.back());
     window.push_back(std::move(input));
     last_view = input_view;
     while (window.size() > keep) {
@@ -333,7 +339,8 @@ std::size_t OdometryResult::recovered() const {
 }
 
 OdometryResult run_odometry(const Dataset& dataset, const OdometrySettings& settings, std::size_t first,
-                            std::size_t count, const OdometryProgress& progress) {
+                            std::size_t count, const OdometryProgress& progress,
+                            const OdometryScanObserver& observe) {
   if (const std::string why = settings.problem(); !why.empty())
     throw InputError("odometry settings", "", why);
   if (std::string why; !settings.quality.valid(&why)) throw InputError("odometry settings", "", why);
@@ -357,18 +364,22 @@ OdometryResult run_odometry(const Dataset& dataset, const OdometrySettings& sett
   StepCounter counter(progress, count - 1);
   OdometryResult result;
   result.loads.resize(count);
+  const Eigen::Isometry3d start = start_pose(dataset, settings, first);
+  ScanHandout handout(observe, start);
   if (count > 1) {
     const bool independent =
         settings.parallel && settings.guess == OdometryGuess::odometry && settings.map == OdometryMap::scan;
-    result.steps = independent
-                       ? parallel_steps(dataset, settings, first, count, odometry, seeds, counter, result)
-                       : sequential_steps(dataset, settings, first, count, odometry, seeds, counter, result);
+    result.steps =
+        independent
+            ? parallel_steps(dataset, settings, first, count, odometry, seeds, counter, handout, result)
+            : sequential_steps(dataset, settings, first, count, odometry, seeds, counter, handout, result);
   } else {
-    result.sensor = resolve_sensor(settings.sensor,
-                                   load_sequence_scan(dataset, first, settings.min_range, &result.loads[0]));
+    const PointCloud scan = load_sequence_scan(dataset, first, settings.min_range, &result.loads[0]);
+    handout.first(scan);
+    result.sensor = resolve_sensor(settings.sensor, scan);
     result.tolerance = platform_tolerance(settings.quality, settings.platform, std::nullopt);
   }
-  result.poses.push_back(start_pose(dataset, settings, first));
+  result.poses.push_back(start);
   for (const OdometryStep& step : result.steps) result.poses.push_back(result.poses.back() * step.relative);
   return result;
 }

@@ -1,7 +1,9 @@
 // sextant.odometry(): run_odometry (odometry.hpp) over a dataset folder, the built-in campus or a
 // list of arrays, with `sextant odometry`'s defaults (cmd_odometry.cpp), and its OdometryRun: the
-// poses, the per-step table with the columns of the CLI's steps.csv, the Hessians.
+// poses, the per-step table with the columns of the CLI's steps.csv, the Hessians, and with
+// build_map=True the run's map (run_map_builder.hpp, what --map-out writes).
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -21,6 +23,7 @@
 #include "sextant/pipeline/matcher_request.hpp"
 #include "sextant/pipeline/odometry_output.hpp"
 #include "sextant/pipeline/odometry_request.hpp"
+#include "sextant/pipeline/run_map_builder.hpp"
 #include "steps_table.hpp"
 
 namespace sextant::python {
@@ -35,7 +38,29 @@ struct OdometryRun {
   std::size_t first = 0, scans = 0, not_converged = 0, untrusted = 0, recovered = 0;
   std::size_t points_read = 0, dropped_non_finite = 0, dropped_no_return = 0;
   double seconds = 0.0;
+  /// With build_map: the map's points (N×3 float32), intensity (N float32, or None) and voxel [m];
+  /// None without.
+  py::object map_points = py::none(), map_intensity = py::none(), map_voxel = py::none();
+  std::size_t map_scans_left_out = 0;
 };
+
+/// The map settings of odometry()'s arguments; InputError / ValueError naming the argument.
+std::optional<RunMapSettings> map_settings(bool build_map, const py::object& map_voxel, bool trusted_only) {
+  if (!build_map) {
+    if (!map_voxel.is_none()) throw py::value_error("map_voxel: a map's voxel needs build_map=True");
+    if (trusted_only) throw py::value_error("map_trusted_only: needs build_map=True");
+    return std::nullopt;
+  }
+  RunMapSettings settings;
+  settings.trusted_only = trusted_only;
+  if (!map_voxel.is_none()) {
+    const double voxel = map_voxel.cast<double>();
+    if (const std::string problem = map_voxel_problem(voxel); !problem.empty())
+      throw InputError("arguments", "", "map_voxel " + problem);
+    settings.voxel = voxel;
+  }
+  return settings;
+}
 
 py::dict metadata_dict(const DatasetMetadata& m) {
   py::dict d;
@@ -55,7 +80,8 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
                      double max_acceleration, std::uint64_t seed, bool recover, const py::object& common_view,
                      const py::object& poses, const py::object& odometry_poses, const py::object& times,
                      std::uint64_t campus_seed, int jobs, const py::object& sampler_settings,
-                     const std::string& sensor, const std::string& platform, const py::object& topic,
+                     const std::string& sensor, const std::string& platform, bool build_map,
+                     const py::object& map_voxel, bool map_trusted_only, const py::object& topic,
                      double start, const py::object& duration, std::size_t every,
                      const py::kwargs& settings) {
   // Arguments first (cheap), then the dataset, as the CLI (odometry_request.hpp).
@@ -80,6 +106,7 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
   OdometrySettings checked = odometry_settings(request, Face::python);
   if (const std::string problem = worker_threads_problem(jobs, "jobs"); !problem.empty())
     throw py::value_error(problem);
+  const std::optional<RunMapSettings> world_map = map_settings(build_map, map_voxel, map_trusted_only);
 
   RecordingSelection selection;
   if (!topic.is_none()) selection.topic = topic.cast<std::string>();
@@ -96,6 +123,8 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
 
   OdometryResult result;
   std::optional<std::vector<Eigen::Isometry3d>> truth;
+  std::optional<RunMapBuilder> builder;  // built as the run goes, as the CLI's --map-out
+  if (world_map) builder.emplace(*world_map);
   double seconds = 0.0;
   {
     const py::gil_scoped_release release;
@@ -103,7 +132,8 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
     if (jobs > 0)
       threads.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(jobs));
     const auto t0 = std::chrono::steady_clock::now();
-    result = run_odometry(*dataset, s, first, count);
+    result =
+        run_odometry(*dataset, s, first, count, {}, builder ? builder->observer() : OdometryScanObserver{});
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     truth = ground_truth_of(*dataset, first, count);
   }
@@ -137,6 +167,13 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
   run.dropped_non_finite = counts.read.non_finite_dropped;
   run.dropped_no_return = counts.read.no_return_dropped;
   run.seconds = seconds;
+  if (builder) {
+    CloudArrays arrays = cloud_arrays(builder->map().cloud());
+    run.map_points = std::move(arrays.points);
+    run.map_intensity = std::move(arrays.intensity);
+    run.map_voxel = py::float_(builder->map().voxel_size());
+    run.map_scans_left_out = builder->summary().scans_left_out;
+  }
   return run;
 }
 
@@ -167,6 +204,14 @@ min_range: drop points closer than this to the sensor [m]. max_acceleration: wit
 sensor: "spinning", "solid_state" or "auto" (the CLI's --sensor: the ring and horizon checks apply to a
     spinning lidar only; auto measures the first scan). platform: "car", "handheld" or "auto" (the CLI's
     --platform: the size of a wrong step, 1 m or 5°, 0.3 m or 3°, or the typical step's between them).
+build_map: also build the run's map, as ``sextant odometry --map-out`` does: every scan (as registered:
+    its sensor frame, without min_range's points) moved into the world by its pose and voxel-filtered,
+    one point per occupied voxel at the centroid of its points (the mean intensity when every scan has
+    it), built as the run goes (memory grows with the occupied voxels, not with the scans); returned as
+    OdometryRun.map_points. map_voxel: its voxel edge [m]; None: 1/100 of the first scan's median range,
+    rounded to 1, 2 or 5 × 10ⁿ, at least 0.01 (the CLI's --map-voxel). map_trusted_only: leave the scans
+    placed by untrusted steps out (the CLI's --map-trusted-only; by default they go in, so that the map
+    shows where the run went wrong).
 poses: ground truth. For a folder of scans: a TUM or KITTI file (the CLI's --poses); for a list: an
     N×4×4 array (world ← scan). odometry_poses (N×4×4) and times (N seconds): a list's odometry and
     clock.
@@ -221,6 +266,16 @@ void bind_odometry(py::module_& m) {
           "dropped_no_return", &OdometryRun::dropped_no_return,
           "points dropped as the scanner's 'no return' (uos .3d; per scan: steps['dropped_no_return'])")
       .def_readonly("seconds", &OdometryRun::seconds, "wall time of the registrations [s]")
+      .def_readonly("map_points", &OdometryRun::map_points,
+                    "with build_map=True: the run's map, N×3 float32 world points (one per occupied voxel, "
+                    "the centroid of its points, in the order the voxels were first hit); else None")
+      .def_readonly("map_intensity", &OdometryRun::map_intensity,
+                    "with build_map=True and scans that all have intensity: the N map points' mean "
+                    "intensity (float32); else None")
+      .def_readonly("map_voxel", &OdometryRun::map_voxel,
+                    "with build_map=True: the map's voxel edge [m], given or chosen; else None")
+      .def_readonly("map_scans_left_out", &OdometryRun::map_scans_left_out,
+                    "with map_trusted_only=True: the scans left out of the map, placed by untrusted steps")
       .def("__repr__", [](const OdometryRun& r) {
         return "OdometryRun(scans=" + std::to_string(r.scans) + ", first=" + std::to_string(r.first) +
                ", guess='" + r.guess + "', untrusted=" + std::to_string(r.untrusted) + ")";
@@ -233,7 +288,8 @@ void bind_odometry(py::module_& m) {
         py::arg("recover") = true, py::arg("common_view") = py::none(), py::arg("poses") = py::none(),
         py::arg("odometry_poses") = py::none(), py::arg("times") = py::none(), py::arg("campus_seed") = 1,
         py::arg("jobs") = 0, py::arg("sampler_settings") = py::none(), py::arg("sensor") = "auto",
-        py::arg("platform") = "auto", py::arg("topic") = py::none(), py::arg("start") = 0.0,
+        py::arg("platform") = "auto", py::arg("build_map") = false, py::arg("map_voxel") = py::none(),
+        py::arg("map_trusted_only") = false, py::arg("topic") = py::none(), py::arg("start") = 0.0,
         py::arg("duration") = py::none(), py::arg("every") = 1);
 }
 

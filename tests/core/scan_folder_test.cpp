@@ -50,6 +50,48 @@ TEST(ScanFolder, NaturalOrderOfAnyFormat) {
   EXPECT_TRUE(has_note(ds->metadata(), "mix file formats (1 .pcd, 1 .ply, 1 .xyz)"));
 }
 
+TEST(ScanFolder, NamesThatAreTimesOrderByTheirValueAndStampTheScans) {
+  TempDir dir;
+  write_cloud(dir / "1565943695.9.pcd", cloud_of(3));
+  write_cloud(dir / "1565943696.1.pcd", cloud_of(4));
+  write_cloud(dir / "1565943695.228028.pcd", cloud_of(2));
+  write_cloud(dir / "1565943695.05.pcd", cloud_of(1));
+  write_cloud(dir / "1565943695.000.pcd", cloud_of(5));
+  const auto ds = open_dataset(dir.path());
+  ASSERT_EQ(ds->size(), 5u);
+  const std::vector<std::string> order{"1565943695.000.pcd", "1565943695.05.pcd", "1565943695.228028.pcd",
+                                       "1565943695.9.pcd", "1565943696.1.pcd"};
+  for (std::size_t i = 0; i < order.size(); ++i) EXPECT_EQ(ds->scan_file(i).filename(), order[i]) << i;
+  ASSERT_TRUE(ds->stamp(2).has_value());
+  EXPECT_DOUBLE_EQ(*ds->stamp(0), 1565943695.0);
+  EXPECT_NEAR(*ds->stamp(2), 1565943695.228028, 1e-6);
+  EXPECT_NEAR(*ds->stamp(4), 1565943696.1, 1e-6);
+  EXPECT_FALSE(has_note(ds->metadata(), "missing")) << "times are not counts: no gaps";
+  EXPECT_TRUE(has_note(ds->metadata(), "times are the numbers in their names"));
+
+  write_text(dir / "times.txt", "0\n0.1\n0.2\n0.3\n0.4\n");
+  EXPECT_DOUBLE_EQ(*open_dataset(dir.path())->stamp(4), 0.4) << "times.txt replaces the names' times";
+}
+
+TEST(ScanFolder, ANumberWrittenTwiceWithAndWithoutItsFractionIsAmbiguous) {
+  TempDir dir;
+  write_cloud(dir / "cloud_12.pcd", cloud_of(2));
+  write_cloud(dir / "cloud_12.00.pcd", cloud_of(3));
+  expect_input_error([&] { open_dataset(dir.path()); }, dir.path().string(), "", "both carry the number 12");
+}
+
+TEST(ScanFolder, IntegerAndFractionNamesMixByValueWithoutStamps) {
+  TempDir dir;
+  write_cloud(dir / "scan_2.pcd", cloud_of(2));
+  write_cloud(dir / "scan_1.5.pcd", cloud_of(3));
+  write_cloud(dir / "scan_1.pcd", cloud_of(4));
+  const auto ds = open_dataset(dir.path());
+  EXPECT_EQ(ds->scan_file(0).filename(), "scan_1.pcd");
+  EXPECT_EQ(ds->scan_file(1).filename(), "scan_1.5.pcd");
+  EXPECT_EQ(ds->scan_file(2).filename(), "scan_2.pcd");
+  EXPECT_FALSE(ds->stamp(0).has_value()) << "only names that are all times stamp the scans";
+}
+
 TEST(ScanFolder, ScansSubfolderWithPosesAndTimes) {
   TempDir dir;
   for (int i = 0; i < 3; ++i)

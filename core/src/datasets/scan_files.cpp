@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <map>
+#include <string>
 
 #include "sextant/core/error.hpp"
 
@@ -27,14 +28,44 @@ std::string matched_extension(const std::string& name, const std::vector<std::st
   return best;
 }
 
-/// The last run of digits in `stem`; false when there is none.
-bool last_digits(const std::string& stem, std::string& digits) {
-  const auto end = stem.find_last_of("0123456789");
-  if (end == std::string::npos) return false;
+/// The run of digits ending at `end` (inclusive) in `stem`, and where it begins.
+std::size_t digits_ending_at(const std::string& stem, std::size_t end, std::string& digits) {
   std::size_t begin = end;
   while (begin > 0 && std::isdigit(static_cast<unsigned char>(stem[begin - 1]))) --begin;
   digits = stem.substr(begin, end - begin + 1);
+  return begin;
+}
+
+/// The last number in `stem`: its integer digits and, when it is <digits>.<digits>, the digits
+/// after the point; false when the stem has no digit.
+bool last_number(const std::string& stem, std::string& digits, std::string& fraction, bool& decimal) {
+  const auto end = stem.find_last_of("0123456789");
+  if (end == std::string::npos) return false;
+  const std::size_t begin = digits_ending_at(stem, end, digits);
+  fraction.clear();
+  decimal = begin >= 2 && stem[begin - 1] == '.' && std::isdigit(static_cast<unsigned char>(stem[begin - 2]));
+  if (decimal) {
+    fraction = digits;
+    digits_ending_at(stem, begin - 2, digits);
+    fraction.erase(fraction.find_last_not_of('0') + 1);  // 0.50 is 0.5
+  }
   return true;
+}
+
+/// a before b: by number, then by fraction digit by digit ("" < "05" < "5"), then by path.
+bool numbered_before(const NumberedFile& a, const NumberedFile& b) {
+  if (a.number != b.number) return a.number < b.number;
+  if (a.fraction != b.fraction)
+    return a.fraction < b.fraction;  // no trailing zeros: lexicographic is numeric
+  return a.path < b.path;
+}
+
+bool same_number(const NumberedFile& a, const NumberedFile& b) {
+  return a.number == b.number && a.fraction == b.fraction;  // 12, 12.0 and 12.00 are one number
+}
+
+std::string number_text(const NumberedFile& f) {
+  return std::to_string(f.number) + (f.has_fraction() ? "." + (f.fraction.empty() ? "0" : f.fraction) : "");
 }
 
 std::string range_text(std::uint64_t from, std::uint64_t to) {
@@ -66,9 +97,10 @@ ScanListing list_scans(const std::filesystem::path& folder, const std::string& p
       listing.left_out.push_back(name + " (not named " + prefix + "NNN" + extension + ")");
       continue;
     }
-    std::string digits;
+    std::string digits, fraction;
+    bool decimal = false;
     const std::string stem = name.substr(prefix.size(), name.size() - prefix.size() - extension.size());
-    if (!last_digits(stem, digits)) {
+    if (!last_number(stem, digits, fraction, decimal)) {
       listing.left_out.push_back(name + " (no number in its name, which orders the scans)");
       continue;
     }
@@ -76,17 +108,15 @@ ScanListing list_scans(const std::filesystem::path& folder, const std::string& p
     const std::string significant = first == std::string::npos ? "0" : digits.substr(first);
     if (significant.size() > 19)
       throw InputError(entry.path().string(), "", "the number in the name has more than 19 digits");
-    listing.files.push_back({std::stoull(significant), entry.path(), extension});
+    listing.files.push_back({std::stoull(significant), entry.path(), extension, fraction, decimal});
   }
-  std::sort(listing.files.begin(), listing.files.end(), [](const NumberedFile& a, const NumberedFile& b) {
-    return a.number != b.number ? a.number < b.number : a.path < b.path;
-  });
+  std::sort(listing.files.begin(), listing.files.end(), numbered_before);
   for (std::size_t i = 1; i < listing.files.size(); ++i) {
-    if (listing.files[i].number == listing.files[i - 1].number)
+    if (same_number(listing.files[i], listing.files[i - 1]))
       throw InputError(folder.string(), "",
                        "ambiguous scan order: " + listing.files[i - 1].path.filename().string() + " and " +
                            listing.files[i].path.filename().string() + " both carry the number " +
-                           std::to_string(listing.files[i].number) + "; remove or rename one");
+                           number_text(listing.files[i]) + "; remove or rename one");
   }
   std::sort(listing.left_out.begin(), listing.left_out.end());
   if (!listing.files.empty() && !listing.left_out.empty())
@@ -114,6 +144,8 @@ std::string left_out_note(const std::vector<std::string>& left_out) {
 }
 
 std::string describe_gaps(const std::vector<NumberedFile>& files) {
+  if (std::any_of(files.begin(), files.end(), [](const NumberedFile& f) { return f.has_fraction(); }))
+    return {};
   std::uint64_t missing = 0;
   std::size_t gaps = 0;
   std::string ranges;
@@ -126,6 +158,20 @@ std::string describe_gaps(const std::vector<NumberedFile>& files) {
   if (missing == 0) return {};
   return std::to_string(missing) + (missing == 1 ? " number" : " numbers") + " missing: " + ranges +
          (gaps > 4 ? ", …" : "");
+}
+
+double NumberedFile::value() const {
+  return std::stod(std::to_string(number) + "." + (fraction.empty() ? "0" : fraction));
+}
+
+std::vector<double> times_in_names(const std::vector<NumberedFile>& files) {
+  if (files.empty() ||
+      !std::all_of(files.begin(), files.end(), [](const NumberedFile& f) { return f.has_fraction(); }))
+    return {};
+  std::vector<double> times;
+  times.reserve(files.size());
+  for (const NumberedFile& f : files) times.push_back(f.value());
+  return times;
 }
 
 std::string folder_name(const std::filesystem::path& folder) {

@@ -87,6 +87,10 @@ class ScanFolderDataset final : public detail::ListedScansDataset {
     if (!times.empty()) {
       times_ = read_kitti_times(times);
       check_count(times, times_.size(), "times");
+    } else if (times_ = detail::times_in_names(scans_); !times_.empty()) {
+      meta_.notes.push_back("the scans' times are the numbers in their names (" +
+                            scans_.front().path.filename().string() + " is at " +
+                            std::to_string(times_.front()) + " s); a times.txt would replace them");
     }
     const fs::path poses = poses_file.empty() ? beside(folder, scans_folder, "poses.txt") : poses_file;
     if (!poses.empty()) {

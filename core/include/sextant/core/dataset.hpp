@@ -55,7 +55,7 @@ class Dataset {
   virtual std::optional<Eigen::Isometry3d> odometry(std::size_t i) const = 0;
   /// World ← scan-i true pose, when the dataset has it.
   virtual std::optional<Eigen::Isometry3d> ground_truth(std::size_t i) const = 0;
-  /// Time of scan i [s], when the dataset has a clock (KITTI times.txt).
+  /// Time of scan i [s], when the dataset has a clock (times.txt, names that are times, a recording).
   virtual std::optional<double> stamp(std::size_t /*i*/) const { return std::nullopt; }
   /// The file scan i is read from (empty for in-memory datasets).
   virtual std::filesystem::path scan_file(std::size_t /*i*/) const { return {}; }
@@ -71,14 +71,14 @@ const std::vector<std::string>& scan_folder_extensions();
 
 /// Any folder of scans: the files of scan_folder_extensions() in `folder`, or in `folder/scans`
 /// when `folder` holds none, in natural order (by the last number in the name: full2 before
-/// full10). Optional, beside the scans' folder or in `folder`: `poses.txt` (one 3×4 row-major
-/// world ← scan matrix per line, the KITTI layout without calibration: the ground truth) and
-/// `times.txt` (one time [s] per scan). `poses_file`, when given, replaces poses.txt: TUM
-/// (8 numbers per line) or KITTI (12 per line), one pose per scan, in order. A pose or time count
-/// that differs from the scan count, two files with the same number, a scan that is a link to
-/// nothing, and scans both in `folder` and in `folder/scans`, are InputErrors; gaps in the
-/// numbering, mixed formats and cloud files left out (no number in the name) are notes in the
-/// metadata.
+/// full10; a number with a fraction by its value: 1565943695.9 before 1565943696.1; when every name
+/// is such a number, as a bag export names them, those numbers are the scans' times). Optional, beside the
+/// scans' folder or in `folder`: `poses.txt` (one 3×4 row-major world ← scan matrix per line, the KITTI
+/// layout without calibration: the ground truth) and `times.txt` (one time [s] per scan). `poses_file`, when
+/// given, replaces poses.txt: TUM (8 numbers per line) or KITTI (12 per line), one pose per scan, in order. A
+/// pose or time count that differs from the scan count, two files with the same number, a scan that is a link
+/// to nothing, and scans both in `folder` and in `folder/scans`, are InputErrors; gaps in the numbering,
+/// mixed formats and cloud files left out (no number in the name) are notes in the metadata.
 std::unique_ptr<Dataset> open_scan_folder(const std::filesystem::path& folder,
                                           const std::filesystem::path& poses_file = {});
 

@@ -164,6 +164,24 @@ struct OdometryResult {
 /// Called after each finished registration with (done, total); never concurrently.
 using OdometryProgress = std::function<void(std::size_t done, std::size_t total)>;
 
+/// A scan where the chain placed it, for an observer that builds something of the run as it goes (the
+/// run's map, run_map.hpp) without the run keeping any scan.
+struct RegisteredScan {
+  std::size_t index = 0;  ///< k: scan first + k of the dataset
+  /// The whole scan as the chain read it (load_sequence_scan: in its sensor frame, without the points
+  /// within min_range), not the common-view cut or the sample a registration used; valid during the call
+  const PointCloud* scan = nullptr;
+  /// world ← scan: equal to OdometryResult::poses[k], bit for bit
+  Eigen::Isometry3d world_from_scan = Eigen::Isometry3d::Identity();
+  /// The step that placed it (steps[k − 1]; null for scan `first`), its trust included; valid during
+  /// the call
+  const OdometryStep* step = nullptr;
+};
+
+/// Called once per scan, in the sequence's order, as soon as its pose is final; never concurrently.
+/// It only reads: the run's results are the same with or without it.
+using OdometryScanObserver = std::function<void(const RegisteredScan& scan)>;
+
 /// Scan i of the dataset without the points closer than `min_range` to the sensor (as the chain
 /// registers it); `report`, when given, gets what reading the file dropped.
 PointCloud load_sequence_scan(const Dataset& dataset, std::size_t i, double min_range,
@@ -172,9 +190,11 @@ PointCloud load_sequence_scan(const Dataset& dataset, std::size_t i, double min_
 /// Chains count − 1 registrations over scans first … first + count − 1. Throws InputError when the
 /// range leaves the dataset, count < 1, the settings are invalid or the guess mode needs odometry the
 /// dataset lacks (the message suggests constant_velocity). A registration that fails is kept as the
-/// matcher returned it (converged = false, status says why) and the chain goes on.
+/// matcher returned it (converged = false, status says why) and the chain goes on. `observe`, when
+/// given, sees every scan with its pose (OdometryScanObserver).
 OdometryResult run_odometry(const Dataset& dataset, const OdometrySettings& settings, std::size_t first,
-                            std::size_t count, const OdometryProgress& progress = {});
+                            std::size_t count, const OdometryProgress& progress = {},
+                            const OdometryScanObserver& observe = {});
 
 /// "odometry" | "constant_velocity" | "identity"; InputError(`what`) naming the choices otherwise.
 inline constexpr EnumNames<OdometryGuess, 3> kOdometryGuessNames{
