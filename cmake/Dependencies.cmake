@@ -9,6 +9,13 @@ find_package(CLI11 REQUIRED)
 find_package(nlohmann_json 3.2 REQUIRED)
 find_package(Ceres REQUIRED)
 
+# Recordings (recordings/): ROS 2 bags' sqlite3 files, and the chunk compressions of bags and MCAP files.
+find_package(SQLite3 REQUIRED)
+find_package(BZip2 REQUIRED)
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(SEXTANT_LZ4 REQUIRED IMPORTED_TARGET liblz4)
+pkg_check_modules(SEXTANT_ZSTD REQUIRED IMPORTED_TARGET libzstd)
+
 # GeographicLib ships its Find module outside CMake's default search path on Debian.
 list(APPEND CMAKE_MODULE_PATH /usr/share/cmake/geographiclib)
 find_package(GeographicLib REQUIRED)

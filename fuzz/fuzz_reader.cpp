@@ -22,6 +22,7 @@
 #include "sextant/core/io/trajectory_io.hpp"
 #include "sextant/core/io/uos.hpp"
 #include "sextant/experiments/experiment_config.hpp"
+#include "sextant/recordings/recording.hpp"
 
 namespace {
 
@@ -39,12 +40,14 @@ enum Target {
   tum,
   kitti_traj,
   oxts,
+  rosbag1,
+  mcap,
   config
 };
 
-const char* const kNames[] = {"uos_3d",      "uos_pose",    "uos_frames", "kitti_bin", "xyz32",
-                              "kitti_poses", "kitti_calib", "pcd",        "ply",       "csv",
-                              "tum",         "kitti_traj",  "oxts",       "config"};
+const char* const kNames[] = {"uos_3d",      "uos_pose", "uos_frames", "kitti_bin", "xyz32", "kitti_poses",
+                              "kitti_calib", "pcd",      "ply",        "csv",       "tum",   "kitti_traj",
+                              "oxts",        "rosbag1",  "mcap",       "config"};
 
 Target kTarget = pcd;
 
@@ -58,6 +61,8 @@ const char* extension() {
     case pcd: return ".pcd";
     case ply: return ".ply";
     case csv: return ".csv";
+    case rosbag1: return ".bag";
+    case mcap: return ".mcap";
     case config: return ".yaml";
     default: return ".txt";
   }
@@ -79,6 +84,17 @@ void check_cloud(const sextant::PointCloud& cloud, const sextant::ScanLoadReport
   if (cloud.size() + report.non_finite_dropped + report.no_return_dropped != report.points_read) std::abort();
 }
 
+/// A recording: described, then every scan of its only point-cloud topic read and checked.
+void read_recording(const std::filesystem::path& file) {
+  (void)sextant::describe_recording(file);
+  const std::unique_ptr<sextant::Dataset> scans = sextant::open_recording(file);
+  for (std::size_t i = 0; i < scans->size(); ++i) {
+    sextant::ScanLoadReport report;
+    check_cloud(scans->scan(i, &report), report);
+    (void)scans->stamp(i);
+  }
+}
+
 void read_input(const std::filesystem::path& file) {
   using namespace sextant;
   ScanLoadReport report;
@@ -96,6 +112,8 @@ void read_input(const std::filesystem::path& file) {
     case tum: read_tum_trajectory(file); break;
     case kitti_traj: read_kitti_trajectory(file); break;
     case oxts: oxts_to_poses(read_oxts_file(file)); break;
+    case rosbag1:
+    case mcap: read_recording(file); break;
     case config:
       read_experiment_config(file, false);
       read_experiment_config(file, true);

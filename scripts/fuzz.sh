@@ -8,7 +8,8 @@ cd "$(dirname "$0")/.."
 seconds=${1:-20}
 shift || true
 scripts/ensure_packages.sh clang libclang-rt-14-dev build-essential cmake pkg-config libeigen3-dev \
-  libpcl-dev libgeographiclib-dev libyaml-cpp-dev libtbb-dev libcli11-dev libfmt-dev libceres-dev libopenmpi-dev
+  libpcl-dev libgeographiclib-dev libyaml-cpp-dev libtbb-dev libcli11-dev libfmt-dev libceres-dev libopenmpi-dev \
+  libsqlite3-dev libzstd-dev liblz4-dev libbz2-dev
 jobs=$(nproc 2>/dev/null || echo 2)
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
@@ -17,7 +18,7 @@ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=cl
 cmake --build build-fuzz -j"$jobs" --target sextant_fuzz
 harnesses=("$@")
 ((${#harnesses[@]})) || harnesses=(uos_3d uos_pose uos_frames kitti_bin xyz32 kitti_poses kitti_calib pcd ply csv
-                                   tum kitti_traj oxts config)
+                                   tum kitti_traj oxts rosbag1 mcap config)
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}"
 cd build-fuzz/fuzz
 for h in "${harnesses[@]}"; do

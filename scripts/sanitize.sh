@@ -10,7 +10,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/ensure_packages.sh clang libclang-rt-14-dev build-essential cmake pkg-config git libeigen3-dev \
-  libceres-dev libpcl-dev libgeographiclib-dev libyaml-cpp-dev libtbb-dev libcli11-dev libfmt-dev libgtest-dev libopenmpi-dev
+  libceres-dev libpcl-dev libgeographiclib-dev libyaml-cpp-dev libtbb-dev libcli11-dev libfmt-dev libgtest-dev libopenmpi-dev \
+  libsqlite3-dev libzstd-dev liblz4-dev libbz2-dev
 jobs=$(nproc 2>/dev/null || echo 2)
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)

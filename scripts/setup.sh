@@ -14,7 +14,8 @@ packages=(build-essential cmake pkg-config git
           libboost-math-dev  # χ², normal, Student-t and binomial distributions (core/chi_square, eval/)
           nlohmann-json3-dev  # JSON of the result rows, provenance and metrics (pipeline/json.hpp)
           libnanoflann-dev  # bench/bench_kd_tree.cpp measures ICP's k-d tree against it
-          libjs-three)  # three.js for the 3D views (eval/cloud_view.hpp), read at run time
+          libjs-three  # three.js for the 3D views (eval/cloud_view.hpp), read at run time
+          libsqlite3-dev libzstd-dev liblz4-dev libbz2-dev)  # recordings/: ROS 2 .db3, MCAP/bag chunks
 # Further packages a caller needs (scripts/test.sh: chromium, which renders the report in the tests;
 # scripts/main.sh and test.sh: pybind11, NumPy and pytest for the Python module, -DSEXTANT_PYTHON=ON).
 read -r -a extra <<<"${SEXTANT_EXTRA_PACKAGES:-}"

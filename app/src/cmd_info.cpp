@@ -1,4 +1,6 @@
-// `sextant info <path>`: what a point-cloud file, a dataset folder or experiment configs hold.
+// `sextant info <path>`: what a point-cloud file, a dataset folder, a recording or experiment configs hold.
+#include <algorithm>
+#include <ctime>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -9,7 +11,9 @@
 #include "sextant/core/dataset.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/cloud_io.hpp"
+#include "sextant/core/io/point_time.hpp"
 #include "sextant/pipeline/dataset_argument.hpp"
+#include "sextant/recordings/recording.hpp"
 
 namespace sextant::cli {
 namespace {
@@ -60,18 +64,88 @@ void describe_dataset(const Dataset& dataset, const std::string& where) {
   }
 }
 
+/// "1592833242.605 s (2020-06-22 13:40:42 UTC)"; the date only for a clock since the epoch (1990–2100).
+std::string time_text(double seconds) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(6) << seconds << " s";
+  if (seconds > 631152000.0 && seconds < 4102444800.0) {
+    const std::time_t t = static_cast<std::time_t>(seconds);
+    std::tm utc{};
+    gmtime_r(&t, &utc);
+    char date[32];
+    std::strftime(date, sizeof date, "%Y-%m-%d %H:%M:%S UTC", &utc);
+    out << " (" << date << ")";
+  }
+  return out.str();
+}
+
+/// One point-cloud topic's first message: its size and fields, the per-point time field named.
+void print_point_fields(const TopicSummary& t) {
+  std::cout << "      points: " << t.height << " × " << t.width << (t.height > 1 ? " (organised)" : "")
+            << ", point_step " << t.point_step << ", frame '" << t.frame_id << "'\n      fields:";
+  std::vector<std::string> names;
+  for (const PointFieldSummary& f : t.fields) names.push_back(f.name);
+  const auto time_field = find_point_time_field(names);
+  for (std::size_t k = 0; k < t.fields.size(); ++k) {
+    const PointFieldSummary& f = t.fields[k];
+    std::cout << (k ? ", " : " ") << f.name << " " << f.datatype
+              << (f.count > 1 ? "×" + std::to_string(f.count) : "") << " @" << f.offset
+              << (time_field && *time_field == k ? " (per-point time)" : "");
+  }
+  std::cout << "\n";
+}
+
+void describe_recording_text(const std::filesystem::path& path) {
+  const RecordingSummary s = describe_recording(path);
+  std::cout << "recording:    " << path.string() << "\n"
+            << "format:       " << s.format << " (" << s.storage << ")\n";
+  if (s.files.size() > 1)
+    for (const auto& file : s.files) std::cout << "file:         " << file.string() << "\n";
+  std::cout << "messages:     " << s.messages << "\n";
+  if (s.start && s.end)
+    std::cout << "start:        " << time_text(*s.start) << "\n"
+              << "end:          " << time_text(*s.end) << "\n"
+              << "duration:     " << std::fixed << std::setprecision(6) << *s.end - *s.start << " s\n";
+  std::size_t name_width = 5, type_width = 4;
+  for (const TopicSummary& t : s.topics) {
+    name_width = std::max(name_width, t.name.size());
+    type_width = std::max(type_width, t.type.size());
+  }
+  std::cout << "topics:       " << s.topics.size() << "\n";
+  std::vector<std::string> clouds;
+  for (const TopicSummary& t : s.topics) {
+    std::cout << "  " << std::left << std::setw(static_cast<int>(name_width)) << t.name << "  "
+              << std::setw(static_cast<int>(type_width)) << t.type << "  " << std::setw(5) << t.encoding
+              << std::right << std::setw(8) << t.messages << (t.messages == 1 ? " message" : " messages")
+              << "\n";
+    if (!t.point_cloud) continue;
+    clouds.push_back(t.name);
+    if (!t.fields.empty()) print_point_fields(t);
+  }
+  if (clouds.size() == 1)
+    std::cout << "scans:        " << clouds.front() << " (its only sensor_msgs/PointCloud2 topic)\n";
+  else if (clouds.empty())
+    std::cout << "scans:        none (no sensor_msgs/PointCloud2 topic)\n";
+  else
+    std::cout << "scans:        " << clouds.size()
+              << " sensor_msgs/PointCloud2 topics: choose one with --topic\n";
+}
+
 }  // namespace
 
 void add_info_command(CLI::App& app, int& exit_code) {
-  auto* cmd = app.add_subcommand("info",
-                                 "Describe a point-cloud file (points, bounds, frame, dropped points) "
-                                 "or a dataset folder (format, scans, odometry, ground truth), or experiment "
-                                 "configs (a YAML or the experiments/ folder: kind, layout, methods, runs)");
+  auto* cmd =
+      app.add_subcommand("info",
+                         "Describe a point-cloud file (points, bounds, frame, dropped points), "
+                         "a dataset folder (format, scans, odometry, ground truth), a recording (a ROS 1 "
+                         ".bag, an .mcap file, a ROS 2 bag folder: topics, types, message counts, point "
+                         "fields), or experiment configs (a YAML or the experiments/ folder: kind, layout, "
+                         "methods, runs)");
   auto path = std::make_shared<std::string>();
   auto markdown = std::make_shared<bool>(false);
   cmd->add_option("path", *path,
-                  "A cloud file (.3d .bin .xyz32.bin .pcd .ply .csv .xyz .txt), a dataset folder, an "
-                  "experiment YAML or a folder of them")
+                  "A cloud file (.3d .bin .xyz32.bin .pcd .ply .csv .xyz .txt), a dataset folder, a "
+                  "recording (.bag, .mcap, a ROS 2 bag folder), an experiment YAML or a folder of them")
       ->required();
   cmd->add_flag("--markdown", *markdown, "Experiments: print a Markdown table");
   cmd->callback([&exit_code, path, markdown] {
@@ -82,8 +156,10 @@ void add_info_command(CLI::App& app, int& exit_code) {
         describe_dataset(*open_builtin_campus(1), "(built in: the synthetic campus, seed 1, cast when read)");
       } else if (missing) {
         throw InputError(*path, "",
-                         "no such file or folder (expected a cloud file, a dataset folder, an experiment "
-                         "YAML or a folder of them, or 'campus')");
+                         "no such file or folder (expected a cloud file, a dataset folder, a recording, an "
+                         "experiment YAML or a folder of them, or 'campus')");
+      } else if (is_recording(*path)) {
+        describe_recording_text(*path);
       } else if (holds_experiments(*path)) {
         describe_experiments(*path, *markdown);
       } else if (std::filesystem::is_directory(*path, ec)) {

@@ -1,5 +1,6 @@
 // `sextant match <reference> <input> [--method mlndt] [--preset default|thesis|outdoor] [--solver lm]
-// [--sampling gbs] [--init x,y,z,a,b,g] [--gt FILE] [--config settings.yaml] [--out aligned.pcd] [--json]`:
+// [--sampling gbs] [--init x,y,z,a,b,g] [--gt FILE] [--config settings.yaml] [--out aligned.pcd] [--json]`,
+// or `sextant match <dataset or recording> --index I J [--topic T]` (scans I and J of it):
 // one registration of a pair with any registered matcher, its transform, iterations, time and
 // the error against a ground-truth matrix (p_ref = T·p_input). With no options: ML-NDT on a GBS
 // sample with the `default` preset, as `sextant odometry` and the library (docs/matcher_defaults.md);
@@ -34,6 +35,7 @@
 #include "sextant/matchers/registration_quality.hpp"
 #include "sextant/matchers/sampler.hpp"
 #include "sextant/matchers/yaml.hpp"
+#include "sextant/pipeline/dataset_argument.hpp"
 #include "sextant/pipeline/json.hpp"
 #include "transform_argument.hpp"
 
@@ -44,8 +46,10 @@ struct MatchOptions : MatcherOptions {
   std::string reference, input;
   std::string init;  ///< "x,y,z,alpha,beta,gamma" [m, deg]
   std::string gt, out;
-  std::string view;             ///< an HTML page with both clouds before and after, in 3D
-  std::string sensor = "auto";  ///< auto, spinning, solid_state
+  std::string view;                ///< an HTML page with both clouds before and after, in 3D
+  std::string sensor = "auto";     ///< auto, spinning, solid_state
+  std::vector<std::size_t> index;  ///< --index I J: scans I and J of the dataset `reference` names
+  std::string topic;               ///< with --index: a recording's PointCloud2 topic
   std::uint64_t seed = 1;
   int jobs = 0;  ///< the registration's threads (0: all cores); the result is the same for any count
   bool json = false;
@@ -216,6 +220,40 @@ void print_text(const MatchOptions& o, const MatcherConfig& config, const PairRe
   if (verbosity() == Verbosity::kVerbose) print_trace(r);
 }
 
+/// The pair: two cloud files, or scans I and J of a dataset or recording (--index); their names for
+/// messages, and what reading them dropped.
+struct Pair {
+  PointCloud reference, input;
+  std::string reference_name, input_name;
+  ScanLoadReport reference_report, input_report;
+};
+
+Pair read_pair(const MatchOptions& o) {
+  Pair p;
+  if (o.index.empty()) {
+    p.reference = read_cloud(o.reference, &p.reference_report);
+    p.input = read_cloud(o.input, &p.input_report);
+    p.reference_name = o.reference;
+    p.input_name = o.input;
+    return p;
+  }
+  RecordingSelection selection;
+  selection.topic = o.topic;
+  const std::unique_ptr<Dataset> dataset =
+      open_dataset_argument(o.reference, std::nullopt, 1, Face::cli, selection);
+  for (const std::size_t i : o.index)
+    if (i >= dataset->size())
+      throw InputError("--index", "",
+                       "scan " + std::to_string(i) + " of " + o.reference + ", which has " +
+                           std::to_string(dataset->size()) + " scans (0 to " +
+                           std::to_string(dataset->size() - 1) + ")");
+  p.reference = dataset->scan(o.index[0], &p.reference_report);
+  p.input = dataset->scan(o.index[1], &p.input_report);
+  p.reference_name = o.reference + " scan " + std::to_string(o.index[0]);
+  p.input_name = o.reference + " scan " + std::to_string(o.index[1]);
+  return p;
+}
+
 int run_match(MatchOptions o) {
   const MatcherConfig config = read_matcher_config(o);
   if (o.print_config) {  // what the first registration runs with: with the wide basin without --init
@@ -225,14 +263,16 @@ int run_match(MatchOptions o) {
   std::optional<tbb::global_control> threads;
   if (o.jobs > 0)
     threads.emplace(tbb::global_control::max_allowed_parallelism, static_cast<std::size_t>(o.jobs));
-  ScanLoadReport reference_report, input_report;
-  const PointCloud reference = read_cloud(o.reference, &reference_report);
   const Eigen::Isometry3d initial = o.init.empty() ? Eigen::Isometry3d::Identity() : parse_init(o.init);
   std::optional<Eigen::Isometry3d> truth;
   if (!o.gt.empty()) truth = read_ground_truth(o.gt);
-  const PointCloud input = read_cloud(o.input, &input_report);
+  const Pair pair = read_pair(o);
+  const PointCloud& reference = pair.reference;
+  const PointCloud& input = pair.input;
+  const ScanLoadReport& reference_report = pair.reference_report;
+  const ScanLoadReport& input_report = pair.input_report;
   for (const auto& [file, report] :
-       {std::pair{&o.reference, &reference_report}, std::pair{&o.input, &input_report}}) {
+       {std::pair{&pair.reference_name, &reference_report}, std::pair{&pair.input_name, &input_report}}) {
     for (const std::string& warning : report->warnings)
       std::cerr << "warning: " << *file << ": " << warning << "\n";
     if (const std::string dropped = dropped_points_note(*report); !dropped.empty())
@@ -259,9 +299,11 @@ int run_match(MatchOptions o) {
       std::cout << "wrote:       " << o.out << " (the input in the reference frame)\n";
   }
   if (!o.view.empty()) {
-    write_registration_view(
-        o.view, reference, input, initial, m.result.T,
-        fs_name(o.reference) + " ← " + fs_name(o.input) + " (" + to_string(m.result.quality.trust) + ")");
+    write_registration_view(o.view, reference, input, initial, m.result.T,
+                            (o.index.empty() ? fs_name(o.reference) + " ← " + fs_name(o.input)
+                                             : fs_name(o.reference) + ": scan " + std::to_string(o.index[0]) +
+                                                   " ← scan " + std::to_string(o.index[1])) +
+                                " (" + to_string(m.result.quality.trust) + ")");
     if (!o.json && verbosity() != Verbosity::kQuiet)
       std::cout << "wrote:       " << o.view << " (3D view: before and after; open it in a browser)\n";
   }
@@ -279,9 +321,18 @@ void add_match_command(CLI::App& app, int& exit_code) {
   auto* cmd =
       app.add_subcommand("match", "Register one pair of scans with any matcher and report the result");
   auto o = std::make_shared<MatchOptions>();
-  cmd->add_option("reference", o->reference, "Reference cloud file (.3d .bin .xyz32.bin .pcd .ply .csv ...)")
+  cmd->add_option("reference", o->reference,
+                  "Reference cloud file (.3d .bin .xyz32.bin .pcd .ply .csv ...); with --index, a dataset (a "
+                  "folder of scans, uos, KITTI, 'campus') or a recording (.bag, .mcap, a ROS 2 bag folder)")
       ->required();
-  cmd->add_option("input", o->input, "Input cloud file, aligned into the reference frame")->required();
+  cmd->add_option("input", o->input, "Input cloud file, aligned into the reference frame (not with --index)");
+  cmd->add_option("--index", o->index,
+                  "Register scan J (the input) into scan I (the reference) of the dataset or recording named "
+                  "first: --index I J")
+      ->expected(2)
+      ->check(whole_number());
+  cmd->add_option("--topic", o->topic,
+                  "With --index: a recording's sensor_msgs/PointCloud2 topic (default: its only one)");
   cmd->add_option("--method", o->method, "Matcher name (mlndt, ndt, icp_p2p, icp_p2l, pcl_ndt, ...)")
       ->capture_default_str();
   cmd->add_option("--preset", o->preset,
@@ -324,7 +375,13 @@ void add_match_command(CLI::App& app, int& exit_code) {
   cmd->footer(
       "Exit status: 0 the result is trusted; 3 it is not (not converged, low overlap, degenerate, a "
       "poor fit or ambiguous; the reason is printed); 1 bad input; 2 a usage error.");
-  cmd->callback([&exit_code, o] { exit_code = guarded([o] { return run_match(*o); }); });
+  cmd->callback([&exit_code, o] {
+    if (o->index.empty() && o->input.empty() && !o->print_config) throw CLI::RequiredError("input");
+    if (!o->index.empty() && !o->input.empty())
+      throw CLI::ValidationError("--index", "takes one dataset, not two cloud files (" + o->input + ")");
+    if (!o->topic.empty() && o->index.empty()) throw CLI::ValidationError("--topic", "only with --index");
+    exit_code = guarded([o] { return run_match(*o); });
+  });
 }
 
 }  // namespace sextant::cli

@@ -1,9 +1,10 @@
 // `sextant odometry <dataset> [--method mlndt] [--preset …] [--guess odometry|constant_velocity|identity]
 // [--map scan|local_map] [--first N] [--scans N] [--view run.html] --out DIR`: chains registrations over a
-// sequence (§5.1.3's dead reckoning by a matcher) of a uos folder, a KITTI odometry sequence folder or the
-// built-in campus (`campus`), writes the trajectory as TUM and KITTI files, steps.csv, metrics.json
-// and provenance.json (with --map-out the run's map, with --view its HTML page), and prints ATE /
-// RPE / KITTI drift against the dataset's ground truth.
+// sequence (§5.1.3's dead reckoning by a matcher) of a uos folder, a KITTI odometry sequence folder, a
+// folder of scans, a recording (--topic, --start, --duration, --every choose its scans) or the built-in
+// campus (`campus`), writes the trajectory as TUM and KITTI files, steps.csv, metrics.json and
+// provenance.json (with --map-out the run's map, with --view its HTML page), and prints ATE / RPE /
+// KITTI drift against the dataset's ground truth.
 #include <chrono>
 #include <filesystem>
 #include <iomanip>
@@ -104,7 +105,7 @@ int run_odometry_command(const OdometryOptions& o) {
 
   const std::unique_ptr<Dataset> dataset =
       open_dataset_argument(o.dataset, o.poses.empty() ? std::nullopt : std::optional<std::string>(o.poses),
-                            o.campus_seed, Face::cli);
+                            o.campus_seed, Face::cli, o.recording_selection());
   const DatasetMetadata& meta = dataset->metadata();
   const OdometryPlan plan = plan_odometry(std::move(settings), request, *dataset, o.dataset, Face::cli);
   const OdometrySettings& s = plan.settings;
@@ -280,16 +281,18 @@ int run_odometry_command(const OdometryOptions& o) {
 }  // namespace
 
 void add_odometry_command(CLI::App& app, int& exit_code) {
-  auto* cmd =
-      app.add_subcommand("odometry",
-                         "Chain registrations over a sequence (a folder of scans, uos, KITTI or 'campus'), "
-                         "write the trajectory (TUM, KITTI) and score it against the ground truth");
+  auto* cmd = app.add_subcommand(
+      "odometry",
+      "Chain registrations over a sequence (a folder of scans, uos, KITTI, a ROS 1/ROS 2 bag "
+      "or MCAP recording, or 'campus'), "
+      "write the trajectory (TUM, KITTI) and score it against the ground truth");
   auto o = std::make_shared<OdometryOptions>();
   cmd->add_option("dataset", o->dataset,
                   "a folder of scans (.pcd .ply .bin .xyz32.bin .xyz .csv .3d, in it or in scans/, in the "
                   "order of the number in their names; optional poses.txt and times.txt), a uos folder "
-                  "(scanNNN.3d + .pose/.frames), a KITTI sequence folder (velodyne/, calib.txt, poses), or "
-                  "'campus' (the built-in synthetic campus)")
+                  "(scanNNN.3d + .pose/.frames), a KITTI sequence folder (velodyne/, calib.txt, poses), a "
+                  "recording (a ROS 1 .bag, an .mcap file, a ROS 2 bag folder: one scan per "
+                  "sensor_msgs/PointCloud2 message), or 'campus' (the built-in synthetic campus)")
       ->required();
   cmd->add_option("--out", o->out, "Output folder")->required();
   cmd->add_option("--poses", o->poses,
@@ -372,6 +375,18 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
                   "What carries it, which sets the size of a wrong step: car (1 m or 5°), handheld (0.3 m or "
                   "3°), or auto (the median of the last trusted steps' lengths, between the two)")
       ->capture_default_str();
+  cmd->add_option("--topic", o->topic,
+                  "A recording's sensor_msgs/PointCloud2 topic (default: its only one; `sextant info REC` "
+                  "lists them)");
+  cmd->add_option("--start", o->start, "A recording: begin this many seconds after its first message")
+      ->capture_default_str()
+      ->check(finite_number(0.0));
+  cmd->add_option("--duration", o->duration,
+                  "A recording: read this many seconds from --start (default: to the end)")
+      ->check(finite_number(0.0, true));
+  cmd->add_option("--every", o->every, "A recording: take every N-th message of the topic")
+      ->capture_default_str()
+      ->check(whole_number(1));
   cmd->add_option("--first", o->first, "First scan index")->capture_default_str()->check(whole_number());
   cmd->add_option("--scans", o->scans, "Number of scans (0: to the end)")
       ->capture_default_str()

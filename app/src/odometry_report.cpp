@@ -1,6 +1,7 @@
 // What `sextant odometry` records and prints of a run (odometry_report.hpp).
 #include "odometry_report.hpp"
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -10,6 +11,15 @@
 #include "sextant/pipeline/yaml_json.hpp"
 
 namespace sextant::cli {
+
+RecordingSelection OdometryOptions::recording_selection() const {
+  RecordingSelection s;
+  s.topic = topic;
+  s.start = start;
+  if (!std::isnan(duration)) s.duration = duration;
+  s.every = every;
+  return s;
+}
 
 std::string provenance_json(const OdometryOptions& o, const MatcherConfig& config,
                             const DatasetMetadata& meta, const OdometrySettings& s,
@@ -39,7 +49,12 @@ std::string provenance_json(const OdometryOptions& o, const MatcherConfig& confi
         {"path", meta.path.string()},
         {"scans", meta.scan_count},
         {"campus_seed", o.campus_seed},
-        {"poses", o.poses}}},
+        {"poses", o.poses},
+        {"topic", o.topic},
+        {"start", json_value(o.start)},
+        {"duration", std::isnan(o.duration) ? Json() : json_value(o.duration)},
+        {"every", o.every},
+        {"notes", meta.notes}}},
       {"first", o.first},
       {"scans", scans},
       {"method", o.method},

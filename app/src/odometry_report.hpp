@@ -3,6 +3,7 @@
 // odometry_output.hpp): its options, provenance.json, the sensor line and the per-step lines of -v.
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -12,10 +13,14 @@
 #include "sextant/core/dataset.hpp"
 #include "sextant/odometry/odometry.hpp"
 #include "sextant/pipeline/run_map_builder.hpp"
+#include "sextant/recordings/recording.hpp"
 
 namespace sextant::cli {
 
 struct OdometryOptions : MatcherOptions {
+  /// The part of a recording the options choose (--topic, --start, --duration, --every).
+  RecordingSelection recording_selection() const;
+
   std::string dataset, out;
   std::string poses;  ///< ground truth for a scan folder: TUM or KITTI file (default: poses.txt beside it)
   std::string guess;  ///< empty: odometry when the dataset has it, else constant_velocity
@@ -24,6 +29,10 @@ struct OdometryOptions : MatcherOptions {
   std::string view;               ///< empty: none; else the run's HTML view (run_view.hpp)
   std::string sensor = "auto";    ///< auto, spinning, solid_state
   std::string platform = "auto";  ///< auto, car, handheld
+  std::string topic;              ///< a recording's PointCloud2 topic (empty: its only one)
+  double start = 0.0;             ///< [s] from the recording's start
+  double duration = std::numeric_limits<double>::quiet_NaN();  ///< [s]; NaN: to the end
+  std::size_t every = 1;                                       ///< every N-th message of the topic
   std::size_t first = 0;
   std::size_t scans = 0;  ///< 0: to the end of the dataset
   std::size_t local_map_scans = 5;

@@ -53,6 +53,22 @@ bool is_experiment_file_name(const std::string& name) {
          is_identifier(name.substr(4, name.size() - 4 - suffix.size()));
 }
 
+/// A recording's topic, start, duration and every: only with source: folder; checked as the faces check
+/// them (RecordingSelection::problem); whether the path is a recording is checked when it is opened.
+void read_recording_selection(SettingsReader& in, DatasetConfig& d) {
+  RecordingSelection& s = d.recording;
+  double duration = 0.0;
+  const bool given[] = {in.read("topic", s.topic), in.read("start", s.start), in.read("duration", duration),
+                        in.read("every", s.every)};
+  const char* keys[] = {"topic", "start", "duration", "every"};
+  if (given[2]) s.duration = duration;
+  for (int k = 0; k < 4; ++k)
+    if (given[k] && d.source != DatasetSource::kFolder)
+      in.fail(keys[k], "key '" + std::string(keys[k]) + "' is only used with source: folder (a recording)");
+  const auto [key, problem] = s.problem();
+  if (!key.empty()) in.fail(key, "key '" + key + "': " + problem);
+}
+
 DatasetConfig read_dataset(const YAML::Node& node, const std::string& file) {
   DatasetConfig d;
   d.node = node;
@@ -89,6 +105,7 @@ DatasetConfig read_dataset(const YAML::Node& node, const std::string& file) {
     if (d.source != DatasetSource::kFolder)
       in.fail("simulated_odometry", "key 'simulated_odometry' is only used with source: folder");
   }
+  read_recording_selection(in, d);
   in.read("seed", d.seed);
   in.finish();
   return d;

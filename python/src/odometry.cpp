@@ -83,6 +83,7 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
                      std::uint64_t campus_seed, int jobs, const py::object& sampler_settings,
                      const std::string& sensor, const std::string& platform, bool build_map,
                      const py::object& map_voxel, bool map_trusted_only, const py::object& view,
+                     const py::object& topic, double start, const py::object& duration, std::size_t every,
                      const py::kwargs& settings) {
   // Arguments first (cheap), then the dataset, as the CLI (odometry_request.hpp).
   const MatcherConfig config =  // unknown names, bad settings
@@ -111,8 +112,13 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
       view.is_none() ? std::string() : py::module_::import("os").attr("fspath")(view).cast<std::string>();
   if (!view_path.empty()) check_run_view_path(view_path);  // before the run, not after it
 
+  RecordingSelection selection;
+  if (!topic.is_none()) selection.topic = topic.cast<std::string>();
+  selection.start = start;
+  if (!duration.is_none()) selection.duration = duration.cast<double>();
+  selection.every = every;
   const std::unique_ptr<Dataset> dataset =
-      open_odometry_dataset(source, poses, odometry_poses, times, campus_seed);
+      open_odometry_dataset(source, poses, odometry_poses, times, campus_seed, selection);
   const DatasetMetadata& meta = dataset->metadata();
   const OdometryPlan plan = plan_odometry(std::move(checked), request, *dataset,
                                           meta.path.empty() ? meta.name : meta.path.string(), Face::python);
@@ -182,8 +188,13 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
 constexpr char kOdometryDoc[] = R"doc(Chain registrations over a sequence, as ``sextant odometry`` does.
 
 dataset: a folder (a folder of scans with optional poses.txt/times.txt, a uos folder, a KITTI
-    sequence folder; opened by the library's open_dataset), "campus" (the built-in synthetic campus,
-    seed campus_seed), or a list of scans (N×3/N×4 float32/float64 arrays or file paths) held in memory.
+    sequence folder; opened by the library's open_dataset), a recording (a ROS 1 .bag, an .mcap file, a
+    ROS 2 bag folder: one scan per sensor_msgs/PointCloud2 message), "campus" (the built-in synthetic
+    campus, seed campus_seed), or a list of scans (N×3/N×4 float32/float64 arrays or file paths) held
+    in memory.
+topic, start, duration, every: a recording's scans (the CLI's --topic, --start, --duration, --every):
+    the sensor_msgs/PointCloud2 topic (None: its only one), from start seconds after its first message
+    for duration seconds (None: to the end), every N-th message.
 method, preset, sampling, sampler_settings, **settings: the matcher and sampler, as for match()
     (mlndt with preset "default" and GBS by default).
 guess: where each registration starts: "odometry", "constant_velocity", "identity"; None: odometry
@@ -289,7 +300,8 @@ void bind_odometry(py::module_& m) {
         py::arg("odometry_poses") = py::none(), py::arg("times") = py::none(), py::arg("campus_seed") = 1,
         py::arg("jobs") = 0, py::arg("sampler_settings") = py::none(), py::arg("sensor") = "auto",
         py::arg("platform") = "auto", py::arg("build_map") = false, py::arg("map_voxel") = py::none(),
-        py::arg("map_trusted_only") = false, py::arg("view") = py::none());
+        py::arg("map_trusted_only") = false, py::arg("view") = py::none(), py::arg("topic") = py::none(),
+        py::arg("start") = 0.0, py::arg("duration") = py::none(), py::arg("every") = 1);
 }
 
 }  // namespace sextant::python

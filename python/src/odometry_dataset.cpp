@@ -17,13 +17,13 @@
 namespace sextant::python {
 namespace {
 
-/// A folder or the campus (dataset_argument.hpp), with a poses file for a folder of scans.
+/// A folder, a recording or the campus (dataset_argument.hpp), with a poses file for a folder of scans.
 std::unique_ptr<Dataset> open_folder(const std::string& name, const py::object& poses,
-                                     std::uint64_t campus_seed) {
+                                     std::uint64_t campus_seed, const RecordingSelection& selection) {
   std::optional<std::string> poses_file;
   if (!poses.is_none()) poses_file = py::module_::import("os").attr("fspath")(poses).cast<std::string>();
   const py::gil_scoped_release release;
-  return open_dataset_argument(name, poses_file, campus_seed, Face::python);
+  return open_dataset_argument(name, poses_file, campus_seed, Face::python, selection);
 }
 
 /// A list of clouds (arrays or paths) with optional ground truth, odometry and times.
@@ -57,13 +57,16 @@ std::unique_ptr<Dataset> open_list(const py::sequence& clouds, const py::object&
 
 std::unique_ptr<Dataset> open_odometry_dataset(const py::object& source, const py::object& poses,
                                                const py::object& odometry_poses, const py::object& times,
-                                               std::uint64_t campus_seed) {
+                                               std::uint64_t campus_seed,
+                                               const RecordingSelection& selection) {
   if (py::isinstance<py::str>(source) || py::hasattr(source, "__fspath__")) {
     if (!odometry_poses.is_none() || !times.is_none())
       throw py::value_error("odometry_poses and times are for a list of arrays; a folder brings its own");
     return open_folder(py::module_::import("os").attr("fspath")(source).cast<std::string>(), poses,
-                       campus_seed);
+                       campus_seed, selection);
   }
+  if (!selection.is_default())
+    throw py::value_error("topic, start, duration and every choose the scans of a recording, not of a list");
   if (py::isinstance<py::array>(source))
     throw py::type_error("odometry: got one array; expected a list of scans (N×3/N×4 arrays)");
   if (!py::isinstance<py::sequence>(source))

@@ -7,7 +7,9 @@
 //   thesis: "§5.1.1.2 A, tables 5.1-5.4"
 //   seed: 1                           # base seed of every random choice
 //   repetitions: 1                    # runs per (method, sweep point)
-//   dataset: {source: synthetic, campus: {...}}   # or {source: folder, path: ...} or none
+//   dataset: {source: synthetic, campus: {...}}   # or {source: folder, path: ...} or none; a folder's
+//                                                 # path may be a recording (with topic, start, duration,
+//                                                 every)
 //   methods: [{name: ndt, ...}, ...]  # each method's settings, passed through to the kind
 //   sweep: {axis: [values], pair: {from: 0, to: 99}}  # cartesian product of the axes
 //   metrics: [...]                    # which metrics the report shows (the kind checks names)
@@ -23,6 +25,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "sextant/recordings/recording.hpp"
+
 namespace sextant {
 
 /// One sweep axis: its name and values (scalars or small sequences), in file order.
@@ -35,8 +39,11 @@ enum class DatasetSource { kNone, kSynthetic, kFolder };
 
 struct DatasetConfig {
   DatasetSource source = DatasetSource::kNone;
-  std::filesystem::path path;  ///< folder (uos or KITTI) when source = folder; relative to the config file
-  YAML::Node campus;           ///< synthetic campus settings (synth::CampusSettings), may be null
+  std::filesystem::path
+      path;  ///< folder (uos, KITTI, scans) or recording when source = folder; relative to the config file
+  /// source folder with a recording: its topic, start, duration and every (the CLI's --topic, …)
+  RecordingSelection recording;
+  YAML::Node campus;  ///< synthetic campus settings (synth::CampusSettings), may be null
   /// source folder: an odometry simulated from the folder's reference with these settings (the
   /// campus' `odometry:` block, synth::OdometrySettings) and `seed`; null: the folder's own odometry
   YAML::Node simulated_odometry;

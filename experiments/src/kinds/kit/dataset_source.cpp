@@ -39,7 +39,9 @@ std::unique_ptr<Dataset> open_experiment_dataset(const ExperimentConfig& config,
       return std::make_unique<synth::CampusDataset>(synth::generate_campus(settings, seed));
     }
     case DatasetSource::kFolder: {
-      std::unique_ptr<Dataset> folder = open_dataset(config.dataset.path);
+      RecordingSelection selection = config.dataset.recording;
+      selection.topic_argument = "the key 'topic' of " + config.file;
+      std::unique_ptr<Dataset> folder = open_dataset_or_recording(config.dataset.path, selection);
       if (!config.dataset.simulates_odometry()) return folder;
       return std::make_unique<SimulatedOdometryDataset>(
           std::move(folder), simulated_odometry_settings(config), config.dataset.seed);

@@ -1,7 +1,8 @@
 #pragma once
 // The dataset of an experiment config, for the kinds that read scans (registration, sequence):
 // `source: synthetic` builds the built-in campus in memory from `campus:` settings and `seed`;
-// `source: folder` opens a uos, KITTI or scan folder (`path:`, relative to the config file), with
+// `source: folder` opens a uos, KITTI or scan folder or a recording (`path:`, relative to the config file;
+// a recording's `topic:`, `start:`, `duration:`, `every:` choose its scans), with
 // `simulated_odometry:` an odometry simulated from its reference (kit/simulated_odometry_dataset.hpp).
 #include <memory>
 #include <string>
