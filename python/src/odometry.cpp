@@ -30,6 +30,8 @@ namespace {
 struct OdometryRun {
   py::object poses, relative, hessians, ground_truth, steps, dataset;
   std::string guess, map;
+  std::string deskew;  ///< "constant_velocity" or "off"
+  std::size_t timed_scans = 0, deskewed = 0;
   std::string sensor;        ///< the lidar the checks assumed (declared, or measured)
   double tolerance_m = 0.0;  ///< the size of a wrong step the run ended with (platform_tolerance)
   std::size_t first = 0, scans = 0, not_converged = 0, untrusted = 0, recovered = 0;
@@ -55,7 +57,8 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
                      double max_acceleration, std::uint64_t seed, bool recover, const py::object& common_view,
                      const py::object& poses, const py::object& odometry_poses, const py::object& times,
                      std::uint64_t campus_seed, int jobs, const py::object& sampler_settings,
-                     const std::string& sensor, const std::string& platform, const py::kwargs& settings) {
+                     const std::string& sensor, const std::string& platform, bool deskew,
+                     const py::kwargs& settings) {
   // Arguments first (cheap), then the dataset, as the CLI (odometry_request.hpp).
   const MatcherConfig config =  // unknown names, bad settings
       read_matcher_config(matcher_request("odometry()", method, preset, sampling, settings, sampler_settings),
@@ -75,6 +78,7 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
   request.max_acceleration = max_acceleration;
   request.seed = seed;
   request.recover = recover;
+  request.deskew = deskew;
   OdometrySettings checked = odometry_settings(request, Face::python);
   if (const std::string problem = worker_threads_problem(jobs, "jobs"); !problem.empty())
     throw py::value_error(problem);
@@ -118,6 +122,9 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
   run.dataset = metadata_dict(meta);
   run.guess = to_string(s.guess);
   run.map = to_string(s.map);
+  run.deskew = deskew_scheme(s);
+  run.timed_scans = result.timed_scans;
+  run.deskewed = result.deskewed();
   run.sensor = to_string(result.sensor.kind);
   run.tolerance_m = result.tolerance.ambiguity_metres;
   run.first = first;
@@ -155,6 +162,9 @@ min_range: drop points closer than this to the sensor [m]. max_acceleration: wit
 sensor: "spinning", "solid_state" or "auto" (the CLI's --sensor: the ring and horizon checks apply to a
     spinning lidar only; auto measures the first scan). platform: "car", "handheld" or "auto" (the CLI's
     --platform: the size of a wrong step, 1 m or 5°, 0.3 m or 3°, or the typical step's between them).
+deskew: when the points carry their own time (a t, time, timestamp or offset_time field), move each into
+    its scan's frame at the scan's stamp by the constant velocity of the motion around it, before the scan
+    is registered and kept in the local map (the default, the CLI's; False = --no-deskew).
 poses: ground truth. For a folder of scans: a TUM or KITTI file (the CLI's --poses); for a list: an
     N×4×4 array (world ← scan). odometry_poses (N×4×4) and times (N seconds): a list's odometry and
     clock.
@@ -190,6 +200,13 @@ void bind_odometry(py::module_& m) {
           "the dataset's metadata: name, format, path, scans, has_odometry, has_ground_truth, notes")
       .def_readonly("guess", &OdometryRun::guess, "the guess mode used")
       .def_readonly("map", &OdometryRun::map, "the map mode used")
+      .def_readonly(
+          "deskew", &OdometryRun::deskew,
+          "'constant_velocity' (scans whose points carry time were deskewed) or 'off' (deskew=False)")
+      .def_readonly("timed_scans", &OdometryRun::timed_scans, "scans whose points carry their own time")
+      .def_readonly("deskewed", &OdometryRun::deskewed,
+                    "scans deskewed by a known motion (with constant velocity, not the first: no motion is "
+                    "known before it)")
       .def_readonly("sensor", &OdometryRun::sensor,
                     "the lidar the checks assumed: 'spinning' or 'solid_state' (declared, or measured on the "
                     "first scan)")
@@ -221,7 +238,7 @@ void bind_odometry(py::module_& m) {
         py::arg("recover") = true, py::arg("common_view") = py::none(), py::arg("poses") = py::none(),
         py::arg("odometry_poses") = py::none(), py::arg("times") = py::none(), py::arg("campus_seed") = 1,
         py::arg("jobs") = 0, py::arg("sampler_settings") = py::none(), py::arg("sensor") = "auto",
-        py::arg("platform") = "auto");
+        py::arg("platform") = "auto", py::arg("deskew") = true);
 }
 
 }  // namespace sextant::python
