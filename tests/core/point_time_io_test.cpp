@@ -232,5 +232,19 @@ TEST(PointTimeFiles, WrittenCloudsKeepTheirTimesThroughPcdAndPly) {
   }
 }
 
+TEST(PointTimeFiles, AFormatWithoutTimesSaysTheyAreNotWritten) {
+  TempDir dir;
+  PointCloud cloud(std::vector<Eigen::Vector3f>(3, Eigen::Vector3f(1.0f, 2.0f, 3.0f)));
+  cloud.set_time({0.0f, 0.05f, 0.1f});
+  const CloudWriteReport bin = write_cloud(dir / "timed.bin", cloud);
+  EXPECT_TRUE(bin.times_dropped);
+  EXPECT_NE(dropped_on_reading_note(dir / "timed.bin", bin).find("times are not written"), std::string::npos);
+  const CloudWriteReport pcd = write_cloud(dir / "timed.pcd", cloud);
+  EXPECT_FALSE(pcd.times_dropped);
+  EXPECT_EQ(dropped_on_reading_note(dir / "timed.pcd", pcd), "");
+  cloud.set_time({});
+  EXPECT_FALSE(write_cloud(dir / "plain.bin", cloud).times_dropped);
+}
+
 }  // namespace
 }  // namespace sextant
