@@ -24,6 +24,16 @@ std::string vector_text(const Eigen::Vector3f& v) {
   return out.str();
 }
 
+/// Whether the points carry their own time, and over how long (the sweep the odometry deskews).
+std::string time_text(const PointCloud& cloud) {
+  if (!cloud.has_time()) return "none (no per-point time field)";
+  const auto [earliest, latest] = std::minmax_element(cloud.time().begin(), cloud.time().end());
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(6) << "per point, " << *earliest << " to " << *latest << " s (span "
+      << static_cast<double>(*latest) - static_cast<double>(*earliest) << " s)";
+  return out.str();
+}
+
 void describe_cloud(const std::filesystem::path& file) {
   const CloudFormat format = cloud_format(file);
   ScanLoadReport report;
@@ -33,6 +43,7 @@ void describe_cloud(const std::filesystem::path& file) {
             << "format:      " << format.name << "\n"
             << "frame:       " << format.frame << "\n"
             << "points:      " << cloud.size() << (cloud.has_intensity() ? " (with intensity)" : "") << "\n"
+            << "time:        " << time_text(cloud) << "\n"
             << "read:        " << report.points_read << " point records\n"
             << "dropped:     " << report.non_finite_dropped << " non-finite, " << report.no_return_dropped
             << " no-return\n"

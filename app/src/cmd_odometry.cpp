@@ -85,6 +85,7 @@ int run_odometry_command(const OdometryOptions& o) {
   request.max_acceleration = o.max_acceleration;
   request.seed = o.seed;
   request.recover = !o.no_recover;
+  request.deskew = !o.no_deskew;
   OdometrySettings settings = odometry_settings(request, Face::cli);
   std::optional<LoopCandidateSource> loop_source;
   if (!o.loop_closure.empty()) {
@@ -125,7 +126,8 @@ int run_odometry_command(const OdometryOptions& o) {
               << to_string(s.map)
               << (s.map == OdometryMap::local_map ? " of " + std::to_string(s.local_map_scans) + " scans"
                                                   : "")
-              << "\n";
+              << "\n"
+              << "deskew:   " << deskew_line(s, *dataset, o.first, Face::cli) << "\n";
   if (!quiet) {
     for (const std::string& note : meta.notes) std::cout << "note:     " << note << "\n";
     const std::string trust_note = uncalibrated_trust_note(settings_off_the_defaults(config));
@@ -156,7 +158,8 @@ int run_odometry_command(const OdometryOptions& o) {
   if (loop_source) loops = close_odometry_loops(*dataset, o.first, scans, result, s, *loop_source);
   const std::vector<Eigen::Isometry3d>& poses = loops ? loops->closing.poses : result.poses;
   if (wants_map && loops)
-    map.emplace(build_run_map(*dataset, o.first, poses, result.steps, s.min_range, map_settings));
+    map.emplace(
+        build_run_map(*dataset, o.first, poses, result.steps, s.min_range, map_settings, result.sweeps));
   const std::optional<RunMapSummary> map_summary =
       map_output ? std::optional<RunMapSummary>(map->summary()) : std::nullopt;
 
@@ -407,6 +410,11 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
                 "continues the last chained motion; trust is counted, not acted on (default: an untrusted "
                 "step is registered again with the wide basin, else the least suspect registration or the "
                 "last trusted motion is chained)");
+  cmd->add_flag("--no-deskew", o->no_deskew,
+                "Register the points where they were measured (default: when the points carry their own "
+                "time, a t/time/timestamp/offset_time field, each scan is deskewed: every point moved into "
+                "the scan's frame at its stamp by the constant velocity of the motion around it, "
+                "docs/odometry.md, \"Scans taken while moving\")");
   cmd->callback([&exit_code, o] { exit_code = guarded([o] { return run_odometry_command(*o); }); });
 }
 

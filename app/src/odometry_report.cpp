@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "sextant/pipeline/json.hpp"
+#include "sextant/pipeline/odometry_output.hpp"
 #include "sextant/pipeline/provenance.hpp"
 #include "sextant/pipeline/yaml_json.hpp"
 
@@ -84,6 +85,11 @@ std::string provenance_json(const OdometryOptions& o, const MatcherConfig& confi
         {"tolerance_m", json_value(result.tolerance.ambiguity_metres)},
         {"tolerance_deg", json_value(result.tolerance.ambiguity_degrees)}}},
       {"recover", s.recover},
+      {"deskew",
+       {{"scheme", deskew_scheme(s)},
+        {"scans_with_time", result.timed_scans},
+        {"scans_deskewed", result.deskewed()},
+        {"steps_registered_again", result.registered_again}}},
       {"common_view", s.common_view},
       {"seed", s.seed},
       {"jobs", o.jobs},

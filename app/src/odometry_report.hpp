@@ -43,6 +43,7 @@ struct OdometryOptions : MatcherOptions {
   int jobs = 0;
   bool no_progress = false;
   bool no_recover = false;
+  bool no_deskew = false;
   bool common_view = false;  ///< --common-view: whatever the method
   bool whole_scans = false;  ///< --whole-scans: whatever the method
   bool print_config = false;

@@ -14,6 +14,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_group.h>
 
+#include "chain_deskew.hpp"
 #include "scan_handout.hpp"
 #include "sequence_inputs.hpp"
 #include "sextant/core/error.hpp"
@@ -29,6 +30,7 @@
 namespace sextant {
 namespace {
 
+using odometry_detail::ChainDeskew;
 using odometry_detail::dataset_label;
 using odometry_detail::odometry_poses;
 using odometry_detail::ScanHandout;
@@ -37,6 +39,7 @@ using odometry_detail::step_reach;
 using odometry_detail::StepContext;
 using odometry_detail::StepFrame;
 using odometry_detail::StepWorker;
+using odometry_detail::sweep_between;
 using odometry_detail::time_ratio;
 
 /// Scans loaded and registered together on the parallel path (bounds the memory held).
@@ -102,8 +105,15 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
   std::vector<OdometryStep> steps(count - 1);
   SequenceTrust trust;
   PointCloud previous = load_sequence_scan(dataset, first, s.min_range, &result.loads[0]);
-  handout.first(previous);
   result.sensor = resolve_sensor(s.sensor, previous);
+  // Scan k's sweep at the odometry's velocity from scan k − 1 (scan 0: to scan 1).
+  const auto deskew_by_odometry = [&](std::size_t k, PointCloud& scan) {
+    if (!s.deskew) return;
+    const std::size_t from = k == 0 ? 0 : k - 1;
+    result.sweeps[k] = sweep_between(dataset, first + from, first + from + 1, scan,
+                                     relative(odometry[from], odometry[from + 1]));
+    scan = deskew_scan(scan, result.sweeps[k]);
+  };
   // The odometry tells the typical step before any registration: the median of its increments.
   MotionScale scale(count);
   for (std::size_t k = 1; k < count; ++k) scale.record(relative(odometry[k - 1], odometry[k]));
@@ -112,13 +122,19 @@ std::vector<OdometryStep> parallel_steps(const Dataset& dataset, const OdometryS
   defaults.rings = result.sensor.kind == SensorKind::spinning;
   defaults.quality = platform_tolerance(s.quality, s.platform, result.typical_step);
   SensorView previous_view = s.common_view ? sensor_view(previous, result.sensor.kind) : SensorView{};
+  result.timed_scans += previous.has_time() ? 1 : 0;
+  deskew_by_odometry(0, previous);
+  handout.first(previous);
   for (std::size_t begin = 1; begin < count; begin += kChunk) {
     const std::size_t end = std::min(count, begin + kChunk);
     std::vector<PointCloud> chunk(end - begin);
     tbb::parallel_for(begin, end, [&](std::size_t k) {
       chunk[k - begin] = load_sequence_scan(dataset, first + k, s.min_range, &result.loads[k]);
     });
+    // Each sensor's view from the scan as it was taken, then the scans deskewed.
     const std::vector<SensorView> views = views_of(chunk, s.common_view, result.sensor.kind);
+    for (const PointCloud& scan : chunk) result.timed_scans += scan.has_time() ? 1 : 0;
+    tbb::parallel_for(begin, end, [&](std::size_t k) { deskew_by_odometry(k, chunk[k - begin]); });
     // Each step's clouds cut to what both sensors see (with common_view) and its frame, until its
     // recovery is done (step_frame.hpp).
     std::vector<std::optional<std::pair<PointCloud, PointCloud>>> seen(end - begin);
@@ -218,9 +234,15 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
   SensorView last_view, next_view;  // of window.back() and of `next`
   window.push_back(load_sequence_scan(dataset, first, s.min_range, &result.loads[0]));
   window_poses.push_back(Eigen::Isometry3d::Identity());
-  handout.first(window.back());
   result.sensor = resolve_sensor(s.sensor, window.back());
   if (s.common_view) last_view = sensor_view(window.back(), result.sensor.kind);
+  // Scans whose points carry time deskewed by the odometry's motion, else by the velocity learned.
+  ChainDeskew deskew(dataset, first, s.deskew, result);
+  const bool odometer = s.guess == OdometryGuess::odometry;
+  window.back() =
+      deskew.take(0, std::move(window.back()),
+                  odometer && count > 1 ? std::optional(relative(odometry[0], odometry[1])) : std::nullopt);
+  handout.first(window.back());  // as registered: deskewed when a velocity is known by now
   PointCloud next;
   if (count > 1) load(1, next, next_view);
   for (std::size_t k = 1; k < count; ++k) {
@@ -260,24 +282,46 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
     }
     // An odometer's guess is a prior of its own; the platform's reach bounds a step after a trusted one.
     context.unbounded = s.guess != OdometryGuess::odometry && !std::isfinite(context.reach);
+    input = deskew.take(k, std::move(input), odometer ? std::optional(guess) : std::nullopt);
     const Eigen::Isometry3d& previous_pose = window_poses.back();
-    if (s.map == OdometryMap::local_map && window.size() > 1) {
+    // The reference: the local map of the window in scan i − 1's frame, or scan i − 1.
+    const bool local_map = s.map == OdometryMap::local_map && window.size() > 1;
+    const auto merge_map = [&] {
       std::vector<const PointCloud*> clouds;
       std::vector<Eigen::Isometry3d> poses;  // scan i − 1 ← scan j
       for (std::size_t j = 0; j < window.size(); ++j) {
         clouds.push_back(&window[j]);
         poses.push_back(relative(previous_pose, window_poses[j]));
       }
-      const PointCloud map = merge_local_map(clouds, poses, s.local_map_max_points, s.local_map_voxel);
-      const auto cut = what_both_see(map, last_view, input, input_view, guess, s.common_view);
-      steps.push_back(register_step(worker, trust, cut ? cut->first : map, cut ? cut->second : input, guess,
-                                    context, recovery_starts(s, guess, last_motion), seeds[k]));
-    } else {
-      const auto cut = what_both_see(window.back(), last_view, input, input_view, guess, s.common_view);
-      steps.push_back(register_step(worker, trust, cut ? cut->first : window.back(),
-                                    cut ? cut->second : input, guess, context,
-                                    recovery_starts(s, guess, last_motion), seeds[k]));
-    }
+      return merge_local_map(clouds, poses, s.local_map_max_points, s.local_map_voxel);
+    };
+    PointCloud map = local_map ? merge_map() : PointCloud();
+    const auto register_input = [&](const PointCloud& scan, const Eigen::Isometry3d& from) {
+      const PointCloud& reference = local_map ? map : window.back();
+      const auto cut = what_both_see(reference, last_view, scan, input_view, from, s.common_view);
+      return register_step(worker, trust, cut ? cut->first : reference, cut ? cut->second : scan, from,
+                           context, recovery_starts(s, from, last_motion), seeds[k]);
+    };
+    steps.push_back(register_input(input, guess));
+    // The velocity the step measured, when it departs from the one the scan was deskewed by: the scan
+    // deskewed by it and registered again from the step (chain_deskew.hpp).
+    const bool believed = steps.back().trusted() || !s.recover;
+    bool map_changed = false;
+    if (believed && !odometer)
+      if (std::optional<PointCloud> again =
+              deskew.deskewed_again(k, steps.back().relative, window, map_changed)) {
+        if (map_changed && local_map) map = merge_map();
+        OdometryStep second = register_input(*again, steps.back().relative);
+        ++result.registered_again;
+        if (second.trusted() || !s.recover) {
+          second.guess = steps.back().guess;
+          second.seconds += steps.back().seconds;
+          steps.back() = std::move(second);
+          input = std::move(*again);
+        } else {
+          deskew.keep_first(k);
+        }
+      }
     trust.record(steps.back().quality);
     if (steps.back().trusted()) scale.record(steps.back().relative);
     if (steps.back().trusted() || !s.recover) last_motion = steps.back().relative;
@@ -290,11 +334,13 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
     window_poses.push_back(previous_pose * steps.back().relative);
     handout.next(k, input, steps.back());
     window.push_back(std::move(input));
+    if (steps.back().trusted() || !s.recover) deskew.learn(k, steps.back().relative, window);
     last_view = input_view;
     while (window.size() > keep) {
       window.pop_front();
       window_poses.pop_front();
     }
+    deskew.keep_last(window.size());
     counter.tick();
     prefetch.wait();
   }
@@ -304,38 +350,6 @@ std::vector<OdometryStep> sequential_steps(const Dataset& dataset, const Odometr
 }
 
 }  // namespace
-
-PointCloud load_sequence_scan(const Dataset& dataset, std::size_t i, double min_range,
-                              ScanLoadReport* report) {
-  PointCloud scan = dataset.scan(i, report);
-  if (!(min_range > 0.0)) return scan;
-  const float squared = static_cast<float>(min_range * min_range);
-  std::vector<std::size_t> keep;
-  keep.reserve(scan.size());
-  for (std::size_t j = 0; j < scan.size(); ++j)
-    if (scan[j].squaredNorm() >= squared) keep.push_back(j);
-  return scan.subset(keep);
-}
-
-ScanLoadReport OdometryResult::dropped_total() const {
-  ScanLoadReport total;
-  for (const ScanLoadReport& load : loads) {
-    total.points_read += load.points_read;
-    total.non_finite_dropped += load.non_finite_dropped;
-    total.no_return_dropped += load.no_return_dropped;
-  }
-  return total;
-}
-
-std::size_t OdometryResult::untrusted() const {
-  return static_cast<std::size_t>(
-      std::count_if(steps.begin(), steps.end(), [](const OdometryStep& s) { return !s.trusted(); }));
-}
-
-std::size_t OdometryResult::recovered() const {
-  return static_cast<std::size_t>(
-      std::count_if(steps.begin(), steps.end(), [](const OdometryStep& s) { return s.recovered(); }));
-}
 
 OdometryResult run_odometry(const Dataset& dataset, const OdometrySettings& settings, std::size_t first,
                             std::size_t count, const OdometryProgress& progress,
@@ -365,6 +379,7 @@ OdometryResult run_odometry(const Dataset& dataset, const OdometrySettings& sett
   result.loads.resize(count);
   const Eigen::Isometry3d start = start_pose(dataset, settings, first);
   ScanHandout handout(observe, start);
+  if (settings.deskew) result.sweeps.resize(count);
   if (count > 1) {
     const bool independent =
         settings.parallel && settings.guess == OdometryGuess::odometry && settings.map == OdometryMap::scan;
@@ -376,6 +391,7 @@ OdometryResult run_odometry(const Dataset& dataset, const OdometrySettings& sett
     const PointCloud scan = load_sequence_scan(dataset, first, settings.min_range, &result.loads[0]);
     handout.first(scan);
     result.sensor = resolve_sensor(settings.sensor, scan);
+    result.timed_scans = scan.has_time() ? 1 : 0;
     result.tolerance = platform_tolerance(settings.quality, settings.platform, std::nullopt);
   }
   result.poses.push_back(start);

@@ -41,6 +41,14 @@ double step_reach(const Dataset& dataset, std::size_t i, double max_acceleration
            : std::numeric_limits<double>::infinity();
 }
 
+SweepMotion sweep_between(const Dataset& dataset, std::size_t from, std::size_t to, const PointCloud& scan,
+                          const Eigen::Isometry3d& motion) {
+  if (!scan.has_time() || motion.matrix() == Eigen::Matrix4d::Identity()) return {};
+  const auto t0 = dataset.stamp(from), t1 = dataset.stamp(to);
+  const double between = t0 && t1 ? *t1 - *t0 : 0.0;
+  return {motion, between > 0.0 && std::isfinite(between) ? between : sweep_span(scan)};
+}
+
 std::vector<Eigen::Isometry3d> odometry_poses(const Dataset& dataset, const OdometrySettings& s,
                                               std::size_t first, std::size_t count) {
   if (s.guess != OdometryGuess::odometry) return {};

@@ -32,7 +32,7 @@ OdometryLoopClosure close_odometry_loops(const Dataset& dataset, std::size_t fir
 
   std::vector<PointCloud> scans(count);
   tbb::parallel_for(std::size_t{0}, count, [&](std::size_t k) {
-    scans[k] = load_sequence_scan(dataset, first + k, settings.min_range);
+    scans[k] = registered_scan(dataset, chain, first, k, settings.min_range);  // deskewed as the chain did
   });
   std::vector<PlaceMatch> places;
   if (source != LoopCandidateSource::proximity) {

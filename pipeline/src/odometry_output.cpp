@@ -75,6 +75,23 @@ void write_steps_csv(const std::filesystem::path& file, std::size_t first, const
   write_file_atomically(file, steps_csv(steps_table(result, first, truth)));
 }
 
+std::string deskew_scheme(const OdometrySettings& settings) {
+  return settings.deskew ? "constant_velocity" : "off";
+}
+
+std::string deskew_line(const OdometrySettings& settings, const Dataset& dataset, std::size_t first,
+                        Face face) {
+  const PointCloud scan = load_sequence_scan(dataset, first, settings.min_range);
+  const std::string off = "off (" + (face == Face::cli ? std::string("--no-deskew") : "deskew=False") + ")";
+  if (!scan.has_time()) return settings.deskew ? "off: the points carry no time" : off;
+  std::ostringstream sweep;
+  sweep << std::fixed << std::setprecision(3) << sweep_span(scan) << " s";
+  if (!settings.deskew)
+    return off + ": the points carry time (a sweep of " + sweep.str() +
+           ") but are registered where they were measured";
+  return "constant velocity, points carry time (a sweep of " + sweep.str() + ")";
+}
+
 std::vector<std::size_t> trusted_steps_off_reference(const OdometryResult& result,
                                                      const std::vector<Eigen::Isometry3d>& truth,
                                                      const QualitySettings& tolerance) {

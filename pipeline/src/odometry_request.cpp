@@ -37,6 +37,7 @@ OdometrySettings odometry_settings(const OdometryRequest& r, Face face) {
   s.max_acceleration = r.max_acceleration;
   s.seed = r.seed;
   s.recover = r.recover;
+  s.deskew = r.deskew;
   s.sensor = parse_enum(kSensorKindNames, r.sensor, argument(face, "sensor"));
   s.platform = parse_enum(kPlatformNames, r.platform, argument(face, "platform"));
   s.common_view = r.common_view.value_or(matcher_traits(r.method).common_view_by_default);

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "sextant/core/error.hpp"
+#include "sextant/odometry/deskew.hpp"
 
 namespace sextant {
 
@@ -60,14 +61,15 @@ RunMapSummary RunMapBuilder::summary() const {
 RunMapBuilder build_run_map(const Dataset& dataset, std::size_t first,
                             const std::vector<Eigen::Isometry3d>& poses,
                             const std::vector<OdometryStep>& steps, double min_range,
-                            const RunMapSettings& settings) {
+                            const RunMapSettings& settings, const std::vector<SweepMotion>& sweeps) {
   if (poses.empty() || steps.size() + 1 != poses.size())
     throw InputError("map", "",
                      std::to_string(poses.size()) + " poses and " + std::to_string(steps.size()) +
                          " steps: a run of n scans has n poses and n − 1 steps");
   RunMapBuilder builder(settings);
   for (std::size_t k = 0; k < poses.size(); ++k) {
-    const PointCloud scan = load_sequence_scan(dataset, first + k, min_range);
+    PointCloud scan = load_sequence_scan(dataset, first + k, min_range);
+    if (k < sweeps.size()) scan = deskew_scan(scan, sweeps[k]);  // as the chain registered it
     builder.add(RegisteredScan{k, &scan, poses[k], k == 0 ? nullptr : &steps[k - 1]});
   }
   return builder;

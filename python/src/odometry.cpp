@@ -34,6 +34,8 @@ namespace {
 struct OdometryRun {
   py::object poses, relative, hessians, ground_truth, steps, dataset;
   std::string guess, map;
+  std::string deskew;  ///< "constant_velocity" or "off"
+  std::size_t timed_scans = 0, deskewed = 0;
   std::string sensor;        ///< the lidar the checks assumed (declared, or measured)
   double tolerance_m = 0.0;  ///< the size of a wrong step the run ended with (platform_tolerance)
   std::size_t first = 0, scans = 0, not_converged = 0, untrusted = 0, recovered = 0;
@@ -84,7 +86,7 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
                      const std::string& sensor, const std::string& platform, bool build_map,
                      const py::object& map_voxel, bool map_trusted_only, const py::object& view,
                      const py::object& topic, double start, const py::object& duration, std::size_t every,
-                     const py::kwargs& settings) {
+                     bool deskew, const py::kwargs& settings) {
   // Arguments first (cheap), then the dataset, as the CLI (odometry_request.hpp).
   const MatcherConfig config =  // unknown names, bad settings
       read_matcher_config(matcher_request("odometry()", method, preset, sampling, settings, sampler_settings),
@@ -104,6 +106,7 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
   request.max_acceleration = max_acceleration;
   request.seed = seed;
   request.recover = recover;
+  request.deskew = deskew;
   OdometrySettings checked = odometry_settings(request, Face::python);
   if (const std::string problem = worker_threads_problem(jobs, "jobs"); !problem.empty())
     throw py::value_error(problem);
@@ -163,6 +166,9 @@ OdometryRun odometry(const py::object& source, const std::string& method, const 
   run.dataset = metadata_dict(meta);
   run.guess = to_string(s.guess);
   run.map = to_string(s.map);
+  run.deskew = deskew_scheme(s);
+  run.timed_scans = result.timed_scans;
+  run.deskewed = result.deskewed();
   run.sensor = to_string(result.sensor.kind);
   run.tolerance_m = result.tolerance.ambiguity_metres;
   run.first = first;
@@ -223,6 +229,9 @@ build_map: also build the run's map, as ``sextant odometry --map-out`` does: eve
 view: a file name (str or path): also write the run's view there, one offline HTML page (the CLI's
     --view: the map, the trajectory and the ground truth, the untrusted, not converged and recovered
     steps marked, a click on a step shows its trust and reason).
+deskew: when the points carry their own time (a t, time, timestamp or offset_time field), move each into
+    its scan's frame at the scan's stamp by the constant velocity of the motion around it, before the scan
+    is registered and kept in the local map (the default, the CLI's; False = --no-deskew).
 poses: ground truth. For a folder of scans: a TUM or KITTI file (the CLI's --poses); for a list: an
     N×4×4 array (world ← scan). odometry_poses (N×4×4) and times (N seconds): a list's odometry and
     clock.
@@ -258,6 +267,13 @@ void bind_odometry(py::module_& m) {
           "the dataset's metadata: name, format, path, scans, has_odometry, has_ground_truth, notes")
       .def_readonly("guess", &OdometryRun::guess, "the guess mode used")
       .def_readonly("map", &OdometryRun::map, "the map mode used")
+      .def_readonly(
+          "deskew", &OdometryRun::deskew,
+          "'constant_velocity' (scans whose points carry time were deskewed) or 'off' (deskew=False)")
+      .def_readonly("timed_scans", &OdometryRun::timed_scans, "scans whose points carry their own time")
+      .def_readonly("deskewed", &OdometryRun::deskewed,
+                    "scans deskewed by a known motion (with constant velocity, not the first: no motion is "
+                    "known before it)")
       .def_readonly("sensor", &OdometryRun::sensor,
                     "the lidar the checks assumed: 'spinning' or 'solid_state' (declared, or measured on the "
                     "first scan)")
@@ -301,7 +317,8 @@ void bind_odometry(py::module_& m) {
         py::arg("jobs") = 0, py::arg("sampler_settings") = py::none(), py::arg("sensor") = "auto",
         py::arg("platform") = "auto", py::arg("build_map") = false, py::arg("map_voxel") = py::none(),
         py::arg("map_trusted_only") = false, py::arg("view") = py::none(), py::arg("topic") = py::none(),
-        py::arg("start") = 0.0, py::arg("duration") = py::none(), py::arg("every") = 1);
+        py::arg("start") = 0.0, py::arg("duration") = py::none(), py::arg("every") = 1,
+        py::arg("deskew") = true);
 }
 
 }  // namespace sextant::python

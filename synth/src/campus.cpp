@@ -7,6 +7,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "sextant/core/pose.hpp"
 #include "sextant/synth/odometry.hpp"
 #include "sextant/synth/route.hpp"
 #include "sextant/synth/world_builder.hpp"
@@ -30,7 +31,13 @@ SimulatedScan Campus::scan(std::size_t i) const {
   if (i >= ground_truth.size())
     throw std::out_of_range("campus scan " + std::to_string(i) + " does not exist");
   Rng rng(mix(seed, kScans + first_scan + i));
-  return simulate_scan(*world, settings.sensor, settings.trajectory.sensor_height, ground_truth[i], rng);
+  SensorMotion moving;
+  if (settings.sensor.sweep_period > 0.0) {
+    const Eigen::Isometry3d& next = i + 1 < ground_truth.size() ? ground_truth[i + 1] : pose_after_last;
+    moving = {relative(ground_truth[i], next), settings.trajectory.scan_period};
+  }
+  return simulate_scan(*world, settings.sensor, settings.trajectory.sensor_height, ground_truth[i], rng,
+                       moving);
 }
 
 Campus campus_window(const Campus& campus, std::size_t first, std::size_t count) {
@@ -51,6 +58,8 @@ Campus campus_window(const Campus& campus, std::size_t first, std::size_t count)
   window.stamps = slice(campus.stamps);
   window.gnss = slice(campus.gnss);
   window.first_scan = campus.first_scan + first;
+  window.pose_after_last =
+      first + count < campus.size() ? campus.ground_truth[first + count] : campus.pose_after_last;
   return window;
 }
 
@@ -73,6 +82,9 @@ Campus generate_campus(const CampusSettings& settings, std::uint64_t seed) {
     campus.ground_truth.push_back(pose);
   }
   campus.world = std::move(world);
+  const std::vector<Eigen::Isometry3d>& route = campus.ground_truth;
+  campus.pose_after_last =
+      route.size() < 2 ? route.back() : route.back() * relative(route[route.size() - 2], route.back());
   for (std::size_t i = 0; i < campus.ground_truth.size(); ++i)
     campus.stamps.push_back(static_cast<double>(i) * settings.trajectory.scan_period);
   Rng odometry_rng(mix(seed, kOdometry));
@@ -83,6 +95,7 @@ Campus generate_campus(const CampusSettings& settings, std::uint64_t seed) {
   // route, so they equal the full campus' first N).
   if (settings.trajectory.first_scans > 0) {
     const auto n = static_cast<std::size_t>(settings.trajectory.first_scans);
+    if (n < campus.ground_truth.size()) campus.pose_after_last = campus.ground_truth[n];
     campus.ground_truth.resize(n);
     campus.odometry.resize(n);
     campus.stamps.resize(n);

@@ -1,4 +1,5 @@
 #include "sextant/synth/sensor.hpp"
+#include "sextant/core/se3.hpp"
 #include "sextant/core/units.hpp"
 
 #include <cmath>
@@ -49,21 +50,40 @@ std::vector<Eigen::Vector3d> ray_directions(const SensorSettings& sensor, Rng& r
   return rays;
 }
 
+/// When along the sweep ray `r` of `rays` is taken, as a fraction of the sweep: a spinning scanner's
+/// yaw column over the turn (its rays are column by column), the rosette's ray over its rays.
+double sweep_fraction(const SensorSettings& sensor, std::size_t r, std::size_t rays) {
+  if (sensor.pattern == "rosette") return static_cast<double>(r) / static_cast<double>(rays);
+  const auto column = r / static_cast<std::size_t>(sensor.elevation_steps);
+  return static_cast<double>(column) / sensor.yaw_steps;
+}
+
 }  // namespace
 
 SimulatedScan simulate_scan(const World& world, const SensorSettings& sensor, double sensor_height,
-                            const Eigen::Isometry3d& world_from_sensor, Rng& rng) {
+                            const Eigen::Isometry3d& world_from_sensor, Rng& rng,
+                            const SensorMotion& moving) {
   SimulatedScan scan;
   const std::vector<Eigen::Vector3d> directions = ray_directions(sensor, rng);
+  const bool sweeps = sensor.sweep_period > 0.0;
+  std::vector<float> times;
+  double pose_time = 0.0;  // the time `pose` is the sensor's at
   // The vehicle body below the scanner (sensor frame): rays that hit it are self-hits.
   const Box body{{-0.5 * sensor.body_length, -0.5 * sensor.body_width, -sensor_height},
                  {0.5 * sensor.body_length, 0.5 * sensor.body_width, sensor.body_top}};
-  const Eigen::Matrix3d R = world_from_sensor.linear();
+  Eigen::Isometry3d pose = world_from_sensor;
   Ray ray;
-  ray.origin = world_from_sensor.translation();
+  ray.origin = pose.translation();
   std::map<int, std::size_t> per_landmark;
   scan.cloud.reserve(directions.size());
-  for (const Eigen::Vector3d& dir_s : directions) {
+  for (std::size_t r = 0; r < directions.size(); ++r) {
+    const Eigen::Vector3d& dir_s = directions[r];
+    const double time = sweeps ? sensor.sweep_period * sweep_fraction(sensor, r, directions.size()) : 0.0;
+    if (time != pose_time && moving.seconds > 0.0) {
+      pose_time = time;
+      pose = world_from_sensor * interpolate_motion(moving.motion, time / moving.seconds);
+      ray.origin = pose.translation();
+    }
     const std::uint64_t key = rng.bits();
     const double noise = rng.normal(0.0, sensor.range_noise);
     ++scan.stats.rays;
@@ -71,7 +91,7 @@ SimulatedScan simulate_scan(const World& world, const SensorSettings& sensor, do
     const bool may_hit_body = dir_s.z() < 0.0 || body.max.z() >= 0.0;
     const auto self =
         may_hit_body ? body.intersect(Ray{Eigen::Vector3d::Zero(), dir_s}, sensor.max_range) : std::nullopt;
-    ray.direction = R * dir_s;
+    ray.direction = pose.linear() * dir_s;
     const auto hit = world.cast(ray, self ? *self : sensor.max_range, key);
     if (!hit) {
       ++(self ? scan.stats.self_hits : scan.stats.no_return);
@@ -83,11 +103,13 @@ SimulatedScan simulate_scan(const World& world, const SensorSettings& sensor, do
       continue;
     }
     scan.cloud.push_back((range * dir_s).cast<float>());
+    if (sweeps) times.push_back(static_cast<float>(time));
     scan.primitive.push_back(hit->primitive);
     scan.landmark.push_back(hit->landmark);
     if (hit->landmark >= 0) ++per_landmark[hit->landmark];
   }
   scan.stats.returns = scan.cloud.size();
+  if (sweeps) scan.cloud.set_time(std::move(times));
   for (const auto& [id, count] : per_landmark) scan.visible.push_back({id, count});
   return scan;
 }

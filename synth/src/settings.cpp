@@ -104,6 +104,8 @@ bool SensorSettings::valid(std::string* why) const {
   c.require(rosette_rays >= 1, "rosette_rays must be at least 1");
   c.require(fov_horizontal_deg > 0.0 && fov_horizontal_deg < 180.0, "fov_horizontal_deg must be in (0, 180)");
   c.require(fov_vertical_deg > 0.0 && fov_vertical_deg < 180.0, "fov_vertical_deg must be in (0, 180)");
+  c.require(std::isfinite(sweep_period) && sweep_period >= 0.0,
+            "sweep_period must be a finite number of seconds ≥ 0 (0: instantaneous scans)");
   return c.ok();
 }
 
@@ -145,9 +147,13 @@ bool CampusSettings::valid(std::string* why) const {
   };
   if (why) why->clear();
   // The first invalid part names the reason; the rest are not checked.
-  return check("world", world.valid(&reason)) && check("trajectory", trajectory.valid(&reason)) &&
-         check("sensor", sensor.valid(&reason)) && check("odometry", odometry.valid(&reason)) &&
-         check("gnss", gnss.valid(&reason));
+  const bool sections = check("world", world.valid(&reason)) &&
+                        check("trajectory", trajectory.valid(&reason)) &&
+                        check("sensor", sensor.valid(&reason)) &&
+                        check("odometry", odometry.valid(&reason)) && check("gnss", gnss.valid(&reason));
+  if (!sections) return false;
+  reason = "sweep_period must not exceed trajectory.scan_period (a sweep ends before the next scan starts)";
+  return check("sensor", sensor.sweep_period <= trajectory.scan_period);
 }
 
 std::string campus_settings_yaml(const CampusSettings& settings, std::uint64_t seed) {

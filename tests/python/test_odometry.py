@@ -200,3 +200,28 @@ def test_view_is_the_clis_page(tmp_path):
     assert data["reference"] is not None and data["map"]["count"] > 0
     with pytest.raises(sextant.InputError, match="does not exist"):
         sextant.odometry("campus", scans=5, view=tmp_path / "missing" / "run.html")
+
+
+def test_scans_whose_points_carry_time_are_deskewed_unless_asked_not_to(data_dir, tmp_path):
+    """Issue 63: PCD files with an Ouster-style `t` field (uint32 ns) are deskewed by default."""
+    paths = []
+    for name in ("fast_gicp_251370668.pcd", "fast_gicp_251371071.pcd"):
+        cloud = sextant.read_cloud(data_dir / "velodyne_pair" / name)
+        t = (np.arange(len(cloud)) * (100_000_000 // len(cloud))).astype(np.uint32)  # over 0.1 s
+        path = tmp_path / name
+        with open(path, "w") as f:
+            f.write("VERSION 0.7\nFIELDS x y z t\nSIZE 4 4 4 4\nTYPE F F F U\nCOUNT 1 1 1 1\n"
+                    f"WIDTH {len(cloud)}\nHEIGHT 1\nPOINTS {len(cloud)}\nDATA ascii\n")
+            for p, ns in zip(cloud, t):
+                f.write(f"{p[0]:.9g} {p[1]:.9g} {p[2]:.9g} {ns}\n")
+        paths.append(path)
+    # From no motion (the pair's one step is believed then): its velocity deskews both scans.
+    on = sextant.odometry(paths, guess="identity")
+    assert on.untrusted == 0
+    assert (on.deskew, on.timed_scans, on.deskewed) == ("constant_velocity", 2, 2)
+    off = sextant.odometry(paths, guess="identity", deskew=False)
+    assert (off.deskew, off.timed_scans, off.deskewed) == ("off", 2, 0)
+    assert not np.array_equal(on.poses, off.poses)
+    plain = sextant.odometry([data_dir / "velodyne_pair" / "fast_gicp_251370668.pcd",
+                              data_dir / "velodyne_pair" / "fast_gicp_251371071.pcd"])
+    assert (plain.deskew, plain.timed_scans, plain.deskewed) == ("constant_velocity", 0, 0)

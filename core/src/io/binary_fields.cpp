@@ -1,10 +1,12 @@
 #include "binary_fields.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <cstring>
 #include <utility>
 
 #include "sextant/core/error.hpp"
+#include "sextant/core/io/point_time.hpp"
 #include "text_parse.hpp"
 
 namespace sextant::detail {
@@ -73,17 +75,26 @@ std::uint64_t parse_count(const std::filesystem::path& file, long line, std::str
   return value;
 }
 
-PointSink::PointSink(std::size_t expected, bool with_intensity) : with_intensity_(with_intensity) {
-  cloud_.mutable_points().reserve(expected);
-  if (with_intensity_) cloud_.intensity().reserve(expected);
+PointSink::Time time_kind(bool found, ScalarType type) {
+  if (!found) return PointSink::Time::none;
+  return type.kind == 'F' ? PointSink::Time::floating : PointSink::Time::integer;
 }
 
-void PointSink::add(double x, double y, double z, double intensity) {
+PointSink::PointSink(std::size_t expected, bool with_intensity, Time time)
+    : with_intensity_(with_intensity), time_(time) {
+  cloud_.mutable_points().reserve(expected);
+  if (with_intensity_) cloud_.intensity().reserve(expected);
+  if (time_ != Time::none) raw_times_.reserve(expected);
+}
+
+void PointSink::add(double x, double y, double z, double intensity, double time) {
   ++report_.points_read;
-  if (!fits_float(x) || !fits_float(y) || !fits_float(z) || (with_intensity_ && !fits_float(intensity))) {
+  if (!fits_float(x) || !fits_float(y) || !fits_float(z) || (with_intensity_ && !fits_float(intensity)) ||
+      (time_ != Time::none && !std::isfinite(time))) {
     ++report_.non_finite_dropped;
     return;
   }
+  if (time_ != Time::none) raw_times_.push_back(time);
   const Eigen::Vector3f p(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
   if (with_intensity_) {
     cloud_.push_back(p, static_cast<float>(intensity));
@@ -93,6 +104,11 @@ void PointSink::add(double x, double y, double z, double intensity) {
 }
 
 PointCloud PointSink::take(ScanLoadReport* report) {
+  if (time_ != Time::none) {
+    cloud_.set_time(point_times_to_seconds(raw_times_, time_ == Time::integer, std::nullopt));
+    // A finite raw value whose seconds overflow float (1e300 s) is dropped as non-finite too.
+    report_.non_finite_dropped += remove_non_finite(cloud_);
+  }
   if (report) *report = report_;
   return std::move(cloud_);
 }

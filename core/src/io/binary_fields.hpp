@@ -33,17 +33,27 @@ std::uint64_t parse_count(const std::filesystem::path& file, long line, std::str
                           std::string_view token);
 
 /// Collects points into a cloud: counts every point read, drops and counts the ones whose
-/// coordinates (or intensity) are NaN, ±Inf or outside float's range.
+/// coordinates (or intensity) are NaN, ±Inf or outside float's range, or whose time is not finite.
 class PointSink {
  public:
-  PointSink(std::size_t expected, bool with_intensity);
-  void add(double x, double y, double z, double intensity);
+  /// `time`: the points have a per-point time field (point_time.hpp), of an integer type or not.
+  enum class Time { none, integer, floating };
+  PointSink(std::size_t expected, bool with_intensity, Time time = Time::none);
+  /// `time` is the field's raw value (ignored without a time field).
+  void add(double x, double y, double z, double intensity, double time = 0.0);
+  /// The cloud, with its times in seconds (point_times_to_seconds: a file knows no stamp, so times
+  /// since the epoch become relative to the earliest point).
   PointCloud take(ScanLoadReport* report);
 
  private:
   bool with_intensity_;
+  Time time_;
   PointCloud cloud_;
+  std::vector<double> raw_times_;
   ScanLoadReport report_;
 };
+
+/// The time field a reader found: none, or an integer or floating one.
+PointSink::Time time_kind(bool found, ScalarType type);
 
 }  // namespace sextant::detail

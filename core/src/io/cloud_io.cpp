@@ -132,6 +132,7 @@ CloudWriteReport write_cloud(const std::filesystem::path& file, const PointCloud
   const Kind kind = entry_for(file).kind;
   CloudWriteReport report;
   report.points = cloud.size();
+  report.times_dropped = cloud.has_time() && kind != Kind::pcd && kind != Kind::ply;
   for (std::size_t i = 0; i < cloud.size(); ++i) {
     if (!cloud[i].allFinite())
       ++report.non_finite;
@@ -162,6 +163,9 @@ std::string dropped_on_reading_note(const std::filesystem::path& file, const Clo
     note +=
         (note.empty() ? std::to_string(report.non_finite) + of : "; " + std::to_string(report.non_finite)) +
         (report.non_finite == 1 ? " has" : " have") + " a non-finite coordinate, which every reader drops";
+  if (report.times_dropped)
+    note += std::string(note.empty() ? "" : "; ") + "the points' own times are not written to " +
+            file.string() + " (only .pcd and .ply keep them)";
   return note;
 }
 

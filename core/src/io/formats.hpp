@@ -14,7 +14,8 @@ PointCloud read_point_list(const std::filesystem::path& file, ScanLoadReport* re
 void write_point_list(const std::filesystem::path& file, const PointCloud& cloud,
                       bool with_header_and_commas);
 
-/// PCD and PLY: our own readers (headers checked against the file size), PCL writers.
+/// PCD and PLY: our own readers (headers checked against the file size; a per-point time field under a
+/// driver's name kept, point_time.hpp), PCL writers (a cloud's per-point time as the float field `time`).
 PointCloud read_pcd(const std::filesystem::path& file, ScanLoadReport* report);
 void write_pcd(const std::filesystem::path& file, const PointCloud& cloud);
 PointCloud read_ply(const std::filesystem::path& file, ScanLoadReport* report);

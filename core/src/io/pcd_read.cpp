@@ -1,7 +1,8 @@
 // PCD reader (ascii, binary, binary_compressed), our own rather than PCL's: PCL's reader trusts
 // the header (an empty file crashes it, a lying POINTS line allocates whatever it says). Every
 // count in the header is checked against the bytes actually in the file before anything is
-// allocated. Layout: https://pointclouds.org/documentation/tutorials/pcd_file_format.html
+// allocated. A per-point time field under a driver's name (point_time.hpp) is kept.
+// Layout: https://pointclouds.org/documentation/tutorials/pcd_file_format.html
 #include <cstring>
 #include <limits>
 #include <string>
@@ -9,6 +10,7 @@
 #include "binary_fields.hpp"
 #include "formats.hpp"
 #include "sextant/core/error.hpp"
+#include "sextant/core/io/point_time.hpp"
 #include "text_parse.hpp"
 
 namespace sextant::detail {
@@ -134,6 +136,14 @@ const PcdField* find_field(const PcdHeader& h, const std::string& name) {
   return nullptr;
 }
 
+/// The per-point time field under any driver's name (point_time.hpp), or null.
+const PcdField* time_field(const PcdHeader& h) {
+  std::vector<std::string> names;
+  for (const PcdField& f : h.fields) names.push_back(f.name);
+  const auto index = find_point_time_field(names);
+  return index ? &h.fields[*index] : nullptr;
+}
+
 /// LZF decompression (liblzf's format, as PCL writes it) with every read and write bounds-checked.
 bool lzf_decompress(const unsigned char* in, std::size_t in_size, unsigned char* out, std::size_t out_size) {
   std::size_t i = 0, o = 0;
@@ -177,6 +187,8 @@ PointCloud read_pcd(const std::filesystem::path& file, ScanLoadReport* report) {
     if (!axes[k]) fail(file, "", std::string("no '") + "xyz"[k] + "' field");
   }
   const PcdField* intensity = find_field(h, "intensity");
+  const PcdField* time = time_field(h);
+  const PointSink::Time time_type = time_kind(time != nullptr, time ? time->type : ScalarType{});
   const std::size_t have = bytes.size() - h.data_offset;
   const auto* data = reinterpret_cast<const unsigned char*>(bytes.data()) + h.data_offset;
   const auto value_at = [&](const unsigned char* base, const PcdField& f) {
@@ -187,7 +199,7 @@ PointCloud read_pcd(const std::filesystem::path& file, ScanLoadReport* report) {
     // Each point is a line of at least one character per value plus separators.
     if (h.points > have / (2 * h.columns) + 1)
       fail(file, at_line(h.data_line), too_short(h, h.points * 2 * h.columns, have));
-    PointSink sink(static_cast<std::size_t>(h.points), intensity != nullptr);
+    PointSink sink(static_cast<std::size_t>(h.points), intensity != nullptr, time_type);
     std::vector<double> v;
     std::string bad;
     std::uint64_t seen = 0;
@@ -205,7 +217,7 @@ PointCloud read_pcd(const std::filesystem::path& file, ScanLoadReport* report) {
              "expected " + std::to_string(h.columns) + " values, found " + std::to_string(v.size()));
       }
       sink.add(v[axes[0]->column], v[axes[1]->column], v[axes[2]->column],
-               intensity ? v[intensity->column] : 0.0);
+               intensity ? v[intensity->column] : 0.0, time ? v[time->column] : 0.0);
       ++seen;
     });
     if (seen != h.points) {
@@ -249,7 +261,7 @@ PointCloud read_pcd(const std::filesystem::path& file, ScanLoadReport* report) {
       fail(file, at_byte(static_cast<long long>(h.data_offset) + 8), "corrupt compressed data");
     records = out;
   }
-  PointSink sink(static_cast<std::size_t>(h.points), intensity != nullptr);
+  PointSink sink(static_cast<std::size_t>(h.points), intensity != nullptr, time_type);
   const bool soa = h.encoding == "binary_compressed";  // field-major: all x, then all y, …
   const auto at = [&](const PcdField& f, std::uint64_t i) {
     return soa ? read_scalar(
@@ -258,7 +270,8 @@ PointCloud read_pcd(const std::filesystem::path& file, ScanLoadReport* report) {
                : value_at(records + i * h.record, f);
   };
   for (std::uint64_t i = 0; i < h.points; ++i) {
-    sink.add(at(*axes[0], i), at(*axes[1], i), at(*axes[2], i), intensity ? at(*intensity, i) : 0.0);
+    sink.add(at(*axes[0], i), at(*axes[1], i), at(*axes[2], i), intensity ? at(*intensity, i) : 0.0,
+             time ? at(*time, i) : 0.0);
   }
   PointCloud cloud = sink.take(report);
   if (report && h.encoding == "binary" && have > need)

@@ -1,6 +1,7 @@
 // PLY reader (ascii, binary_little_endian, binary_big_endian), our own rather than PCL's: PCL's
 // reader allocates whatever the header's vertex count says. Every element count is checked
-// against the bytes actually in the file before anything is allocated.
+// against the bytes actually in the file before anything is allocated. A per-point time property
+// under a driver's name (point_time.hpp) is kept.
 // Layout: http://paulbourke.net/dataformats/ply/
 #include <limits>
 #include <string>
@@ -8,6 +9,7 @@
 #include "binary_fields.hpp"
 #include "formats.hpp"
 #include "sextant/core/error.hpp"
+#include "sextant/core/io/point_time.hpp"
 #include "text_parse.hpp"
 
 namespace sextant::detail {
@@ -119,6 +121,15 @@ int property_index(const PlyElement& e, const std::string& name) {
   return -1;
 }
 
+/// The index of the per-point time property under any driver's name (point_time.hpp), or −1; a
+/// list of that name is not a time.
+int time_property(const PlyElement& e) {
+  std::vector<std::string> names;
+  for (const PlyProperty& p : e.properties) names.push_back(p.is_list ? std::string() : p.name);
+  const auto index = find_point_time_field(names);
+  return index ? static_cast<int>(*index) : -1;
+}
+
 /// Walks binary rows, bounds-checked; calls f(values) for the vertex rows (scalars only; lists skipped).
 class BinaryCursor {
  public:
@@ -179,10 +190,13 @@ PointCloud read_ply(const std::filesystem::path& file, ScanLoadReport* report) {
     if (axes[k] < 0) fail(file, "", std::string("no '") + "xyz"[k] + "' vertex property");
   }
   const int intensity = property_index(v, "intensity");
-  PointSink sink(static_cast<std::size_t>(v.count), intensity >= 0);
+  const int time = time_property(v);
+  const ScalarType time_type = time >= 0 ? v.properties[static_cast<std::size_t>(time)].type : ScalarType{};
+  PointSink sink(static_cast<std::size_t>(v.count), intensity >= 0, time_kind(time >= 0, time_type));
   std::vector<double> values;
   const auto add = [&] {
-    sink.add(values[axes[0]], values[axes[1]], values[axes[2]], intensity >= 0 ? values[intensity] : 0.0);
+    sink.add(values[axes[0]], values[axes[1]], values[axes[2]], intensity >= 0 ? values[intensity] : 0.0,
+             time >= 0 ? values[time] : 0.0);
   };
   if (h.format != "ascii") {
     const bool big = h.format == "binary_big_endian";

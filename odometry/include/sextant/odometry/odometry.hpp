@@ -27,6 +27,7 @@
 #include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 #include "sextant/matchers/sensor_kind.hpp"
+#include "sextant/odometry/deskew.hpp"
 #include "sextant/odometry/platform.hpp"
 
 namespace sextant {
@@ -108,6 +109,12 @@ struct OdometrySettings {
   Platform platform = Platform::automatic;
   /// The checks of every registration; its ambiguity tolerance is a car's, which `platform` scales
   QualitySettings quality;
+  /// Scans whose points carry their own time (PointCloud::time) are deskewed (deskew.hpp): each point
+  /// moved into the scan's frame at its stamp by the constant velocity estimated around it, the motion
+  /// the step's guess makes (the odometry's increment, or the last trusted motion continued), before the
+  /// scan is registered and kept in the local map (docs/odometry.md, "Scans taken while moving").
+  /// false: the points are registered where they were measured
+  bool deskew = true;
 
   /// Empty when valid, else what is wrong.
   std::string problem() const;
@@ -157,6 +164,14 @@ struct OdometryResult {
   std::vector<OdometryStep> steps;  ///< count − 1 registrations; steps[i] links poses[i] and poses[i + 1]
   /// What reading each scan dropped (non-finite, no-return points), loads[i] of scan first + i
   std::vector<ScanLoadReport> loads;
+  /// With deskew: the velocity scan first + i was deskewed by (unknown: kept as read, its points carry no
+  /// time or no motion was known yet); empty with deskew off. registered_scan gives the scan as deskewed
+  std::vector<SweepMotion> sweeps;
+  std::size_t timed_scans = 0;  ///< scans whose points carry their own time
+  /// Steps registered a second time, their scan deskewed by the velocity the step itself measured
+  /// (without an odometry: chain_deskew.hpp)
+  std::size_t registered_again = 0;
+  std::size_t deskewed() const;  ///< scans deskewed by a known motion
   /// Over every scan: the points read, and those dropped
   ScanLoadReport dropped_total() const;
   std::size_t untrusted() const;  ///< steps whose chained motion is not trusted
@@ -188,6 +203,11 @@ using OdometryScanObserver = std::function<void(const RegisteredScan& scan)>;
 /// registers it); `report`, when given, gets what reading the file dropped.
 PointCloud load_sequence_scan(const Dataset& dataset, std::size_t i, double min_range,
                               ScanLoadReport* report = nullptr);
+
+/// Scan first + i as `result`'s run registered it and kept it in its map: load_sequence_scan, deskewed
+/// by result.sweeps[i] when there is one.
+PointCloud registered_scan(const Dataset& dataset, const OdometryResult& result, std::size_t first,
+                           std::size_t i, double min_range);
 
 /// Chains count − 1 registrations over scans first … first + count − 1. Throws InputError when the
 /// range leaves the dataset, count < 1, the settings are invalid or the guess mode needs odometry the

@@ -12,6 +12,7 @@
 
 #include "sextant/core/dataset.hpp"
 #include "sextant/odometry/odometry.hpp"
+#include "sextant/pipeline/odometry_request.hpp"
 #include "sextant/pipeline/trajectory_accuracy.hpp"
 
 namespace sextant {
@@ -56,6 +57,15 @@ OdometryCounts odometry_counts(const OdometryResult& result);
 /// "6499 of 25996 points dropped (6499 non-finite, 0 no-return), in 1 of 2 scans (per scan:
 /// steps.csv)" for the console (dropped_points_note over the run); empty when none was.
 std::string dropped_points_line(const OdometryCounts& counts, std::size_t scans);
+
+/// What a run does with the scans' per-point times, from scan `first` of `dataset` (read here), for the
+/// run's header: "constant velocity, points carry time (sweep 0.100 s)", "off: the points carry no
+/// time", or off as `face` spells the switch ("off (--no-deskew) …" / "off (deskew=False) …").
+std::string deskew_line(const OdometrySettings& settings, const Dataset& dataset, std::size_t first,
+                        Face face);
+
+/// "constant_velocity", or "off" (deskew turned off), for provenance.json and Python.
+std::string deskew_scheme(const OdometrySettings& settings);
 
 /// The trusted steps of `result` more than `tolerance`'s ambiguity distance from `truth`'s relative
 /// motions (OdometryCounts::trusted_off_reference).

@@ -39,6 +39,7 @@ struct OdometryRequest {
   double max_acceleration = OdometrySettings{}.max_acceleration;
   std::uint64_t seed = 1;
   bool recover = true;
+  bool deskew = true;  ///< deskew scans whose points carry time (OdometrySettings::deskew)
 };
 
 /// The settings of `request` but its guess (which needs the dataset); InputError naming the argument for

@@ -70,12 +70,12 @@ class RunMapBuilder {
 
 /// The map of a finished run of scans first … first + poses.size() − 1 placed by `poses` (world ←
 /// scan, e.g. the loop-closed ones), each scan re-read as the chain read it (load_sequence_scan with
-/// `min_range`) and dropped once added. `steps` are the chain's (poses.size() − 1 of them): with
-/// trusted_only, scan k ≥ 1 is left out when steps[k − 1] is not trusted. InputError when the sizes
-/// disagree.
+/// `min_range`, deskewed by `sweeps`, the run's OdometryResult::sweeps, when given) and dropped once added.
+/// `steps` are the chain's (poses.size() − 1 of them): with trusted_only, scan k ≥ 1 is left out when steps[k
+/// − 1] is not trusted. InputError when the sizes disagree.
 RunMapBuilder build_run_map(const Dataset& dataset, std::size_t first,
                             const std::vector<Eigen::Isometry3d>& poses,
                             const std::vector<OdometryStep>& steps, double min_range,
-                            const RunMapSettings& settings);
+                            const RunMapSettings& settings, const std::vector<SweepMotion>& sweeps = {});
 
 }  // namespace sextant

@@ -30,9 +30,15 @@ class Campus {
   /// The route index of scan 0 (campus_window): a scan keeps the sensor noise it has in the whole
   /// campus.
   std::size_t first_scan = 0;
+  /// World ← sensor one scan period after the last scan: the route's next pose, or past the route's end
+  /// its last step continued (a sweeping sensor moves towards it during the last scan).
+  Eigen::Isometry3d pose_after_last = Eigen::Isometry3d::Identity();
 
   std::size_t size() const { return ground_truth.size(); }
-  /// Scan i (sensor frame) with per-point provenance. Throws std::out_of_range past the end.
+  /// Scan i (sensor frame) with per-point provenance. Throws std::out_of_range past the end. With
+  /// sensor.sweep_period, the sensor sweeps while it moves from scan i's pose (the scan's ground truth,
+  /// at its stamp: the sweep's start) towards scan i + 1's, at a constant velocity over the scan period
+  /// (interpolate_motion), and every point carries its time.
   SimulatedScan scan(std::size_t i) const;
 };
 

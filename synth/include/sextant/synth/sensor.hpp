@@ -3,7 +3,8 @@
 // vertical axis (yaw scan) as on the thesis' robot. Rays converge at the rotation axis, so
 // the density is high near the vehicle and falls with range (thesis figs 2.3–2.5). Or
 // (SensorSettings::pattern "rosette") a solid-state lidar: a non-repetitive rosette over a fixed
-// field of view, another part of it at every scan (issue 62).
+// field of view, another part of it at every scan (issue 62). Either scans at once or sweeps while it
+// moves (SensorSettings::sweep_period, issue 63).
 #include <cstdint>
 #include <vector>
 
@@ -38,8 +39,19 @@ struct SimulatedScan {
   ScanStatistics stats;
 };
 
-/// Casts every ray of one scan from the world ← sensor pose. Deterministic in (pose, rng state).
+/// How the sensor moves while it sweeps (SensorSettings::sweep_period > 0): at a constant velocity, it
+/// makes `motion` (in its frame at the sweep's start) in `seconds`.
+struct SensorMotion {
+  Eigen::Isometry3d motion = Eigen::Isometry3d::Identity();
+  double seconds = 0.0;
+};
+
+/// Casts every ray of one scan from the world ← sensor pose. With a sweep_period, the ray taken at time
+/// τ along the sweep is cast from world_from_sensor · interpolate_motion(moving.motion, τ / moving.seconds)
+/// (core/se3.hpp) and its point carries τ; without, every ray from world_from_sensor. Deterministic in
+/// (pose, motion, rng state); the rng draws the same numbers either way.
 SimulatedScan simulate_scan(const World& world, const SensorSettings& sensor, double sensor_height,
-                            const Eigen::Isometry3d& world_from_sensor, Rng& rng);
+                            const Eigen::Isometry3d& world_from_sensor, Rng& rng,
+                            const SensorMotion& moving = {});
 
 }  // namespace sextant::synth

@@ -76,6 +76,11 @@ struct SensorSettings {
   int rosette_rays = 6000;           ///< rosette: rays per scan [-]
   double fov_horizontal_deg = 70.4;  ///< rosette: field of view about the vertical [deg]
   double fov_vertical_deg = 77.2;    ///< rosette: field of view in elevation [deg]
+  /// How long one scan's sweep takes [s]: each ray is cast at its own time along it (the azimuth's
+  /// fraction of the turn, or the rosette's fraction of its rays) from where the moving sensor then is,
+  /// and its point carries that time (PointCloud::time, from the scan's stamp, the sweep's start). 0: an
+  /// instantaneous scan, every ray from the scan's pose (no times). At most trajectory.scan_period
+  double sweep_period = 0.0;
 
   bool valid(std::string* why) const;
 };

@@ -64,6 +64,7 @@ void visit(SensorSettings& s, Visitor&& v) {
   v("rosette_rays", s.rosette_rays);
   v("fov_horizontal_deg", s.fov_horizontal_deg);
   v("fov_vertical_deg", s.fov_vertical_deg);
+  v("sweep_period", s.sweep_period);
 }
 
 template <class Visitor>

@@ -33,6 +33,8 @@ struct CloudWriteReport {
   std::size_t non_finite = 0;  ///< NaN/Inf coordinates: every reader drops them
   /// `.3d` only: points at or beyond 32.75 m, which a uos reader takes for the SICK's "no return"
   std::size_t beyond_no_return_range = 0;
+  /// The cloud's per-point times were not written: only `.pcd` and `.ply` keep them
+  bool times_dropped = false;
   std::size_t dropped_on_reading() const { return non_finite + beyond_no_return_range; }
 };
 
@@ -40,7 +42,8 @@ struct CloudWriteReport {
 CloudWriteReport write_cloud(const std::filesystem::path& file, const PointCloud& cloud);
 
 /// "1098 of 12998 points written to FILE lie at or beyond 32.75 m: a .3d reader takes them for the
-/// SICK's 'no return' and drops them (…)", or empty when reading the file back gives every point.
+/// SICK's 'no return' and drops them (…)", or empty when reading the file back gives every point (and
+/// its time, when it has one).
 std::string dropped_on_reading_note(const std::filesystem::path& file, const CloudWriteReport& report);
 
 }  // namespace sextant
