@@ -320,28 +320,7 @@ void add_odometry_command(CLI::App& app, int& exit_code) {
                   "whatever the drift), or both; every closure is verified by a trusted registration. "
                   "trajectory.* is then the loop-closed one, chained/ the chain, loop_closures.csv the "
                   "candidates");
-  CLI::Option* map_out =
-      cmd->add_option(
-             "--map-out", o->map_out,
-             "Write the run's map: every scan (as registered: its sensor's frame, without "
-             "--min-range's points) moved into the world by its pose and voxel-filtered, one point "
-             "per occupied voxel at the centroid of its points, with their mean intensity when every "
-             "scan has one; binary .ply or .pcd by the extension, written atomically; inside --out it "
-             "goes in with the run's files. Built as the run goes (memory grows with the occupied "
-             "voxels, not with the scans); with --loop-closure after the loops are closed, from the "
-             "closed poses. Scans placed by untrusted steps go in too (the map shows where the run "
-             "went wrong) unless --map-trusted-only")
-          ->check(map_file());
-  cmd->add_option(
-         "--map-voxel", o->map_voxel,
-         "The map's voxel edge [m] (default: 1/100 of the first scan's median range, rounded to 1, 2 "
-         "or 5 × 10ⁿ, at least 0.01; printed and recorded in provenance.json)")
-      ->check(finite_number(0.0, /*strictly=*/true))
-      ->needs(map_out);
-  cmd->add_flag("--map-trusted-only", o->map_trusted_only,
-                "Leave the scans placed by untrusted steps out of the map (counted and printed); the scans "
-                "after them stay, placed by the chain")
-      ->needs(map_out);
+  add_map_options(*cmd, o->map_out, o->map_voxel, o->map_trusted_only);
   cmd->add_option("--view", o->view,
                   "Write one self-contained HTML page of the run (three.js, offline): the map (the scans "
                   "placed by the trajectory), the trajectory and the ground truth, the untrusted, not "

@@ -5,6 +5,7 @@
 #include <string>
 #include <system_error>
 
+#include "number_options.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/cloud_io.hpp"
 
@@ -69,6 +70,30 @@ void MapOutput::write(const OutputFolder& folder, const PointCloud& map) const {
     if (ec) throw FileError::from_errno(parent.string(), "cannot create the map's folder", ec.value());
   }
   write_cloud(file, map);
+}
+
+void add_map_options(CLI::App& cmd, std::string& map_out_path, double& map_voxel, bool& map_trusted_only) {
+  CLI::Option* map_out =
+      cmd.add_option(
+             "--map-out", map_out_path,
+             "Write the run's map: every scan (as registered: its sensor's frame, without "
+             "--min-range's points) moved into the world by its pose and voxel-filtered, one point "
+             "per occupied voxel at the centroid of its points, with their mean intensity when every "
+             "scan has one; binary .ply or .pcd by the extension, written atomically; inside --out it "
+             "goes in with the run's files. Built as the run goes (memory grows with the occupied "
+             "voxels, not with the scans); with --loop-closure after the loops are closed, from the "
+             "closed poses. Scans placed by untrusted steps go in too (the map shows where the run "
+             "went wrong) unless --map-trusted-only")
+          ->check(map_file());
+  cmd.add_option("--map-voxel", map_voxel,
+                 "The map's voxel edge [m] (default: 1/100 of the first scan's median range, rounded to 1, 2 "
+                 "or 5 × 10ⁿ, at least 0.01; printed and recorded in provenance.json)")
+      ->check(finite_number(0.0, /*strictly=*/true))
+      ->needs(map_out);
+  cmd.add_flag("--map-trusted-only", map_trusted_only,
+               "Leave the scans placed by untrusted steps out of the map (counted and printed); the scans "
+               "after them stay, placed by the chain")
+      ->needs(map_out);
 }
 
 }  // namespace sextant::cli

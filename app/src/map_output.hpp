@@ -20,6 +20,9 @@ std::string map_file_problem(const std::filesystem::path& path);
 /// --map-out's check (map_file_problem): a usage error, exit 2, before anything runs.
 CLI::Validator map_file();
 
+/// --map-out, --map-voxel and --map-trusted-only of `sextant odometry`, into the three settings.
+void add_map_options(CLI::App& cmd, std::string& map_out_path, double& map_voxel, bool& map_trusted_only);
+
 class MapOutput {
  public:
   /// InputError("--map-out", …) for an extension other than .ply / .pcd (map_file_problem), an existing

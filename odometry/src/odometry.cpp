@@ -30,17 +30,7 @@
 namespace sextant {
 namespace {
 
-using odometry_detail::ChainDeskew;
-using odometry_detail::dataset_label;
-using odometry_detail::odometry_poses;
-using odometry_detail::ScanHandout;
-using odometry_detail::start_pose;
-using odometry_detail::step_reach;
-using odometry_detail::StepContext;
-using odometry_detail::StepFrame;
-using odometry_detail::StepWorker;
-using odometry_detail::sweep_between;
-using odometry_detail::time_ratio;
+using namespace odometry_detail;  // this module's private parts (src/*.hpp)
 
 /// Scans loaded and registered together on the parallel path (bounds the memory held).
 constexpr std::size_t kChunk = 16;
