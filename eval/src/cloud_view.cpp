@@ -120,17 +120,7 @@ std::pair<Eigen::Vector3d, double> framing(
       }
     }
   if (axes[0].empty()) return {Eigen::Vector3d::Zero(), 1.0};
-  Eigen::Vector3d lo, hi;
-  for (int a = 0; a < 3; ++a) {
-    std::vector<double>& v = axes[a];
-    const auto at = [&v](double q) {
-      const auto n = static_cast<std::ptrdiff_t>(q * static_cast<double>(v.size() - 1));
-      std::nth_element(v.begin(), v.begin() + n, v.end());
-      return v[static_cast<std::size_t>(n)];
-    };
-    lo[a] = at(0.02);
-    hi[a] = at(0.98);
-  }
+  const auto [lo, hi] = detail::central_box(axes);
   return {0.5 * (lo + hi), std::max(0.5 * (hi - lo).norm(), 1e-3)};
 }
 

@@ -86,4 +86,19 @@ std::string read_inline_script(const std::filesystem::path& path) {
   return js;
 }
 
+std::pair<Eigen::Vector3d, Eigen::Vector3d> central_box(std::array<std::vector<double>, 3>& axes) {
+  Eigen::Vector3d lo, hi;
+  for (int a = 0; a < 3; ++a) {
+    std::vector<double>& v = axes[a];
+    const auto at = [&v](double q) {
+      const auto n = static_cast<std::ptrdiff_t>(q * static_cast<double>(v.size() - 1));
+      std::nth_element(v.begin(), v.begin() + n, v.end());
+      return v[static_cast<std::size_t>(n)];
+    };
+    lo[a] = at(0.02);
+    hi[a] = at(0.98);
+  }
+  return {lo, hi};
+}
+
 }  // namespace sextant::detail

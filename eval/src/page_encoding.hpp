@@ -1,9 +1,11 @@
 #pragma once
 // Private helper of the eval module: what the offline 3D pages (cloud_view, run_view) write into their
-// HTML, once for both: float32 coordinates as base64, JSON strings that are safe inside <script>, and
-// Debian's three.js files read for inlining.
+// HTML, once for both: float32 coordinates as base64, JSON strings that are safe inside <script>,
+// Debian's three.js files read for inlining, and the box their cameras frame.
+#include <array>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Core>
@@ -23,5 +25,9 @@ std::string grouped(std::size_t n);
 /// A script file's text for inlining into a page; InputError naming the file when it cannot be read
 /// or holds "</script" (which would end the page's <script> element).
 std::string read_inline_script(const std::filesystem::path& path);
+
+/// The 2 % and 98 % quantiles of each axis' values (a few far returns left out); reorders them. Each
+/// axis must hold at least one value.
+std::pair<Eigen::Vector3d, Eigen::Vector3d> central_box(std::array<std::vector<double>, 3>& axes);
 
 }  // namespace sextant::detail

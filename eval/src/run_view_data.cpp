@@ -4,6 +4,7 @@
 #include "run_view_data.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <locale>
 #include <map>
@@ -26,20 +27,11 @@ std::vector<Eigen::Vector3d> positions(const std::vector<Eigen::Isometry3d>& pos
 /// The map's 2 % and 98 % quantiles on each axis (a few far returns left out); at most about 20 000
 /// points are looked at.
 std::pair<Eigen::Vector3d, Eigen::Vector3d> map_box(const std::vector<Eigen::Vector3f>& map) {
-  Eigen::Vector3d lo, hi;
   const std::size_t stride = std::max<std::size_t>(1, map.size() / 20000);
-  for (int a = 0; a < 3; ++a) {
-    std::vector<double> v;
-    for (std::size_t k = 0; k < map.size(); k += stride) v.push_back(map[k][a]);
-    const auto at = [&v](double q) {
-      const auto n = static_cast<std::ptrdiff_t>(q * static_cast<double>(v.size() - 1));
-      std::nth_element(v.begin(), v.begin() + n, v.end());
-      return v[static_cast<std::size_t>(n)];
-    };
-    lo[a] = at(0.02);
-    hi[a] = at(0.98);
-  }
-  return {lo, hi};
+  std::array<std::vector<double>, 3> axes;
+  for (std::size_t k = 0; k < map.size(); k += stride)
+    for (int a = 0; a < 3; ++a) axes[a].push_back(map[k][a]);
+  return detail::central_box(axes);
 }
 
 /// The scene's centre and half diagonal: the run fills the view. The box of every finite trajectory

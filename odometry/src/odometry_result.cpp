@@ -34,9 +34,8 @@ std::size_t OdometryResult::untrusted() const {
 }
 
 std::size_t OdometryResult::recovered() const {
-  return static_cast<std::size_t>(std::count_if(steps.begin(), steps.end(), [](const OdometryStep& s) {
-    return s.recovery == "wide_basin" || s.recovery == "restart";
-  }));
+  return static_cast<std::size_t>(
+      std::count_if(steps.begin(), steps.end(), [](const OdometryStep& s) { return s.recovered(); }));
 }
 
 PointCloud registered_scan(const Dataset& dataset, const OdometryResult& result, std::size_t first,

@@ -15,6 +15,7 @@
 
 #include "sextant/core/error.hpp"
 #include "sextant/eval/cloud_view.hpp"
+#include "sextant_test/run_view_page.hpp"
 
 namespace sextant {
 namespace {
@@ -32,28 +33,6 @@ std::size_t count_of(const std::string& text, const std::string& what) {
   std::size_t n = 0;
   for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
   return n;
-}
-
-std::vector<unsigned char> decode_base64(const std::string& text) {
-  std::vector<unsigned char> out;
-  std::uint32_t buffer = 0;
-  int bits = 0;
-  for (const char c : text) {
-    int v = -1;
-    if (c >= 'A' && c <= 'Z') v = c - 'A';
-    if (c >= 'a' && c <= 'z') v = c - 'a' + 26;
-    if (c >= '0' && c <= '9') v = c - '0' + 52;
-    if (c == '+') v = 62;
-    if (c == '/') v = 63;
-    if (v < 0) continue;  // '=' padding
-    buffer = (buffer << 6) | static_cast<std::uint32_t>(v);
-    bits += 6;
-    if (bits >= 8) {
-      bits -= 8;
-      out.push_back(static_cast<unsigned char>((buffer >> bits) & 0xFF));
-    }
-  }
-  return out;
 }
 
 /// One cloud as the page's JSON holds it.
@@ -82,16 +61,7 @@ std::vector<PageCloud> clouds_of(const std::string& page) {
     c.color = between(json, "\"color\":\"", "\"", at);
     c.count = std::stoul(between(json, "\"count\":", ",", at));
     c.poses = between(json, "\"poses\":[", "],\"points\"", at);
-    const std::vector<unsigned char> bytes = decode_base64(between(json, "\"points\":\"", "\"", at));
-    for (std::size_t k = 0; k + 12 <= bytes.size(); k += 12) {
-      Eigen::Vector3f p;
-      for (int j = 0; j < 3; ++j) {
-        std::uint32_t u = 0;
-        for (int b = 0; b < 4; ++b) u |= static_cast<std::uint32_t>(bytes[k + 4 * j + b]) << (8 * b);
-        std::memcpy(&p[j], &u, 4);
-      }
-      c.points.push_back(p);
-    }
+    c.points = test::page_points(between(json, "\"points\":\"", "\"", at));
     out.push_back(std::move(c));
   }
   return out;
