@@ -35,6 +35,7 @@ li.c-holds{border-left-color:#2a7d2a}li.c-does-not-hold{border-left-color:#b2222
 li.c-inconclusive{border-left-color:#b8860b}
 p.headline{font-size:1.1em;font-weight:600}table.overview td{vertical-align:top}tr.c-holds td:first-child{border-left:4px solid #2a7d2a}tr.c-does-not-hold td:first-child{border-left:4px solid #b22222}tr.c-inconclusive td:first-child{border-left:4px solid #b8860b}
 .evidence{display:block;font-size:.88em;color:#444;margin-top:.2em}
+.cause{display:block;font-size:.88em;color:#6b3d00;margin-top:.2em}
 dl.provenance{display:grid;grid-template-columns:max-content auto;gap:.2em 1em;font-size:.9em}
 dl.provenance dt{font-weight:bold}dl.provenance dd{margin:0;font-family:monospace;white-space:pre-wrap}
 )";
@@ -55,6 +56,7 @@ std::string render_claim(const Claim& c) {
       << verdict_class(c.verdict) << "\">" << escape_html(to_string(c.verdict)) << "</span> "
       << escape_html(c.statement);
   if (!c.evidence.empty()) out << "<span class=\"evidence\">" << escape_html(c.evidence) << "</span>";
+  if (!c.cause.empty()) out << "<span class=\"cause\">cause: " << escape_html(c.cause) << "</span>";
   out << "</li>\n";
   return out.str();
 }

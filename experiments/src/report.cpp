@@ -93,7 +93,8 @@ std::string markdown_section(const std::string& title, const ExperimentConfig& c
     std::string rows;
     for (const auto& c : section.claims)
       if (c.kind == kind)
-        rows += "| " + c.statement + " | " + to_string(c.verdict) + " | " + c.evidence + " |\n";
+        rows += "| " + c.statement + " | " + to_string(c.verdict) + " | " + c.evidence +
+                (c.cause.empty() ? "" : "<br>cause: " + c.cause) + " |\n";
     if (!rows.empty())
       md += std::string(kind == ClaimKind::thesis ? "## Claims\n\n" : "\n## Sanity checks\n\n") +
             "| claim | verdict | evidence |\n|---|---|---|\n" + rows;

@@ -53,12 +53,16 @@ ScanMatchingKfStep ScanMatchingKf3d::step(const Vector6d& u, const Pose6& matche
     P_ = P_pred;
   } else {
     const Matrix6d R = H_llt.solve(Matrix6d::Identity());  // R = H⁻¹, eq. (3.50)
-    const Matrix6d S = P_pred + R;
-    const Matrix6d K = S.transpose().llt().solve(P_pred.transpose()).transpose();  // K = P S⁻¹
+    const bool relative = s_.measurement == KfMeasurement::relative;
+    const Matrix6d Q = s_.process_noise();
+    // Table 3.3: S = P + R, K = P S⁻¹. Relative (KfMeasurement): the innovation T − u holds no e(k).
+    const Matrix6d& gain_of = relative ? Q : P_pred;
+    const Matrix6d S = gain_of + R;
+    const Matrix6d K = S.transpose().llt().solve(gain_of.transpose()).transpose();  // K = gain_of S⁻¹
     Vector6d updated = predicted + K * innovation;
     for (int i = 3; i < 6; ++i) updated[i] = wrap_angle(updated[i]);
     pose_ = Pose6::from_vector(updated);
-    P_ = (Matrix6d::Identity() - K) * P_pred;
+    P_ = relative ? Matrix6d(P_ + Q - K * Q) : Matrix6d((Matrix6d::Identity() - K) * P_pred);
     P_ = 0.5 * (P_ + P_.transpose()).eval();
   }
   out.pose = pose_;

@@ -78,6 +78,16 @@ TEST(SequenceKind, E9QuickProfileRunsTheKfWithAlarmsAndCovariance) {
     EXPECT_GE(row.value("alarms"), 0.0);
     EXPECT_LE(row.value("alarms"), 19.0);
     EXPECT_NEAR(row.series.at("covariance_xyz")[0], 1e-4, 1e-12);  // P0 = (0.01)² I
+    // The consistency measurements: shares in [0, 1], H⁻¹'s scale against the registrations' errors
+    // (H⁻¹ far too confident: > 10), and the relative fusion covering the truth at least as often as
+    // table 3.3 (its P is table 3.3's plus the fused increments' covariance).
+    EXPECT_GT(row.value("registration_nees_scale"), 10.0);
+    for (const char* share :
+         {"relative_kf_inside_95", "scaled_relative_kf_inside_95", "registration_beyond_99"}) {
+      EXPECT_GE(row.value(share), 0.0) << share;
+      EXPECT_LE(row.value(share), 1.0) << share;
+    }
+    EXPECT_GE(row.value("scaled_relative_kf_inside_95"), row.value("relative_kf_inside_95"));
   }
   const ReportSummary r = write_report({tmp / "results"}, tmp / "report");
   ASSERT_EQ(r.experiments, 1u);
@@ -86,6 +96,18 @@ TEST(SequenceKind, E9QuickProfileRunsTheKfWithAlarmsAndCovariance) {
   EXPECT_EQ(test::markdown_rows(test::read_text(dir / "covariance.md")),
             4u);  // quick checkpoints 5, 10, 15, 20
   EXPECT_EQ(test::markdown_rows(test::read_text(dir / "trajectory_metrics.md")), 3u);
+  EXPECT_EQ(test::markdown_rows(test::read_text(dir / "consistency.md")), 3u);
+  // A covariance claim that does not hold says why, with the numbers measured in the run.
+  const std::string md = test::read_text(dir / "e09_kf_mlndt_3d.md");
+  const auto covers = md.find("The KF's covariance covers its error");
+  ASSERT_NE(covers, std::string::npos);
+  const std::string line = md.substr(covers, md.find('\n', covers) - covers);
+  if (line.find("| does not hold |") != std::string::npos) {
+    EXPECT_NE(line.find("cause: the thesis: table 3.3"), std::string::npos) << line;
+    EXPECT_NE(line.find("too confident"), std::string::npos) << line;
+  } else {
+    EXPECT_EQ(line.find("cause:"), std::string::npos) << "a claim that holds needs no cause: " << line;
+  }
   for (const char* tum : {"trajectory_ground_truth.tum", "trajectory_odometry.tum", "trajectory_mlndt.tum",
                           "trajectory_kf.tum"})
     expect_tum(dir / tum, 20);

@@ -37,6 +37,10 @@ struct Claim {
   Verdict verdict = Verdict::not_comparable;
   std::string evidence;  ///< the numbers behind the verdict
   ClaimKind kind = ClaimKind::thesis;
+  /// Why a claim does not hold, from the run's own measurements: "<kind>: …", the kind one of data (which
+  /// property, measured), implementation, unfair test or the thesis (what it reports that cannot be
+  /// reproduced, and why). Shown as a line "cause: …" under the evidence; empty: none measured.
+  std::string cause = {};
 };
 
 class HtmlSection {

@@ -18,9 +18,12 @@
 #include "sequence/report.hpp"
 #include "sequence/row_keys.hpp"
 #include "sequence/settings.hpp"
+#include "sextant/core/chi_square.hpp"
 #include "sextant/core/error.hpp"
 #include "sextant/core/pose.hpp"
 #include "sextant/core/settings_reader.hpp"
+#include "sextant/core/units.hpp"
+#include "sextant/eval/statistics.hpp"
 #include "sextant/experiments/run_kind.hpp"
 #include "sextant/matchers/matcher_choice.hpp"
 #include "sextant/odometry/odometry.hpp"
@@ -54,6 +57,19 @@ class PreloadedDataset : public Dataset {
   std::size_t first_;
   const std::vector<PointCloud>& scans_;
 };
+
+/// The largest |mean| / standard deviation over the axes of the registrations' translation errors (in
+/// each previous scan's frame): a bias b·σ per step adds up to n·b·σ over n steps where independent errors
+/// add up to √n·σ. NaN with fewer than two errors.
+double largest_bias(const std::vector<Eigen::Vector3d>& errors) {
+  if (errors.size() < 2) return kNaN;
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero(), square = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& e : errors) mean += e;
+  mean /= static_cast<double>(errors.size());
+  for (const Eigen::Vector3d& e : errors) square += (e - mean).cwiseAbs2();
+  const Eigen::Vector3d sd = (square / static_cast<double>(errors.size() - 1)).cwiseSqrt();
+  return (mean.cwiseAbs().array() / sd.array()).maxCoeff();
+}
 
 /// Table 3.3 takes R = H⁻¹ of a world-frame pose; the matcher's H is over ξ of the relative pose in
 /// the previous scan's frame. t_world = t_prev + R_prev·t, and the angles add to first order, so
@@ -124,7 +140,10 @@ class SequenceSession : public KindSession {
     const PoseList& chained = chain.poses;
     PoseList estimate = chained;
     std::vector<double> alarms(params_.scans, 0.0), covariance;
-    if (params_.filter == SequenceFilter::kKf) estimate = run_kf(steps, odometry, alarms, covariance);
+    if (params_.filter == SequenceFilter::kKf) {
+      estimate = run_kf(steps, odometry, params_.kf, params_.measurement_noise_scale, alarms, covariance);
+      consistency(steps, odometry, row);
+    }
 
     row.series[keys::kGroundTruth] = poses_to_series(truth_);
     row.series[keys::kOdometry] = poses_to_series(odometry);
@@ -168,11 +187,13 @@ class SequenceSession : public KindSession {
   }
 
  private:
-  /// Table 3.3 over the sequence; alarms[k] = 1 when step k kept the odometry prediction.
+  /// Table 3.3 (or the relative fusion, `kf.measurement`) over the sequence with R = noise_scale · H⁻¹;
+  /// alarms[k] = 1 when step k kept the odometry prediction; covariance: the position blocks, row-major.
   PoseList run_kf(const std::vector<OdometryStep>& steps, const PoseList& odometry,
-                  std::vector<double>& alarms, std::vector<double>& covariance) const {
+                  const ScanMatchingKfSettings& settings, double noise_scale, std::vector<double>& alarms,
+                  std::vector<double>& covariance) const {
     const Matrix6d P0 = Matrix6d::Identity() * params_.initial_sigma * params_.initial_sigma;
-    ScanMatchingKf3d kf(params_.kf, to_pose6(truth_.front()), P0);
+    ScanMatchingKf3d kf(settings, to_pose6(truth_.front()), P0);
     PoseList estimate{truth_.front()};
     const auto push_covariance = [&](const Matrix6d& P) {
       for (int r = 0; r < 3; ++r)
@@ -184,13 +205,65 @@ class SequenceSession : public KindSession {
       const Eigen::Isometry3d previous = estimate.back();
       const OdometryStep& step = steps[k - 1];
       const Pose6 z = chain_pose(to_pose6(previous), step.relative);  // the matcher's pose
-      const ScanMatchingKfStep s = kf.step(
-          u, z, world_hessian(step.hessian, previous, params_.measurement_noise_scale), step.converged);
+      const ScanMatchingKfStep s =
+          kf.step(u, z, world_hessian(step.hessian, previous, noise_scale), step.converged);
       alarms[k] = s.alarm ? 1.0 : 0.0;
       estimate.push_back(to_isometry(s.pose));
       push_covariance(s.P);
     }
     return estimate;
+  }
+
+  /// Why the KF's ellipsoid misses the truth, measured (kalman.cpp's consistency table): H⁻¹ against the
+  /// spread of the registrations' own errors, and the same registrations fused as the relative
+  /// measurements they are (KfMeasurement::relative), with R = H⁻¹ and with R scaled by that spread.
+  void consistency(const std::vector<OdometryStep>& steps, const PoseList& odometry, RunRow& row) const {
+    // The registrations' NEES eᵀHe of their true error (6 dof): a covariance H⁻¹ puts its median at χ²₆'s.
+    std::vector<double> nees;
+    std::vector<Eigen::Vector3d> translation_errors;
+    for (std::size_t k = 1; k < params_.scans; ++k) {
+      const OdometryStep& step = steps[k - 1];
+      if (!step.converged || !step.hessian.allFinite()) continue;
+      Vector6d e = to_pose6(step.relative).vector() - to_pose6(relative(truth_[k - 1], truth_[k])).vector();
+      for (int i = 3; i < 6; ++i) e[i] = wrap_angle(e[i]);
+      const double v = e.dot(step.hessian * e);
+      if (std::isfinite(v) && v > 0) nees.push_back(v);
+      if (e.allFinite()) translation_errors.push_back(e.head<3>());
+    }
+    row.values[keys::kRegistrationBias] = largest_bias(translation_errors);
+    const double scale = nees.empty() ? kNaN : median_of(nees) / chi_square_quantile(0.5, 6.0);
+    row.values[keys::kRegistrationNeesScale] = scale;
+    // Gaussian errors of that scale lie beyond χ²₆'s 99 % quantile once in a hundred.
+    const double bound = scale * chi_square_quantile(0.99, 6.0);
+    row.values[keys::kRegistrationTail] =
+        nees.empty() ? kNaN
+                     : static_cast<double>(
+                           std::count_if(nees.begin(), nees.end(), [&](double v) { return v > bound; })) /
+                           static_cast<double>(nees.size());
+    ScanMatchingKfSettings relative_fusion = params_.kf;
+    relative_fusion.measurement = KfMeasurement::relative;
+    const auto score = [&](double noise_scale, const char* inside_key, const char* error_key) {
+      std::vector<double> alarms(params_.scans, 0.0), covariance;
+      const PoseList estimate = run_kf(steps, odometry, relative_fusion, noise_scale, alarms, covariance);
+      row.values[inside_key] = inside_95(estimate, covariance);
+      row.values[error_key] = mean_of(horizontal_errors(estimate, truth_));
+    };
+    score(params_.measurement_noise_scale, keys::kRelativeInside95, keys::kRelativeMeanXy);
+    if (std::isfinite(scale)) score(scale, keys::kScaledInside95, keys::kScaledMeanXy);
+  }
+
+  /// The share of scans 1 … n − 1 whose true position lies inside the 95 % ellipsoid of `covariance`.
+  double inside_95(const PoseList& estimate, const std::vector<double>& covariance) const {
+    std::size_t inside = 0, counted = 0;
+    for (std::size_t k = 1; k < estimate.size() && 9 * k + 9 <= covariance.size(); ++k) {
+      const Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>> P(covariance.data() + 9 * k);
+      const Eigen::LLT<Eigen::Matrix3d> llt(P);
+      if (llt.info() != Eigen::Success) continue;
+      const Eigen::Vector3d e = estimate[k].translation() - truth_[k].translation();
+      ++counted;
+      inside += e.dot(llt.solve(e)) <= chi_square_quantile(0.95, 3.0) ? 1 : 0;
+    }
+    return counted ? static_cast<double>(inside) / static_cast<double>(counted) : kNaN;
   }
 
   SequenceParams params_;

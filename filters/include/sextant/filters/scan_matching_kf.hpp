@@ -4,7 +4,9 @@
 //     u(k) = x_o(k) − x_o(k−1) from odometry, measurement z = the pose given by the matcher,
 //     R = H⁻¹ from the matcher's Hessian (eq. 3.50). When matcher and odometry disagree beyond
 //     the thresholds (or the matcher failed / H is not positive definite) the step raises an
-//     alarm and keeps the odometry prediction (§5.1.3.2).
+//     alarm and keeps the odometry prediction (§5.1.3.2). Table 3.3 takes z as a pose measured on its
+//     own; z = x̂(k|k) ⊕ T carries the filter's own error, so with `relative` the same registration is
+//     fused as what it is, a second measurement of the increment beside u (KfMeasurement).
 //   AckermannScanMatchingEkf — the 2D EKF of eqs. (3.37)–(3.52): Ackermann prediction, relative
 //     scan-matching measurement ξ = (t_x, t_y, γ) (eq. 3.46) taken from the previous estimate.
 #include <string>
@@ -16,11 +18,22 @@
 
 namespace sextant {
 
+/// How ScanMatchingKf3d fuses the matcher's pose z = x̂(k|k) ⊕ T.
+///   absolute — Table 3.3: z as an independent pose measurement, S = P(k+1|k) + R. Its error holds the
+///              filter's own error e(k), which the innovation's covariance leaves out, so P(k|k) ≤ R stays
+///              bounded while the chained error grows.
+///   relative — the exact filter for that z: u = d + w (w ~ Q) and T = d + v (v ~ R) are two measurements
+///              of one increment d, and ε = z − x̂(k+1|k) = T − u holds no e(k): S = Q + R, K = Q S⁻¹,
+///              P(k+1|k+1) = P(k|k) + Q − Q S⁻¹ Q = P(k|k) + (Q⁻¹ + R⁻¹)⁻¹ (the increments' best linear
+///              fusion added to the error so far).
+enum class KfMeasurement { absolute, relative };
+
 struct ScanMatchingKfSettings {
   double odometry_sigma_translation = 0.25;  ///< σ of each translation entry of Q [m]
   double odometry_sigma_rotation = 0.01745;  ///< σ of each angle entry of Q [rad]
   double alarm_translation = 0.5;            ///< ‖Δt_matcher − Δt_odometry‖ raising the alarm [m]
   double alarm_rotation = 0.0873;  ///< max |Δangle_matcher − Δangle_odometry| raising the alarm [rad]
+  KfMeasurement measurement = KfMeasurement::absolute;  ///< Table 3.3's, or the exact relative fusion
   bool valid(std::string* why) const;
   Matrix6d process_noise() const;  ///< Q = diag(σ_t², σ_t², σ_t², σ_r², σ_r², σ_r²)
 };
