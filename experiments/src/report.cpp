@@ -6,6 +6,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "report_causes.hpp"
 #include "report_overview.hpp"
 #include "result_folders.hpp"
 #include "sextant/core/atomic_file.hpp"
@@ -276,6 +277,7 @@ ReportSummary write_report(const std::vector<fs::path>& results, const fs::path&
   });
   page.front_html = overview_html(overview);
   write_file_atomically(out / "overview.md", "# Experiments\n\n" + overview_markdown(overview));
+  write_file_atomically(out / "causes.md", "# Why claims do not hold\n\n" + causes_markdown(overview));
   write_file_atomically(out / "report.md", all_md);
   page.write(out / "index.html");
   folder.commit();

@@ -1,5 +1,7 @@
 #include "report_overview.hpp"
 
+#include "report_causes.hpp"
+
 #include <array>
 #include <cctype>
 
@@ -141,14 +143,18 @@ std::string one_line_outcome(const OverviewEntry& entry) {
 }
 
 std::string overview_html(const std::vector<OverviewEntry>& entries) {
+  const std::string causes = causes_sentence(entries);
   return "<p class=\"headline\">" + escape_html(headline_text(entries)) + "</p>\n" +
+         (causes.empty() ? ""
+                         : "<p>" + escape_html(causes) + " (<a href=\"causes.md\">causes.md</a>).</p>\n") +
          html_table("The thesis' experiments", html_rows(entries, false)) +
          html_table("Extensions beyond the thesis", html_rows(entries, true));
 }
 
 std::string overview_markdown(const std::vector<OverviewEntry>& entries) {
+  const std::string causes = causes_sentence(entries);
   std::string md =
-      headline_text(entries) +
+      headline_text(entries) + (causes.empty() ? "" : " " + causes + " ([causes.md](causes.md)).") +
       "\n\n| exp. | title | thesis | runs | claims held / total | outcome |\n|---|---|---|---|---|---|\n";
   for (const OverviewEntry& e : entries) {
     md += "| [" + label(e) + "](" + e.id + "/" + e.id + ".md) | " + e.title + " | " + e.thesis + " | " +
