@@ -127,7 +127,7 @@ void extract_in_cell(PointsView points, std::vector<std::size_t> remaining, cons
       if (!fit.ok) break;
       inliers = collect_inliers(points, remaining, fit.plane, s.distance_threshold);
     }
-    if (s.refit_inliers && (!fit.ok || static_cast<double>(inliers.size()) < needed)) break;
+    if ((s.refit_inliers && !fit.ok) || static_cast<double>(inliers.size()) < needed) break;
     fit = fit_plane(points, inliers, refit);
     if (!fit.ok || std::sqrt(std::max(0.0, fit.eigenvalues(1))) <= s.distance_threshold) break;  // a line
     std::vector<std::size_t> rest;
