@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -19,11 +20,11 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // Packs integer cell coordinates (21 bits each, offset to non-negative) into one key.
-std::uint64_t cell_key(const Eigen::Vector3f& p, double inv_cell) {
+std::uint64_t cell_key(const Eigen::Vector3f& p, const Eigen::Vector3d& origin, double inv_cell) {
   constexpr std::int64_t kHalf = std::int64_t{1} << 20;
   std::uint64_t key = 0;
   for (int axis = 0; axis < 3; ++axis) {
-    const double c = std::floor(static_cast<double>(p[axis]) * inv_cell);
+    const double c = std::floor((static_cast<double>(p[axis]) - origin[axis]) * inv_cell);
     const std::int64_t clamped = static_cast<std::int64_t>(std::clamp(c, -double(kHalf), double(kHalf - 1)));
     key = (key << 21) | static_cast<std::uint64_t>(clamped + kHalf);
   }
@@ -121,12 +122,12 @@ void extract_in_cell(PointsView points, std::vector<std::size_t> remaining, cons
     // Refit on the inliers (eqs. (3.22)–(3.25) or PCA), then once more on the refit's inliers.
     PlaneFit fit;
     std::vector<std::size_t> inliers = collect_inliers(points, remaining, plane, s.distance_threshold);
-    for (int pass = 0; pass < 2; ++pass) {
+    for (int pass = 0; pass < (s.refit_inliers ? 2 : 0); ++pass) {
       fit = fit_plane(points, inliers, refit);
       if (!fit.ok) break;
       inliers = collect_inliers(points, remaining, fit.plane, s.distance_threshold);
     }
-    if (!fit.ok || static_cast<double>(inliers.size()) < needed) break;
+    if ((s.refit_inliers && !fit.ok) || static_cast<double>(inliers.size()) < needed) break;
     fit = fit_plane(points, inliers, refit);
     if (!fit.ok || std::sqrt(std::max(0.0, fit.eigenvalues(1))) <= s.distance_threshold) break;  // a line
     std::vector<std::size_t> rest;
@@ -137,6 +138,42 @@ void extract_in_cell(PointsView points, std::vector<std::size_t> remaining, cons
     remaining = std::move(rest);
   }
   if (found == 0) ++out->stats.cells_without_plane;
+}
+
+struct CellSplit {
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  double edge = 1.0;
+};
+
+// The cells: cubes of cell_size at the origin, or layer split_layer of the cloud's own ML-NDT split
+// (Table 3.2's Split(S, q, n); §3.2: edge k = (V / qⁱ)^(1/3) over the bounding box, axes of no extent
+// left out of V as the pyramid does, ndt_grid.hpp layer_geometry).
+CellSplit cell_split(PointsView points, const PlaneExtractionSettings& s) {
+  CellSplit split;
+  split.edge = s.cell_size;
+  if (s.split_layer == 0) return split;
+  Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d high = -low;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!points[i].allFinite()) continue;
+    low = low.cwiseMin(points[i].cast<double>());
+    high = high.cwiseMax(points[i].cast<double>());
+  }
+  if (!(high.x() >= low.x())) return split;  // no finite point: nothing to split
+  const Eigen::Vector3d extent = high - low;
+  const double largest = extent.maxCoeff();
+  if (!(largest > 0.0)) return split;  // one point (repeated): any cell holds it
+  double volume = 1.0;
+  int axes = 0;
+  for (int a = 0; a < 3; ++a) {
+    if (extent(a) > 1e-6 * largest) {
+      volume *= extent(a);
+      ++axes;
+    }
+  }
+  split.origin = low;
+  split.edge = std::pow(volume / std::pow(static_cast<double>(s.split_division), s.split_layer), 1.0 / axes);
+  return split;
 }
 
 void check(const PlaneExtractionSettings& settings) {
@@ -164,12 +201,25 @@ bool PlaneExtractionSettings::valid(std::string* why) const {
     return fail("min_inlier_ratio must be in [0, 1]");
   if (max_planes_per_cell < 1) return fail("max_planes_per_cell must be ≥ 1");
   if (!from_string(refit, &method)) return fail("refit must be 'pca' or 'svd'");
+  if (split_layer < 0 || split_layer > 8) return fail("split_layer must be in [0, 8]");
+  if (split_division < 2) return fail("split_division must be ≥ 2");
   if (!merge_thresholds.valid(why)) return false;
   if (!(horizontal_max_tilt_deg >= 0.0 && horizontal_max_tilt_deg <= 90.0))
     return fail("horizontal_max_tilt_deg must be in [0, 90]");
   if (!(min_landmark_area >= 0.0 && std::isfinite(min_landmark_area)))
     return fail("min_landmark_area must be ≥ 0");
   return true;
+}
+
+PlaneExtractionSettings thesis_feature_sampling() {
+  PlaneExtractionSettings s;
+  s.split_layer = 4;
+  s.split_division = 8;
+  s.max_planes_per_cell = 1;
+  s.min_inliers = 11;  // "exceeds a threshold value (practically 10)"
+  s.min_inlier_ratio = 0.0;
+  s.refit_inliers = false;
+  return s;
 }
 
 std::vector<std::size_t> PlaneExtraction::cell_inlier_indices() const {
@@ -190,7 +240,9 @@ PlaneExtraction extract_cell_planes(const PointCloud& cloud, const PlaneExtracti
   const PointsView points = cloud.points();
 
   // Splitting: (cell key, point index) sorted by key, so each cell is a contiguous run.
-  const double inv_cell = 1.0 / settings.cell_size;
+  const CellSplit split = cell_split(points, settings);
+  out.stats.cell_edge = split.edge;
+  const double inv_cell = 1.0 / split.edge;
   std::vector<std::pair<std::uint64_t, std::size_t>> keyed;
   keyed.reserve(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -198,7 +250,7 @@ PlaneExtraction extract_cell_planes(const PointCloud& cloud, const PlaneExtracti
       ++out.stats.non_finite_points;
       continue;
     }
-    keyed.emplace_back(cell_key(points[i], inv_cell), i);
+    keyed.emplace_back(cell_key(points[i], split.origin, inv_cell), i);
   }
   out.stats.points = keyed.size();
   std::sort(keyed.begin(), keyed.end());

@@ -37,6 +37,13 @@ AssociationSettings read_association_settings(const YAML::Node& node, const std:
 PlaneExtractionSettings read_plane_extraction_settings(const YAML::Node& node, const std::string& file) {
   SettingsReader in(node, file);
   PlaneExtractionSettings s;
+  std::string preset;
+  // `preset:` first, the other keys override it; not recorded (the resolved settings are).
+  in.read_alias("preset", preset);
+  if (preset == "thesis")
+    s = thesis_feature_sampling();
+  else if (!preset.empty())
+    in.fail("preset", "key 'preset': '" + preset + "' is not thesis (the only plane extraction preset)");
   in.read("cell_size", s.cell_size);
   in.read("distance_threshold", s.distance_threshold);
   in.read("ransac_iterations", s.ransac_iterations);
@@ -52,6 +59,9 @@ PlaneExtractionSettings read_plane_extraction_settings(const YAML::Node& node, c
   in.read("horizontal_max_tilt_deg", s.horizontal_max_tilt_deg);
   in.read("min_landmark_area", s.min_landmark_area);
   in.read("min_landmark_inliers", s.min_landmark_inliers);
+  in.read("split_layer", s.split_layer);
+  in.read("split_division", s.split_division);
+  in.read("refit_inliers", s.refit_inliers);
   in.finish();
   std::string why;
   if (!s.valid(&why)) in.fail("", why);

@@ -58,20 +58,20 @@ Claim claim_similar_successes(const std::string& statement, const MethodRows* a,
 }
 
 Claim claim_speedup(const std::string& statement, const MethodRows* slow, const MethodRows* fast, double lo,
-                    double hi, std::uint64_t seed) {
+                    double hi, std::uint64_t seed, const char* time_key) {
   (void)seed;  // the interval is exact: no resampling
   if (!slow || !fast) return not_comparable(statement, "a method has no runs");
   // Paired: each pair registered by both methods is one observation (its time ratio).
   const PairedRows p = pair_up(*slow, *fast);
-  const Interval ratio = paired_ratio_interval(row_values(p.a, keys::kSecondsRegistration),
-                                               row_values(p.b, keys::kSecondsRegistration));
+  const Interval ratio = paired_ratio_interval(row_values(p.a, time_key), row_values(p.b, time_key));
   const Verdict v = std::isfinite(hi) ? verdict_in_band(ratio, lo, hi) : verdict_greater(ratio, lo);
   const std::string band = std::isfinite(hi)
                                ? "band [" + format_number(lo, 1) + ", " + format_number(hi, 1) + "]"
                                : "needs > " + format_number(lo, 1);
   return Claim{statement, v,
-               "median per-pair time ratio " + slow->name + " / " + fast->name + " = " +
-                   describe(ratio, "×") + "; " + band};
+               std::string("median per-pair ") +
+                   (time_key == std::string(keys::kSecondsAlign) ? "matching " : "") + "time ratio " +
+                   slow->name + " / " + fast->name + " = " + describe(ratio, "×") + "; " + band};
 }
 
 Claim claim_smaller_on_solved(const std::string& statement, const MethodRows* a, const MethodRows* b,

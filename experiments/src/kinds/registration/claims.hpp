@@ -12,6 +12,7 @@
 
 #include "kit/row_groups.hpp"
 #include "registration/report.hpp"
+#include "registration/row_keys.hpp"
 #include "sextant/eval/verdict.hpp"
 
 namespace sextant {
@@ -34,9 +35,10 @@ Claim claim_similar_successes(const std::string& statement, const MethodRows* a,
                               double margin);
 /// "fast is `band` times faster than slow": the median over the pairs both registered of
 /// slow time / fast time ∈ [lo, hi] (lo only, hi = ∞, for "faster" without a magnitude), with the
-/// exact order-statistic interval (paired_ratio_interval).
+/// exact order-statistic interval (paired_ratio_interval). `time_key`: the row's time compared
+/// (default the whole registration: sampling + reference model + alignment).
 Claim claim_speedup(const std::string& statement, const MethodRows* slow, const MethodRows* fast, double lo,
-                    double hi, std::uint64_t seed);
+                    double hi, std::uint64_t seed, const char* time_key = keys::kSecondsRegistration);
 /// "a needs fewer / a is more accurate": paired mean of a − b of `key` < 0 on the pairs both solved.
 Claim claim_smaller_on_solved(const std::string& statement, const MethodRows* a, const MethodRows* b,
                               const std::string& key, const std::string& unit, std::uint64_t seed);

@@ -142,7 +142,7 @@ class RegistrationSession : public KindSession {
     row.values[keys::kConverged] = m.result.converged ? 1.0 : 0.0;
     row.values["termination"] = static_cast<double>(m.result.why);
     row.values[keys::kIterations] = m.result.iterations;
-    row.values["seconds_align"] = m.result.seconds;
+    row.values[keys::kSecondsAlign] = m.result.seconds;
     row.values[keys::kSecondsSampling] = m.sampling_seconds;
     row.values[keys::kSecondsRegistration] = m.result.seconds + m.reference_seconds + m.sampling_seconds;
     row.values[keys::kInputPoints] = static_cast<double>(m.result.input_points);

@@ -22,6 +22,8 @@ inline constexpr const char* kScene = "scene";
 inline constexpr const char* kScore = "score";
 inline constexpr const char* kSecondsRegistration = "seconds_registration";
 inline constexpr const char* kSecondsSampling = "seconds_sampling";
+/// The alignment alone: no sampling, no reference model (table 5.9's "matching time")
+inline constexpr const char* kSecondsAlign = "seconds_align";
 inline constexpr const char* kSnapshotInput = "snapshot_input";
 inline constexpr const char* kSnapshotReference = "snapshot_reference";
 inline constexpr const char* kSuccess = "success";

@@ -32,8 +32,23 @@ struct PlaneExtractionSettings {
   double horizontal_max_tilt_deg = 20.0;  ///< normal within this angle of up (z) → horizontal [deg]
   double min_landmark_area = 1.0;         ///< landmark needs this hull area [m²]
   std::size_t min_landmark_inliers = 30;  ///< … and this many inliers [count]
+  /// The cells: 0 = cubes of cell_size anchored at the origin; i ≥ 1 = the cells of layer i of the
+  /// cloud's own ML-NDT split (Table 3.2, feature extraction: Split(S, q, n)): its bounding box cut
+  /// into qⁱ cubes of edge (V / qⁱ)^(1/3) (§3.2), anchored at the box's low corner [layer, 0..8]
+  int split_layer = 0;
+  int split_division = 8;  ///< q of that split [count ≥ 2]
+  /// true: a cell plane's inliers are those of its refit (two passes); false: they are RANSAC's
+  /// (§3.3.1.1: the fit only gives the plane's parameters), as the thesis' feature sample has them
+  bool refit_inliers = true;
   bool valid(std::string* why) const;
 };
+
+/// The feature sample of the thesis' FbML-NDT (§3.3.1.1, §3.3.1.3, Table 3.2): RANSAC in each cell of
+/// the input's own split at layer n = 4 (q = 8), one plane per cell, kept when its inliers exceed 10
+/// ("practically 10"; no share of the cell asked), F = RANSAC's inliers. The thesis leaves the inlier
+/// distance open (kept at 5 cm). YAML `preset: thesis` in the settings of `fbs` and of fbmlndt's
+/// `features:`.
+PlaneExtractionSettings thesis_feature_sampling();
 
 struct ExtractionStatistics {
   std::size_t points = 0;                   ///< finite input points
@@ -48,7 +63,8 @@ struct ExtractionStatistics {
   std::size_t horizontal_removed = 0;       ///< merged planes dropped as horizontal
   std::size_t too_small_removed = 0;        ///< merged planes below the area / inlier thresholds
   std::size_t landmarks = 0;
-  double seconds = 0.0;  ///< wall time of extract_planes [s]
+  double cell_edge = 0.0;  ///< edge of the extraction cells used (cell_size, or split_layer's) [m]
+  double seconds = 0.0;    ///< wall time of extract_planes [s]
 };
 
 struct PlaneExtraction {

@@ -93,8 +93,9 @@ ReportSection strategies_report(const ExperimentConfig& config, const Registrati
       profile_note(config, grouped) +
       " Consecutive pairs from the odometry guess; success = " + params.success +
       ". Matched points are counted against the whole input scan (kept share × matched share of the "
-      "sample), as the thesis' percentages. Time = sampling + reference model + alignment; the "
-      "sampling column alone is the cost of feature extraction (FBS) or of the grid (GBS).\n" +
+      "sample), as the thesis' percentages. Time = the matching (alignment) alone, as table 5.9's, whose "
+      "text adds the sampling apart (extraction ≈ 1 s, GBS ≈ 0.1 s); total = sampling + reference model + "
+      "alignment; the sampling column alone is the cost of feature extraction (FBS) or of the grid (GBS).\n" +
       deviations_note(config);
 
   // Table 5.9.
@@ -108,7 +109,7 @@ ReportSection strategies_report(const ExperimentConfig& config, const Registrati
       .add_compared_column("matched %", 2)
       .add_compared_column("time s", 3)
       .add_compared_column("success %", 0);
-  table.add_number_column("sampling s", 4).add_number_column("pairs", 0);
+  table.add_number_column("sampling s", 4).add_number_column("total s", 4).add_number_column("pairs", 0);
   for (std::size_t m = 0; m < grouped.size(); ++m) {
     const YAML::Node ref = child_or_null(t59, samplers[m]);
     const auto thesis = [&](std::size_t k) {
@@ -118,14 +119,16 @@ ReportSection strategies_report(const ExperimentConfig& config, const Registrati
     for (const RunRow* r : grouped[m].rows)
       matched.push_back(r->value(keys::kKeptFraction) * r->value(keys::kMatchedPercent));
     const SampleStats mt = summarize(matched),
-                      sampling = summarize(row_values(grouped[m].rows, keys::kSecondsSampling));
+                      sampling = summarize(row_values(grouped[m].rows, keys::kSecondsSampling)),
+                      align = summarize(row_values(grouped[m].rows, keys::kSecondsAlign));
     const bool any = stats[m].count > 0;
     table.add_row({Cell::text(grouped[m].name), Cell::text(samplers[m]),
                    number_or_missing(any ? stats[m].iterations.mean : NAN), thesis(0),
                    number_or_missing(mt.count ? mt.mean : NAN), thesis(1),
-                   number_or_missing(any ? stats[m].seconds.mean : NAN), thesis(2),
+                   number_or_missing(align.count ? align.mean : NAN), thesis(2),
                    number_or_missing(any ? 100.0 * stats[m].success_rate : NAN), thesis(3),
                    number_or_missing(sampling.count ? sampling.mean : NAN),
+                   number_or_missing(any ? stats[m].seconds.mean : NAN),
                    Cell::number(static_cast<double>(stats[m].count))});
   }
   section.tables.push_back(table);
@@ -181,10 +184,10 @@ ReportSection strategies_report(const ExperimentConfig& config, const Registrati
   std::uint64_t k = 0;
   const MethodRows* f = runs_of("fbs");
   const MethodRows* g = runs_of("gbs");
-  std::vector<Claim> fastest, fewer, robust;
+  std::vector<Claim> fastest, fewer, robust, fastest_total;
   for (const char* other : {"regular", "random", "gbs"}) {
     const MethodRows* o = runs_of(other);
-    fastest.push_back(claim_speedup("", o, f, 1.0, INFINITY, claim_seed(config, k++)));
+    fastest.push_back(claim_speedup("", o, f, 1.0, INFINITY, claim_seed(config, k++), keys::kSecondsAlign));
     fewer.push_back(claim_smaller_on_solved("", f, o, keys::kIterations, "", claim_seed(config, k++)));
     robust.push_back(claim_not_fewer_successes("", f, o, kSuccessMargin));
   }
@@ -204,13 +207,22 @@ ReportSection strategies_report(const ExperimentConfig& config, const Registrati
               format_number(100 * kSuccessMargin, 0) +
               " points fewer; thesis: 100 vs 97 / 97 / 99 %, differences 100 pairs cannot resolve)",
           robust);
-  combine("FBS is the fastest strategy (thesis: 2.51 s vs 44.70 / 43.84 / 7.46 s)", fastest);
+  combine("FBS is the fastest strategy, matching time (thesis: 2.51 s vs 44.70 / 43.84 / 7.46 s)", fastest);
   combine(
       "FBS needs the fewest iterations (thesis: 12.67 vs 17.27 / 17.24 / 14.29), on the pairs both solved",
       fewer);
-  combine("GBS is faster than regular and random sampling (thesis: 7.46 s vs 44.70 / 43.84 s)",
-          {claim_speedup("", runs_of("regular"), g, 1.0, INFINITY, claim_seed(config, k++)),
-           claim_speedup("", runs_of("random"), g, 1.0, INFINITY, claim_seed(config, k++))});
+  combine(
+      "GBS is faster than regular and random sampling, matching time (thesis: 7.46 s vs 44.70 / 43.84 s)",
+      {claim_speedup("", runs_of("regular"), g, 1.0, INFINITY, claim_seed(config, k++), keys::kSecondsAlign),
+       claim_speedup("", runs_of("random"), g, 1.0, INFINITY, claim_seed(config, k++), keys::kSecondsAlign)});
+  std::uint64_t total_seed = 300;  // apart from k: the claims after keep their seeds
+  for (const char* other : {"regular", "random", "gbs"})
+    fastest_total.push_back(
+        claim_speedup("", runs_of(other), f, 1.0, INFINITY, claim_seed(config, total_seed++)));
+  combine(
+      "FBS is the fastest also counting its sampling and the reference model (thesis: 2.51 + ≈ 1 s "
+      "vs 44.70 / 43.84 / 7.46 (+ ≈ 0.1) s)",
+      fastest_total);
   if (f && g) {
     const Interval cost =
         bootstrap_ratio_of_medians(row_values(f->rows, keys::kSecondsSampling),
