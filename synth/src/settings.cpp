@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "sextant/core/units.hpp"
+#include "sextant/synth/route.hpp"
 #include "sextant/synth/settings_fields.hpp"
 
 namespace sextant::synth {
@@ -74,6 +76,9 @@ bool TrajectorySettings::valid(std::string* why) const {
             "first_scans must be in [0, scans] (0 keeps the whole route; use scans to stretch it)");
   c.require(sensor_height > 0.2, "sensor_height must exceed 0.2 m");
   c.require(corner_radius >= 0.0 && corner_radius <= 14.0, "corner_radius must be in [0, 14] m");
+  c.require(std::isfinite(corner_transition) && corner_transition >= 0.0 &&
+                (corner_radius > 0.0 || corner_transition == 0.0),
+            "corner_transition must be ≥ 0 m, and 0 without rounded corners (corner_radius 0)");
   c.require(sharp_turn_deg > 0.0 && sharp_turn_deg < 90.0, "sharp_turn_deg must be in (0, 90)");
   c.require(wheelbase > 0.0, "wheelbase must be positive");
   c.require(track > 0.0, "track must be positive");
@@ -152,6 +157,14 @@ bool CampusSettings::valid(std::string* why) const {
                         check("sensor", sensor.valid(&reason)) &&
                         check("odometry", odometry.valid(&reason)) && check("gnss", gnss.valid(&reason));
   if (!sections) return false;
+  // The campus' corners turn by a right angle; an eased one needs its tangent length on both ends of a
+  // block side.
+  reason = "corner_transition is too long: the eased corners do not fit on a block side";
+  const double tangent =
+      corner_tangent_length(trajectory.corner_radius, trajectory.corner_transition, 0.5 * kPi);
+  if (trajectory.corner_transition > 0.0 &&
+      !check("trajectory", 2.0 * tangent <= std::min(world.block_length, world.block_width)))
+    return false;
   reason = "sweep_period must not exceed trajectory.scan_period (a sweep ends before the next scan starts)";
   return check("sensor", sensor.sweep_period <= trajectory.scan_period);
 }

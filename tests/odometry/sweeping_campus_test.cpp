@@ -8,8 +8,10 @@
 // follows). On the first straight, the motion a constant velocity describes, the drift with deskew is no
 // worse than the instantaneous scanner's (over four campus seeds: one seed's drift varies by a factor
 // of three from a seed to the next either way); without deskew it is several times worse. Round the
-// first corner, entered at once at 64°/s (the route's arcs start without a transition), deskew still
-// takes away most of what the sweep costs. Measured: docs/odometry.md, "Scans taken while moving".
+// first corner, entered at once at 64°/s (the route's arcs start without a transition), and over the
+// whole route with its corners eased in by clothoids (trajectory.corner_transition), deskew takes away
+// most of what the sweep costs, not all: the target there is the disabled test at the end.
+// Measured: docs/odometry.md, "Scans taken while moving".
 #include <gtest/gtest.h>
 
 #include <iostream>
@@ -26,8 +28,10 @@ constexpr int kRouteScans = 1258;  // the whole route (≈ 1,257 m) divided into
 constexpr int kStraight = 72;      // scans 0–71: the first straight, up to the first corner
 constexpr int kCorner = 110;       // scans 0–109: the straight, the first corner and the next block side
 
-synth::CampusDataset fast_campus(double sweep_period, int scans, std::uint64_t seed, double turn_deg) {
+synth::CampusDataset fast_campus(double sweep_period, int scans, std::uint64_t seed, double turn_deg,
+                                 double corner_transition = 0.0) {
   synth::CampusSettings s;
+  s.trajectory.corner_transition = corner_transition;
   s.trajectory.scans = kRouteScans;
   s.trajectory.first_scans = scans;
   s.trajectory.scan_period = 0.1;          // 10 Hz
@@ -67,12 +71,13 @@ struct Drifts {
   double instant = 0.0, skewed = 0.0, deskewed = 0.0;  ///< [%]
 };
 
-Drifts drifts(int scans, std::uint64_t seed, double turn_deg) {
-  const synth::CampusDataset instant = fast_campus(0.0, scans, seed, turn_deg);
-  const synth::CampusDataset sweeping = fast_campus(0.1, scans, seed, turn_deg);
+Drifts drifts(int scans, std::uint64_t seed, double turn_deg, double corner_transition = 0.0) {
+  const synth::CampusDataset instant = fast_campus(0.0, scans, seed, turn_deg, corner_transition);
+  const synth::CampusDataset sweeping = fast_campus(0.1, scans, seed, turn_deg, corner_transition);
   const Drifts d{drift_percent(instant, true), drift_percent(sweeping, false), drift_percent(sweeping, true)};
-  std::cout << "campus seed " << seed << ", " << scans << " scans: drift instantaneous " << d.instant
-            << " %, sweeping without deskew " << d.skewed << " %, with deskew " << d.deskewed << " %\n";
+  std::cout << "campus seed " << seed << ", " << scans << " scans, corner transition " << corner_transition
+            << " m: drift instantaneous " << d.instant << " %, sweeping without deskew " << d.skewed
+            << " %, with deskew " << d.deskewed << " %\n";
   return d;
 }
 
@@ -97,6 +102,31 @@ TEST(SweepingCampus, OnAStraightDeskewedDriftIsNoWorseThanAnInstantaneousScanner
 TEST(SweepingCampus, RoundACornerEnteredAtOnceDeskewTakesAwayMostOfTheSweepsCost) {
   const Drifts d = drifts(kCorner, 1, 2.0);
   EXPECT_LT(d.deskewed - d.instant, 0.35 * (d.skewed - d.instant));
+}
+
+/// The whole route (all 15 corners, each eased in and out by a 10 m clothoid: the yaw rate ramps up to
+/// 64°/s over a second instead of jumping), seed 1, computed once for the tests below.
+const Drifts& whole_route() {
+  static const Drifts d = drifts(kRouteScans, 1, 2.0, 10.0);
+  return d;
+}
+
+TEST(SweepingCampus, OverTheWholeRouteWithEasedCornersDeskewTakesAwayMostOfTheSweepsCost) {
+  const Drifts& d = whole_route();
+  // Measured 0.35 % deskewed, 0.14 % instantaneous, 1.8 % without deskew: 13 % of the sweep's cost left.
+  EXPECT_LT(d.deskewed - d.instant, 0.25 * (d.skewed - d.instant));
+}
+
+// The target (63, item 2), not met today: deskewed 0.35 % against 0.14 % instantaneous. The sweep
+// of a scan stamped at its start is the motion to the next scan, which no causal velocity knows round a
+// corner: even the true velocity of the step before, or at the stamp, leaves most of the gap, while
+// deskew by each sweep's true motion (an oracle) gives 0.20 % here, 1.43 × the instantaneous scanner's
+// (a scan sampled from other places sends the registrations elsewhere): the tolerance, 1.5 ×. Measured:
+// docs/odometry.md, "Scans taken while moving". To enable with a scheme that estimates each sweep's own
+// motion (continuous-time registration).
+TEST(SweepingCampus, DISABLED_OverTheWholeRouteDeskewedDriftIsNoWorseThanAnInstantaneousScanners) {
+  const Drifts& d = whole_route();
+  EXPECT_LE(d.deskewed, 1.5 * d.instant);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #pragma once
-// The campus trajectory: a route of straight legs and rounded corners along the roads of the
+// The campus trajectory: a route of straight legs and rounded corners (arcs, or with
+// trajectory.corner_transition clothoids easing each arc in and out) along the roads of the
 // 2×2 blocks, four loops that come back to early places (near 15 %, 50 %, 70–75 % and the
 // end), one turn on the spot of `sharp_turn_deg` between scans 3 and 4, and a ground-following
 // 6D pose (z, roll and pitch from the terrain) at each stop-and-go scan position.
@@ -18,6 +19,11 @@ struct RoutePoint {
   Eigen::Vector2d position = Eigen::Vector2d::Zero();
   double heading = 0.0;
 };
+
+/// How far before its vertex a corner of `turn` [rad] starts (and after it ends) [m]: R tan(θ / 2) for an
+/// arc of `radius` R; with a `transition` Ls > 0, clothoids of Ls (≤ R θ) easing the arc in and out, the
+/// road engineer's (R + p) tan(θ / 2) + k, with the arc's shift p and the clothoid's start k before it.
+double corner_tangent_length(double radius, double transition, double turn);
 
 /// Length of the approach leg before the sharp turn for `scans` poses [m]; the world keeps
 /// the west border clear of it.

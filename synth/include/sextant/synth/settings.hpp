@@ -40,8 +40,12 @@ struct TrajectorySettings {
   int scans = 468;      ///< stop-and-go scan poses the whole route is divided into (sets the spacing), ≤
                         ///< kMaxRouteScans [-]
   int first_scans = 0;  ///< keep only the first N of those poses (0 = all; ≤ scans) [-]
-  double sensor_height = 1.1;    ///< scanner above the ground contact [m]
-  double corner_radius = 9.0;    ///< radius of the rounded corners [m]
+  double sensor_height = 1.1;  ///< scanner above the ground contact [m]
+  double corner_radius = 9.0;  ///< radius of the rounded corners [m]
+  /// Length of the clothoid easing each corner's arc in and out, its curvature growing linearly from 0 to
+  /// 1 / corner_radius (a road's transition curve: the yaw rate ramps up, the lateral jerk is bounded);
+  /// 0: the arcs start at once (a yaw rate that jumps) [m]
+  double corner_transition = 0.0;
   double sharp_turn_deg = 51.5;  ///< the one turn on the spot, between scans 3 and 4 by default [deg]
   double wheelbase = 1.2;        ///< distance used to sample the ground for pitch [m]
   double track = 0.8;            ///< distance used to sample the ground for roll [m]

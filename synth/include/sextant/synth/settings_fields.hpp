@@ -37,6 +37,7 @@ void visit(TrajectorySettings& s, Visitor&& v) {
   v("first_scans", s.first_scans);
   v("sensor_height", s.sensor_height);
   v("corner_radius", s.corner_radius);
+  v("corner_transition", s.corner_transition);
   v("sharp_turn_deg", s.sharp_turn_deg);
   v("wheelbase", s.wheelbase);
   v("track", s.track);
