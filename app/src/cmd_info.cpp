@@ -12,6 +12,8 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/cloud_io.hpp"
 #include "sextant/core/io/point_time.hpp"
+#include "sextant/matchers/point_spacing.hpp"
+#include "sextant/matchers/sensor_kind.hpp"
 #include "sextant/pipeline/dataset_argument.hpp"
 #include "sextant/recordings/recording.hpp"
 
@@ -51,6 +53,15 @@ void describe_cloud(const std::filesystem::path& file) {
             << "bounds min:  " << vector_text(b.min) << " m\n"
             << "bounds max:  " << vector_text(b.max) << " m\n"
             << "extent:      " << vector_text(b.extent()) << " m\n";
+  // The scan's measured density and view (issue 62): what sizes and checks that follow the sensor read.
+  const PointSpacing spacing = measure_point_spacing(cloud);
+  const SensorDetection sensor = detect_sensor(cloud);
+  std::cout << std::fixed << std::setprecision(3) << "spacing:     " << spacing.median
+            << " m (median distance to the nearest other point, " << spacing.queried << " points measured)\n"
+            << std::setprecision(2) << "azimuth:     " << sensor.azimuth_coverage
+            << " of the circle about the frame's z axis (" << to_string(sensor.kind)
+            << " if this is the sensor's frame)\n";
+  std::cout.unsetf(std::ios::floatfield);
   for (const std::string& warning : report.warnings) std::cout << "warning:     " << warning << "\n";
 }
 
