@@ -156,13 +156,13 @@ void describe_recording_text(const std::filesystem::path& path) {
 }  // namespace
 
 void add_info_command(CLI::App& app, int& exit_code) {
-  auto* cmd =
-      app.add_subcommand("info",
-                         "Describe a point-cloud file (points, bounds, frame, dropped points), "
-                         "a dataset folder (format, scans, odometry, ground truth), a recording (a ROS 1 "
-                         ".bag, an .mcap file, a ROS 2 bag folder: topics, types, message counts, point "
-                         "fields), or experiment configs (a YAML or the experiments/ folder: kind, layout, "
-                         "methods, runs)");
+  auto* cmd = app.add_subcommand(
+      "info",
+      "Describe a point-cloud file (points, bounds, frame, dropped points, point spacing, azimuth coverage), "
+      "a dataset folder (format, scans, odometry, ground truth), a recording (a ROS 1 "
+      ".bag, an .mcap file, a ROS 2 bag folder: topics, types, message counts, point "
+      "fields), or experiment configs (a YAML or the experiments/ folder: kind, layout, "
+      "methods, runs)");
   auto path = std::make_shared<std::string>();
   auto markdown = std::make_shared<bool>(false);
   cmd->add_option("path", *path,
