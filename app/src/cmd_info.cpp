@@ -12,6 +12,8 @@
 #include "sextant/core/error.hpp"
 #include "sextant/core/io/cloud_io.hpp"
 #include "sextant/core/io/point_time.hpp"
+#include "sextant/matchers/point_spacing.hpp"
+#include "sextant/matchers/sensor_kind.hpp"
 #include "sextant/pipeline/dataset_argument.hpp"
 #include "sextant/recordings/recording.hpp"
 
@@ -51,6 +53,15 @@ void describe_cloud(const std::filesystem::path& file) {
             << "bounds min:  " << vector_text(b.min) << " m\n"
             << "bounds max:  " << vector_text(b.max) << " m\n"
             << "extent:      " << vector_text(b.extent()) << " m\n";
+  // The scan's measured density and view (issue 62): what sizes and checks that follow the sensor read.
+  const PointSpacing spacing = measure_point_spacing(cloud);
+  const SensorDetection sensor = detect_sensor(cloud);
+  std::cout << std::fixed << std::setprecision(3) << "spacing:     " << spacing.median
+            << " m (median distance to the nearest other point, " << spacing.queried << " points measured)\n"
+            << std::setprecision(2) << "azimuth:     " << sensor.azimuth_coverage
+            << " of the circle about the frame's z axis (" << to_string(sensor.kind)
+            << " if this is the sensor's frame)\n";
+  std::cout.unsetf(std::ios::floatfield);
   for (const std::string& warning : report.warnings) std::cout << "warning:     " << warning << "\n";
 }
 
@@ -145,13 +156,13 @@ void describe_recording_text(const std::filesystem::path& path) {
 }  // namespace
 
 void add_info_command(CLI::App& app, int& exit_code) {
-  auto* cmd =
-      app.add_subcommand("info",
-                         "Describe a point-cloud file (points, bounds, frame, dropped points), "
-                         "a dataset folder (format, scans, odometry, ground truth), a recording (a ROS 1 "
-                         ".bag, an .mcap file, a ROS 2 bag folder: topics, types, message counts, point "
-                         "fields), or experiment configs (a YAML or the experiments/ folder: kind, layout, "
-                         "methods, runs)");
+  auto* cmd = app.add_subcommand(
+      "info",
+      "Describe a point-cloud file (points, bounds, frame, dropped points, point spacing, azimuth coverage), "
+      "a dataset folder (format, scans, odometry, ground truth), a recording (a ROS 1 "
+      ".bag, an .mcap file, a ROS 2 bag folder: topics, types, message counts, point "
+      "fields), or experiment configs (a YAML or the experiments/ folder: kind, layout, "
+      "methods, runs)");
   auto path = std::make_shared<std::string>();
   auto markdown = std::make_shared<bool>(false);
   cmd->add_option("path", *path,

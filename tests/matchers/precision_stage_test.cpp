@@ -180,5 +180,58 @@ TEST(PrecisionStage, SettingsAreReadAndChecked) {
   EXPECT_TRUE(p.valid(&why));
 }
 
+/// A 40 × 40 m floor and four 8 m walls, every surface a square grid of points `spacing` apart.
+PointCloud gridded_room(double spacing) {
+  PointCloud cloud;
+  const int n = static_cast<int>(std::lround(40.0 / spacing)),
+            h = static_cast<int>(std::lround(8.0 / spacing));
+  for (int i = 0; i < n; ++i) {
+    const auto a = static_cast<float>(i * spacing);
+    for (int j = 0; j < n; ++j) cloud.push_back({a, static_cast<float>(j * spacing), 0.0f});
+    for (int k = 1; k <= h; ++k) {
+      const auto z = static_cast<float>(k * spacing);
+      cloud.push_back({a, 0.0f, z});
+      cloud.push_back({a, 40.0f, z});
+      cloud.push_back({0.0f, a, z});
+      cloud.push_back({40.0f, a, z});
+    }
+  }
+  return cloud;
+}
+
+TEST(PrecisionStage, TheFloorFollowsThePointSpacing) {
+  const double spacing = 0.25;
+  const PointCloud room = gridded_room(spacing);
+  MlndtSettings fine;  // no metric floor: the precision edge is layer n + 1's, half the last layer's
+  fine.precision.min_cell = 0.05;
+  MlndtMatcher plain(fine);
+  plain.set_reference(room);
+  ASSERT_FALSE(plain.precision_layers().empty());
+  const double last_edge = 2.0 * plain.precision_layers()[0].cell_edge();
+  // k · s between half the last layer's edge and the whole of it becomes the edge.
+  MlndtSettings by_spacing = fine;
+  by_spacing.precision.spacing_cells = 0.75 * last_edge / spacing;
+  MlndtMatcher measured(by_spacing);
+  measured.set_reference(room);
+  ASSERT_FALSE(measured.precision_layers().empty());
+  EXPECT_NEAR(measured.precision_layers()[0].cell_edge(), 0.75 * last_edge, 1e-6 * last_edge);
+  // Below the metric floor it changes nothing; above the last layer's edge the stage takes that edge.
+  by_spacing.precision.min_cell = 0.9 * last_edge;
+  by_spacing.precision.spacing_cells = 1.0;
+  MlndtMatcher floored(by_spacing);
+  floored.set_reference(room);
+  EXPECT_NEAR(floored.precision_layers()[0].cell_edge(), 0.9 * last_edge, 1e-6 * last_edge);
+  by_spacing.precision.min_cell = 0.05;
+  by_spacing.precision.spacing_cells = 2.0 * last_edge / spacing;
+  MlndtMatcher coarse(by_spacing);
+  coarse.set_reference(room);
+  EXPECT_NEAR(coarse.precision_layers()[0].cell_edge(), last_edge, 1e-6 * last_edge);
+  EXPECT_DOUBLE_EQ(
+      read_mlndt_settings(YAML::Load("{precision_spacing_cells: 8}"), "x").precision.spacing_cells, 8.0);
+  for (const char* bad : {"{precision_spacing_cells: 0.5}", "{precision_spacing_cells: -1}",
+                          "{precision_spacing_cells: .nan}", "{precision_spacing_cells: 5000}"})
+    EXPECT_THROW(read_mlndt_settings(YAML::Load(bad), "x"), InputError) << bad;
+}
+
 }  // namespace
 }  // namespace sextant

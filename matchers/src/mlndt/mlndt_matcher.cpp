@@ -12,6 +12,7 @@
 #include "optim/optimizer.hpp"
 #include "sextant/core/checked_settings.hpp"
 #include "sextant/core/pose.hpp"
+#include "sextant/matchers/point_spacing.hpp"
 #include "sextant/matchers/registration_quality.hpp"
 #include "sextant/matchers/sensor_kind.hpp"
 
@@ -72,7 +73,11 @@ void MlndtMatcher::set_reference(const PointCloud& reference) {
   const Bounds box = robust_bounds(reference, pyramid.bounds_quantile);
   const LayerGeometry last = layer_geometry(box, pyramid.division, pyramid.layers);
   const PrecisionFrame frame{box.min.cast<double>(), last.cell_edge, last.dims};
-  const std::vector<double> edges = precision_edges(last.cell_edge, settings_.precision);
+  PrecisionSettings precision = settings_.precision;
+  if (precision.enabled() && precision.spacing_cells > 0.0)
+    precision.min_cell =
+        std::max(precision.min_cell, precision.spacing_cells * measure_point_spacing(reference).median);
+  const std::vector<double> edges = precision_edges(last.cell_edge, precision);
   auto model = std::make_shared<MlndtModel>();
   std::vector<NdtGrid> pair(2);
   const CellStatsSettings precision_cells = settings_.precision.cells(pyramid.cells);
@@ -90,7 +95,7 @@ void MlndtMatcher::set_reference(const PointCloud& reference) {
   if (nested && pair[0].cell_count() == 0) build_pair(0, edges.front());  // layer n + 1 too large
   for (std::size_t e = 0; e < edges.size() && !model->layers.empty(); ++e) {
     if (e > 0) threads_->for_each(2, [&](std::size_t task) { build_pair(task, edges[e]); });
-    if (precision_pair_usable(pair[0], pair[1], model->layers.back(), settings_.precision)) {
+    if (precision_pair_usable(pair[0], pair[1], model->layers.back(), precision)) {
       model->precision = std::move(pair);
       break;
     }
@@ -111,7 +116,8 @@ bool same_model(const MlndtSettings& a, const MlndtSettings& b) {
          p.cells.min_relative_spread == q.cells.min_relative_spread &&
          a.precision.min_cell == b.precision.min_cell &&
          a.precision.min_coverage == b.precision.min_coverage &&
-         a.precision.max_eigen_ratio == b.precision.max_eigen_ratio;
+         a.precision.max_eigen_ratio == b.precision.max_eigen_ratio &&
+         a.precision.spacing_cells == b.precision.spacing_cells;
 }
 
 bool same_optimizer(const OptimizerSettings& a, const OptimizerSettings& b) {

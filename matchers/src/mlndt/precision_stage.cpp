@@ -21,6 +21,8 @@ bool PrecisionSettings::valid(std::string* why) const {
     problem = "precision_min_coverage must lie in (0, 1]";
   else if (!(max_eigen_ratio >= 1.0) || !std::isfinite(max_eigen_ratio))
     problem = "precision_max_eigen_ratio must be finite and at least 1";
+  else if (!(spacing_cells == 0.0 || (spacing_cells >= 1.0 && spacing_cells <= 1000.0)))
+    problem = "precision_spacing_cells must be 0 (off) or lie in [1, 1000]";
   if (problem && why) *why = problem;
   return problem == nullptr;
 }

@@ -26,7 +26,8 @@ void read_cell_stats_settings(SettingsReader& in, CellStatsSettings& s);
 /// (MoreThuenteSettings) and dof.
 void read_optimizer_settings(SettingsReader& in, const std::string& known_solvers, OptimizerSettings& s);
 
-/// Reads precision_min_cell, precision_min_coverage and precision_max_eigen_ratio at the reader's level.
+/// Reads precision_min_cell, precision_min_coverage, precision_max_eigen_ratio and precision_spacing_cells
+/// at the reader's level.
 void read_precision_settings(SettingsReader& in, PrecisionSettings& s);
 
 }  // namespace sextant

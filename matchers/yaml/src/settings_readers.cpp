@@ -48,6 +48,7 @@ void read_precision_settings(SettingsReader& in, PrecisionSettings& s) {
   in.read("precision_min_cell", s.min_cell);
   in.read("precision_min_coverage", s.min_coverage);
   in.read("precision_max_eigen_ratio", s.max_eigen_ratio);
+  in.read("precision_spacing_cells", s.spacing_cells);
 }
 
 WideBasinSettings read_wide_basin_settings(const YAML::Node& node, const std::string& file) {

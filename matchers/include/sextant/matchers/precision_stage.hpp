@@ -33,7 +33,7 @@
 // the precision stage").
 //
 // YAML keys of mlndt / fbmlndt: precision_min_cell (0 = off, the `thesis` preset), precision_min_coverage,
-// precision_max_eigen_ratio.
+// precision_max_eigen_ratio, precision_spacing_cells.
 #include <string>
 #include <vector>
 
@@ -58,6 +58,11 @@ struct PrecisionSettings {
   /// raised to it. Far above the pyramid's 100: thin Gaussians for a pose already found; 10⁴ keeps
   /// C'⁻¹ well within float precision [ratio, ≥ 1]
   double max_eigen_ratio = 1e4;
+  /// When positive, the floor `min_cell` is raised to this many times the reference's measured point
+  /// spacing (measure_point_spacing): a cell of edge k·s holds about k² returns of a surface sampled s
+  /// apart. Off by default: measured, not adopted (docs/matcher_defaults.md, "Precision cells from the
+  /// point spacing") [count, 0 = off or [1, 1000]]
+  double spacing_cells = 0.0;
   bool enabled() const { return min_cell > 0.0; }
   /// The precision grids' cell settings: the pyramid's `cells`, with this max_eigen_ratio.
   CellStatsSettings cells(const CellStatsSettings& pyramid_cells) const;

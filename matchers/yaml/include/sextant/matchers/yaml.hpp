@@ -39,6 +39,7 @@ namespace sextant {
 /// max_iterations, unmatched_penalty, max_distance, truncated_layers, epsilon, step_control, the
 /// cell statistics (min_points, max_eigen_ratio, min_spread, min_relative_spread), bounds_quantile,
 /// refine_first, dof, threads, precision_min_cell, precision_min_coverage, precision_max_eigen_ratio,
+/// precision_spacing_cells,
 /// wide_basin (a map) and `preset:` (expanded first, the other keys override it).
 MlndtSettings read_mlndt_settings(const YAML::Node& node, const std::string& file);
 /// The mlndt keys, plus seed, features (plane extraction), fallback (gbs | add_gbs | none),
