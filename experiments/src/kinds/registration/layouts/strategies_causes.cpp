@@ -28,6 +28,19 @@ double time_per_kept_point(const MethodRows& m) {
   return v.empty() ? NAN : median_of(v);
 }
 
+/// Of parameters 0 … count − 1, the one whose `statistic` of the values is largest (NaN: never chosen).
+template <typename Statistic>
+std::size_t largest_parameter(const std::vector<RegistrationError>& errors, std::size_t count,
+                              Statistic statistic) {
+  std::size_t worst = 0;
+  double largest = -1;
+  for (std::size_t p = 0; p < count; ++p) {
+    const double value = statistic(parameter_values(errors, p));
+    if (value > largest) largest = value, worst = p;
+  }
+  return worst;
+}
+
 double median_kept(const MethodRows& m) {
   std::vector<double> v;
   for (const RunRow* r : m.rows) v.push_back(r->value(keys::kKeptFraction));
@@ -48,13 +61,8 @@ std::string sample_size_cause(const MethodRows* fbs, const MethodRows* gbs) {
 std::string sample_bias_cause(const std::vector<std::string>& names,
                               const std::vector<std::vector<RegistrationError>>& errors, std::size_t fbs) {
   if (fbs >= errors.size()) return "";
-  std::size_t worst = 0;
-  double largest = -1;
-  for (std::size_t p = 0; p < 3; ++p) {
-    const std::vector<double> v = parameter_values(errors[fbs], p);
-    const double m = v.empty() ? NAN : std::abs(median_of(v));
-    if (m > largest) largest = m, worst = p;
-  }
+  const std::size_t worst = largest_parameter(
+      errors[fbs], 3, [](const std::vector<double>& v) { return v.empty() ? NAN : std::abs(median_of(v)); });
   std::string list;
   for (std::size_t m = 0; m < errors.size(); ++m) {
     const std::vector<double> v = parameter_values(errors[m], worst);
@@ -70,12 +78,8 @@ std::string sample_bias_cause(const std::vector<std::string>& names,
 std::string heavy_tail_cause(const std::vector<std::string>& names,
                              const std::vector<std::vector<RegistrationError>>& errors, std::size_t fbs) {
   if (fbs >= errors.size()) return "";
-  std::size_t worst = 0;
-  double largest = -1;
-  for (std::size_t p = 0; p < 6; ++p) {
-    const double jb = jarque_bera(parameter_values(errors[fbs], p)).statistic;
-    if (jb > largest) largest = jb, worst = p;
-  }
+  const std::size_t worst = largest_parameter(
+      errors[fbs], 6, [](const std::vector<double>& v) { return jarque_bera(v).statistic; });
   std::string list;
   for (std::size_t m = 0; m < errors.size(); ++m)
     list += (list.empty() ? "" : ", ") + names[m] + " " +
