@@ -60,7 +60,8 @@ TEST(PointSpacing, DuplicatesAndNonFinitePoints) {
   EXPECT_EQ(measure_point_spacing(cloud).finite, 100u);
   EXPECT_NEAR(measure_point_spacing(cloud).median, 0.5, 1e-6);
   PointCloud doubled = plane_grid(10, 0.5);
-  for (const Eigen::Vector3f& p : plane_grid(10, 0.5).points()) doubled.push_back(p);
+  const PointCloud twins = plane_grid(10, 0.5);  // a named copy: a temporary's points() would dangle
+  for (const Eigen::Vector3f& p : twins.points()) doubled.push_back(p);
   EXPECT_EQ(measure_point_spacing(doubled).median, 0.0);  // every point has a twin
   EXPECT_EQ(measure_point_spacing(PointCloud()).median, 0.0);
   PointCloud one;
