@@ -84,8 +84,17 @@ class Container {
     if (!last_time_ || t > *last_time_) last_time_ = t;
   }
 
-  explicit Container(KeepMessages keep) : keep_(std::move(keep)) {}
+  Container(std::uint16_t file_index, KeepMessages keep) : file_index_(file_index), keep_(std::move(keep)) {}
   bool keeps(std::uint16_t connection) const { return keep_(connections_[connection]); }
+  /// Counts a message of `connection` found at `offset` (of `chunk`), records its time, and keeps its
+  /// position when the connection is kept.
+  void add_message(std::uint16_t connection, std::int64_t time, std::uint32_t chunk, std::uint64_t offset) {
+    ++connections_[connection].messages;
+    saw_time(time);
+    if (keeps(connection)) kept_.push_back(MessagePosition{time, offset, chunk, file_index_, connection});
+  }
+
+  std::uint16_t file_index_;  ///< which file of a split recording, stored in every position
 
   KeepMessages keep_;
   std::string file_, format_, storage_;

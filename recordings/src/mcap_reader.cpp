@@ -33,7 +33,7 @@ MessageEncoding encoding_of(const std::string& name) {
 class Mcap : public Container {
  public:
   Mcap(const std::filesystem::path& path, std::uint16_t file_index, KeepMessages keep)
-      : Container(std::move(keep)), reader_(path), file_index_(file_index) {
+      : Container(file_index, std::move(keep)), reader_(path) {
     file_ = reader_.name();
     format_ = "mcap";
     const Bytes magic = reader_.read(0, kMcapMagicSize, "MCAP magic");
@@ -152,12 +152,6 @@ class Mcap : public Container {
           file_, where,
           "a message on channel " + std::to_string(channel) + ", which no channel record before it defines");
     return it->second;
-  }
-
-  void add_message(std::uint16_t connection, std::int64_t time, std::uint32_t chunk, std::uint64_t offset) {
-    ++connections_[connection].messages;
-    saw_time(time);
-    if (keeps(connection)) kept_.push_back(MessagePosition{time, offset, chunk, file_index_, connection});
   }
 
   /// Reads the summary; false when the file has none that indexes every message (then nothing is kept).
@@ -325,7 +319,6 @@ class Mcap : public Container {
   }
 
   FileReader reader_;
-  std::uint16_t file_index_;
   std::string profile_;
   std::vector<Chunk> chunks_;
   std::map<std::uint16_t, std::string> schemas_;

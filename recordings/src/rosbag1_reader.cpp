@@ -26,7 +26,7 @@ struct Chunk {
 class Rosbag1 : public Container {
  public:
   Rosbag1(const std::filesystem::path& path, std::uint16_t file_index, KeepMessages keep)
-      : Container(std::move(keep)), reader_(path), file_index_(file_index) {
+      : Container(file_index, std::move(keep)), reader_(path) {
     file_ = reader_.name();
     format_ = "rosbag1";
     const Bytes magic = reader_.read(0, kRosbag1MagicSize, "bag version line");
@@ -132,12 +132,6 @@ class Rosbag1 : public Container {
           file_, where,
           "a message of connection " + std::to_string(id) + ", which no connection record defines");
     return it->second;
-  }
-
-  void add_message(std::uint16_t connection, std::int64_t time, std::uint32_t chunk, std::uint64_t offset) {
-    ++connections_[connection].messages;
-    saw_time(time);
-    if (keeps(connection)) kept_.push_back(MessagePosition{time, offset, chunk, file_index_, connection});
   }
 
   void read_index(std::uint64_t index_pos, std::uint32_t chunk_count) {
@@ -251,7 +245,6 @@ class Rosbag1 : public Container {
   }
 
   FileReader reader_;
-  std::uint16_t file_index_;
   std::vector<Chunk> chunks_;
   std::map<std::uint32_t, std::uint16_t> ids_;  ///< the bag's connection id → index in connections_
   std::set<std::string> compressions_;

@@ -53,7 +53,7 @@ class Rosbag2Sqlite : public Container {
  public:
   Rosbag2Sqlite(const std::filesystem::path& path, std::uint16_t file_index, bool zstd_messages,
                 KeepMessages keep)
-      : Container(std::move(keep)), file_index_(file_index), zstd_messages_(zstd_messages) {
+      : Container(file_index, std::move(keep)), zstd_messages_(zstd_messages) {
     file_ = path.string();
     format_ = "rosbag2";
     storage_ = zstd_messages ? "sqlite3, zstd per message" : "sqlite3";
@@ -135,7 +135,6 @@ class Rosbag2Sqlite : public Container {
   }
 
   sqlite3* db_ = nullptr;
-  std::uint16_t file_index_;
   bool zstd_messages_;
   mutable std::mutex mutex_;  ///< one connection, used by one thread at a time
 };
